@@ -1,0 +1,92 @@
+# amorph: one Makefile, several side-by-side builds.
+#   make                      build/libamorph.a and build/amorph
+#   make test                 every test (the README's test command)
+#   make bench                benchmarks that print figures
+#   make asan | valgrind      sanitizer / memcheck runs of the test suite
+# Options: ARCH= (-march, default native)  BUILD= (output folder)
+#          REAL=float|double  PROFILE=desktop|board  OPT= (default -O3)  CC=
+ARCH    ?= native
+BUILD   ?= build
+REAL    ?= float
+PROFILE ?= desktop
+OPT     ?= -O3
+PORT    ?= posix
+CC      ?= gcc
+ifeq ($(origin CC),default)
+CC := gcc
+endif
+
+ifeq ($(filter $(REAL),float double),)
+$(error REAL must be float or double, not '$(REAL)')
+endif
+ifeq ($(filter $(PROFILE),desktop board),)
+$(error PROFILE must be desktop or board, not '$(PROFILE)')
+endif
+
+MARCH   := $(if $(ARCH),-march=$(ARCH))
+DEFS    := -DAM_REAL_$(shell echo $(REAL) | tr a-z A-Z) -DAM_PROFILE_$(shell echo $(PROFILE) | tr a-z A-Z)
+WARN    := -Wall -Wextra -Wpedantic -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
+           -Wvla -Wdouble-promotion -Wcast-qual -Wformat=2 -Wundef
+CFLAGS  ?=
+ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
+           -fno-math-errno -fno-trapping-math -g $(DEFS) -Iinclude $(CFLAGS)
+LDLIBS  := -lm -lpthread
+
+LIB_SRC  := $(sort $(wildcard src/*.c))
+PORT_SRC := $(sort $(wildcard port/$(PORT)/*.c))
+TOOL_SRC := $(sort $(wildcard tools/*.c))
+TEST_SRC := $(sort $(wildcard tests/test_*.c))
+LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
+PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
+TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+HEADERS  := $(wildcard include/*.h include/amorph/*.h tools/*.h tests/*.h)
+
+.PHONY: all test unit bench asan valgrind clean check-alloc check-determinism
+all: $(BUILD)/libamorph.a $(BUILD)/amorph
+
+$(BUILD)/%.o: %.c $(HEADERS) Makefile
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -c $< -o $@
+
+$(BUILD)/libamorph.a: $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/libamorph_port.a: $(PORT_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/amorph: $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
+	$(CC) $(ALLCFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+
+# every tools/ file but the one holding main() is linked into the tests too
+TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
+$(BUILD)/tests/%: tests/%.c $(HEADERS) $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+
+# no object of src/ or port/ may reference an allocator
+check-alloc: $(LIB_OBJ) $(PORT_OBJ)
+	@bad=$$(for o in $(LIB_OBJ) $(PORT_OBJ); do nm -u $$o | awk -v o=$$o '$$2 ~ /^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|alloca|strdup|strndup)$$/ {print o": "$$2}'; done); \
+	if [ -n "$$bad" ]; then echo "check-alloc: allocation found:"; echo "$$bad"; echo "check-alloc: 0 passed, 1 failed"; exit 1; fi; \
+	echo "check-alloc: no allocator referenced by $(words $(LIB_OBJ) $(PORT_OBJ)) objects of src/ and port/"
+
+unit: $(TEST_BIN) $(BUILD)/amorph
+	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
+
+test: all check-alloc
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0
+
+bench: all
+	$(BUILD)/amorph bench
+
+asan:
+	$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1" CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" unit
+
+valgrind: $(TEST_BIN) $(BUILD)/amorph
+	@VALGRIND=1 BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
+
+clean:
+	rm -rf build

@@ -1,0 +1,12 @@
+/* amorph.h: the whole public API. */
+#ifndef AMORPH_H
+#define AMORPH_H
+#include "amorph/config.h"
+#include "amorph/real.h"
+#include "amorph/status.h"
+#include "amorph/mathx.h"
+#include "amorph/rng.h"
+#include "amorph/lattice.h"
+#include "amorph/sim.h"
+#include "amorph/port.h"
+#endif

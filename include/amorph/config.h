@@ -1,0 +1,51 @@
+/* amorph/config.h: every capacity of the library, in one place.
+ *
+ * Nothing in amorph allocates. Each array is sized here at compile time, and a capacity that
+ * would be exceeded is reported as a status with a message, never written past. Two profiles:
+ *   desktop (default): a 20 x 20 x 20 workspace, as in the seed paper;
+ *   board (make PROFILE=board): 8 x 8 x 8, for microcontrollers.
+ */
+#ifndef AMORPH_CONFIG_H
+#define AMORPH_CONFIG_H
+
+#if defined(AM_PROFILE_BOARD)
+#define AM_PROFILE_NAME "board"
+#define AM_MAX_DIM 8            /* cells along each lattice axis */
+#else
+#define AM_PROFILE_NAME "desktop"
+#define AM_MAX_DIM 20
+#endif
+
+#define AM_MAX_CELLS (AM_MAX_DIM * AM_MAX_DIM * AM_MAX_DIM)   /* lattice cells */
+#define AM_MAX_VOXELS AM_MAX_CELLS                            /* filled cells */
+#define AM_MAX_LINKS (3 * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM - 1)) /* face pairs of a full box */
+#define AM_MAX_MATERIALS 16     /* palette entries; cell value 0 is empty, 1..16 a material */
+#define AM_MAX_PAIRS (12 * AM_MAX_VOXELS)  /* self-collision candidate pairs */
+#define AM_COLL_BUCKETS 4096    /* spatial hash buckets of the collision broad phase (power of 2) */
+#define AM_NAME_MAX 24          /* material name, including the terminating NUL */
+#define AM_ERR_MAX 256          /* recommended size of an error message buffer */
+
+/* ---- genotypes (include/amorph/genotype.h, docs/genotypes.md) ---- */
+#define AM_MAX_GENO_MATERIALS 3 /* density fields per genome: passive, active, active90 */
+#if defined(AM_PROFILE_BOARD)
+#define AM_MAX_DCT_K 4          /* DCT amplitudes per axis (k x k x k per material) */
+#define AM_MAX_CPPN_LAYERS 3    /* CPPN layers m (>= 2) */
+#define AM_MAX_CPPN_NODES 4     /* CPPN nodes per layer n */
+#define AM_MAX_GMX_POINTS 24    /* Gaussian points per GMX genome */
+#define AM_GENO_TABLE 256       /* intervals of the activation / falloff lookup tables */
+#define AM_CPPN_CHUNK 64        /* cells a CPPN sweep evaluates at once */
+#else
+#define AM_MAX_DCT_K 8
+#define AM_MAX_CPPN_LAYERS 5
+#define AM_MAX_CPPN_NODES 8
+#define AM_MAX_GMX_POINTS 64
+#define AM_GENO_TABLE 4096
+#define AM_CPPN_CHUNK 256
+#endif
+/* the largest genome text am_genome_format can produce (every value takes at most 26 chars) */
+#define AM_GENOME_TEXT_MAX (4096L + 30L * (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K * (AM_MAX_DCT_K + 4) \
+    + AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES * (2 * AM_MAX_CPPN_NODES + 14) + AM_MAX_GENO_MATERIALS * (2 * AM_MAX_CPPN_NODES + 4) \
+    + AM_MAX_GMX_POINTS * 8))
+/* ---- end of genotypes ---- */
+
+#endif

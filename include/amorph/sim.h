@@ -1,0 +1,203 @@
+/* amorph/sim.h: the voxel soft-body simulator (docs/physics.md is the model).
+ *
+ * Immutable model, mutable state (as MuJoCo's mjModel / mjData): am_model_build turns a lattice and
+ * an environment into voxels, links and constants once; am_step advances an am_state and never
+ * writes the model, so one model can drive several states. Both structs are large (fixed
+ * capacity): declare them static, one state per worker, never on the stack.
+ *
+ * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, link rest lengths
+ * once per link), link forces (small- or large-angle beam), contacts (floor with static/kinetic
+ * friction, self-collision), then semi-implicit Euler per voxel, which gathers its up-to-6 link
+ * forces in a fixed order. Results do not depend on how work is split.
+ */
+#ifndef AMORPH_SIM_H
+#define AMORPH_SIM_H
+
+#include <stdint.h>
+#include "amorph/config.h"
+#include "amorph/lattice.h"
+#include "amorph/real.h"
+#include "amorph/status.h"
+
+enum { AM_CTE_VOLUMETRIC = 0, AM_CTE_LINEAR = 1 };
+enum { AM_FIT_HORIZONTAL = 0, AM_FIT_PLUS_X = 1, AM_FIT_3D = 2 };
+
+/* the environment of a simulation; am_default_env() gives the seed's */
+typedef struct am_env {
+    am_real gravity;          /* m/s^2 along -z (9.80665); 0 turns gravity off */
+    int floor;                /* 1: the floor z = 0 is present */
+    int collisions;           /* 1: self-collision on */
+    int cte_mode;             /* AM_CTE_VOLUMETRIC (seed: s = cbrt(1 + cte T)) or AM_CTE_LINEAR (s = 1 + cte T) */
+    am_real temp_base;        /* temperature offset at rest, degrees (0) */
+    am_real temp_amplitude;   /* actuation amplitude A, degrees (30) */
+    int period_steps;         /* actuation period P in time steps (500); > 0 */
+    am_real dt_frac;          /* time step as a fraction of the analytic dt_rec */
+    am_real lift;             /* m: the body's lowest face starts this high above the floor (0) */
+    am_real zeta_internal_scale; /* multiplies every material's internal damping (1) */
+    am_real zeta_global_scale;   /* multiplies every material's global damping (1) */
+} am_env;
+
+am_env am_default_env(void);
+
+/* the immutable model. Shapes in the comments: nv = voxels, nl = links. Links are grouped by
+ * axis: x-links are [0, axis_end[0]), y-links [axis_end[0], axis_end[1]), z-links the rest. */
+typedef struct am_model {
+    int nv, nl;                  /* voxels, links */
+    int axis_end[3];             /* see above */
+    am_real L;                   /* nominal voxel edge, m */
+    am_env env;                  /* the environment the model was built for */
+    am_palette palette;          /* copy of the lattice's palette */
+    int nx, ny, nz;              /* lattice size */
+    int32_t cell_voxel[AM_MAX_CELLS];     /* voxel of each lattice cell, -1 if empty */
+    /* per voxel (nv) */
+    int32_t cell[AM_MAX_VOXELS];          /* lattice cell index */
+    uint8_t mat[AM_MAX_VOXELS];           /* palette index (0-based) */
+    uint8_t surface[AM_MAX_VOXELS];       /* 1 when fewer than 6 links */
+    uint8_t fixed[AM_MAX_VOXELS];         /* 1 when clamped */
+    int32_t slot[6][AM_MAX_VOXELS];       /* link per direction +x,-x,+y,-y,+z,-z; nl (a zero link) if none */
+    int32_t nbr[6][AM_MAX_VOXELS];        /* neighbour voxel per direction, -1 if none */
+    am_real x0[3][AM_MAX_VOXELS];         /* initial centre, m */
+    am_real mass[AM_MAX_VOXELS];          /* kg */
+    am_real inv_mass[AM_MAX_VOXELS];      /* 1/kg, 0 for fixed voxels */
+    am_real inv_inertia[AM_MAX_VOXELS];   /* 1/(kg m^2), 0 for fixed voxels */
+    am_real c_glob_t[AM_MAX_VOXELS];      /* global damping, N s/m */
+    am_real c_glob_r[AM_MAX_VOXELS];      /* global damping, N m s */
+    am_real c_diag_t[AM_MAX_VOXELS];      /* own share of internal translational damping (sum over links), N s/m */
+    am_real c_diag_r[AM_MAX_VOXELS];      /* own share of internal rotational damping, N m s */
+    am_real k_floor[AM_MAX_VOXELS];       /* floor/contact stiffness 2 E L, N/m */
+    am_real c_col[AM_MAX_VOXELS];         /* collision damping, N s/m */
+    am_real mu_s[AM_MAX_VOXELS], mu_k[AM_MAX_VOXELS]; /* floor friction */
+    /* per link (nl); index nl is the zero link that missing slots point at */
+    int32_t lneg[AM_MAX_LINKS], lpos[AM_MAX_LINKS]; /* voxel at the -axis / +axis end */
+    am_real k_ax[AM_MAX_LINKS];    /* E_link L^2, N (axial force = k_ax * strain) */
+    am_real a2[AM_MAX_LINKS];      /* torsion GJ/L, N m */
+    am_real b1[AM_MAX_LINKS];      /* shear 12EI/L^3, N/m */
+    am_real b2[AM_MAX_LINKS];      /* coupling 6EI/L^2, N */
+    am_real b3[AM_MAX_LINKS];      /* bending 2EI/L, N m */
+    am_real c_t[AM_MAX_LINKS];     /* internal translational damping, N s/m */
+    am_real c_r[AM_MAX_LINKS];     /* internal rotational damping, N m s */
+    /* per material: actuation */
+    am_real mat_cte[AM_MAX_MATERIALS];
+    am_real mat_phase[AM_MAX_MATERIALS];
+    am_real dt_rec;                /* analytic time step, s */
+    am_real max_speed;             /* divergence bound on any voxel speed, m/s */
+    am_real coll_range;            /* largest contact distance (two spheres at full scale), m */
+    am_real max_scale;             /* largest linear voxel scale the actuation can reach */
+    int any_cte;                   /* 1 when some material has a non-zero CTE */
+} am_model;
+
+/* recording of voxel poses every `every` steps into a caller's fixed buffer */
+typedef struct am_record {
+    int every;           /* record every this many steps (>= 1) */
+    int max_frames;      /* capacity in frames */
+    int nv;              /* voxels per frame (set by the simulator) */
+    int frames;          /* frames written so far */
+    int truncated;       /* 1 when a frame was dropped for lack of room */
+    float* pose;         /* max_frames * nv * 7 floats: x, y, z (m), qw, qx, qy, qz */
+    long* step;          /* max_frames step numbers (may be NULL) */
+    long pose_cap;       /* capacity of pose in floats */
+} am_record;
+
+/* the mutable state of one simulation */
+typedef struct am_state {
+    long step;               /* steps taken */
+    am_real t;               /* simulated time, s */
+    am_real dt;              /* time step, s */
+    int actuate;             /* 1: temperatures follow the actuation; 0: held at temp_base */
+    long actuation_step0;    /* step at which actuation started (phase reference) */
+    int diverged;            /* 1 once NaN/Inf, strain or speed left its bound */
+    long diverge_step;       /* step at which divergence was flagged */
+    int pairs_overflow;      /* 1 when the collision candidate list hit AM_MAX_PAIRS */
+    long rebuilds;           /* collision candidate list rebuilds */
+    /* per voxel (nv) */
+    am_real x[3][AM_MAX_VOXELS];  /* centre, m */
+    am_real q[4][AM_MAX_VOXELS];  /* orientation quaternion w, x, y, z */
+    am_real p[3][AM_MAX_VOXELS];  /* linear momentum, kg m/s */
+    am_real h[3][AM_MAX_VOXELS];  /* angular momentum, kg m^2/s */
+    am_real v[3][AM_MAX_VOXELS];  /* velocity p/m (derived, kept for the link loop) */
+    am_real w[3][AM_MAX_VOXELS];  /* angular velocity h/I (derived) */
+    am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
+    am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
+    am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
+    am_real fc[3][AM_MAX_VOXELS];   /* self-collision force (scratch) */
+    uint8_t contact[AM_MAX_VOXELS]; /* 0 no floor contact, 1 stuck, 2 sliding */
+    /* per link (nl + 1; index nl stays zero) */
+    am_real inv_rest[AM_MAX_LINKS + 1];  /* 1 / current rest length, 1/m */
+    am_real rest[AM_MAX_LINKS + 1];      /* current rest length, m */
+    uint8_t large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
+    am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
+    am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
+    am_real mp[3][AM_MAX_LINKS + 1];     /* moment on the positive voxel, world, N m */
+    am_real strain[AM_MAX_LINKS + 1];    /* axial strain (diagnostic) */
+    /* self-collision candidates */
+    int npairs;                          /* -1 until the first build */
+    int max_npairs;                      /* largest list so far */
+    int32_t pa[AM_MAX_PAIRS], pb[AM_MAX_PAIRS];
+    am_real xref[3][AM_MAX_VOXELS];      /* positions at the last rebuild */
+    int32_t bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
+    int32_t bucket_next[AM_MAX_VOXELS];
+    am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
+} am_state;
+
+/* builds the model; AM_ERR_EMPTY for no voxel, AM_ERR_CAPACITY past a capacity, AM_ERR_RANGE for a
+ * bad material or environment value */
+am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
+/* puts the state at rest at the initial pose, dt = env.dt_frac * dt_rec, actuation off */
+void am_state_reset(const am_model* m, am_state* s);
+/* one time step */
+void am_step(const am_model* m, am_state* s);
+/* n time steps, stopping early on divergence; returns steps taken */
+long am_steps(const am_model* m, am_state* s, long n);
+
+/* 1 / (2 pi sqrt(max over links a1 / min(m_neg, m_pos))), s */
+am_real am_dt_analytic(const am_model* m);
+/* the seed's empirical search: from 10 dt_rec down by factors of 10 until 100 steps of a thermal
+ * step load show no significant strain energy growth, then a finer pass between the last unstable
+ * and first stable value; returns 0.95 of the largest stable dt found. scratch is overwritten. */
+am_real am_dt_search(const am_model* m, am_state* scratch);
+
+/* energies (diagnostics and tests), J */
+double am_kinetic_energy(const am_model* m, const am_state* s);
+double am_strain_energy(const am_model* m, const am_state* s);
+double am_potential_energy(const am_model* m, const am_state* s); /* gravity + floor springs */
+/* centre of mass, m */
+void am_com(const am_model* m, const am_state* s, double out[3]);
+/* total linear and angular (about the origin) momentum */
+void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang[3]);
+/* 64-bit hash of the dynamic state (positions, orientations, momenta, contact flags) */
+uint64_t am_state_hash(const am_model* m, const am_state* s);
+
+/* the seed's evaluation: relaxation, then `cycles` actuation cycles */
+typedef struct am_eval_def {
+    int cycles;              /* actuation cycles of the movement segment (10) */
+    int fitness;             /* AM_FIT_HORIZONTAL (default), AM_FIT_PLUS_X or AM_FIT_3D */
+    int dt_search;           /* 1: the seed's empirical time step search instead of env.dt_frac */
+    long relax_max_steps;    /* relaxation ends here at the latest (4000) */
+    long relax_min_steps;    /* and not before this (200) */
+    am_real settle_speed;    /* m/s: relaxed when the RMS voxel speed stays below this (1e-3) */
+    am_record* record;       /* optional recording (may be NULL) */
+} am_eval_def;
+
+am_eval_def am_default_eval(void);
+
+typedef struct am_result {
+    double fitness;          /* m; -1 when diverged or empty (worst) */
+    double dx, dy, dz;       /* centre of mass displacement in the movement segment, m */
+    int voxels, links;
+    double dt;               /* s */
+    long relax_steps, move_steps, steps;
+    int diverged;            /* 1 when the run diverged */
+    int settled;             /* 1 when the relaxation met the speed criterion */
+    double sim_seconds;      /* simulated time, s */
+    long rebuilds;           /* collision list rebuilds */
+    int max_pairs;           /* largest collision candidate list */
+    uint64_t hash;           /* am_state_hash at the end */
+} am_result;
+
+/* the whole evaluation of one model; s is overwritten */
+void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
+
+/* recording helper used by am_evaluate: stores a frame if s->step is a multiple of rec->every */
+void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
+
+#endif

@@ -1,0 +1,23 @@
+/* amorph/status.h: status codes. Functions that can fail return am_status and write a one-line,
+ * human-readable message (for files: "file:line: problem") into a caller's buffer. */
+#ifndef AMORPH_STATUS_H
+#define AMORPH_STATUS_H
+
+typedef enum am_status {
+    AM_OK = 0,
+    AM_ERR_PARSE,      /* malformed input text */
+    AM_ERR_RANGE,      /* a value outside its allowed range */
+    AM_ERR_CAPACITY,   /* a compile-time capacity would be exceeded */
+    AM_ERR_IO,         /* a file could not be read or written */
+    AM_ERR_EMPTY,      /* nothing to simulate (no voxel) */
+    AM_ERR_ARG         /* a bad argument from the caller */
+} am_status;
+
+/* writes "fmt" into err (size errsz, may be 0) like snprintf and returns code */
+am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+#endif

@@ -1,0 +1,21 @@
+# tests/cli_lib.sh: helpers for the shell tests (sourced, not run).
+# expect_fail CODE PATTERN CMD...: CMD must exit with CODE and print one stderr line matching PATTERN
+BUILD=${BUILD:-build}
+AMORPH=${AMORPH:-$BUILD/amorph}
+T_PASS=0; T_FAIL=0
+TMPD=$(mktemp -d)
+trap 'rm -rf "$TMPD"' EXIT
+ok() { T_PASS=$((T_PASS + 1)); }
+ko() { T_FAIL=$((T_FAIL + 1)); echo "FAILED: $*" >&2; }
+expect_fail() {
+    code=$1; pat=$2; shift 2
+    "$@" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    lines=$(wc -l <"$TMPD/err")
+    if [ $rc -eq "$code" ] && grep -qE -- "$pat" "$TMPD/err" && [ "$lines" -eq 1 ]; then ok
+    else ko "$* -> exit $rc (want $code), stderr: $(head -c 300 "$TMPD/err") (want /$pat/, one line)"; fi
+}
+expect_ok() {
+    "$@" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    if [ $rc -eq 0 ]; then ok; else ko "$* -> exit $rc: $(head -c 300 "$TMPD/err")"; fi
+}
+summary() { echo "$1: $T_PASS passed, $T_FAIL failed"; [ "$T_FAIL" -eq 0 ]; }

@@ -1,0 +1,35 @@
+/* tools/cmd.h: the subcommands of the amorph program and what they share. Every command returns
+ * the process exit status: 0 success, 1 failure at run time, 2 bad input (flags, files). */
+#ifndef AMORPH_TOOLS_CMD_H
+#define AMORPH_TOOLS_CMD_H
+
+#include "amorph.h"
+
+int cmd_sim(int argc, char** argv);
+int cmd_bench(int argc, char** argv);
+int cmd_random(int argc, char** argv);
+int cmd_express(int argc, char** argv);
+
+/* prints "amorph: <message>" on stderr as one line and returns 2 */
+int tool_usage_error(const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/* loads a robot: "scene:NAME" style names (cube:N ...) when is_scene, else a file in any format
+ * amorph reads (lattice text; genome text, expressed). Messages are "file:line: problem". */
+am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz);
+
+/* genome text (any representation) -> lattice; implemented with the genotypes (cmd_genome.c).
+ * Returns AM_ERR_ARG without a message when text is not a genome, so the caller tries others. */
+am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
+
+/* prints name=value lines of the genotype expression times (cmd_genome.c) */
+void tool_bench_express(void);
+
+/* one shared file buffer for the commands (they run one at a time) */
+#define TOOL_FILE_MAX (4L << 20)
+extern char tool_file_buf[TOOL_FILE_MAX];
+
+#endif

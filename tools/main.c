@@ -1,0 +1,39 @@
+/* amorph: the command. Subcommands in the style of git. */
+#include "cmd.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static const struct {
+    const char* name;
+    int (*fn)(int, char**);
+    const char* help;
+} commands[] = {
+    {"sim", cmd_sim, "simulate one robot (lattice, genome or --scene) and print its fitness"},
+    {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
+    {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
+    {"express", cmd_express, "express a genome into a lattice file"},
+};
+
+static void usage(FILE* f)
+{
+    fprintf(f, "usage: amorph COMMAND [options]   (amorph COMMAND --help for each)\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(f, "  %-9s %s\n", commands[i].name, commands[i].help);
+    fprintf(f, "\nbuild: am_real=%s, profile=%s (workspace up to %d^3)\n", AM_REAL_NAME, AM_PROFILE_NAME, AM_MAX_DIM);
+}
+
+int main(int argc, char** argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(argc - 1, argv + 1);
+    return tool_usage_error("unknown command '%s' (amorph --help lists them)", argv[1]);
+}

@@ -1,0 +1,32 @@
+/* Loading robots for the commands: scenes, lattice files, genome files. */
+#include "cmd.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+char tool_file_buf[TOOL_FILE_MAX];
+
+int tool_usage_error(const char* fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs("amorph: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return 2;
+}
+
+am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz)
+{
+    if (is_scene) return am_scene_build(lat, name, err, errsz);
+    long len = 0;
+    am_status st = am_port_read_file(name, tool_file_buf, TOOL_FILE_MAX, &len, err, errsz);
+    if (st != AM_OK) return st;
+    if (strlen(tool_file_buf) != (size_t)len)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: binary data (a NUL byte) in a text file", name);
+    st = tool_genome_text_to_lattice(tool_file_buf, name, lat, err, errsz);
+    if (st != AM_ERR_ARG) return st;
+    return am_lattice_parse(lat, tool_file_buf, name, err, errsz);
+}
