@@ -1,0 +1,126 @@
+/* Self-collision (docs/physics.md section 6).
+ *
+ * Only surface voxels (fewer than 6 links) collide. Candidate pairs are surface voxels whose
+ * centres are closer than 2.5 L and that are not within two links of each other in the lattice
+ * (the seed's rule). The list is kept and rebuilt only when some voxel has moved, since the last
+ * rebuild, more than half the slack between 2.5 L and the largest contact distance: until then no
+ * pair off the list can touch. The rebuild hashes voxel centres into a spatial grid of 2.5 L
+ * cells (fixed bucket array, linked lists in a fixed array), so it costs O(n), not O(n^2).
+ *
+ * Contacts are spheres of radius 0.625 s L; overlapping pairs push apart along the line of
+ * centres with the harmonic mean of the two contact stiffnesses plus collision damping on the
+ * approach speed. The pair list is walked serially in its (deterministic) order. */
+#include "sim_internal.h"
+
+#define CAND_FACTOR AM_R(2.5)
+
+static int within_two_links(const am_model* m, int i, int j)
+{
+    for (int d = 0; d < 6; d++) {
+        int n = m->nbr[d][i];
+        if (n < 0) continue;
+        if (n == j) return 1;
+        for (int e = 0; e < 6; e++)
+            if (m->nbr[e][n] == j) return 1;
+    }
+    return 0;
+}
+
+static uint32_t bucket_of(long cx, long cy, long cz)
+{
+    uint32_t h = (uint32_t)cx * 73856093u ^ (uint32_t)cy * 19349663u ^ (uint32_t)cz * 83492791u;
+    return h & (AM_COLL_BUCKETS - 1);
+}
+
+static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(x, inv_h)); }
+
+static void rebuild(const am_model* m, am_state* s)
+{
+    const int nv = m->nv;
+    const am_real h = AM_MUL(CAND_FACTOR, m->L), h2 = AM_MUL(h, h), inv_h = AM_DIV(AM_R(1), h);
+    for (int b = 0; b < AM_COLL_BUCKETS; b++) s->bucket_head[b] = -1;
+    /* insert in descending index order so every list runs in ascending order */
+    for (int i = nv - 1; i >= 0; i--) {
+        if (!m->surface[i]) continue;
+        uint32_t b = bucket_of(cell_coord(s->x[0][i], inv_h), cell_coord(s->x[1][i], inv_h), cell_coord(s->x[2][i], inv_h));
+        s->bucket_next[i] = s->bucket_head[b];
+        s->bucket_head[b] = i;
+    }
+    int np = 0;
+    for (int i = 0; i < nv; i++) {
+        if (!m->surface[i]) continue;
+        long cx = cell_coord(s->x[0][i], inv_h), cy = cell_coord(s->x[1][i], inv_h), cz = cell_coord(s->x[2][i], inv_h);
+        uint32_t seen[27];
+        int nseen = 0;
+        for (int dz = -1; dz <= 1; dz++)
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    uint32_t b = bucket_of(cx + dx, cy + dy, cz + dz);
+                    int dup = 0;
+                    for (int k = 0; k < nseen; k++) dup |= seen[k] == b; /* hash collisions: visit once */
+                    if (dup) continue;
+                    seen[nseen++] = b;
+                    for (int j = s->bucket_head[b]; j >= 0; j = s->bucket_next[j]) {
+                        if (j <= i) continue;
+                        am_real ex = s->x[0][j] - s->x[0][i], ey = s->x[1][j] - s->x[1][i], ez = s->x[2][j] - s->x[2][i];
+                        if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) >= h2) continue;
+                        if (within_two_links(m, i, j)) continue;
+                        if (np >= AM_MAX_PAIRS) {
+                            s->pairs_overflow = 1;
+                            continue;
+                        }
+                        s->pa[np] = i;
+                        s->pb[np] = j;
+                        np++;
+                    }
+                }
+    }
+    /* pairs come out grouped by bucket visit order; that order is fixed by the positions, so the
+     * list is deterministic */
+    s->npairs = np;
+    if (np > s->max_npairs) s->max_npairs = np;
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < nv; i++) s->xref[c][i] = s->x[c][i];
+    s->rebuilds++;
+}
+
+static int needs_rebuild(const am_model* m, const am_state* s)
+{
+    if (s->npairs < 0) return 1;
+    am_real slack = AM_MUL(AM_R(0.5), AM_MUL(CAND_FACTOR, m->L) - m->coll_range);
+    if (!(slack > AM_R(0))) return 1;
+    am_real lim = AM_MUL(slack, slack);
+    for (int i = 0; i < m->nv; i++) {
+        am_real ex = s->x[0][i] - s->xref[0][i], ey = s->x[1][i] - s->xref[1][i], ez = s->x[2][i] - s->xref[2][i];
+        if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim) return 1;
+    }
+    return 0;
+}
+
+void am_sim_collide(const am_model* m, am_state* s)
+{
+    const int nv = m->nv;
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < nv; i++) s->fc[c][i] = AM_R(0);
+    if (!m->env.collisions) return;
+    if (needs_rebuild(m, s)) rebuild(m, s);
+    const am_real rad = AM_MUL(AM_R(0.625), m->L);
+    for (int k = 0; k < s->npairs; k++) {
+        const int a = s->pa[k], b = s->pb[k];
+        am_real ex = s->x[0][b] - s->x[0][a], ey = s->x[1][b] - s->x[1][a], ez = s->x[2][b] - s->x[2][a];
+        am_real reach = AM_MUL(rad, s->s[a] + s->s[b]);
+        am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
+        if (d2 >= AM_MUL(reach, reach) || !(d2 > AM_R(0))) continue;
+        am_real d = am_sqrt(d2), inv = AM_DIV(AM_R(1), d);
+        am_real nx = AM_MUL(ex, inv), ny = AM_MUL(ey, inv), nz = AM_MUL(ez, inv);
+        am_real ka = m->k_floor[a], kb = m->k_floor[b];
+        am_real k_h = AM_DIV(AM_MUL(AM_R(2), AM_MUL(ka, kb)), ka + kb); /* harmonic mean */
+        am_real c = AM_MUL(AM_R(0.5), m->c_col[a] + m->c_col[b]);
+        am_real approach = AM_MUL(s->v[0][a] - s->v[0][b], nx) + AM_MUL(s->v[1][a] - s->v[1][b], ny) +
+                           AM_MUL(s->v[2][a] - s->v[2][b], nz);
+        am_real f = AM_MUL(k_h, reach - d) + AM_MUL(c, approach);
+        if (f <= AM_R(0)) continue; /* contacts push, never pull */
+        s->fc[0][a] -= AM_MUL(f, nx); s->fc[1][a] -= AM_MUL(f, ny); s->fc[2][a] -= AM_MUL(f, nz);
+        s->fc[0][b] += AM_MUL(f, nx); s->fc[1][b] += AM_MUL(f, ny); s->fc[2][b] += AM_MUL(f, nz);
+    }
+}

@@ -1,0 +1,258 @@
+/* Evaluation (the seed's relaxation + movement protocol), the empirical time step search,
+ * energies, momenta, state hashes and recording. None of this is in the per-step hot path. */
+#include "sim_internal.h"
+#include "amorph/mathx.h"
+#include "amorph/rng.h"
+
+#include <string.h>
+
+am_eval_def am_default_eval(void)
+{
+    am_eval_def d;
+    memset(&d, 0, sizeof d);
+    d.cycles = 10;
+    d.fitness = AM_FIT_HORIZONTAL;
+    d.dt_search = 0;
+    d.relax_max_steps = 4000;
+    d.relax_min_steps = 200;
+    d.settle_speed = AM_R(1e-3);
+    d.record = 0;
+    return d;
+}
+
+double am_kinetic_energy(const am_model* m, const am_state* s)
+{
+    double e = 0;
+    for (int i = 0; i < m->nv; i++) {
+        if (m->fixed[i]) continue;
+        double p2 = 0, h2 = 0;
+        for (int c = 0; c < 3; c++) {
+            p2 += (double)s->p[c][i] * (double)s->p[c][i];
+            h2 += (double)s->h[c][i] * (double)s->h[c][i];
+        }
+        e += 0.5 * p2 * (double)m->inv_mass[i] + 0.5 * h2 * (double)m->inv_inertia[i];
+    }
+    return e;
+}
+
+/* the elastic energy of the frame element whose forces am_step uses */
+double am_strain_energy(const am_model* m, const am_state* s)
+{
+    double e = 0;
+    for (int l = 0; l < m->nl; l++) {
+        link_kin k;
+        int axis = link_axis(m, l);
+        link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
+        if (s->large[l]) link_kin_large(&k);
+        double rest = (double)m->L * 0.5 * ((double)s->s[m->lneg[l]] + (double)s->s[m->lpos[l]]);
+        double u = (double)k.p.x - rest, y = (double)k.p.y, z = (double)k.p.z;
+        double t1x = (double)k.t1.x, t1y = (double)k.t1.y, t1z = (double)k.t1.z;
+        double t2x = (double)k.t2.x, t2y = (double)k.t2.y, t2z = (double)k.t2.z;
+        double b1 = (double)m->b1[l], b2 = (double)m->b2[l], b3 = (double)m->b3[l];
+        e += 0.5 * (double)m->k_ax[l] * u * u / rest;
+        e += 0.5 * b1 * (y * y + z * z) - b2 * y * (t1z + t2z) + b2 * z * (t1y + t2y);
+        e += b3 * (t1z * t1z + t1z * t2z + t2z * t2z) + b3 * (t1y * t1y + t1y * t2y + t2y * t2y);
+        e += 0.5 * (double)m->a2[l] * (t2x - t1x) * (t2x - t1x);
+    }
+    return e;
+}
+
+double am_potential_energy(const am_model* m, const am_state* s)
+{
+    double e = 0;
+    for (int i = 0; i < m->nv; i++) {
+        e += (double)m->mass[i] * (double)m->env.gravity * (double)s->x[2][i];
+        if (m->env.floor) {
+            double pen = 0.5 * (double)s->s[i] * (double)m->L - (double)s->x[2][i];
+            if (pen > 0) e += 0.5 * (double)m->k_floor[i] * pen * pen;
+        }
+    }
+    return e;
+}
+
+void am_com(const am_model* m, const am_state* s, double out[3])
+{
+    double mt = 0, c[3] = {0, 0, 0};
+    for (int i = 0; i < m->nv; i++) {
+        mt += (double)m->mass[i];
+        for (int k = 0; k < 3; k++) c[k] += (double)m->mass[i] * (double)s->x[k][i];
+    }
+    for (int k = 0; k < 3; k++) out[k] = mt > 0 ? c[k] / mt : 0;
+}
+
+void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang[3])
+{
+    for (int k = 0; k < 3; k++) lin[k] = ang[k] = 0;
+    for (int i = 0; i < m->nv; i++) {
+        double x = (double)s->x[0][i], y = (double)s->x[1][i], z = (double)s->x[2][i];
+        double px = (double)s->p[0][i], py = (double)s->p[1][i], pz = (double)s->p[2][i];
+        lin[0] += px; lin[1] += py; lin[2] += pz;
+        ang[0] += y * pz - z * py + (double)s->h[0][i];
+        ang[1] += z * px - x * pz + (double)s->h[1][i];
+        ang[2] += x * py - y * px + (double)s->h[2][i];
+    }
+}
+
+uint64_t am_state_hash(const am_model* m, const am_state* s)
+{
+    uint64_t h = AM_HASH_INIT;
+    h = am_hash_u64(h, (uint64_t)m->nv);
+    h = am_hash_u64(h, (uint64_t)s->step);
+    h = am_hash_u64(h, (uint64_t)s->diverged);
+    for (int i = 0; i < m->nv; i++) {
+        for (int c = 0; c < 3; c++) h = am_hash_real(h, s->x[c][i]);
+        for (int c = 0; c < 4; c++) h = am_hash_real(h, s->q[c][i]);
+        for (int c = 0; c < 3; c++) h = am_hash_real(h, s->p[c][i]);
+        for (int c = 0; c < 3; c++) h = am_hash_real(h, s->h[c][i]);
+        h = am_hash_u64(h, s->contact[i]);
+    }
+    return h;
+}
+
+void am_record_frame(const am_model* m, const am_state* s, am_record* rec)
+{
+    if (!rec || rec->every < 1 || s->step % rec->every != 0) return;
+    rec->nv = m->nv;
+    long need = (long)(rec->frames + 1) * m->nv * 7;
+    if (rec->frames >= rec->max_frames || need > rec->pose_cap || !rec->pose) {
+        rec->truncated = 1;
+        return;
+    }
+    float* f = rec->pose + (long)rec->frames * m->nv * 7;
+    for (int i = 0; i < m->nv; i++) {
+        f[7 * i + 0] = (float)s->x[0][i];
+        f[7 * i + 1] = (float)s->x[1][i];
+        f[7 * i + 2] = (float)s->x[2][i];
+        for (int c = 0; c < 4; c++) f[7 * i + 3 + c] = (float)s->q[c][i];
+    }
+    if (rec->step) rec->step[rec->frames] = s->step;
+    rec->frames++;
+}
+
+/* 100 steps after every voxel is displaced by up to 2% of L and turned by up to 0.02 rad in a
+ * fixed pseudo-random pattern, so that every mode, symmetric or not, starts with a finite
+ * amplitude; gravity and floor as configured. In a stable damped run the strain energy falls to
+ * the slowly growing level of the gravity load; an unstable mode grows by orders of magnitude. */
+static int stable_at(const am_model* m, am_state* s, am_real dt)
+{
+    am_state_reset(m, s);
+    s->dt = dt;
+    am_rng r;
+    am_rng_seed(&r, UINT64_C(0x5eed0f57ab1e));
+    const am_real amp = AM_MUL(AM_R(0.02), m->L);
+    for (int i = 0; i < m->nv; i++) {
+        if (m->fixed[i]) continue;
+        for (int k = 0; k < 3; k++) s->x[k][i] += am_rng_range(&r, -amp, amp);
+        vec3 rv = v3(am_rng_range(&r, AM_R(-0.02), AM_R(0.02)), am_rng_range(&r, AM_R(-0.02), AM_R(0.02)),
+                     am_rng_range(&r, AM_R(-0.02), AM_R(0.02)));
+        quat q = q_from_rotvec(rv);
+        am_real n = am_sqrt(AM_MUL(q.w, q.w) + v3_dot(v3(q.x, q.y, q.z), v3(q.x, q.y, q.z)));
+        s->q[0][i] = AM_DIV(q.w, n);
+        s->q[1][i] = AM_DIV(q.x, n);
+        s->q[2][i] = AM_DIV(q.y, n);
+        s->q[3][i] = AM_DIV(q.z, n);
+    }
+    double e0 = am_strain_energy(m, s), mid = 0, late = 0;
+    for (int n = 0; n < 100 && !s->diverged; n++) {
+        am_step(m, s);
+        double e = am_strain_energy(m, s);
+        if (!(e == e) || e > 1e30) return 0;
+        if (n >= 75) late = e > late ? e : late;
+        else if (n >= 50) mid = e > mid ? e : mid;
+    }
+    /* a significant increase: the last quarter more than twice the third and above 1% of the
+     * initial perturbation (gravity alone loads the body slowly and stays far below that) */
+    return !s->diverged && !(late > 2.0 * mid && late > 0.01 * e0);
+}
+
+am_real am_dt_search(const am_model* m, am_state* scratch)
+{
+    /* coarse pass: from 10 dt_rec down, one order of magnitude apart */
+    am_real unstable = AM_R(0), stable = AM_R(0);
+    am_real dt = AM_MUL(AM_R(10), m->dt_rec);
+    for (int k = 0; k < 6 && stable == AM_R(0); k++) {
+        if (stable_at(m, scratch, dt)) stable = dt;
+        else {
+            unstable = dt;
+            dt = AM_DIV(dt, AM_R(10));
+        }
+    }
+    if (stable == AM_R(0)) return AM_MUL(AM_R(0.95), unstable); /* nothing stable: the smallest tried */
+    if (unstable != AM_R(0)) {
+        /* fine pass: nine values between the last unstable and the first stable one, largest first */
+        am_real inc = AM_DIV(unstable - stable, AM_R(10));
+        for (int j = 1; j < 10; j++) {
+            am_real cand = unstable - AM_MUL(AM_R(j), inc);
+            if (stable_at(m, scratch, cand)) {
+                stable = cand;
+                break;
+            }
+        }
+    }
+    return AM_MUL(AM_R(0.95), stable);
+}
+
+static double rms_speed(const am_model* m, const am_state* s)
+{
+    double sum = 0;
+    for (int i = 0; i < m->nv; i++)
+        for (int c = 0; c < 3; c++) sum += (double)s->v[c][i] * (double)s->v[c][i];
+    return sqrt(sum / (double)m->nv);
+}
+
+void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
+{
+    memset(out, 0, sizeof *out);
+    out->voxels = m->nv;
+    out->links = m->nl;
+    am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
+    am_state_reset(m, s);
+    if (def->dt_search) s->dt = dt;
+    out->dt = (double)s->dt;
+    am_record* rec = def->record;
+    if (rec) {
+        rec->frames = 0;
+        rec->truncated = 0;
+        rec->nv = m->nv;
+    }
+    am_record_frame(m, s, rec);
+
+    /* relaxation: no actuation until the RMS speed stays under settle_speed for 20 steps */
+    long calm = 0;
+    while (s->step < def->relax_max_steps && !s->diverged) {
+        am_step(m, s);
+        am_record_frame(m, s, rec);
+        calm = rms_speed(m, s) < (double)def->settle_speed ? calm + 1 : 0;
+        if (calm >= 20 && s->step >= def->relax_min_steps) {
+            out->settled = 1;
+            break;
+        }
+    }
+    out->relax_steps = s->step;
+    double c0[3], c1[3];
+    am_com(m, s, c0);
+
+    /* movement: `cycles` whole actuation periods */
+    s->actuate = 1;
+    s->actuation_step0 = s->step;
+    long n = (long)def->cycles * m->env.period_steps;
+    for (long k = 0; k < n && !s->diverged; k++) {
+        am_step(m, s);
+        am_record_frame(m, s, rec);
+    }
+    out->move_steps = s->step - out->relax_steps;
+    out->steps = s->step;
+    out->sim_seconds = (double)s->step * (double)s->dt;
+    out->rebuilds = s->rebuilds;
+    out->max_pairs = s->max_npairs;
+    am_com(m, s, c1);
+    out->dx = c1[0] - c0[0];
+    out->dy = c1[1] - c0[1];
+    out->dz = c1[2] - c0[2];
+    out->diverged = s->diverged;
+    if (s->diverged) out->fitness = -1.0;
+    else if (def->fitness == AM_FIT_PLUS_X) out->fitness = out->dx;
+    else if (def->fitness == AM_FIT_3D) out->fitness = sqrt(out->dx * out->dx + out->dy * out->dy + out->dz * out->dz);
+    else out->fitness = sqrt(out->dx * out->dx + out->dy * out->dy);
+    out->hash = am_state_hash(m, s);
+}

@@ -1,0 +1,143 @@
+/* sim_internal.h: kernels shared by the simulator's files (not public).
+ *
+ * Vectors are plain am_real triples and quaternions (w, x, y, z) passed by value, so that the
+ * compiler keeps them in registers. The beam kinematics live here because both the step (forces)
+ * and the energy diagnostics (strain energy) need exactly the same local frame. */
+#ifndef AMORPH_SIM_INTERNAL_H
+#define AMORPH_SIM_INTERNAL_H
+
+#include "amorph/sim.h"
+
+typedef struct { am_real x, y, z; } vec3;
+typedef struct { am_real w, x, y, z; } quat;
+
+static inline vec3 v3(am_real x, am_real y, am_real z) { vec3 r = {x, y, z}; return r; }
+static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 v3_scale(vec3 a, am_real k) { return v3(AM_MUL(a.x, k), AM_MUL(a.y, k), AM_MUL(a.z, k)); }
+static inline am_real v3_dot(vec3 a, vec3 b) { return AM_MUL(a.x, b.x) + AM_MUL(a.y, b.y) + AM_MUL(a.z, b.z); }
+static inline vec3 v3_cross(vec3 a, vec3 b)
+{
+    return v3(AM_MUL(a.y, b.z) - AM_MUL(a.z, b.y), AM_MUL(a.z, b.x) - AM_MUL(a.x, b.z), AM_MUL(a.x, b.y) - AM_MUL(a.y, b.x));
+}
+
+static inline quat qt(am_real w, am_real x, am_real y, am_real z) { quat r = {w, x, y, z}; return r; }
+static inline quat q_conj(quat a) { return qt(a.w, -a.x, -a.y, -a.z); }
+static inline quat q_mul(quat a, quat b)
+{
+    return qt(AM_MUL(a.w, b.w) - AM_MUL(a.x, b.x) - AM_MUL(a.y, b.y) - AM_MUL(a.z, b.z),
+              AM_MUL(a.w, b.x) + AM_MUL(a.x, b.w) + AM_MUL(a.y, b.z) - AM_MUL(a.z, b.y),
+              AM_MUL(a.w, b.y) - AM_MUL(a.x, b.z) + AM_MUL(a.y, b.w) + AM_MUL(a.z, b.x),
+              AM_MUL(a.w, b.z) + AM_MUL(a.x, b.y) - AM_MUL(a.y, b.x) + AM_MUL(a.z, b.w));
+}
+/* rotates v by unit quaternion q: v + w t + u x t with u = (x, y, z), t = 2 u x v */
+static inline vec3 q_rot(quat q, vec3 v)
+{
+    vec3 u = v3(q.x, q.y, q.z);
+    vec3 t = v3_cross(u, v);
+    t = v3_add(t, t);
+    return v3_add(v3_add(v, v3_scale(t, q.w)), v3_cross(u, t));
+}
+/* rotates v by the inverse of unit quaternion q */
+static inline vec3 q_rot_inv(quat q, vec3 v) { return q_rot(q_conj(q), v); }
+
+/* rotation vector (axis * angle) of a unit quaternion without trigonometry: with s = |u| =
+ * sin(angle/2), angle = 2 asin(s); asin(s)/s by its series in s^2 (error below 3e-4 at 90
+ * degrees of relative rotation, the largest a link sees in practice). */
+static inline vec3 q_rotvec(quat q)
+{
+    am_real sg = q.w < AM_R(0) ? AM_R(-2) : AM_R(2);
+    am_real s2 = AM_MUL(q.x, q.x) + AM_MUL(q.y, q.y) + AM_MUL(q.z, q.z);
+    am_real f = AM_R(0.017352764423076923); /* 231/13312 */
+    f = AM_MUL(f, s2) + AM_R(0.022372159090909091); /* 63/2816 */
+    f = AM_MUL(f, s2) + AM_R(0.030381944444444444); /* 35/1152 */
+    f = AM_MUL(f, s2) + AM_R(0.044642857142857144); /* 5/112 */
+    f = AM_MUL(f, s2) + AM_R(0.075);                /* 3/40 */
+    f = AM_MUL(f, s2) + AM_R(0.16666666666666666);  /* 1/6 */
+    f = AM_MUL(f, s2) + AM_R(1);
+    f = AM_MUL(f, sg);
+    return v3(AM_MUL(q.x, f), AM_MUL(q.y, f), AM_MUL(q.z, f));
+}
+
+/* unit quaternion of a small rotation vector r (|r| well below 1 rad): half angle a = |r|/2,
+ * cos a and sin(a)/a by their series; the caller renormalises the product */
+static inline quat q_from_rotvec(vec3 r)
+{
+    am_real a2 = AM_MUL(AM_R(0.25), v3_dot(r, r)); /* (|r|/2)^2 */
+    am_real c = AM_R(1) - AM_MUL(a2, AM_R(0.5) - AM_MUL(a2, AM_R(1.0 / 24.0) - AM_MUL(a2, AM_R(1.0 / 720.0))));
+    am_real sa = AM_R(1) - AM_MUL(a2, AM_R(1.0 / 6.0) - AM_MUL(a2, AM_R(1.0 / 120.0) - AM_MUL(a2, AM_R(1.0 / 5040.0))));
+    am_real k = AM_MUL(AM_R(0.5), sa);
+    return qt(c, AM_MUL(r.x, k), AM_MUL(r.y, k), AM_MUL(r.z, k));
+}
+
+/* world <-> link-local axis permutation: the link's axis becomes +x (cyclic, a proper rotation) */
+static inline vec3 to_local(vec3 v, int axis)
+{
+    return axis == 0 ? v : (axis == 1 ? v3(v.y, v.z, v.x) : v3(v.z, v.x, v.y));
+}
+static inline vec3 from_local(vec3 v, int axis)
+{
+    return axis == 0 ? v : (axis == 1 ? v3(v.z, v.x, v.y) : v3(v.y, v.z, v.x));
+}
+
+/* the kinematics of one link in its local frame: the positive voxel at (x, y, z) from the
+ * negative one, end rotation vectors t1 (negative) and t2 (positive); rot is the extra frame
+ * rotation of the large-angle treatment (identity when small) */
+typedef struct link_kin {
+    vec3 d;        /* world offset x_pos - x_neg */
+    vec3 p;        /* local offset */
+    vec3 t1, t2;   /* local end rotations */
+    quat qn;       /* orientation of the negative voxel */
+    quat qr;       /* rotation of the positive voxel relative to the negative one (local axes) */
+    quat rot;      /* large-angle frame rotation (local) */
+} link_kin;
+
+static inline int link_axis(const am_model* m, int l) { return l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2); }
+
+/* large-angle thresholds (Voxelyze's hysteresis): on above, off below */
+#define AM_LA_ON_LAT AM_R(0.06)
+#define AM_LA_OFF_LAT AM_R(0.05)
+#define AM_LA_ON_AX AM_R(0.6)
+#define AM_LA_OFF_AX AM_R(0.5)
+
+/* computes the small-angle local frame; returns it in k */
+static inline void link_kin_small(const am_state* s, int a, int b, int axis, link_kin* k)
+{
+    quat qn = qt(s->q[0][a], s->q[1][a], s->q[2][a], s->q[3][a]);
+    quat qp = qt(s->q[0][b], s->q[1][b], s->q[2][b], s->q[3][b]);
+    k->d = v3(s->x[0][b] - s->x[0][a], s->x[1][b] - s->x[1][a], s->x[2][b] - s->x[2][a]);
+    k->qn = qn;
+    k->p = to_local(q_rot_inv(qn, k->d), axis);
+    quat qr = q_mul(q_conj(qn), qp);
+    vec3 rv = to_local(v3(qr.x, qr.y, qr.z), axis);
+    k->qr = qt(qr.w, rv.x, rv.y, rv.z);
+    k->t2 = q_rotvec(k->qr);
+    k->t1 = v3(0, 0, 0);
+    k->rot = qt(1, 0, 0, 0);
+}
+
+/* turns a small-angle frame into the large-angle one: rotate so the positive voxel lies on +x */
+static inline void link_kin_large(link_kin* k)
+{
+    am_real len = am_sqrt(v3_dot(k->p, k->p));
+    if (!(len > AM_R(0))) return;
+    vec3 u = v3_scale(k->p, AM_DIV(AM_R(1), len));
+    /* shortest rotation taking u onto +x: (1 + ux, u x e_x) normalised */
+    am_real wq = AM_R(1) + u.x;
+    if (wq < AM_R(1e-6)) wq = AM_R(1e-6); /* a link turned inside out: any axis will do */
+    am_real n = am_sqrt(AM_MUL(wq, wq) + AM_MUL(u.y, u.y) + AM_MUL(u.z, u.z));
+    am_real inv = AM_DIV(AM_R(1), n);
+    quat r = qt(AM_MUL(wq, inv), AM_R(0), AM_MUL(u.z, inv), AM_MUL(-u.y, inv));
+    /* in the new frame the negative end is turned by r and the positive one by r * qr */
+    k->t1 = q_rotvec(r);
+    k->t2 = q_rotvec(q_mul(r, k->qr));
+    k->p = v3(len, 0, 0);
+    k->rot = r;
+}
+
+/* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
+am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
+/* self-collision forces into s->fc, rebuilding the candidate list when needed (sim_collide.c) */
+void am_sim_collide(const am_model* m, am_state* s);
+
+#endif

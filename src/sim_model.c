@@ -1,0 +1,269 @@
+/* Building the immutable model from a lattice, and resetting a state to rest.
+ *
+ * Voxels are numbered in lattice cell order (x fastest, then y, then z); links are grouped by
+ * axis (all x-links, then y, then z), each group in cell order of its negative voxel, so the link
+ * loop can use a fixed axis permutation per group. Every constant a step needs (masses, inverse
+ * inertias, beam stiffnesses, damping coefficients, contact stiffness) is computed here once. */
+#include "sim_internal.h"
+#include "amorph/mathx.h"
+
+#include <string.h>
+
+am_env am_default_env(void)
+{
+    am_env e;
+    memset(&e, 0, sizeof e);
+    e.gravity = AM_R(9.80665);
+    e.floor = 1;
+    e.collisions = 1;
+    e.cte_mode = AM_CTE_VOLUMETRIC;
+    e.temp_base = AM_R(0);
+    e.temp_amplitude = AM_R(30);
+    e.period_steps = 500;
+    e.dt_frac = AM_R(0.5);
+    e.lift = AM_R(0);
+    e.zeta_internal_scale = AM_R(1);
+    e.zeta_global_scale = AM_R(1);
+    return e;
+}
+
+static am_status check_material(const am_material* mt, int k, char* err, int errsz)
+{
+    if (!(mt->E > AM_R(0)) || !am_finite(mt->E))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): E must be a positive number of Pa", k + 1, mt->name);
+    if (!(mt->density > AM_R(0)) || !am_finite(mt->density))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): density must be positive", k + 1, mt->name);
+    if (!(mt->poisson >= AM_R(0) && mt->poisson < AM_R(0.5)))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): Poisson ratio must be in [0, 0.5)", k + 1, mt->name);
+    if (!am_finite(mt->cte) || !am_finite(mt->phase))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): CTE and phase must be finite", k + 1, mt->name);
+    if (!(mt->mu_static >= AM_R(0)) || !(mt->mu_kinetic >= AM_R(0)) || !am_finite(mt->mu_static) || !am_finite(mt->mu_kinetic))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): friction coefficients must be >= 0", k + 1, mt->name);
+    if (!(mt->zeta_internal >= AM_R(0)) || !(mt->zeta_global >= AM_R(0)) || !(mt->zeta_collision >= AM_R(0)) ||
+        !am_finite(mt->zeta_internal) || !am_finite(mt->zeta_global) || !am_finite(mt->zeta_collision))
+        return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): damping ratios must be >= 0", k + 1, mt->name);
+    return AM_OK;
+}
+
+static am_status check_env(const am_env* e, char* err, int errsz)
+{
+    if (!(e->gravity >= AM_R(0)) || !am_finite(e->gravity))
+        return am_fail(err, errsz, AM_ERR_RANGE, "gravity must be >= 0 m/s^2");
+    if (e->period_steps < 1) return am_fail(err, errsz, AM_ERR_RANGE, "period_steps must be >= 1");
+    if (!(e->dt_frac > AM_R(0)) || !am_finite(e->dt_frac))
+        return am_fail(err, errsz, AM_ERR_RANGE, "dt_frac must be positive");
+    if (!am_finite(e->temp_base) || !am_finite(e->temp_amplitude) || !am_finite(e->lift) || e->lift < AM_R(0))
+        return am_fail(err, errsz, AM_ERR_RANGE, "temperatures and lift must be finite (lift >= 0)");
+    if (!(e->zeta_internal_scale >= AM_R(0)) || !(e->zeta_global_scale >= AM_R(0)))
+        return am_fail(err, errsz, AM_ERR_RANGE, "damping scales must be >= 0");
+    if (e->cte_mode != AM_CTE_VOLUMETRIC && e->cte_mode != AM_CTE_LINEAR)
+        return am_fail(err, errsz, AM_ERR_RANGE, "unknown CTE convention %d", e->cte_mode);
+    return AM_OK;
+}
+
+am_real am_sim_scale(int cte_mode, am_real cte, am_real T)
+{
+    am_real arg = AM_R(1) + AM_MUL(cte, T);
+    if (arg < AM_R(0.01)) arg = AM_R(0.01); /* a voxel never shrinks to nothing */
+    return cte_mode == AM_CTE_LINEAR ? arg : am_cbrt(arg);
+}
+
+am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
+{
+    am_status st;
+    if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice %d x %d x %d is outside 1..%d per side", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
+    if (lat->palette.count < 1 || lat->palette.count > AM_MAX_MATERIALS)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "palette of %d materials (1..%d)", lat->palette.count, AM_MAX_MATERIALS);
+    if (!(lat->voxel_size > AM_R(0)) || !am_finite(lat->voxel_size))
+        return am_fail(err, errsz, AM_ERR_RANGE, "voxel size must be positive");
+    if ((st = check_env(env, err, errsz)) != AM_OK) return st;
+    for (int k = 0; k < lat->palette.count; k++)
+        if ((st = check_material(&lat->palette.mat[k], k, err, errsz)) != AM_OK) return st;
+
+    const int nx = lat->nx, ny = lat->ny, nz = lat->nz, ncell = nx * ny * nz;
+    const am_real L = lat->voxel_size;
+    m->env = *env;
+    m->palette = lat->palette;
+    m->nx = nx;
+    m->ny = ny;
+    m->nz = nz;
+    m->L = L;
+
+    /* voxels, in cell order; vid maps cell -> voxel */
+    int32_t* vid = m->cell_voxel;
+    int nv = 0, kmin = nz;
+    for (int c = 0; c < ncell; c++) {
+        int id = lat->cell[c];
+        vid[c] = -1;
+        if (!id) continue;
+        if (id > lat->palette.count)
+            return am_fail(err, errsz, AM_ERR_RANGE, "cell %d holds material %d, the palette has %d", c, id, lat->palette.count);
+        vid[c] = nv;
+        m->cell[nv] = c;
+        m->mat[nv] = (uint8_t)(id - 1);
+        nv++;
+        int z = c / (nx * ny);
+        if (z < kmin) kmin = z;
+    }
+    if (nv == 0) return am_fail(err, errsz, AM_ERR_EMPTY, "the lattice has no voxel");
+    m->nv = nv;
+
+    for (int i = 0; i < nv; i++) {
+        const am_material* mt = &lat->palette.mat[m->mat[i]];
+        int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
+        m->x0[0][i] = AM_MUL(AM_R(x) + AM_R(0.5), L);
+        m->x0[1][i] = AM_MUL(AM_R(y) + AM_R(0.5), L);
+        m->x0[2][i] = AM_MUL(AM_R(z - kmin) + AM_R(0.5), L) + env->lift;
+        am_real mass = AM_MUL(mt->density, AM_MUL(L, AM_MUL(L, L)));
+        am_real inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
+        m->mass[i] = mass;
+        m->fixed[i] = (uint8_t)(mt->fixed != 0);
+        m->inv_mass[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
+        m->inv_inertia[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
+        am_real EL = AM_MUL(mt->E, L), EL3 = AM_MUL(EL, AM_MUL(L, L));
+        am_real zg = AM_MUL(mt->zeta_global, env->zeta_global_scale);
+        m->c_glob_t[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
+        m->c_glob_r[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
+        m->k_floor[i] = AM_MUL(AM_R(2), EL);
+        m->c_col[i] = AM_MUL(AM_MUL(AM_R(2), mt->zeta_collision), am_sqrt(AM_MUL(mass, EL)));
+        m->mu_s[i] = mt->mu_static;
+        m->mu_k[i] = mt->mu_kinetic;
+    }
+
+    /* links grouped by axis */
+    int nl = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        for (int i = 0; i < nv; i++) {
+            int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
+            int nc;
+            if (axis == 0) nc = x + 1 < nx ? c + 1 : -1;
+            else if (axis == 1) nc = y + 1 < ny ? c + nx : -1;
+            else nc = z + 1 < nz ? c + nx * ny : -1;
+            if (nc < 0 || vid[nc] < 0) continue;
+            if (nl >= AM_MAX_LINKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "more than %d links", AM_MAX_LINKS);
+            int j = vid[nc];
+            const am_material* ma = &lat->palette.mat[m->mat[i]];
+            const am_material* mb = &lat->palette.mat[m->mat[j]];
+            am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(ma->E, mb->E)), ma->E + mb->E); /* halves in series */
+            am_real nu = AM_MUL(AM_R(0.5), ma->poisson + mb->poisson);
+            am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
+            m->lneg[nl] = i;
+            m->lpos[nl] = j;
+            m->k_ax[nl] = AM_MUL(E, L2);
+            m->a2[nl] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
+            m->b1[nl] = AM_MUL(E, L);
+            m->b2[nl] = AM_MUL(AM_R(0.5), AM_MUL(E, L2));
+            m->b3[nl] = AM_DIV(AM_MUL(E, L3), AM_R(6));
+            /* internal damping as a fraction of the critical damping of the link's own two-body
+             * modes: reduced mass with the axial stiffness E L, reduced inertia with the bending
+             * stiffness b3 */
+            am_real mu = AM_DIV(AM_MUL(m->mass[i], m->mass[j]), m->mass[i] + m->mass[j]);
+            am_real mu_I = AM_DIV(AM_MUL(mu, L2), AM_R(6));
+            am_real zi = AM_MUL(AM_MUL(AM_R(0.5), ma->zeta_internal + mb->zeta_internal), env->zeta_internal_scale);
+            m->c_t[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));
+            m->c_r[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu_I, m->b3[nl])));
+            nl++;
+        }
+        m->axis_end[axis] = nl;
+    }
+    m->nl = nl;
+
+    /* slots: +x,-x,+y,-y,+z,-z; the voxel is the negative end of its + links */
+    for (int d = 0; d < 6; d++)
+        for (int i = 0; i < nv; i++) {
+            m->slot[d][i] = nl;
+            m->nbr[d][i] = -1;
+        }
+    for (int l = 0; l < nl; l++) {
+        int axis = l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2);
+        m->slot[2 * axis][m->lneg[l]] = l;
+        m->slot[2 * axis + 1][m->lpos[l]] = l;
+        m->nbr[2 * axis][m->lneg[l]] = m->lpos[l];
+        m->nbr[2 * axis + 1][m->lpos[l]] = m->lneg[l];
+    }
+    for (int i = 0; i < nv; i++) {
+        int links = 0;
+        m->c_diag_t[i] = m->c_diag_r[i] = AM_R(0);
+        for (int d = 0; d < 6; d++) {
+            int l = m->slot[d][i];
+            if (l == nl) continue;
+            links++;
+            /* the link's damping of this voxel's own velocity and spin (the spin through the lever
+             * of half a link: c L^2 / 4 across the link) */
+            m->c_diag_t[i] += m->c_t[l];
+            m->c_diag_r[i] += m->c_r[l] + AM_MUL(m->c_t[l], AM_MUL(AM_R(0.25), AM_MUL(L, L)));
+        }
+        m->surface[i] = (uint8_t)(links < 6);
+    }
+
+    /* actuation per material, and the largest scale it can reach */
+    am_real tmax = am_fabs(env->temp_base) + am_fabs(env->temp_amplitude);
+    m->max_scale = AM_R(1);
+    m->any_cte = 0;
+    for (int k = 0; k < lat->palette.count; k++) {
+        m->mat_cte[k] = lat->palette.mat[k].cte;
+        m->mat_phase[k] = lat->palette.mat[k].phase;
+        if (m->mat_cte[k] != AM_R(0)) m->any_cte = 1;
+        m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], tmax));
+        m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], -tmax));
+    }
+    m->coll_range = AM_MUL(AM_MUL(AM_R(1.25), m->max_scale), L);
+
+    /* divergence bound: ten times the fastest sound speed of the palette */
+    am_real c2 = AM_R(0);
+    for (int k = 0; k < lat->palette.count; k++)
+        c2 = am_max(c2, AM_DIV(lat->palette.mat[k].E, lat->palette.mat[k].density));
+    m->max_speed = AM_MUL(AM_R(10), am_sqrt(c2));
+    m->dt_rec = am_dt_analytic(m);
+    return AM_OK;
+}
+
+am_real am_dt_analytic(const am_model* m)
+{
+    am_real wmax = AM_R(0);
+    for (int l = 0; l < m->nl; l++) {
+        am_real a1 = AM_DIV(m->k_ax[l], m->L); /* E L */
+        am_real mm = am_min(m->mass[m->lneg[l]], m->mass[m->lpos[l]]);
+        wmax = am_max(wmax, AM_DIV(a1, mm));
+    }
+    for (int i = 0; i < m->nv; i++) /* a lone voxel on the floor: its contact spring */
+        wmax = am_max(wmax, AM_DIV(AM_MUL(AM_R(0.5), m->k_floor[i]), m->mass[i]));
+    return AM_DIV(AM_R(1), AM_MUL(AM_MUL(AM_R(2), AM_PI), am_sqrt(wmax)));
+}
+
+void am_state_reset(const am_model* m, am_state* s)
+{
+    const int nv = m->nv, nl = m->nl;
+    s->step = 0;
+    s->t = AM_R(0);
+    s->dt = AM_MUL(m->env.dt_frac, m->dt_rec);
+    s->actuate = 0;
+    s->actuation_step0 = 0;
+    s->diverged = 0;
+    s->diverge_step = -1;
+    s->pairs_overflow = 0;
+    s->rebuilds = 0;
+    s->npairs = -1; /* the first step builds the collision list */
+    s->max_npairs = 0;
+    for (int i = 0; i < nv; i++) {
+        for (int c = 0; c < 3; c++) {
+            s->x[c][i] = m->x0[c][i];
+            s->p[c][i] = s->h[c][i] = s->v[c][i] = s->w[c][i] = AM_R(0);
+            s->fext[c][i] = s->mext[c][i] = s->fc[c][i] = AM_R(0);
+            s->xref[c][i] = m->x0[c][i];
+        }
+        s->q[0][i] = AM_R(1);
+        s->q[1][i] = s->q[2][i] = s->q[3][i] = AM_R(0);
+        s->s[i] = AM_R(1);
+        /* voxels start stuck where they touch the floor */
+        s->contact[i] = (uint8_t)(m->env.floor && m->x0[2][i] <= AM_MUL(AM_R(0.5), m->L) ? 1 : 0);
+    }
+    for (int l = 0; l <= nl; l++) {
+        s->rest[l] = m->L;
+        s->inv_rest[l] = AM_DIV(AM_R(1), m->L);
+        s->large[l] = 0;
+        s->strain[l] = AM_R(0);
+        for (int c = 0; c < 3; c++) s->fn[c][l] = s->mn[c][l] = s->mp[c][l] = AM_R(0);
+    }
+}

@@ -1,0 +1,219 @@
+/* amorph sim and amorph bench. */
+#include "cmd.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static am_lattice g_lat;
+static am_model g_model;
+static am_state g_state;
+
+static int parse_long(const char* s, long lo, long hi, long* out)
+{
+    char* end;
+    if (!s || !*s) return 0;
+    long v = strtol(s, &end, 10);
+    if (*end || v < lo || v > hi) return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_real(const char* s, double lo, double hi, double* out)
+{
+    char* end;
+    if (!s || !*s) return 0;
+    double v = strtod(s, &end);
+    if (*end || !(v >= lo && v <= hi)) return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_onoff(const char* s, int* out)
+{
+    if (s && !strcmp(s, "on")) *out = 1;
+    else if (s && !strcmp(s, "off")) *out = 0;
+    else return 0;
+    return 1;
+}
+
+static const char sim_help[] =
+    "usage: amorph sim FILE | --scene NAME [options]\n"
+    "Simulates one robot in the seed's environment (relaxation, then actuation cycles) and prints\n"
+    "its fitness and diagnostics. FILE is a lattice (.lattice) or a genome; NAME a built-in scene\n"
+    "(cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "  --cycles N            actuation cycles (10)\n"
+    "  --period-steps N      actuation period in time steps (500)\n"
+    "  --amplitude DEG       temperature amplitude (30)\n"
+    "  --dt-search           the seed's empirical time step search\n"
+    "  --dt SECONDS          a fixed time step instead\n"
+    "  --dt-frac F           time step as a fraction of the analytic one (0.5)\n"
+    "  --collisions on|off   self-collision (on)\n"
+    "  --floor on|off        the floor (on)\n"
+    "  --gravity G           m/s^2 (9.80665)\n"
+    "  --cte linear|volume   CTE convention (volume, the seed's)\n"
+    "  --fitness horizontal|x|3d   centre of mass displacement measured (horizontal)\n"
+    "  --relax-max N         relaxation steps at most (4000)\n"
+    "  --json                one JSON object instead of name = value lines\n";
+
+int cmd_sim(int argc, char** argv)
+{
+    const char* file = 0;
+    int is_scene = 0, json = 0;
+    double dt_fixed = 0;
+    am_env env = am_default_env();
+    am_eval_def def = am_default_eval();
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : 0;
+        long n;
+        double r;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(sim_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--json")) json = 1;
+        else if (!strcmp(a, "--dt-search")) def.dt_search = 1;
+        else if (!strcmp(a, "--scene")) {
+            if (!v) return tool_usage_error("sim: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
+            file = v, is_scene = 1, i++;
+        } else if (!strcmp(a, "--cycles")) {
+            if (!parse_long(v, 0, 100000, &n)) return tool_usage_error("sim: --cycles needs a whole number 0..100000");
+            def.cycles = (int)n, i++;
+        } else if (!strcmp(a, "--period-steps")) {
+            if (!parse_long(v, 1, 10000000, &n)) return tool_usage_error("sim: --period-steps needs a whole number 1..10000000");
+            env.period_steps = (int)n, i++;
+        } else if (!strcmp(a, "--relax-max")) {
+            if (!parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
+            def.relax_max_steps = n, i++;
+            if (def.relax_min_steps > n) def.relax_min_steps = n;
+        } else if (!strcmp(a, "--amplitude")) {
+            if (!parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
+            env.temp_amplitude = (am_real)r, i++;
+        } else if (!strcmp(a, "--dt")) {
+            if (!parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
+            dt_fixed = r, i++;
+        } else if (!strcmp(a, "--dt-frac")) {
+            if (!parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
+            env.dt_frac = (am_real)r, i++;
+        } else if (!strcmp(a, "--gravity")) {
+            if (!parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
+            env.gravity = (am_real)r, i++;
+        } else if (!strcmp(a, "--collisions")) {
+            if (!parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
+            i++;
+        } else if (!strcmp(a, "--floor")) {
+            if (!parse_onoff(v, &env.floor)) return tool_usage_error("sim: --floor takes on or off");
+            i++;
+        } else if (!strcmp(a, "--cte")) {
+            if (v && !strcmp(v, "linear")) env.cte_mode = AM_CTE_LINEAR;
+            else if (v && !strcmp(v, "volume")) env.cte_mode = AM_CTE_VOLUMETRIC;
+            else return tool_usage_error("sim: --cte takes linear or volume");
+            i++;
+        } else if (!strcmp(a, "--fitness")) {
+            if (v && !strcmp(v, "horizontal")) def.fitness = AM_FIT_HORIZONTAL;
+            else if (v && !strcmp(v, "x")) def.fitness = AM_FIT_PLUS_X;
+            else if (v && !strcmp(v, "3d")) def.fitness = AM_FIT_3D;
+            else return tool_usage_error("sim: --fitness takes horizontal, x or 3d");
+            i++;
+        } else if (a[0] == '-' && a[1]) {
+            return tool_usage_error("sim: unknown option '%s' (amorph sim --help)", a);
+        } else {
+            if (file) return tool_usage_error("sim: one robot at a time ('%s' and '%s')", file, a);
+            file = a;
+        }
+    }
+    if (!file) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
+    if (def.dt_search && dt_fixed > 0) return tool_usage_error("sim: --dt and --dt-search exclude each other");
+
+    char err[AM_ERR_MAX];
+    am_status st = tool_load_robot(file, is_scene, &g_lat, err, sizeof err);
+    if (st != AM_OK) return tool_usage_error("%s", err);
+    st = am_model_build(&g_model, &g_lat, &env, err, sizeof err);
+    if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
+    if (dt_fixed > 0) g_model.env.dt_frac = (am_real)(dt_fixed / (double)g_model.dt_rec);
+
+    am_result res;
+    double t0 = am_port_now();
+    am_evaluate(&g_model, &g_state, &def, &res);
+    double wall = am_port_now() - t0;
+    if (json) {
+        printf("{\"robot\": \"%s\", \"fitness\": %.9g, \"dx\": %.9g, \"dy\": %.9g, \"dz\": %.9g, \"voxels\": %d, "
+               "\"links\": %d, \"dt\": %.9g, \"steps\": %ld, \"relax_steps\": %ld, \"move_steps\": %ld, "
+               "\"diverged\": %d, \"settled\": %d, \"sim_seconds\": %.9g, \"wall_seconds\": %.6f, "
+               "\"collision_rebuilds\": %ld, \"max_pairs\": %d, \"hash\": \"%016llx\"}\n",
+               file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
+               res.move_steps, res.diverged, res.settled, res.sim_seconds, wall, res.rebuilds, res.max_pairs,
+               (unsigned long long)res.hash);
+    } else {
+        printf("robot = %s\nfitness = %.9g\ndx = %.9g\ndy = %.9g\ndz = %.9g\nvoxels = %d\nlinks = %d\ndt = %.9g\n"
+               "steps = %ld\nrelax_steps = %ld\nmove_steps = %ld\ndiverged = %d\nsettled = %d\nsim_seconds = %.9g\n"
+               "wall_seconds = %.6f\ncollision_rebuilds = %ld\nmax_pairs = %d\nhash = %016llx\n",
+               file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
+               res.move_steps, res.diverged, res.settled, res.sim_seconds, wall, res.rebuilds, res.max_pairs,
+               (unsigned long long)res.hash);
+    }
+    return 0;
+}
+
+/* times `steps` actuated steps of one scene after a short warm-up */
+static int bench_one(const char* scene, long steps, int collisions)
+{
+    char err[AM_ERR_MAX];
+    am_env env = am_default_env();
+    env.collisions = collisions;
+    if (am_scene_build(&g_lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    if (am_model_build(&g_model, &g_lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    am_state_reset(&g_model, &g_state);
+    g_state.actuate = 1;
+    am_steps(&g_model, &g_state, steps / 10 + 1); /* warm-up: caches, first collision build */
+    long r0 = g_state.rebuilds;
+    double t0 = am_port_now();
+    long done = am_steps(&g_model, &g_state, steps);
+    double wall = am_port_now() - t0;
+    double vps = (double)done * g_model.nv / (wall > 0 ? wall : 1e-9);
+    printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld wall_s=%.4f voxel_steps_per_s=%.4g "
+           "ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
+           scene, collisions ? "on" : "off", g_model.nv, g_model.nl, done, wall, vps, 1e9 / vps,
+           g_state.rebuilds - r0, g_state.npairs, g_state.diverged);
+    fflush(stdout);
+    return 0;
+}
+
+static const char bench_help[] =
+    "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off]\n"
+    "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
+    "cube:10, self-collision off and on, then the genotype expression times.\n";
+
+int cmd_bench(int argc, char** argv)
+{
+    const char* scene = 0;
+    long steps = 2000, n;
+    int coll = -1;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(bench_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--scene") && v) scene = v, i++;
+        else if (!strcmp(a, "--steps")) {
+            if (!parse_long(v, 1, 100000000, &n)) return tool_usage_error("bench: --steps needs a whole number >= 1");
+            steps = n, i++;
+        } else if (!strcmp(a, "--collisions")) {
+            if (!parse_onoff(v, &coll)) return tool_usage_error("bench: --collisions takes on or off");
+            i++;
+        } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
+    }
+    printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+    if (scene) {
+        if (coll != 0 && bench_one(scene, steps, 1)) return 2;
+        if (coll != 1 && bench_one(scene, steps, 0)) return 2;
+        return 0;
+    }
+    const char* scenes[2] = {AM_MAX_DIM >= 20 ? "sphere:20" : "sphere:8", AM_MAX_DIM >= 10 ? "cube:10" : "cube:8"};
+    for (int k = 0; k < 2; k++)
+        for (int c = 0; c <= 1; c++)
+            if ((coll < 0 || coll == c) && bench_one(scenes[k], steps, c)) return 2;
+    tool_bench_express();
+    return 0;
+}
