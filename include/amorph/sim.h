@@ -124,7 +124,7 @@ typedef struct am_state {
     /* per link (nl + 1; index nl stays zero) */
     am_real inv_rest[AM_MAX_LINKS + 1];  /* 1 / current rest length, 1/m */
     am_real rest[AM_MAX_LINKS + 1];      /* current rest length, m */
-    uint8_t large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
+    int32_t large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
     am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
     am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
     am_real mp[3][AM_MAX_LINKS + 1];     /* moment on the positive voxel, world, N m */
