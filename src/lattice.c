@@ -29,6 +29,7 @@ static am_material variant(const char* name, am_real E, am_real rho, am_real cte
                            uint8_t r, uint8_t g, uint8_t b, int fixed)
 {
     am_material m = am_default_material();
+    memset(m.name, 0, sizeof m.name); /* no stale bytes after the NUL: materials hash and compare whole */
     snprintf(m.name, sizeof m.name, "%s", name);
     m.E = E;
     m.density = rho;
