@@ -20,7 +20,7 @@ am_env am_default_env(void)
     e.temp_base = AM_R(0);
     e.temp_amplitude = AM_R(30);
     e.period_steps = 500;
-    e.dt_frac = AM_R(0.5);
+    e.dt_frac = AM_R(0.3);
     e.lift = AM_R(0);
     e.zeta_internal_scale = AM_R(1);
     e.zeta_global_scale = AM_R(1);
@@ -184,16 +184,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     }
     for (int i = 0; i < nv; i++) {
         int links = 0;
-        m->c_diag_t[i] = m->c_diag_r[i] = AM_R(0);
-        for (int d = 0; d < 6; d++) {
-            int l = m->slot[d][i];
-            if (l == nl) continue;
-            links++;
-            /* the link's damping of this voxel's own velocity and spin (the spin through the lever
-             * of half a link: c L^2 / 4 across the link) */
-            m->c_diag_t[i] += m->c_t[l];
-            m->c_diag_r[i] += m->c_r[l] + AM_MUL(m->c_t[l], AM_MUL(AM_R(0.25), AM_MUL(L, L)));
-        }
+        for (int d = 0; d < 6; d++) links += m->slot[d][i] != nl;
         m->surface[i] = (uint8_t)(links < 6);
     }
 

@@ -174,21 +174,16 @@ static am_real integrate(const am_model* m, am_state* s)
         }
         const am_real mass = m->mass[i];
         F.z -= AM_MUL(mass, g);
-        /* damping of the voxel's own motion (its share of the links' internal damping, plus global
-         * damping) is integrated implicitly: p' = (p + dt (F + C v)) / (1 + C dt / m), where F
-         * already holds -C v explicitly. Unconditionally stable, unchanged at rest. */
-        const am_real ct = m->c_diag_t[i], cr = m->c_diag_r[i];
-        F = v3_add(F, v3(AM_MUL(ct, s->v[0][i]), AM_MUL(ct, s->v[1][i]), AM_MUL(ct, s->v[2][i])));
-        M = v3_add(M, v3(AM_MUL(cr, s->w[0][i]), AM_MUL(cr, s->w[1][i]), AM_MUL(cr, s->w[2][i])));
+        const am_real cg = m->c_glob_t[i], cgr = m->c_glob_r[i];
+        F = v3_sub(F, v3(AM_MUL(cg, s->v[0][i]), AM_MUL(cg, s->v[1][i]), AM_MUL(cg, s->v[2][i])));
+        M = v3_sub(M, v3(AM_MUL(cgr, s->w[0][i]), AM_MUL(cgr, s->w[1][i]), AM_MUL(cgr, s->w[2][i])));
 
         int stuck = 0;
         if (floor_on) stuck = floor_contact(m, s, i, &F);
 
         /* p += F dt; x += p dt / m (a stuck voxel keeps no horizontal momentum) */
         const am_real im = m->inv_mass[i];
-        const am_real kt = AM_DIV(AM_R(1), AM_R(1) + AM_MUL(AM_MUL(ct + m->c_glob_t[i], dt), im));
-        am_real px = AM_MUL(s->p[0][i] + AM_MUL(F.x, dt), kt), py = AM_MUL(s->p[1][i] + AM_MUL(F.y, dt), kt);
-        am_real pz = AM_MUL(s->p[2][i] + AM_MUL(F.z, dt), kt);
+        am_real px = s->p[0][i] + AM_MUL(F.x, dt), py = s->p[1][i] + AM_MUL(F.y, dt), pz = s->p[2][i] + AM_MUL(F.z, dt);
         if (stuck) px = py = AM_R(0);
         if (m->fixed[i]) px = py = pz = AM_R(0);
         am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
@@ -198,11 +193,9 @@ static am_real integrate(const am_model* m, am_state* s)
         s->x[1][i] += AM_MUL(vy, dt);
         s->x[2][i] += AM_MUL(vz, dt);
 
-        /* h += M dt (with the same implicit damping); q = quat(w dt) q, renormalised */
+        /* h += M dt; q = quat(w dt) q, renormalised */
         const am_real ii = m->inv_inertia[i];
-        const am_real kr = AM_DIV(AM_R(1), AM_R(1) + AM_MUL(AM_MUL(cr + m->c_glob_r[i], dt), ii));
-        am_real hx = AM_MUL(s->h[0][i] + AM_MUL(M.x, dt), kr), hy = AM_MUL(s->h[1][i] + AM_MUL(M.y, dt), kr);
-        am_real hz = AM_MUL(s->h[2][i] + AM_MUL(M.z, dt), kr);
+        am_real hx = s->h[0][i] + AM_MUL(M.x, dt), hy = s->h[1][i] + AM_MUL(M.y, dt), hz = s->h[2][i] + AM_MUL(M.z, dt);
         if (m->fixed[i]) hx = hy = hz = AM_R(0);
         vec3 w = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
         s->h[0][i] = hx; s->h[1][i] = hy; s->h[2][i] = hz;

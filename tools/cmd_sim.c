@@ -47,7 +47,7 @@ static const char sim_help[] =
     "  --amplitude DEG       temperature amplitude (30)\n"
     "  --dt-search           the seed's empirical time step search\n"
     "  --dt SECONDS          a fixed time step instead\n"
-    "  --dt-frac F           time step as a fraction of the analytic one (0.5)\n"
+    "  --dt-frac F           time step as a fraction of the analytic one (0.3)\n"
     "  --collisions on|off   self-collision (on)\n"
     "  --floor on|off        the floor (on)\n"
     "  --gravity G           m/s^2 (9.80665)\n"

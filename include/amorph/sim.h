@@ -62,8 +62,6 @@ typedef struct am_model {
     am_real inv_inertia[AM_MAX_VOXELS];   /* 1/(kg m^2), 0 for fixed voxels */
     am_real c_glob_t[AM_MAX_VOXELS];      /* global damping, N s/m */
     am_real c_glob_r[AM_MAX_VOXELS];      /* global damping, N m s */
-    am_real c_diag_t[AM_MAX_VOXELS];      /* own share of internal translational damping (sum over links), N s/m */
-    am_real c_diag_r[AM_MAX_VOXELS];      /* own share of internal rotational damping, N m s */
     am_real k_floor[AM_MAX_VOXELS];       /* floor/contact stiffness 2 E L, N/m */
     am_real c_col[AM_MAX_VOXELS];         /* collision damping, N s/m */
     am_real mu_s[AM_MAX_VOXELS], mu_k[AM_MAX_VOXELS]; /* floor friction */
