@@ -7,6 +7,8 @@
 #include "amorph/mathx.h"
 #include "amorph/rng.h"
 #include "amorph/lattice.h"
+#include "amorph/dct.h"
+#include "amorph/genotype.h"
 #include "amorph/sim.h"
 #include "amorph/port.h"
 #endif
