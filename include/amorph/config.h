@@ -20,8 +20,13 @@
 #define AM_MAX_VOXELS AM_MAX_CELLS                            /* filled cells */
 #define AM_MAX_LINKS (3 * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM - 1)) /* face pairs of a full box */
 #define AM_MAX_MATERIALS 16     /* palette entries; cell value 0 is empty, 1..16 a material */
-#define AM_MAX_PAIRS (12 * AM_MAX_VOXELS)  /* self-collision candidate pairs */
-#define AM_COLL_BUCKETS 4096    /* spatial hash buckets of the collision broad phase (power of 2) */
+#if defined(AM_PROFILE_BOARD)
+#define AM_MAX_PAIRS (6 * AM_MAX_VOXELS)   /* self-collision candidate pairs */
+#define AM_COLL_BUCKETS 256     /* spatial hash buckets of the collision broad phase (power of 2) */
+#else
+#define AM_MAX_PAIRS (12 * AM_MAX_VOXELS)
+#define AM_COLL_BUCKETS 4096
+#endif
 #define AM_NAME_MAX 24          /* material name, including the terminating NUL */
 #define AM_ERR_MAX 256          /* recommended size of an error message buffer */
 
