@@ -1,0 +1,339 @@
+/* amorph/genotype.h: level-set genotypes (DCT, CPPN, GMX) and their expression into voxel bodies.
+ *
+ * A genome describes one density field per material on a W x H x D workspace (docs/genotypes.md).
+ * Expression evaluates the fields, fills every cell whose density sum exceeds the threshold (0),
+ * gives it the material of highest density (argmax, ties to the lower index), and keeps only the
+ * largest face-connected piece. An empty body is a valid result (0 voxels, no error); the evolver
+ * gives it zero fitness.
+ *
+ * am_genome is a fixed-size tagged union, copyable by assignment (the evolver keeps a population
+ * of them). Every representation implements the same operations (am_geno_ops, below): a new one is
+ * one new source file, one member of the union and one line in the dispatch table.
+ *
+ * The distance used by deterministic crowding compares the expressed bodies, not the genes: see
+ * am_genome_distance. Randomness comes only from the caller's am_rng, consumed serially.
+ */
+#ifndef AMORPH_GENOTYPE_H
+#define AMORPH_GENOTYPE_H
+
+#include <stdint.h>
+#include "amorph/config.h"
+#include "amorph/dct.h"
+#include "amorph/lattice.h"
+#include "amorph/real.h"
+#include "amorph/rng.h"
+#include "amorph/status.h"
+
+/* ---- representations ---- */
+
+typedef enum am_repr { AM_REPR_NONE = 0, AM_REPR_DCT = 1, AM_REPR_CPPN = 2, AM_REPR_GMX = 3 } am_repr;
+#define AM_REPR_COUNT 4 /* one past the last am_repr */
+
+/* CPPN node functions: f(t) with t = xscale (input - offset); node output yscale f(t) */
+typedef enum am_cppn_fn {
+    AM_FN_SIGMOID = 0, /* 2 / (1 + e^-t) - 1, in (-1, 1) */
+    AM_FN_GAUSS = 1,   /* 2 e^(-t^2) - 1, in (-1, 1] */
+    AM_FN_SINE = 2,    /* sin t */
+    AM_FN_ABS = 3,     /* |t| */
+    AM_FN_LINEAR = 4,  /* t */
+    AM_FN_COUNT = 5
+} am_cppn_fn;
+
+/* value ranges (every init, mutation and parsed file stays inside them) */
+#define AM_DCT_AMP_MAX AM_R(1)        /* DCT amplitudes in [-1, 1] */
+#define AM_CPPN_OFFSET_MAX AM_R(1)    /* node offset in [-1, 1] (input units) */
+#define AM_CPPN_XSCALE_MAX AM_R(4)    /* node x scaling in [-4, 4] */
+#define AM_CPPN_YSCALE_MAX AM_R(2)    /* node y scaling in [-2, 2] */
+#define AM_CPPN_WEIGHT_MAX AM_R(2)    /* connection weight in [-2, 2] */
+#define AM_GMX_WEIGHT_MAX AM_R(1)     /* GMX point weight in [-1, 1] */
+#define AM_GMX_RADIUS_MIN AM_R(1)     /* GMX radius in [1, max(W, H, D) / 2] cells */
+#define AM_GMX_ISO AM_R(0.5)          /* GMX iso-level: fields are sum w g - AM_GMX_ISO / materials */
+#define AM_GENO_GAUSS_RANGE AM_R(16)  /* e^(-q) is taken as 0 for q > 16 (e^-16 = 1.1e-7) */
+#define AM_GENO_SIG_RANGE AM_R(16)    /* the sigmoid is taken as +-1 (to 1.1e-7) beyond |t| > 16 */
+
+/* DCT: a k x k x k amplitude matrix per material */
+typedef struct am_dct_genome {
+    int k;                                   /* amplitudes per axis, 1..AM_MAX_DCT_K, <= each side */
+    am_real amp[AM_MAX_GENO_MATERIALS][AM_MAX_DCT_K * AM_MAX_DCT_K * AM_MAX_DCT_K];
+                                             /* (materials x k^3) in [-1, 1] at u + k (v + k w) */
+} am_dct_genome;
+
+/* one CPPN node */
+typedef struct am_cppn_node {
+    am_real offset;                          /* shift of the input (x axis of the function) */
+    am_real xscale;                          /* scaling of the input (x axis) */
+    am_real yscale;                          /* scaling of the output (y axis) */
+    uint8_t fn;                              /* am_cppn_fn */
+} am_cppn_node;
+
+/* CPPN: m layers of n nodes; inputs x, y, z (the longest side spans [-1, 1]) and a bias of 1 */
+typedef struct am_cppn_genome {
+    int layers;                              /* m, 1..AM_MAX_CPPN_LAYERS */
+    int nodes;                               /* n, 1..AM_MAX_CPPN_NODES */
+    am_cppn_node node[AM_MAX_CPPN_LAYERS][AM_MAX_CPPN_NODES]; /* (m x n) */
+    am_real w_in[AM_MAX_CPPN_NODES][4];      /* (n x 4) input x, y, z, bias -> node (0, j) */
+    uint8_t on_in[AM_MAX_CPPN_NODES][4];     /* 1: that connection is active */
+    am_real w[AM_MAX_CPPN_LAYERS - 1][AM_MAX_CPPN_NODES][AM_MAX_CPPN_NODES];
+                                             /* ((m-1) x n x n) w[l][j][i]: node (l, i) -> (l + 1, j) */
+    uint8_t on[AM_MAX_CPPN_LAYERS - 1][AM_MAX_CPPN_NODES][AM_MAX_CPPN_NODES]; /* active flags */
+    am_real w_out[AM_MAX_GENO_MATERIALS][AM_MAX_CPPN_NODES]; /* (materials x n) node (m-1, j) -> output */
+    uint8_t on_out[AM_MAX_GENO_MATERIALS][AM_MAX_CPPN_NODES]; /* active flags */
+} am_cppn_genome;
+
+/* one Gaussian point: adds weight e^(-(d / radius)^2) to its material's field at distance d */
+typedef struct am_gmx_point {
+    am_real x, y, z;                         /* centre, cells: [0, W-1] x [0, H-1] x [0, D-1] */
+    am_real weight;                          /* signed weight, [-1, 1] */
+    am_real radius;                          /* cells, [1, max(W, H, D) / 2] */
+    uint8_t mat;                             /* material index, < materials */
+} am_gmx_point;
+
+/* GMX: an ordered list of Gaussian points */
+typedef struct am_gmx_genome {
+    int count;                               /* points in use, 0..AM_MAX_GMX_POINTS */
+    am_gmx_point pt[AM_MAX_GMX_POINTS];
+} am_gmx_genome;
+
+/* a genome of any representation; fixed size, copy by assignment */
+typedef struct am_genome {
+    int repr;                                /* am_repr */
+    int materials;                           /* density fields, 1..AM_MAX_GENO_MATERIALS */
+    int nx, ny, nz;                          /* workspace, cells, 1..AM_MAX_DIM each */
+    char mat[AM_MAX_GENO_MATERIALS][AM_NAME_MAX]; /* palette name of each material */
+    union {
+        am_dct_genome dct;                   /* repr == AM_REPR_DCT */
+        am_cppn_genome cppn;                 /* repr == AM_REPR_CPPN */
+        am_gmx_genome gmx;                   /* repr == AM_REPR_GMX */
+    };
+} am_genome;
+
+/* ---- parameters ---- */
+
+/* how random genomes are made and varied; am_default_geno() gives the seed's settings */
+typedef struct am_geno_def {
+    int repr;                 /* am_repr (AM_REPR_DCT) */
+    int materials;            /* 2: passive, active; 3: passive, active, active90 (2) */
+    int nx, ny, nz;           /* workspace, cells (AM_MAX_DIM: 20 desktop, 8 board) */
+    int dct_k;                /* DCT amplitudes per axis (4) */
+    int cppn_layers;          /* CPPN layers m (3) */
+    int cppn_nodes;           /* CPPN nodes per layer n (4) */
+    am_real cppn_active;      /* CPPN: probability that a connection of a random genome is active (0.75) */
+    am_real cppn_changes;     /* CPPN: values a mutation changes on average (1) */
+    am_real cppn_step;        /* CPPN: largest change of a real value, fraction of its range (0.10) */
+    int gmx_points;           /* GMX points of a random genome (16) */
+    int gmx_max_points;       /* GMX points a genome may grow to, <= AM_MAX_GMX_POINTS (AM_MAX_GMX_POINTS) */
+    am_real rate;             /* DCT and GMX: per-value mutation probability (0.20) */
+    am_real step;             /* DCT and GMX: largest change, fraction of the value's range (0.05) */
+    am_real gmx_material_rate; /* GMX: per-point probability that a mutation changes its material (0.05) */
+    am_real gmx_add;          /* GMX: probability that a mutation adds a random point (0.10) */
+    am_real gmx_remove;       /* GMX: probability that a mutation removes a point (0.10) */
+} am_geno_def;
+
+/* the seed's settings: DCT, 2 materials, AM_MAX_DIM^3, rates as documented field by field */
+am_geno_def am_default_geno(void);
+
+/* how a genome becomes a body; am_default_express() gives the seed's */
+typedef struct am_express_def {
+    const am_palette* palette; /* materials are looked up by the genome's names; NULL: am_default_palette() */
+    am_real voxel_size;        /* lattice cell edge, m (0.01) */
+    am_real threshold;         /* a cell is filled where the density sum exceeds this (0) */
+} am_express_def;
+
+/* default palette, 0.01 m voxels, threshold 0 */
+am_express_def am_default_express(void);
+
+/* ---- workspace ---- */
+
+/* scratch and results of expression; large: declare it static (zeroed), one per thread */
+typedef struct am_geno_work {
+    am_real dens[AM_MAX_GENO_MATERIALS][AM_MAX_CELLS]; /* (materials x cells) density fields, lattice order */
+    uint8_t cell[AM_MAX_CELLS];      /* (cells) the body: 0 empty, 1 + material index */
+    int voxels;                      /* filled cells of cell[] */
+    int nx, ny, nz;                  /* shape of dens and cell */
+    uint8_t other[AM_MAX_CELLS];     /* (cells) second body of am_genome_distance */
+    uint8_t mark[AM_MAX_CELLS];      /* (cells) flood-fill marks */
+    int32_t queue[AM_MAX_CELLS];     /* (cells) flood-fill queue */
+    am_dct_work dct;                 /* DCT tables and scratch */
+    int tables;                      /* 1 once the lookup tables below are filled */
+    am_real tab_sin[AM_GENO_TABLE + 1];   /* sin(2 pi i / T), T = AM_GENO_TABLE */
+    am_real tab_gauss[AM_GENO_TABLE + 1]; /* e^(-q) at q = AM_GENO_GAUSS_RANGE i / T */
+    am_real tab_sig[AM_GENO_TABLE + 1];   /* 2 / (1 + e^-t) - 1 at t = AM_GENO_SIG_RANGE (2 i / T - 1) */
+    am_real coord[3][AM_CPPN_CHUNK];      /* CPPN inputs of one chunk of cells */
+    am_real act[2][AM_MAX_CPPN_NODES][AM_CPPN_CHUNK]; /* CPPN node values of one chunk (two layers) */
+    am_real fx[AM_MAX_DIM], fy[AM_MAX_DIM], fz[AM_MAX_DIM]; /* GMX separable falloff factors */
+} am_geno_work;
+
+/* ---- operations ---- */
+
+/* a random genome: every value uniform in its range (docs/genotypes.md). AM_ERR_RANGE or
+ * AM_ERR_CAPACITY (with a message) for a def outside the limits */
+am_status am_genome_init(am_genome* g, const am_geno_def* def, am_rng* r, char* err, int errsz);
+/* mutates g in place (rates in def, which must not be NULL; its shape fields are not used) */
+void am_genome_mutate(am_genome* g, const am_geno_def* def, am_rng* r);
+/* two children of parents a and b (same representation and shape); c1 takes a's part where c2
+ * takes b's (complementary). c2 may be NULL; the children must not alias the parents. AM_ERR_ARG
+ * (c1 = a, c2 = b) when the shapes differ */
+am_status am_genome_crossover(const am_genome* a, const am_genome* b, am_genome* c1, am_genome* c2,
+                              const am_geno_def* def, am_rng* r, char* err, int errsz);
+/* checks every field against its range and capacity; AM_ERR_RANGE / AM_ERR_CAPACITY with a message */
+am_status am_genome_check(const am_genome* g, char* err, int errsz);
+/* evolvable values of g (DCT: amplitudes; CPPN: 4 per node, 2 per connection; GMX: 6 per point) */
+int am_genome_values(const am_genome* g);
+/* 64-bit hash of every value of g (golden hashes in tests) */
+uint64_t am_genome_hash(const am_genome* g);
+/* 1 when a and b hold the same values, bit for bit */
+int am_genome_equal(const am_genome* a, const am_genome* b);
+/* name of a representation ("dct", "cppn", "gmx"), or "?" */
+const char* am_repr_name(int repr);
+/* representation of a name, or AM_REPR_NONE */
+int am_repr_from_name(const char* name);
+
+/* densities into w->dens, then the level set into w->cell and w->voxels (def NULL: defaults).
+ * ratio (NULL or materials x cells) receives the blend ratios of am_levelset. */
+am_status am_genome_express(const am_genome* g, const am_express_def* def, am_geno_work* w, am_real* ratio,
+                            char* err, int errsz);
+/* expresses g into lat: nx x ny x nz cells, palette = the genome's materials (found by name in
+ * def->palette) in genome order, cell value 1 + material index. AM_ERR_RANGE for an unknown name */
+am_status am_genome_to_lattice(const am_genome* g, const am_express_def* def, am_geno_work* w, am_lattice* lat,
+                               char* err, int errsz);
+/* the crowding distance: fraction of workspace cells (in [0, 1]) whose material differs between the
+ * two expressed bodies; expresses both (w->cell ends as b's body). AM_ERR_ARG for different workspaces */
+am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_work* w, am_real* out,
+                             char* err, int errsz);
+/* the same distance between two bodies already expressed: fraction of the n cells that differ */
+am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n);
+
+/* ---- level set ---- */
+
+/* the level set of w->dens (materials fields of nx x ny x nz): cells whose density sum exceeds
+ * threshold are filled with 1 + argmax material, then only the largest face-connected piece is kept
+ * (ties: the piece holding the lowest cell index). Writes w->cell, w->voxels and returns the
+ * voxel count. ratio (NULL or materials x cells, index m * cells + c) receives the blend ratios of
+ * the seed's alternative: max(d_m, 0) / sum_i max(d_i, 0) in kept cells, 0 elsewhere.
+ * materials 1..AM_MAX_GENO_MATERIALS and nx ny nz <= AM_MAX_CELLS, else nothing is done and 0 returned. */
+int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real threshold, am_real* ratio);
+/* keeps only the largest face-connected piece of non-zero cells (fixed queue, no recursion);
+ * mark and queue have nx ny nz entries (each >= 1). Returns the cells kept. */
+int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, int32_t* queue);
+
+/* ---- text format (docs/genome-format.md) ---- */
+
+/* 1 when text is a genome (its first word is "amorph-genome") */
+int am_genome_sniff(const char* text);
+/* writes g as text into buf (capacity cap, NUL-terminated); *len gets the length. AM_ERR_CAPACITY
+ * if it does not fit (AM_GENOME_TEXT_MAX always does) */
+am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz);
+/* parses a NUL-terminated genome text; messages are "fname:line: problem" */
+am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz);
+
+/* ---- for representation implementers ---- */
+
+/* a growing text buffer that never writes past cap */
+typedef struct am_geno_sink {
+    char* buf;     /* output, NUL-terminated while it fits */
+    long cap;      /* capacity of buf */
+    long len;      /* characters written (or wanted) */
+} am_geno_sink;
+/* appends printf-style text */
+void am_geno_put(am_geno_sink* s, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/* appends " " and a real that reads back bit for bit (%.9g for float, %.17g for double) */
+void am_geno_put_real(am_geno_sink* s, am_real v);
+
+/* lines a representation may require to appear once each (the largest over all of them) */
+#define AM_GENO_SEEN_MAX (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K \
+                          + 2 * AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES + AM_MAX_GENO_MATERIALS + 8)
+/* parser state handed to a representation's line parser */
+typedef struct am_geno_parse {
+    int shape;                          /* 1 once the representation's shape line was read */
+    int lines;                          /* data lines accepted */
+    uint8_t seen[AM_GENO_SEEN_MAX];     /* 1 for each required line already read */
+} am_geno_parse;
+/* token helpers for line parsers: 1 on success */
+int am_geno_tok_int(const char* s, int lo, int hi, int* out);   /* decimal integer in [lo, hi] */
+int am_geno_tok_real(const char* s, am_real lo, am_real hi, am_real* out); /* finite real in [lo, hi] */
+
+/* the operations one representation implements (genome header fields are set by the caller) */
+typedef struct am_geno_ops {
+    const char* name;                                  /* keyword of the text format */
+    /* random genes from def (the header is set and checked) */
+    am_status (*init)(am_genome* g, const am_geno_def* def, am_rng* r, char* err, int errsz);
+    /* mutation in place */
+    void (*mutate)(am_genome* g, const am_geno_def* def, am_rng* r);
+    /* two children of same-shaped parents; c2 may be NULL */
+    void (*crossover)(const am_genome* a, const am_genome* b, am_genome* c1, am_genome* c2,
+                      const am_geno_def* def, am_rng* r);
+    /* 1 when the representation's sizes match (headers already equal) */
+    int (*same_shape)(const am_genome* a, const am_genome* b);
+    /* every value in range and capacity */
+    am_status (*check)(const am_genome* g, char* err, int errsz);
+    /* evolvable values */
+    int (*values)(const am_genome* g);
+    /* h extended with every value */
+    uint64_t (*hash)(uint64_t h, const am_genome* g);
+    /* 1 when every value is the same, bit for bit */
+    int (*equal)(const am_genome* a, const am_genome* b);
+    void (*express)(const am_genome* g, am_geno_work* w); /* fills w->dens (materials x cells) */
+    void (*format)(const am_genome* g, am_geno_sink* s);  /* the body lines, shape line first */
+    /* one line after the header, split into ntok fields; the message without "file:line: " */
+    am_status (*parse_line)(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz);
+    am_status (*parse_end)(am_genome* g, am_geno_parse* ps, char* err, int errsz); /* at "end" */
+} am_geno_ops;
+
+extern const am_geno_ops am_geno_dct_ops;   /* src/geno_dct.c */
+extern const am_geno_ops am_geno_cppn_ops;  /* src/geno_cppn.c */
+extern const am_geno_ops am_geno_gmx_ops;   /* src/geno_gmx.c */
+/* the operations of repr, or NULL */
+const am_geno_ops* am_geno_ops_of(int repr);
+
+/* fills the lookup tables of w once (with am_sin and am_exp); expressions call it themselves */
+void am_geno_tables(am_geno_work* w);
+/* linear interpolation in a table of AM_GENO_TABLE intervals, u in [0, AM_GENO_TABLE] (clamped) */
+static inline am_real am_geno_lerp(const am_real* tab, am_real u)
+{
+    if (!(u > AM_R(0))) return tab[0];
+    if (!(u < (am_real)AM_GENO_TABLE)) return tab[AM_GENO_TABLE];
+    int i = (int)u;
+    am_real f = u - (am_real)i;
+    return tab[i] + AM_MUL(f, tab[i + 1] - tab[i]);
+}
+/* sin t from the table (0 for a non-finite t) */
+static inline am_real am_geno_sin(const am_geno_work* w, am_real t)
+{
+    const am_real turns = AM_MUL(t, AM_R(0.15915494309189533577)); /* t / (2 pi) */
+    if (!am_finite(turns)) return AM_R(0);
+    return am_geno_lerp(w->tab_sin, AM_MUL(turns - am_floor(turns), (am_real)AM_GENO_TABLE));
+}
+/* e^(-q) from the table, q >= 0 (0 beyond AM_GENO_GAUSS_RANGE) */
+static inline am_real am_geno_gauss(const am_geno_work* w, am_real q)
+{
+    if (!(q < AM_GENO_GAUSS_RANGE)) return AM_R(0);
+    return am_geno_lerp(w->tab_gauss, AM_MUL(q, AM_DIV((am_real)AM_GENO_TABLE, AM_GENO_GAUSS_RANGE)));
+}
+/* 2 / (1 + e^-t) - 1 from the table (0 for NaN) */
+static inline am_real am_geno_sigmoid(const am_geno_work* w, am_real t)
+{
+    if (t != t) return AM_R(0);
+    return am_geno_lerp(w->tab_sig, AM_MUL(t + AM_GENO_SIG_RANGE, AM_DIV((am_real)AM_GENO_TABLE, AM_R(2) * AM_GENO_SIG_RANGE)));
+}
+/* a value moved by a uniform step in [-step, step] and reflected into [lo, hi] */
+am_real am_geno_perturb(am_rng* r, am_real v, am_real step, am_real lo, am_real hi);
+
+/* GMX crossover, step 1 (exposed for tests): a random plane through g's workspace, a point
+ * uniform in the box (cells) and a unit normal uniform on the sphere */
+void am_gmx_random_plane(const am_genome* g, am_rng* r, am_real point[3], am_real normal[3]);
+/* GMX crossover, step 2: c1 gets a's points with (p - point) . normal >= 0, then b's points on the
+ * other side; c2 gets b's positive side, then a's negative side; in order, up to max_points each */
+void am_gmx_plane_cross(const am_genome* a, const am_genome* b, const am_real point[3], const am_real normal[3],
+                        int max_points, am_genome* c1, am_genome* c2);
+/* CPPN region crossover, exposed for tests: the region (layers [l0, l1), positions [j0, j1)) a
+ * crossover draws; every node is inside it with the same probability */
+void am_cppn_random_region(const am_genome* g, am_rng* r, int* l0, int* l1, int* j0, int* j1);
+/* CPPN complexity limit on g's workspace: writes each node's effective x scaling into eff and
+ * returns how many nodes were limited (docs/genotypes.md, complexity measure) */
+int am_cppn_effective_xscale(const am_genome* g, am_real eff[AM_MAX_CPPN_LAYERS][AM_MAX_CPPN_NODES]);
+
+#endif

@@ -1,0 +1,189 @@
+/* The genome text format (docs/genome-format.md): a versioned, line-based text.
+ *
+ *   amorph-genome 1
+ *   repr dct|cppn|gmx
+ *   materials NAME...          (palette names, one per density field)
+ *   workspace W H D            (cells)
+ *   ...                        (the representation's lines: its shape line first)
+ *   end
+ *
+ * '#' starts a comment; blank lines and extra spaces are ignored. Reals are written with enough
+ * digits to read back bit for bit (%.9g for float, %.17g for double) and read with strtod. The
+ * common header is parsed here, the rest line by line by the representation's parse_line, so a
+ * new representation brings its own lines. Every problem is reported as "file:line: problem".
+ */
+#include "amorph/genotype.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#define GENOME_MAGIC "amorph-genome"
+#define GENOME_VERSION 1
+#define LINE_MAX_CHARS 1024
+#define TOKENS_MAX 48
+
+static int is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+int am_genome_sniff(const char* text)
+{
+    const size_t n = sizeof GENOME_MAGIC - 1;
+    while (*text) { /* skip blank and comment lines */
+        while (is_space(*text) || *text == '\n') text++;
+        if (*text != '#') break;
+        while (*text && *text != '\n') text++;
+    }
+    return strncmp(text, GENOME_MAGIC, n) == 0 && (is_space(text[n]) || text[n] == '\n' || text[n] == '\0');
+}
+
+am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
+{
+    am_status st = am_genome_check(g, err, errsz);
+    if (st != AM_OK) return st;
+    am_geno_sink s = {buf, cap, 0};
+    if (cap > 0) buf[0] = '\0';
+    am_geno_put(&s, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
+    am_geno_put(&s, "# amorph genome (am_real %s); format: docs/genome-format.md\n", AM_REAL_NAME);
+    am_geno_put(&s, "repr %s\n", am_repr_name(g->repr));
+    am_geno_put(&s, "materials");
+    for (int m = 0; m < g->materials; m++) am_geno_put(&s, " %s", g->mat[m]);
+    am_geno_put(&s, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
+    am_geno_ops_of(g->repr)->format(g, &s);
+    am_geno_put(&s, "end\n");
+    if (len) *len = s.len;
+    if (s.len >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text needs %ld bytes, the buffer holds %ld", s.len + 1, cap);
+    return AM_OK;
+}
+
+static int valid_name(const char* s)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n >= AM_NAME_MAX) return 0;
+    for (; *s; s++) {
+        char c = *s;
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-')) return 0;
+    }
+    return 1;
+}
+
+enum { S_MAGIC, S_REPR, S_MATERIALS, S_WORKSPACE, S_BODY, S_DONE };
+static const char* const expected[] = {"'amorph-genome 1'", "'repr dct|cppn|gmx'", "'materials NAME...'", "'workspace W H D'"};
+
+/* the header lines; msg gets the problem */
+static am_status header_line(am_genome* g, int state, int ntok, char** tok, char* msg, int msz)
+{
+    const char* keyword[] = {GENOME_MAGIC, "repr", "materials", "workspace"};
+    if (strcmp(tok[0], keyword[state]) != 0)
+        return am_fail(msg, msz, AM_ERR_PARSE, state == S_MAGIC ? "not a genome: expected %s, found '%s'" : "expected %s, found '%s'",
+                       expected[state], tok[0]);
+    switch (state) {
+    case S_MAGIC: {
+        int v = 0;
+        if (ntok != 2 || !am_geno_tok_int(tok[1], 0, 1000000, &v))
+            return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
+        if (v != GENOME_VERSION)
+            return am_fail(msg, msz, AM_ERR_PARSE, "genome format version %d: this build reads version %d", v, GENOME_VERSION);
+        return AM_OK;
+    }
+    case S_REPR:
+        if (ntok != 2) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
+        g->repr = am_repr_from_name(tok[1]);
+        if (g->repr == AM_REPR_NONE) return am_fail(msg, msz, AM_ERR_PARSE, "unknown representation '%s' (dct, cppn, gmx)", tok[1]);
+        return AM_OK;
+    case S_MATERIALS:
+        if (ntok < 2) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
+        if (ntok - 1 > AM_MAX_GENO_MATERIALS)
+            return am_fail(msg, msz, AM_ERR_CAPACITY, "%d materials: a genome holds at most %d", ntok - 1, AM_MAX_GENO_MATERIALS);
+        g->materials = ntok - 1;
+        for (int m = 0; m < g->materials; m++) {
+            if (!valid_name(tok[1 + m]))
+                return am_fail(msg, msz, AM_ERR_PARSE, "material name '%s': 1 to %d letters, digits, '_' or '-'", tok[1 + m], AM_NAME_MAX - 1);
+            for (int k = 0; k < m; k++)
+                if (strcmp(g->mat[k], tok[1 + m]) == 0) return am_fail(msg, msz, AM_ERR_PARSE, "material '%s' given twice", tok[1 + m]);
+            snprintf(g->mat[m], AM_NAME_MAX, "%s", tok[1 + m]);
+        }
+        return AM_OK;
+    default: {
+        int d[3];
+        if (ntok != 4) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
+        for (int a = 0; a < 3; a++) {
+            if (!am_geno_tok_int(tok[1 + a], 1, 1000000, &d[a]))
+                return am_fail(msg, msz, AM_ERR_PARSE, "workspace side '%s' is not a positive integer", tok[1 + a]);
+            if (d[a] > AM_MAX_DIM)
+                return am_fail(msg, msz, AM_ERR_CAPACITY, "workspace side %d exceeds the %s profile's %d", d[a], AM_PROFILE_NAME, AM_MAX_DIM);
+        }
+        g->nx = d[0];
+        g->ny = d[1];
+        g->nz = d[2];
+        return AM_OK;
+    }
+    }
+}
+
+am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz)
+{
+    char line[LINE_MAX_CHARS];
+    char* tok[TOKENS_MAX];
+    char msg[AM_ERR_MAX];
+    am_geno_parse ps;
+    const am_geno_ops* ops = NULL;
+    int state = S_MAGIC, lineno = 0;
+    am_status st = AM_OK;
+    memset(g, 0, sizeof *g);
+    memset(&ps, 0, sizeof ps);
+    msg[0] = '\0';
+    const char* p = text;
+    while (*p) {
+        const char* eol = strchr(p, '\n');
+        size_t n = eol ? (size_t)(eol - p) : strlen(p);
+        lineno++;
+        if (n >= sizeof line) {
+            st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "line longer than %d characters", LINE_MAX_CHARS - 1);
+            break;
+        }
+        memcpy(line, p, n);
+        line[n] = '\0';
+        p = eol ? eol + 1 : p + n;
+        char* hash = strchr(line, '#');
+        if (hash) *hash = '\0';
+        int ntok = 0;
+        for (char* q = line; *q;) {
+            while (is_space(*q)) *q++ = '\0';
+            if (!*q) break;
+            if (ntok == TOKENS_MAX) {
+                st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "more than %d fields on a line", TOKENS_MAX);
+                break;
+            }
+            tok[ntok++] = q;
+            while (*q && !is_space(*q)) q++;
+        }
+        if (st != AM_OK) break;
+        if (ntok == 0) continue;
+        if (state == S_DONE) {
+            st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "text after 'end'");
+            break;
+        }
+        if (state < S_BODY) {
+            st = header_line(g, state, ntok, tok, msg, sizeof msg);
+            if (st != AM_OK) break;
+            state++;
+            if (state == S_BODY) ops = am_geno_ops_of(g->repr);
+            continue;
+        }
+        if (strcmp(tok[0], "end") == 0 && ntok == 1) {
+            st = ops->parse_end(g, &ps, msg, sizeof msg);
+            if (st == AM_OK) st = am_genome_check(g, msg, sizeof msg);
+            if (st != AM_OK) break;
+            state = S_DONE;
+            continue;
+        }
+        st = ops->parse_line(g, &ps, ntok, tok, msg, sizeof msg);
+        if (st != AM_OK) break;
+    }
+    if (st == AM_OK && state != S_DONE) {
+        if (lineno == 0) lineno = 1;
+        st = state < S_BODY ? am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: expected %s", expected[state])
+                            : am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: missing 'end' line");
+    }
+    if (st != AM_OK) return am_fail(err, errsz, st, "%s:%d: %s", fname ? fname : "genome", lineno, msg);
+    return AM_OK;
+}

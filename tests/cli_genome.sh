@@ -1,0 +1,69 @@
+# tests/cli_genome.sh: amorph random, amorph express and genome files through the command.
+. tests/cli_lib.sh
+
+# random genomes of every representation, reproducible from the seed
+for r in dct cppn gmx; do
+    expect_ok "$AMORPH" random --repr $r --seed 5 --out "$TMPD/$r.genome"
+    expect_ok "$AMORPH" random --repr $r --seed 5 --materials 3 --out "$TMPD/${r}3.genome"
+    "$AMORPH" random --repr $r --seed 5 >"$TMPD/$r.again" 2>/dev/null
+    if cmp -s "$TMPD/$r.genome" "$TMPD/$r.again"; then ok; else ko "random --repr $r --seed 5 differs between runs"; fi
+    if head -n 1 "$TMPD/$r.genome" | grep -q '^amorph-genome 1$'; then ok; else ko "$r.genome: no 'amorph-genome 1' line"; fi
+    if grep -q '^materials passive active active90$' "$TMPD/${r}3.genome"; then ok; else ko "${r}3.genome: not three materials"; fi
+    # expressed into a lattice file
+    expect_ok "$AMORPH" express "$TMPD/$r.genome" --out "$TMPD/$r.lattice"
+    if grep -qE '^voxels=[0-9]+$' "$TMPD/out"; then ok; else ko "express $r: no voxels=N line: $(cat "$TMPD/out")"; fi
+    if head -n 1 "$TMPD/$r.lattice" | grep -q '^amorph-lattice'; then ok; else ko "$r.lattice is not a lattice"; fi
+    # a genome read back and written again is the same text
+    expect_ok "$AMORPH" express "$TMPD/${r}3.genome"
+done
+"$AMORPH" random --repr dct --seed 6 >"$TMPD/other.genome" 2>/dev/null
+if cmp -s "$TMPD/dct.genome" "$TMPD/other.genome"; then ko "seeds 5 and 6 give the same genome"; else ok; fi
+
+# amorph sim accepts a genome file (a small workspace and a short run)
+expect_ok "$AMORPH" random --repr dct --size 5 --seed 3 --out "$TMPD/small.genome"
+expect_ok "$AMORPH" sim "$TMPD/small.genome" --cycles 1 --period-steps 20 --relax-max 20
+if grep -qE '^voxels = [1-9]' "$TMPD/out"; then ok; else ko "sim of a genome: $(head -c 200 "$TMPD/out")"; fi
+
+# an empty body is not an error
+printf 'amorph-genome 1\nrepr gmx\nmaterials passive active\nworkspace 6 6 6\ngmx 0\nend\n' >"$TMPD/empty.genome"
+expect_ok "$AMORPH" express "$TMPD/empty.genome" --out "$TMPD/empty.lattice"
+if grep -q '^voxels=0$' "$TMPD/out"; then ok; else ko "empty genome: $(cat "$TMPD/out")"; fi
+
+# bad genome files: file:line: problem, one line, exit status 2
+head='amorph-genome 1\nrepr dct\nmaterials passive active\nworkspace 8 8 8\n'
+printf "${head}dct 2\namp 0 0 0 0.5 2\n" >"$TMPD/range.genome"
+expect_fail 2 'range\.genome:6: amplitude .2. is not a number in \[-1, 1\]' "$AMORPH" express "$TMPD/range.genome"
+expect_fail 2 'range\.genome:6: ' "$AMORPH" sim "$TMPD/range.genome"
+printf 'amorph-genome 7\n' >"$TMPD/version.genome"
+expect_fail 2 'version\.genome:1: genome format version 7' "$AMORPH" express "$TMPD/version.genome"
+printf 'amorph-genome 1\n\n# comment\nrepr blob\n' >"$TMPD/repr.genome"
+expect_fail 2 'repr\.genome:4: unknown representation .blob.' "$AMORPH" express "$TMPD/repr.genome"
+printf "${head}dct 1\namp 0 0 0 0.5\n" >"$TMPD/short.genome"
+expect_fail 2 'short\.genome:6: unexpected end of text' "$AMORPH" express "$TMPD/short.genome"
+printf "${head}dct 1\namp 0 0 0 0.5\nend\n" >"$TMPD/missing.genome"
+expect_fail 2 "missing\.genome:7: missing line 'amp 1 0 0'" "$AMORPH" express "$TMPD/missing.genome"
+printf 'amorph-genome 1\nrepr gmx\nmaterials passive active\nworkspace 8 8 8\ngmx 100000\n' >"$TMPD/cap.genome"
+expect_fail 2 'cap\.genome:5: 100000 GMX points exceed' "$AMORPH" express "$TMPD/cap.genome"
+printf 'amorph-genome 1\nrepr gmx\nmaterials passive active\nworkspace 99 8 8\n' >"$TMPD/big.genome"
+expect_fail 2 'big\.genome:4: workspace side 99 exceeds' "$AMORPH" express "$TMPD/big.genome"
+printf 'amorph-genome 1\nrepr cppn\nmaterials passive active\nworkspace 8 8 8\ncppn 1 1\nnode 0 0 tanh 0 1 1\n' >"$TMPD/fn.genome"
+expect_fail 2 "fn\.genome:6: unknown function 'tanh'" "$AMORPH" express "$TMPD/fn.genome"
+printf 'amorph-genome 1\nrepr gmx\nmaterials passive steel\nworkspace 8 8 8\ngmx 0\nend\n' >"$TMPD/steel.genome"
+expect_fail 2 "steel\.genome:3: material 'steel' is not in the built-in palette" "$AMORPH" express "$TMPD/steel.genome"
+printf 'size 2 2 2\n' >"$TMPD/notgenome.txt"
+expect_fail 2 'notgenome\.txt:1: not a genome' "$AMORPH" express "$TMPD/notgenome.txt"
+expect_fail 2 'nothere\.genome' "$AMORPH" express "$TMPD/nothere.genome"
+
+# flags
+expect_fail 2 'random: --repr dct\|cppn\|gmx is required' "$AMORPH" random --seed 1
+expect_fail 2 'random: --repr takes dct, cppn or gmx' "$AMORPH" random --repr fourier
+expect_fail 2 'random: --materials takes 2 or 3' "$AMORPH" random --repr dct --materials 4
+expect_fail 2 'random: --seed needs a whole number' "$AMORPH" random --repr dct --seed -3
+expect_fail 2 'random: --size needs a whole number' "$AMORPH" random --repr dct --size 999
+expect_fail 2 "random: unknown option '--bogus'" "$AMORPH" random --repr dct --bogus
+expect_fail 2 'express: name a genome file' "$AMORPH" express
+expect_fail 2 "express: unknown option '--bogus'" "$AMORPH" express "$TMPD/dct.genome" --bogus
+expect_ok "$AMORPH" random --help
+expect_ok "$AMORPH" express --help
+
+summary cli_genome.sh

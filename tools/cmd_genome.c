@@ -1,0 +1,226 @@
+/* amorph random, amorph express, genome files for amorph sim, and the expression benchmark. */
+#include "cmd.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* one genome, one expression workspace and the texts of the commands (they run one at a time) */
+static am_genome genome_one;
+static am_geno_work genome_work;
+static am_lattice genome_lat;
+static char genome_text[AM_GENOME_TEXT_MAX];
+static char genome_lattice_text[AM_LATTICE_TEXT_MAX];
+
+static int parse_u64(const char* s, uint64_t* out)
+{
+    uint64_t v = 0;
+    if (!s || !*s) return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9') return 0;
+        uint64_t d = (uint64_t)(*s - '0');
+        if (v > (UINT64_MAX - d) / 10) return 0;
+        v = v * 10 + d;
+    }
+    *out = v;
+    return 1;
+}
+
+static int parse_int(const char* s, int lo, int hi, int* out)
+{
+    uint64_t v;
+    if (!parse_u64(s, &v) || v < (uint64_t)lo || v > (uint64_t)hi) return 0;
+    *out = (int)v;
+    return 1;
+}
+
+static const char random_help[] =
+    "usage: amorph random --repr dct|cppn|gmx [--materials 2|3] [--seed S] [--size N] [--out FILE]\n"
+    "Writes a random genome (docs/genome-format.md) to FILE, or to the standard output.\n"
+    "  --repr R         representation: dct, cppn or gmx\n"
+    "  --materials M    2 (passive, active) or 3 (passive, active, active90) (2)\n"
+    "  --seed S         seed of the random stream, 0..2^64-1 (1)\n"
+    "  --size N         workspace N x N x N cells (the profile's largest, 20 on desktops)\n"
+    "  --out FILE       the genome file (written atomically)\n";
+
+int cmd_random(int argc, char** argv)
+{
+    am_geno_def def = am_default_geno();
+    uint64_t seed = 1;
+    const char* out = NULL;
+    int have_repr = 0, n = 0;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(random_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--repr")) {
+            def.repr = v ? am_repr_from_name(v) : AM_REPR_NONE;
+            if (def.repr == AM_REPR_NONE) return tool_usage_error("random: --repr takes dct, cppn or gmx");
+            have_repr = 1, i++;
+        } else if (!strcmp(a, "--materials")) {
+            if (!parse_int(v, 2, 3, &n)) return tool_usage_error("random: --materials takes 2 or 3");
+            def.materials = n, i++;
+        } else if (!strcmp(a, "--seed")) {
+            if (!parse_u64(v, &seed)) return tool_usage_error("random: --seed needs a whole number 0..18446744073709551615");
+            i++;
+        } else if (!strcmp(a, "--size")) {
+            if (!parse_int(v, 1, AM_MAX_DIM, &n))
+                return tool_usage_error("random: --size needs a whole number 1..%d (%s profile)", AM_MAX_DIM, AM_PROFILE_NAME);
+            def.nx = def.ny = def.nz = n, i++;
+        } else if (!strcmp(a, "--out")) {
+            if (!v) return tool_usage_error("random: --out needs a file name");
+            out = v, i++;
+        } else return tool_usage_error("random: unknown option '%s' (amorph random --help)", a);
+    }
+    if (!have_repr) return tool_usage_error("random: --repr dct|cppn|gmx is required (amorph random --help)");
+    if (def.dct_k > def.nx) def.dct_k = def.nx;
+    char err[AM_ERR_MAX];
+    am_rng rng;
+    am_rng_seed(&rng, seed);
+    if (am_genome_init(&genome_one, &def, &rng, err, sizeof err) != AM_OK) return tool_usage_error("random: %s", err);
+    long len = 0;
+    if (am_genome_format(&genome_one, genome_text, sizeof genome_text, &len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: random: %s\n", err);
+        return 1;
+    }
+    if (!out) {
+        fwrite(genome_text, 1, (size_t)len, stdout);
+        return 0;
+    }
+    if (am_port_write_file(out, genome_text, len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+/* line number of the "materials" line of a genome text (for messages), 1 if none */
+static int materials_line(const char* text)
+{
+    int line = 1;
+    for (const char* p = text; *p; line++) {
+        while (*p == ' ' || *p == '\t') p++;
+        if (!strncmp(p, "materials", 9)) return line;
+        p = strchr(p, '\n');
+        if (!p) break;
+        p++;
+    }
+    return 1;
+}
+
+am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz)
+{
+    if (!am_genome_sniff(text)) {
+        if (err && errsz > 0) err[0] = '\0';
+        return AM_ERR_ARG;
+    }
+    am_status st = am_genome_parse(&genome_one, text, fname, err, errsz);
+    if (st != AM_OK) return st;
+    am_palette pal = am_default_palette();
+    for (int m = 0; m < genome_one.materials; m++)
+        if (am_palette_find(&pal, genome_one.mat[m]) < 0)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
+                           materials_line(text), genome_one.mat[m]);
+    char msg[AM_ERR_MAX];
+    st = am_genome_to_lattice(&genome_one, NULL, &genome_work, lat, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
+    return AM_OK;
+}
+
+static const char express_help[] =
+    "usage: amorph express GENOME [--out FILE.lattice]\n"
+    "Expresses a genome into a body (level set, argmax material, largest face-connected piece)\n"
+    "and writes it in the lattice format to FILE (atomically; then prints voxels=N), or to the\n"
+    "standard output. An empty body is not an error: it has 0 voxels.\n";
+
+int cmd_express(int argc, char** argv)
+{
+    const char* in = NULL;
+    const char* out = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(express_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--out")) {
+            if (!v) return tool_usage_error("express: --out needs a file name");
+            out = v, i++;
+        } else if (a[0] == '-' && a[1]) {
+            return tool_usage_error("express: unknown option '%s' (amorph express --help)", a);
+        } else {
+            if (in) return tool_usage_error("express: one genome at a time ('%s' and '%s')", in, a);
+            in = a;
+        }
+    }
+    if (!in) return tool_usage_error("express: name a genome file (amorph express --help)");
+    char err[AM_ERR_MAX];
+    long len = 0;
+    am_status st = am_port_read_file(in, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err);
+    if (st != AM_OK) return tool_usage_error("%s", err);
+    if (strlen(tool_file_buf) != (size_t)len) return tool_usage_error("%s:1: binary data (a NUL byte) in a text file", in);
+    st = tool_genome_text_to_lattice(tool_file_buf, in, &genome_lat, err, sizeof err);
+    if (st == AM_ERR_ARG && !err[0]) return tool_usage_error("%s:1: not a genome (expected 'amorph-genome 1')", in);
+    if (st != AM_OK) return tool_usage_error("%s", err);
+    st = am_lattice_format(&genome_lat, genome_lattice_text, sizeof genome_lattice_text, &len, err, sizeof err);
+    if (st != AM_OK) {
+        fprintf(stderr, "amorph: express: %s\n", err);
+        return 1;
+    }
+    if (!out) {
+        fwrite(genome_lattice_text, 1, (size_t)len, stdout);
+        return 0;
+    }
+    if (am_port_write_file(out, genome_lattice_text, len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    printf("voxels=%d\n", genome_work.voxels);
+    return 0;
+}
+
+void tool_bench_express(void)
+{
+    enum { GENOMES = 8 };
+    static am_genome pool[GENOMES];
+    char err[AM_ERR_MAX];
+    am_geno_def def = am_default_geno();
+    printf("express_workspace=%dx%dx%d\n", def.nx, def.ny, def.nz);
+    printf("genome_bytes=%d\n", (int)sizeof(am_genome));
+    for (int repr = 1; repr < AM_REPR_COUNT; repr++) {
+        def.repr = repr;
+        am_rng rng;
+        am_rng_seed(&rng, 2024);
+        for (int i = 0; i < GENOMES; i++)
+            if (am_genome_init(&pool[i], &def, &rng, err, sizeof err) != AM_OK) {
+                printf("express_%s_error=%s\n", am_repr_name(repr), err);
+                return;
+            }
+        am_genome_express(&pool[0], NULL, &genome_work, NULL, err, sizeof err); /* warm-up: tables */
+        long reps = 0, voxels = 0;
+        double t0 = am_port_now(), t = 0;
+        do {
+            for (int i = 0; i < GENOMES; i++) {
+                am_genome_express(&pool[i], NULL, &genome_work, NULL, err, sizeof err);
+                voxels += genome_work.voxels;
+            }
+            reps += GENOMES;
+            t = am_port_now() - t0;
+        } while (t < 0.25);
+        /* the level set alone, on the last fields */
+        long lreps = 0;
+        double l0 = am_port_now(), lt = 0;
+        do {
+            for (int i = 0; i < GENOMES; i++)
+                am_levelset(&genome_work, def.materials, def.nx, def.ny, def.nz, AM_R(0), NULL);
+            lreps += GENOMES;
+            lt = am_port_now() - l0;
+        } while (lt < 0.1);
+        printf("express_%s_us=%.1f\n", am_repr_name(repr), 1e6 * t / (double)reps);
+        printf("express_%s_levelset_us=%.1f\n", am_repr_name(repr), 1e6 * lt / (double)lreps);
+        printf("express_%s_mean_voxels=%ld\n", am_repr_name(repr), voxels / reps);
+    }
+    fflush(stdout);
+}
