@@ -1,4 +1,4 @@
-/* The genome text format (docs/genome-format.md): a versioned, line-based text.
+/* The genome text format (docs/formats.md): a versioned, line-based text.
  *
  *   amorph-genome 1
  *   repr dct|cppn|gmx
@@ -42,7 +42,7 @@ am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, c
     am_geno_sink s = {buf, cap, 0};
     if (cap > 0) buf[0] = '\0';
     am_geno_put(&s, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
-    am_geno_put(&s, "# amorph genome (am_real %s); format: docs/genome-format.md\n", AM_REAL_NAME);
+    am_geno_put(&s, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
     am_geno_put(&s, "repr %s\n", am_repr_name(g->repr));
     am_geno_put(&s, "materials");
     for (int m = 0; m < g->materials; m++) am_geno_put(&s, " %s", g->mat[m]);

@@ -1,7 +1,7 @@
 # tests/cli_determinism.sh: `amorph sim` gives bit-identical results run to run, between this build
 # and an -O0 build ($OTHER_BUILD, exported by `make test`), and matches a pinned golden hash on the
 # default build (am_real=float, profile=desktop). Run from the repository root: sh tests/cli_determinism.sh
-. tests/cli_lib.sh
+. tests/shlib.sh
 
 # Golden hash of `amorph sim --scene sphere:8 --json` ("hash" field) for the default float desktop
 # build. Re-pin it deliberately when the model changes, and say why in the commit message.

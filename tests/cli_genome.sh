@@ -1,5 +1,5 @@
 # tests/cli_genome.sh: amorph random, amorph express and genome files through the command.
-. tests/cli_lib.sh
+. tests/shlib.sh
 
 # random genomes of every representation, reproducible from the seed
 for r in dct cppn gmx; do

@@ -1,6 +1,6 @@
 # tests/cli_lattice.sh: `amorph sim FILE` on bad lattice files must exit 2 with one stderr line
 # "FILE:LINE: problem" (format: docs/formats.md). Run by tests/run_all.sh; needs build/amorph.
-. tests/cli_lib.sh
+. tests/shlib.sh
 
 D=$TMPD/lat
 mkdir -p "$D"

@@ -1,6 +1,6 @@
 # tests/cli_sim.sh: the `amorph sim` command: JSON output, divergence reporting, bad input.
 # Run from the repository root: sh tests/cli_sim.sh
-. tests/cli_lib.sh
+. tests/shlib.sh
 
 # field NAME FILE: the value of a numeric JSON field in the one-line object in FILE
 field() { sed -n "s/.*\"$1\": *\(-\{0,1\}[0-9][0-9.eE+-]*\).*/\1/p" "$2"; }
@@ -52,5 +52,10 @@ expect_fail 2 "scene" "$AMORPH" sim --scene nosuch:3
 expect_fail 2 "no-such-robot" "$AMORPH" sim "$TMPD/no-such-robot.lattice"
 expect_fail 2 "unknown option" "$AMORPH" sim --scene cube:3 --bogus
 expect_ok "$AMORPH" sim --help
+
+# an empty body is a valid robot: zero fitness, flagged, exit 0, no simulation
+printf 'amorph-lattice 1\nsize 3 2 1\nlayer 0\n...\n...\n' >"$TMPD/empty.lattice"
+expect_ok "$AMORPH" sim "$TMPD/empty.lattice" --json
+check "empty body not flagged with zero fitness: $(head -c 300 "$TMPD/out")" grep -q '"fitness": 0, "voxels": 0, "links": 0, "empty": 1' "$TMPD/out"
 
 summary cli_sim

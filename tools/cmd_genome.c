@@ -36,7 +36,7 @@ static int parse_int(const char* s, int lo, int hi, int* out)
 
 static const char random_help[] =
     "usage: amorph random --repr dct|cppn|gmx [--materials 2|3] [--seed S] [--size N] [--out FILE]\n"
-    "Writes a random genome (docs/genome-format.md) to FILE, or to the standard output.\n"
+    "Writes a random genome (docs/formats.md) to FILE, or to the standard output.\n"
     "  --repr R         representation: dct, cppn or gmx\n"
     "  --materials M    2 (passive, active) or 3 (passive, active, active90) (2)\n"
     "  --seed S         seed of the random stream, 0..2^64-1 (1)\n"

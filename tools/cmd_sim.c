@@ -129,6 +129,15 @@ int cmd_sim(int argc, char** argv)
     am_status st = tool_load_robot(file, is_scene, &g_lat, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s", err);
     st = am_model_build(&g_model, &g_lat, &env, err, sizeof err);
+    if (st == AM_ERR_EMPTY) {
+        /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
+        if (json)
+            printf("{\"robot\": \"%s\", \"fitness\": 0, \"voxels\": 0, \"links\": 0, \"empty\": 1, \"diverged\": 0, "
+                   "\"steps\": 0}\n", file);
+        else
+            printf("robot = %s\nfitness = 0\nvoxels = 0\nlinks = 0\nempty = 1\ndiverged = 0\nsteps = 0\n", file);
+        return 0;
+    }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
     if (dt_fixed > 0) g_model.env.dt_frac = (am_real)(dt_fixed / (double)g_model.dt_rec);
 

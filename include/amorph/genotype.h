@@ -216,7 +216,7 @@ int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real 
  * mark and queue have nx ny nz entries (each >= 1). Returns the cells kept. */
 int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, int32_t* queue);
 
-/* ---- text format (docs/genome-format.md) ---- */
+/* ---- text format (docs/formats.md) ---- */
 
 /* 1 when text is a genome (its first word is "amorph-genome") */
 int am_genome_sniff(const char* text);

@@ -1,4 +1,4 @@
-# tests/cli_lib.sh: helpers for the shell tests (sourced, not run).
+# tests/shlib.sh: helpers for the shell tests (sourced, not run).
 # expect_fail CODE PATTERN CMD...: CMD must exit with CODE and print one stderr line matching PATTERN
 BUILD=${BUILD:-build}
 AMORPH=${AMORPH:-$BUILD/amorph}
