@@ -1,0 +1,126 @@
+/* The evaluation protocol around the step: recording, fitness modes, empty bodies, capacity and
+ * range errors of the model build, and the seed's time step search. */
+#include "amorph.h"
+#include "harness.h"
+
+static am_lattice g_lat;
+static am_model g_m;
+static am_state g_s;
+static float g_pose[64 * 64 * 7];
+static long g_steps[64];
+
+static void build(const char* scene)
+{
+    char err[AM_ERR_MAX];
+    am_env env = am_default_env();
+    CHECK(am_scene_build(&g_lat, scene, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+}
+
+/* frames land every `every` steps, start with the initial pose, and stop with `truncated` set */
+static void test_recording(void)
+{
+    build("sphere:4"); /* 32 voxels */
+    am_record rec = {0};
+    rec.every = 100;
+    rec.max_frames = 64;
+    rec.pose = g_pose;
+    rec.step = g_steps;
+    rec.pose_cap = (long)(sizeof g_pose / sizeof g_pose[0]);
+    am_eval_def def = am_default_eval();
+    def.cycles = 2;
+    def.record = &rec;
+    am_result r;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    long expect = r.steps / 100 + 1;
+    CHECK(rec.frames == expect, "frames %d, expected %ld for %ld steps", rec.frames, expect, r.steps);
+    CHECK(!rec.truncated, "a recording with room to spare was truncated");
+    CHECK(rec.nv == g_m.nv, "nv %d", rec.nv);
+    CHECK(g_steps[0] == 0 && g_steps[1] == 100, "frame steps %ld %ld", g_steps[0], g_steps[1]);
+    NEAR(g_pose[0], g_m.x0[0][0], 0);
+    NEAR(g_pose[2], g_m.x0[2][0], 0);
+    NEAR(g_pose[3], 1.0, 0); /* identity orientation at the start */
+    /* the last frame is the final state (steps is a multiple of 100 only by chance, so compare the
+     * frame with its step) */
+    long last = g_steps[rec.frames - 1];
+    CHECK(last <= r.steps && r.steps - last < 100, "last frame at step %ld of %ld", last, r.steps);
+
+    rec.max_frames = 3;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(rec.frames == 3 && rec.truncated, "frames %d truncated %d with room for 3", rec.frames, rec.truncated);
+}
+
+/* the three fitness measures are views of one displacement */
+static void test_fitness_modes(void)
+{
+    build("sphere:6");
+    am_eval_def def = am_default_eval();
+    def.cycles = 3;
+    am_result h, x, d3;
+    am_evaluate(&g_m, &g_s, &def, &h);
+    def.fitness = AM_FIT_PLUS_X;
+    am_evaluate(&g_m, &g_s, &def, &x);
+    def.fitness = AM_FIT_3D;
+    am_evaluate(&g_m, &g_s, &def, &d3);
+    CHECK(h.hash == x.hash && x.hash == d3.hash, "the fitness measure changed the motion");
+    NEAR(h.fitness, sqrt(h.dx * h.dx + h.dy * h.dy), 0);
+    NEAR(x.fitness, x.dx, 0);
+    NEAR(d3.fitness, sqrt(h.dx * h.dx + h.dy * h.dy + h.dz * h.dz), 0);
+    CHECK(h.fitness > 1e-4, "the actuated sphere should move (fitness %g m)", h.fitness);
+    CHECK(h.move_steps == 3L * g_m.env.period_steps, "move steps %ld", h.move_steps);
+    CHECK(h.settled, "relaxation did not settle");
+    /* a passive body does not walk */
+    build("cube:3");
+    def.fitness = AM_FIT_HORIZONTAL;
+    am_evaluate(&g_m, &g_s, &def, &h);
+    CHECK(h.fitness < 1e-9, "a passive cube moved %g m", h.fitness);
+}
+
+/* bad models are statuses with messages, never crashes */
+static void test_model_errors(void)
+{
+    char err[AM_ERR_MAX];
+    am_env env = am_default_env();
+    CHECK(am_lattice_init(&g_lat, 3, 3, 3, AM_R(0.01), err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_EMPTY, "empty lattice accepted");
+    g_lat.cell[0] = 1;
+    g_lat.palette.mat[0].E = AM_R(-1);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "E must"), "negative E: %s", err);
+    g_lat.palette = am_default_palette();
+    g_lat.cell[1] = (uint8_t)(g_lat.palette.count + 1);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "unknown material accepted");
+    g_lat.cell[1] = 1;
+    env.period_steps = 0;
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "period 0 accepted");
+    CHECK(am_lattice_init(&g_lat, AM_MAX_DIM + 1, 1, 1, AM_R(0.01), err, sizeof err) == AM_ERR_CAPACITY, "over capacity");
+}
+
+/* the seed's search: deterministic, between the tried extremes, and stable for 2000 steps */
+static void test_dt_search(void)
+{
+    build("cube:4");
+    am_real a = am_dt_search(&g_m, &g_s);
+    am_real b = am_dt_search(&g_m, &g_s);
+    CHECK(a == b, "search not deterministic: %g vs %g", (double)a, (double)b);
+    CHECK(a > AM_R(0.0001) * g_m.dt_rec && a <= AM_R(9.5) * g_m.dt_rec, "dt %g, dt_rec %g", (double)a, (double)g_m.dt_rec);
+    printf("    dt search: %.4g s = %.3f dt_rec\n", (double)a, (double)(a / g_m.dt_rec));
+    am_state_reset(&g_m, &g_s);
+    g_s.dt = a;
+    am_steps(&g_m, &g_s, test_quick() ? 500 : 2000);
+    CHECK(!g_s.diverged, "the searched dt diverged at rest");
+    /* ten times past it is unstable */
+    am_state_reset(&g_m, &g_s);
+    g_s.dt = AM_R(10) * a;
+    am_steps(&g_m, &g_s, 2000);
+    CHECK(g_s.diverged, "10x the searched dt did not diverge");
+}
+
+int main(int argc, char** argv)
+{
+    TEST_INIT(argc, argv);
+    RUN(test_recording);
+    RUN(test_fitness_modes);
+    RUN(test_model_errors);
+    RUN(test_dt_search);
+    return SUMMARY();
+}
