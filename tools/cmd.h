@@ -25,6 +25,10 @@ am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char*
  * Returns AM_ERR_ARG without a message when text is not a genome, so the caller tries others. */
 am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
 
+/* writes text (len bytes) to the file out atomically, or to the standard output when out is NULL;
+ * returns 0, or 1 after a one-line message on stderr */
+int tool_write_output(const char* out, const char* text, long len);
+
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
 void tool_bench_express(void);
 

@@ -85,15 +85,7 @@ int cmd_random(int argc, char** argv)
         fprintf(stderr, "amorph: random: %s\n", err);
         return 1;
     }
-    if (!out) {
-        fwrite(genome_text, 1, (size_t)len, stdout);
-        return 0;
-    }
-    if (am_port_write_file(out, genome_text, len, err, sizeof err) != AM_OK) {
-        fprintf(stderr, "amorph: %s\n", err);
-        return 1;
-    }
-    return 0;
+    return tool_write_output(out, genome_text, len);
 }
 
 /* line number of the "materials" line of a genome text (for messages), 1 if none */
@@ -169,14 +161,8 @@ int cmd_express(int argc, char** argv)
         fprintf(stderr, "amorph: express: %s\n", err);
         return 1;
     }
-    if (!out) {
-        fwrite(genome_lattice_text, 1, (size_t)len, stdout);
-        return 0;
-    }
-    if (am_port_write_file(out, genome_lattice_text, len, err, sizeof err) != AM_OK) {
-        fprintf(stderr, "amorph: %s\n", err);
-        return 1;
-    }
+    if (tool_write_output(out, genome_lattice_text, len) != 0) return 1;
+    if (!out) return 0;
     printf("voxels=%d\n", genome_work.voxels);
     return 0;
 }

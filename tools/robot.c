@@ -18,6 +18,23 @@ int tool_usage_error(const char* fmt, ...)
     return 2;
 }
 
+int tool_write_output(const char* out, const char* text, long len)
+{
+    char err[AM_ERR_MAX];
+    if (!out) {
+        if (fwrite(text, 1, (size_t)len, stdout) != (size_t)len || fflush(stdout) != 0) {
+            fprintf(stderr, "amorph: cannot write to the standard output\n");
+            return 1;
+        }
+        return 0;
+    }
+    if (am_port_write_file(out, text, len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
 am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz)
 {
     if (is_scene) return am_scene_build(lat, name, err, errsz);
