@@ -99,10 +99,10 @@ static int needs_rebuild(const am_model* m, const am_state* s)
 
 void am_sim_collide(const am_model* m, am_state* s)
 {
+    if (!m->env.collisions) return; /* fc stays as am_state_reset left it: zero */
     const int nv = m->nv;
     for (int c = 0; c < 3; c++)
         for (int i = 0; i < nv; i++) s->fc[c][i] = AM_R(0);
-    if (!m->env.collisions) return;
     if (needs_rebuild(m, s)) rebuild(m, s);
     const am_real rad = AM_MUL(AM_R(0.625), m->L);
     for (int k = 0; k < s->npairs; k++) {

@@ -237,6 +237,8 @@ void am_state_reset(const am_model* m, am_state* s)
     s->rebuilds = 0;
     s->npairs = -1; /* the first step builds the collision list */
     s->max_npairs = 0;
+    s->scales_valid = 0; /* the first step sets scales and rest lengths */
+    for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale[k] = AM_R(1);
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {
             s->x[c][i] = m->x0[c][i];

@@ -16,6 +16,7 @@
 static void actuation(const am_model* m, am_state* s)
 {
     const am_env* e = &m->env;
+    int changed = !s->scales_valid;
     for (int k = 0; k < m->palette.count; k++) {
         am_real T = e->temp_base;
         if (s->actuate) {
@@ -23,8 +24,14 @@ static void actuation(const am_model* m, am_state* s)
             am_real arg = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps)) + m->mat_phase[k];
             T += AM_MUL(e->temp_amplitude, am_sin(arg));
         }
-        s->mat_scale[k] = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+        am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+        changed |= sc != s->mat_scale[k];
+        s->mat_scale[k] = sc;
     }
+    /* voxel scales and rest lengths only when a material's scale moved (never, for a passive
+     * body or during relaxation) */
+    if (!changed) return;
+    s->scales_valid = 1;
     const int nv = m->nv, nl = m->nl;
     for (int i = 0; i < nv; i++) s->s[i] = s->mat_scale[m->mat[i]];
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);

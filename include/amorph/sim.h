@@ -135,6 +135,7 @@ typedef struct am_state {
     int32_t bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
     int32_t bucket_next[AM_MAX_VOXELS];
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
+    int scales_valid;                    /* 0 until voxel scales and rest lengths follow mat_scale */
 } am_state;
 
 /* builds the model; AM_ERR_EMPTY for no voxel, AM_ERR_CAPACITY past a capacity, AM_ERR_RANGE for a
