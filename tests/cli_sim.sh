@@ -48,6 +48,11 @@ expect_fail 2 "collisions" "$AMORPH" sim --scene cube:3 --collisions maybe
 expect_fail 2 "dt" "$AMORPH" sim --scene cube:3 --dt -1
 expect_fail 2 "dt" "$AMORPH" sim --scene cube:3 --dt 0
 expect_fail 2 "cycles" "$AMORPH" sim --scene cube:3 --cycles many
+# whole-token numbers only: blanks, signs and trailing text are refused, not half-read
+expect_fail 2 "cycles" "$AMORPH" sim --scene cube:3 --cycles " 5"
+expect_fail 2 "cycles" "$AMORPH" sim --scene cube:3 --cycles 5x
+expect_fail 2 "amplitude" "$AMORPH" sim --scene cube:3 --amplitude nan
+expect_fail 2 "seed" "$AMORPH" random --repr gmx --seed -3
 expect_fail 2 "scene" "$AMORPH" sim --scene nosuch:3
 expect_fail 2 "no-such-robot" "$AMORPH" sim "$TMPD/no-such-robot.lattice"
 expect_fail 2 "unknown option" "$AMORPH" sim --scene cube:3 --bogus

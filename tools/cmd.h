@@ -25,6 +25,13 @@ am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char*
  * Returns AM_ERR_ARG without a message when text is not a genome, so the caller tries others. */
 am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
 
+/* strict value parsers (tools/args.c): 1 when the whole token is a number in [lo, hi] */
+int tool_parse_u64(const char* s, uint64_t* out);
+int tool_parse_long(const char* s, long lo, long hi, long* out);
+int tool_parse_int(const char* s, int lo, int hi, int* out);
+int tool_parse_real(const char* s, double lo, double hi, double* out);
+int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
+
 /* writes text (len bytes) to the file out atomically, or to the standard output when out is NULL;
  * returns 0, or 1 after a one-line message on stderr */
 int tool_write_output(const char* out, const char* text, long len);

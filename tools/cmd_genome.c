@@ -2,7 +2,6 @@
 #include "cmd.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* one genome, one expression workspace and the texts of the commands (they run one at a time) */
@@ -11,28 +10,6 @@ static am_geno_work genome_work;
 static am_lattice genome_lat;
 static char genome_text[AM_GENOME_TEXT_MAX];
 static char genome_lattice_text[AM_LATTICE_TEXT_MAX];
-
-static int parse_u64(const char* s, uint64_t* out)
-{
-    uint64_t v = 0;
-    if (!s || !*s) return 0;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9') return 0;
-        uint64_t d = (uint64_t)(*s - '0');
-        if (v > (UINT64_MAX - d) / 10) return 0;
-        v = v * 10 + d;
-    }
-    *out = v;
-    return 1;
-}
-
-static int parse_int(const char* s, int lo, int hi, int* out)
-{
-    uint64_t v;
-    if (!parse_u64(s, &v) || v < (uint64_t)lo || v > (uint64_t)hi) return 0;
-    *out = (int)v;
-    return 1;
-}
 
 static const char random_help[] =
     "usage: amorph random --repr dct|cppn|gmx [--materials 2|3] [--seed S] [--size N] [--out FILE]\n"
@@ -60,13 +37,13 @@ int cmd_random(int argc, char** argv)
             if (def.repr == AM_REPR_NONE) return tool_usage_error("random: --repr takes dct, cppn or gmx");
             have_repr = 1, i++;
         } else if (!strcmp(a, "--materials")) {
-            if (!parse_int(v, 2, 3, &n)) return tool_usage_error("random: --materials takes 2 or 3");
+            if (!tool_parse_int(v, 2, 3, &n)) return tool_usage_error("random: --materials takes 2 or 3");
             def.materials = n, i++;
         } else if (!strcmp(a, "--seed")) {
-            if (!parse_u64(v, &seed)) return tool_usage_error("random: --seed needs a whole number 0..18446744073709551615");
+            if (!tool_parse_u64(v, &seed)) return tool_usage_error("random: --seed needs a whole number 0..18446744073709551615");
             i++;
         } else if (!strcmp(a, "--size")) {
-            if (!parse_int(v, 1, AM_MAX_DIM, &n))
+            if (!tool_parse_int(v, 1, AM_MAX_DIM, &n))
                 return tool_usage_error("random: --size needs a whole number 1..%d (%s profile)", AM_MAX_DIM, AM_PROFILE_NAME);
             def.nx = def.ny = def.nz = n, i++;
         } else if (!strcmp(a, "--out")) {

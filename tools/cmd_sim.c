@@ -2,40 +2,11 @@
 #include "cmd.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 static am_lattice g_lat;
 static am_model g_model;
 static am_state g_state;
-
-static int parse_long(const char* s, long lo, long hi, long* out)
-{
-    char* end;
-    if (!s || !*s) return 0;
-    long v = strtol(s, &end, 10);
-    if (*end || v < lo || v > hi) return 0;
-    *out = v;
-    return 1;
-}
-
-static int parse_real(const char* s, double lo, double hi, double* out)
-{
-    char* end;
-    if (!s || !*s) return 0;
-    double v = strtod(s, &end);
-    if (*end || !(v >= lo && v <= hi)) return 0;
-    *out = v;
-    return 1;
-}
-
-static int parse_onoff(const char* s, int* out)
-{
-    if (s && !strcmp(s, "on")) *out = 1;
-    else if (s && !strcmp(s, "off")) *out = 0;
-    else return 0;
-    return 1;
-}
 
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
@@ -77,32 +48,32 @@ int cmd_sim(int argc, char** argv)
             if (!v) return tool_usage_error("sim: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
             file = v, is_scene = 1, i++;
         } else if (!strcmp(a, "--cycles")) {
-            if (!parse_long(v, 0, 100000, &n)) return tool_usage_error("sim: --cycles needs a whole number 0..100000");
+            if (!tool_parse_long(v, 0, 100000, &n)) return tool_usage_error("sim: --cycles needs a whole number 0..100000");
             def.cycles = (int)n, i++;
         } else if (!strcmp(a, "--period-steps")) {
-            if (!parse_long(v, 1, 10000000, &n)) return tool_usage_error("sim: --period-steps needs a whole number 1..10000000");
+            if (!tool_parse_long(v, 1, 10000000, &n)) return tool_usage_error("sim: --period-steps needs a whole number 1..10000000");
             env.period_steps = (int)n, i++;
         } else if (!strcmp(a, "--relax-max")) {
-            if (!parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
+            if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
             def.relax_max_steps = n, i++;
             if (def.relax_min_steps > n) def.relax_min_steps = n;
         } else if (!strcmp(a, "--amplitude")) {
-            if (!parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
+            if (!tool_parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
             env.temp_amplitude = (am_real)r, i++;
         } else if (!strcmp(a, "--dt")) {
-            if (!parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
+            if (!tool_parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
             dt_fixed = r, i++;
         } else if (!strcmp(a, "--dt-frac")) {
-            if (!parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
+            if (!tool_parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
             env.dt_frac = (am_real)r, i++;
         } else if (!strcmp(a, "--gravity")) {
-            if (!parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
+            if (!tool_parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
             env.gravity = (am_real)r, i++;
         } else if (!strcmp(a, "--collisions")) {
-            if (!parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
+            if (!tool_parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
             i++;
         } else if (!strcmp(a, "--floor")) {
-            if (!parse_onoff(v, &env.floor)) return tool_usage_error("sim: --floor takes on or off");
+            if (!tool_parse_onoff(v, &env.floor)) return tool_usage_error("sim: --floor takes on or off");
             i++;
         } else if (!strcmp(a, "--cte")) {
             if (v && !strcmp(v, "linear")) env.cte_mode = AM_CTE_LINEAR;
@@ -206,10 +177,10 @@ int cmd_bench(int argc, char** argv)
             return 0;
         } else if (!strcmp(a, "--scene") && v) scene = v, i++;
         else if (!strcmp(a, "--steps")) {
-            if (!parse_long(v, 1, 100000000, &n)) return tool_usage_error("bench: --steps needs a whole number >= 1");
+            if (!tool_parse_long(v, 1, 100000000, &n)) return tool_usage_error("bench: --steps needs a whole number >= 1");
             steps = n, i++;
         } else if (!strcmp(a, "--collisions")) {
-            if (!parse_onoff(v, &coll)) return tool_usage_error("bench: --collisions takes on or off");
+            if (!tool_parse_onoff(v, &coll)) return tool_usage_error("bench: --collisions takes on or off");
             i++;
         } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
     }
