@@ -1,13 +1,19 @@
-/* POSIX port: clock, files with atomic replace, core count. */
+/* POSIX port: clock, console and progress line, files with atomic replace, a parallel map on
+ * POSIX threads, and Ctrl-C / SIGTERM caught into a flag. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph/port.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
+
+#define PORT_MAX_THREADS 64 /* workers a parallel map can start */
 
 double am_port_now(void)
 {
@@ -85,4 +91,195 @@ int am_port_cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     return n < 1 ? 1 : (int)n;
+}
+
+/* ---- console ---- */
+
+static int progress_open; /* 1 while a progress line is on the terminal */
+
+static void put_all(int fd, const char* text)
+{
+    size_t n = strlen(text);
+    while (n > 0) {
+        ssize_t put = write(fd, text, n);
+        if (put < 0 && errno == EINTR) continue;
+        if (put <= 0) return;
+        text += put;
+        n -= (size_t)put;
+    }
+}
+
+static void progress_close(void)
+{
+    if (progress_open) {
+        put_all(2, "\n");
+        progress_open = 0;
+    }
+}
+
+void am_port_out(const char* text)
+{
+    progress_close();
+    fflush(stdout);
+    fputs(text, stdout);
+    fflush(stdout);
+}
+
+void am_port_err(const char* text)
+{
+    progress_close();
+    fflush(stderr);
+    fputs(text, stderr);
+    fflush(stderr);
+}
+
+int am_port_is_terminal(void)
+{
+    return isatty(2) ? 1 : 0;
+}
+
+void am_port_progress(const char* line)
+{
+    if (!am_port_is_terminal()) return;
+    if (!line) {
+        progress_close();
+        return;
+    }
+    fflush(stderr);
+    put_all(2, "\r\033[K"); /* back to the start of the line, clear it */
+    put_all(2, line);
+    progress_open = 1;
+}
+
+/* ---- more files ---- */
+
+am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open for appending: %s", path, strerror(errno));
+    const char* p = (const char*)data;
+    long done = 0;
+    while (done < n) {
+        ssize_t put = write(fd, p + done, (size_t)(n - done));
+        if (put < 0) {
+            if (errno == EINTR) continue;
+            int e = errno;
+            close(fd);
+            return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
+        }
+        done += put;
+    }
+    if (close(fd) != 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot finish writing: %s", path, strerror(errno));
+    return AM_OK;
+}
+
+am_status am_port_make_dir(const char* path, char* err, int errsz)
+{
+    if (mkdir(path, 0755) == 0) return AM_OK;
+    int e = errno;
+    struct stat st;
+    if (e == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode)) return AM_OK;
+    if (e == EEXIST) return am_fail(err, errsz, AM_ERR_IO, "%s: exists and is not a directory", path);
+    return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create the directory: %s", path, strerror(e));
+}
+
+int am_port_exists(const char* path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* ---- parallel map ---- */
+
+typedef struct map_job {
+    pthread_mutex_t lock;
+    int next;             /* next item to hand out */
+    int n;
+    am_port_task task;
+    void* ctx;
+} map_job;
+
+typedef struct map_worker {
+    map_job* job;
+    int id;
+} map_worker;
+
+static void map_loop(map_job* job, int worker)
+{
+    for (;;) {
+        pthread_mutex_lock(&job->lock);
+        int item = job->next < job->n ? job->next++ : -1;
+        pthread_mutex_unlock(&job->lock);
+        if (item < 0) return;
+        job->task(job->ctx, item, worker);
+    }
+}
+
+static void* map_thread(void* arg)
+{
+    map_worker* w = (map_worker*)arg;
+    map_loop(w->job, w->id);
+    return NULL;
+}
+
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, char* err, int errsz)
+{
+    if (workers < 1 || n < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
+    if (workers > PORT_MAX_THREADS) workers = PORT_MAX_THREADS;
+    if (workers > n) workers = n > 0 ? n : 1;
+    map_job job;
+    job.next = 0;
+    job.n = n;
+    job.task = task;
+    job.ctx = ctx;
+    if (pthread_mutex_init(&job.lock, NULL) != 0) return am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot create a mutex");
+    pthread_t th[PORT_MAX_THREADS];
+    map_worker w[PORT_MAX_THREADS];
+    int started = 0;
+    am_status st = AM_OK;
+    /* the calling thread is worker 0; the others are threads of their own */
+    for (int i = 1; i < workers; i++) {
+        w[i].job = &job;
+        w[i].id = i;
+        int e = pthread_create(&th[i], NULL, map_thread, &w[i]);
+        if (e != 0) {
+            st = am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot start a thread: %s", strerror(e));
+            break;
+        }
+        started = i;
+    }
+    map_loop(&job, 0); /* finishes every item even when a thread failed to start */
+    for (int i = 1; i <= started; i++) pthread_join(th[i], NULL);
+    pthread_mutex_destroy(&job.lock);
+    return st;
+}
+
+/* ---- interruption ---- */
+
+static volatile sig_atomic_t interrupt_flag;
+
+static void on_interrupt(int sig)
+{
+    if (interrupt_flag) {
+        signal(sig, SIG_DFL);
+        raise(sig); /* a second request ends the process at once */
+        return;
+    }
+    interrupt_flag = 1;
+}
+
+void am_port_catch_interrupt(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+int am_port_interrupted(void)
+{
+    return interrupt_flag ? 1 : 0;
 }
