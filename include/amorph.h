@@ -10,5 +10,6 @@
 #include "amorph/dct.h"
 #include "amorph/genotype.h"
 #include "amorph/sim.h"
+#include "amorph/image.h"
 #include "amorph/port.h"
 #endif

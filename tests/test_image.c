@@ -1,0 +1,347 @@
+/* Tests of the picture layer: CRC-32 and Adler-32 against known vectors and bitwise references,
+ * the PNG encoder (decoded here by an independent inflate, tests/png_read.h), the rasteriser on
+ * single triangles and cubes, and a whole filmstrip from the render command's writer.
+ *
+ * The program doubles as the PNG inspector of the shell tests (tests/cli_render.sh,
+ * tests/cli_browser.sh):
+ *   test_image --png-info FILE [RRGGBB ...]    prints "W H N1 N2 ..." (pixels in shades of each colour)
+ *   test_image --png-diff A B RRGGBB ...       prints the pixels shaded like one of the colours in
+ *                                              A or B that differ between A and B
+ * Both exit 1 with a message when a file is not a valid PNG. */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, close */
+#include "amorph.h"
+#include "cmd.h"
+#include "harness.h"
+#include "png_read.h"
+
+#include <stdint.h>
+#include <unistd.h>
+
+static void test_crc32_vectors(void)
+{
+    CHECK(am_crc32(0, "123456789", 9) == 0xCBF43926u, "crc32(123456789) = %08x", am_crc32(0, "123456789", 9));
+    CHECK(am_crc32(0, "", 0) == 0, "crc32('') = %08x", am_crc32(0, "", 0));
+    const char* fox = "The quick brown fox jumps over the lazy dog";
+    CHECK(am_crc32(0, fox, 43) == 0x414FA339u, "crc32(fox) = %08x", am_crc32(0, fox, 43));
+    /* running value: in two parts gives the same as at once */
+    uint32_t part = am_crc32(am_crc32(0, fox, 10), fox + 10, 33);
+    CHECK(part == 0x414FA339u, "crc32 in parts = %08x", part);
+    /* a PNG IEND chunk's CRC is a well-known constant */
+    CHECK(am_crc32(0, "IEND", 4) == 0xAE426082u, "crc32(IEND) = %08x", am_crc32(0, "IEND", 4));
+    /* against the bitwise reference on every byte value */
+    static uint8_t buf[4096];
+    for (int i = 0; i < 4096; i++) buf[i] = (uint8_t)(i * 7 + (i >> 3));
+    CHECK(am_crc32(0, buf, 4096) == png_ref_crc(buf, 4096), "crc32 differs from the bitwise reference");
+}
+
+static void test_adler32_vectors(void)
+{
+    CHECK(am_adler32(1, "Wikipedia", 9) == 0x11E60398u, "adler32(Wikipedia) = %08x", am_adler32(1, "Wikipedia", 9));
+    CHECK(am_adler32(1, "", 0) == 1, "adler32('') = %08x", am_adler32(1, "", 0));
+    CHECK(am_adler32(1, "123456789", 9) == 0x091E01DEu, "adler32(123456789) = %08x", am_adler32(1, "123456789", 9));
+    /* long runs of 0xFF cross the 5552-byte modulo boundary many times */
+    static uint8_t ff[100000];
+    memset(ff, 0xFF, sizeof ff);
+    CHECK(am_adler32(1, ff, 100000) == png_ref_adler(ff, 100000), "adler32 of 100000 x 0xFF = %08x, reference %08x",
+          am_adler32(1, ff, 100000), png_ref_adler(ff, 100000));
+    uint32_t part = am_adler32(am_adler32(1, ff, 7777), ff + 7777, 100000 - 7777);
+    CHECK(part == png_ref_adler(ff, 100000), "adler32 in parts = %08x", part);
+}
+
+/* a test picture: flat areas, a gradient, a noisy block and repeated rows */
+static void make_picture(uint8_t* px, int w, int h, int ch)
+{
+    uint32_t r = 12345;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            uint8_t* p = px + ((long)y * w + x) * ch;
+            r = r * 1103515245u + 12345u;
+            if (y < h / 3) p[0] = 200, p[1] = 30, p[2] = 40;
+            else if (x < w / 2) p[0] = (uint8_t)x, p[1] = (uint8_t)(y * 3), p[2] = (uint8_t)(x + y);
+            else p[0] = (uint8_t)(r >> 24), p[1] = (uint8_t)(r >> 16), p[2] = (uint8_t)(r >> 8);
+            if (ch == 4) p[3] = 255;
+        }
+}
+
+static void roundtrip(int w, int h, int ch, int mode)
+{
+    static uint8_t px[300 * 200 * 4], out[400000];
+    make_picture(px, w, h, ch);
+    long len = 0;
+    char err[AM_ERR_MAX], why[200];
+    long max = am_png_max_size(w, h, ch);
+    CHECK(max > 0 && max <= (long)sizeof out, "max size %ld", max);
+    am_status st = am_png_encode(px, w, h, ch, mode, out, (long)sizeof out, &len, err, sizeof err);
+    CHECK(st == AM_OK, "encode %d x %d x %d mode %d: %s", w, h, ch, mode, err);
+    CHECK(len > 0 && len <= max, "length %ld of at most %ld", len, max);
+    png_image img;
+    int r = png_decode(out, len, &img, why, sizeof why);
+    CHECK(r == 0, "decode %d x %d x %d mode %d: %s", w, h, ch, mode, why);
+    if (r) return;
+    CHECK(img.w == w && img.h == h, "size %d x %d, want %d x %d", img.w, img.h, w, h);
+    CHECK(img.color_type == (ch == 4 ? 6 : 2), "colour type %d", img.color_type);
+    CHECK(img.chunks == 3, "chunks %d (IHDR, IDAT, IEND)", img.chunks);
+    if (mode == AM_PNG_FIXED) CHECK(img.fixed_blocks == 1 && img.stored_blocks == 0, "blocks: %d fixed, %d stored", img.fixed_blocks, img.stored_blocks);
+    else CHECK(img.stored_blocks >= 1 && img.fixed_blocks == 0, "blocks: %d fixed, %d stored", img.fixed_blocks, img.stored_blocks);
+    long bad = 0;
+    for (long i = 0; i < (long)w * h; i++)
+        for (int k = 0; k < 3; k++) bad += img.rgb[3 * i + k] != px[i * ch + k];
+    CHECK(bad == 0, "%ld samples differ after the round trip", bad);
+    png_free(&img);
+}
+
+static void test_png_roundtrip(void)
+{
+    roundtrip(300, 200, 3, AM_PNG_FIXED);
+    roundtrip(300, 200, 3, AM_PNG_STORED); /* 180200 bytes: three stored blocks */
+    roundtrip(97, 61, 4, AM_PNG_FIXED);
+    roundtrip(97, 61, 4, AM_PNG_STORED);
+    roundtrip(1, 1, 3, AM_PNG_FIXED);
+    roundtrip(1, 1, 3, AM_PNG_STORED);
+}
+
+static void test_png_compresses_flat(void)
+{
+    static uint8_t px[400 * 300 * 3], out[500000];
+    for (long i = 0; i < 400L * 300; i++) px[3 * i] = 240, px[3 * i + 1] = 240, px[3 * i + 2] = 230;
+    for (int y = 100; y < 200; y++)
+        for (int x = 150; x < 250; x++) px[3 * (y * 400 + x)] = 40, px[3 * (y * 400 + x) + 1] = 90, px[3 * (y * 400 + x) + 2] = 220;
+    long len = 0;
+    char err[AM_ERR_MAX];
+    CHECK(am_png_encode(px, 400, 300, 3, AM_PNG_FIXED, out, (long)sizeof out, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(len < 400L * 300 * 3 / 50, "a flat picture should shrink at least 50 times: %ld bytes", len);
+}
+
+static void test_png_errors(void)
+{
+    static uint8_t px[64 * 64 * 3], out[100];
+    long len = 7;
+    char err[AM_ERR_MAX] = "";
+    CHECK(am_png_encode(px, 64, 64, 3, AM_PNG_FIXED, out, (long)sizeof out, &len, err, sizeof err) == AM_ERR_CAPACITY,
+          "a 100-byte buffer should be too small");
+    CHECK(len == 0 && strstr(err, "does not fit"), "len %ld, message '%s'", len, err);
+    CHECK(am_png_encode(px, 0, 64, 3, AM_PNG_FIXED, out, (long)sizeof out, &len, err, sizeof err) == AM_ERR_ARG, "width 0");
+    CHECK(am_png_encode(px, 64, 64, 2, AM_PNG_FIXED, out, (long)sizeof out, &len, err, sizeof err) == AM_ERR_ARG, "2 channels");
+    CHECK(am_png_encode(px, 64, 64, 3, 7, out, (long)sizeof out, &len, err, sizeof err) == AM_ERR_ARG, "mode 7");
+    CHECK(am_png_max_size(AM_PNG_MAX_SIDE + 1, 1, 3) == 0, "too wide");
+}
+
+/* ---- rasteriser ---- */
+
+#define RW 120
+#define RH 100
+static uint8_t r_rgb[RW * RH * 3];
+static float r_depth[RW * RH];
+
+static int px_is(const am_canvas* c, int x, int y, const uint8_t rgb[3])
+{
+    const uint8_t* p = c->rgb + 3 * ((long)y * c->w + x);
+    return p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
+}
+
+static long count_colour(const am_canvas* c, const uint8_t rgb[3])
+{
+    long n = 0;
+    for (int y = 0; y < c->h; y++)
+        for (int x = 0; x < c->w; x++) n += px_is(c, x, y, rgb);
+    return n;
+}
+
+static void test_raster_triangles(void)
+{
+    am_canvas c = {RW, RH, r_rgb, r_depth};
+    const uint8_t bg[3] = {255, 255, 255}, red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
+    am_canvas_clear(&c, bg);
+    am_camera cam;
+    double o[3] = {0, 0, 0};
+    am_camera_look(&cam, o, 0, 0, 1, 0, 0, RW, RH);
+    /* two triangles sharing a diagonal cover the 40 x 30 square exactly: no gap, nothing outside */
+    double t1[9] = {10, 10, 1, 50, 10, 1, 50, 40, 1}, t2[9] = {10, 10, 1, 50, 40, 1, 10, 40, 1};
+    am_raster_triangle(&c, &cam, t1, red, 1);
+    am_raster_triangle(&c, &cam, t2, red, 1);
+    CHECK(count_colour(&c, red) == 40 * 30, "square covers %ld pixels, want 1200", count_colour(&c, red));
+    CHECK(px_is(&c, 10, 10, red) && px_is(&c, 49, 39, red) && px_is(&c, 9, 10, bg) && px_is(&c, 50, 39, bg),
+          "square edges");
+    /* a nearer triangle wins, a farther one does not */
+    double near[9] = {20, 20, 0.5, 60, 20, 0.5, 20, 60, 0.5}, far[9] = {0, 0, 2, 119, 0, 2, 0, 99, 2};
+    am_raster_triangle(&c, &cam, near, blue, 1);
+    am_raster_triangle(&c, &cam, far, bg, 1);
+    CHECK(px_is(&c, 25, 25, blue), "nearer triangle drawn over the square");
+    CHECK(px_is(&c, 45, 12, red), "square kept where the farther triangle overlaps it");
+    /* the viewport clips */
+    am_camera half;
+    am_camera_look(&half, o, 0, 0, 1, 0, 0, 60, RH);
+    am_canvas_clear(&c, bg);
+    double wide[9] = {0, 0, 0, 119, 0, 0, 0, 99, 0};
+    am_raster_triangle(&c, &half, wide, red, 0);
+    CHECK(px_is(&c, 5, 5, red) && px_is(&c, 70, 5, bg), "drawing stays in the viewport");
+}
+
+static void test_raster_cube(void)
+{
+    am_canvas c = {RW, RH, r_rgb, r_depth};
+    const uint8_t bg[3] = {255, 255, 255}, col[3] = {40, 90, 220};
+    const double light_top[3] = {0, 0, 1}, q[4] = {1, 0, 0, 0}, half[3] = {0.5, 0.5, 0.5};
+    am_camera cam;
+    double o[3] = {0, 0, 0};
+    /* straight down (elevation 90 degrees), 4 m over the 100-pixel height: 25 px per metre, so
+     * the unit cube's top face is the 25 x 25 square centred on (60, 50), lit fully */
+    am_canvas_clear(&c, bg);
+    am_camera_look(&cam, o, 0, 1.5707963267948966, 4.0, 0, 0, RW, RH);
+    am_raster_box(&c, &cam, o, q, half, col, light_top, 0.3);
+    long n = count_colour(&c, col);
+    CHECK(n == 25 * 25, "top face covers %ld pixels, want 625", n);
+    /* x from 47.5 to 72.5, y from 37.5 to 62.5: the top-left rule takes the centres on the left
+     * and top edges, so pixels 47..71 x 37..61 */
+    CHECK(px_is(&c, 60, 50, col) && px_is(&c, 47, 37, col) && px_is(&c, 71, 61, col), "inside the top face");
+    CHECK(px_is(&c, 46, 50, bg) && px_is(&c, 72, 50, bg) && px_is(&c, 60, 36, bg) && px_is(&c, 60, 62, bg),
+          "outside the top face");
+    NEAR(c.depth[50 * RW + 60], -0.5, 1e-5); /* the top face is 0.5 m nearer than the target */
+    /* turned 45 degrees about z: a diamond, its corners at 25/sqrt(2) = 17.7 px along the axes */
+    am_canvas_clear(&c, bg);
+    double q45[4] = {cos(0.39269908169872414), 0, 0, sin(0.39269908169872414)};
+    am_raster_box(&c, &cam, o, q45, half, col, light_top, 0.3);
+    CHECK(px_is(&c, 60 + 16, 50, col) && px_is(&c, 60, 50 - 16, col), "diamond tips inside");
+    CHECK(px_is(&c, 60 + 11, 50 - 11, bg) && px_is(&c, 60 - 11, 50 + 11, bg), "diamond sides outside: a turned cube");
+    /* oblique view, light from the top: three faces, the top one brightest, the others darker shades */
+    am_canvas_clear(&c, bg);
+    am_camera_look(&cam, o, -0.6, 0.5, 3.0, 0, 0, RW, RH);
+    am_raster_box(&c, &cam, o, q, half, col, light_top, 0.3);
+    double top[3] = {0, 0, 0.5}, side[3] = {0, -0.5, 0}, s[3];
+    am_camera_project(&cam, top, s);
+    CHECK(px_is(&c, (int)s[0], (int)s[1], col), "top face centre in the full colour");
+    am_camera_project(&cam, side, s);
+    const uint8_t* p = c.rgb + 3 * ((long)(int)s[1] * RW + (int)s[0]);
+    CHECK(p[0] == 12 && p[1] == 27 && p[2] == 66, "side face at the ambient 0.3: %d %d %d", p[0], p[1], p[2]);
+    CHECK(px_is(&c, 2, 2, bg) && px_is(&c, RW - 3, RH - 3, bg), "corners stay background");
+}
+
+static void test_raster_text(void)
+{
+    am_canvas c = {RW, RH, r_rgb, r_depth};
+    const uint8_t bg[3] = {255, 255, 255}, ink[3] = {0, 0, 0};
+    am_canvas_clear(&c, bg);
+    am_camera cam;
+    double o[3] = {0, 0, 0};
+    am_camera_look(&cam, o, 0, 0, 1, 0, 0, RW, RH);
+    int w = am_raster_text(&c, &cam, 10, 10, 1, "I", ink);
+    CHECK(w == 6, "advance %d", w);
+    /* the I of the font: a full column of 7 pixels at x = 12 and bars at the top and bottom */
+    CHECK(count_colour(&c, ink) == 7 + 4, "I has %ld pixels", count_colour(&c, ink));
+    CHECK(px_is(&c, 12, 10, ink) && px_is(&c, 12, 16, ink) && px_is(&c, 11, 10, ink) && px_is(&c, 11, 13, bg), "I shape");
+    am_canvas_clear(&c, bg);
+    am_raster_text(&c, &cam, RW - 8, 10, 3, "WW", ink); /* mostly outside: clipped, no crash */
+    CHECK(count_colour(&c, ink) > 0 && count_colour(&c, ink) < 35 * 9, "clipped text %ld", count_colour(&c, ink));
+}
+
+/* ---- the filmstrip writer of amorph render ---- */
+
+static void test_filmstrip_png(void)
+{
+    static am_lattice lat;
+    char err[AM_ERR_MAX], why[200];
+    CHECK(am_scene_build(&lat, "sphere:6", err, sizeof err) == AM_OK, "%s", err);
+    am_env env = am_default_env();
+    am_eval_def eval = am_default_eval();
+    eval.cycles = test_quick() ? 1 : 2;
+    eval.relax_max_steps = 300;
+    eval.relax_min_steps = 100;
+    char path[] = "/tmp/amorph-test-film-XXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0, "mkstemp");
+    if (fd < 0) return;
+    close(fd);
+    CHECK(tool_write_filmstrip(&lat, &env, &eval, path) == 0, "filmstrip written");
+    png_image img;
+    int r = png_read_file(path, &img, why, sizeof why);
+    CHECK(r == 0, "decode the filmstrip: %s", why);
+    remove(path);
+    if (r) return;
+    CHECK(img.w == 1600 && img.h == 400, "size %d x %d", img.w, img.h);
+    CHECK(img.fixed_blocks == 1, "fixed Huffman");
+    /* the body in shades of both materials, in every one of the six panels */
+    const uint8_t* passive = lat.palette.mat[0].color;
+    const uint8_t* active = lat.palette.mat[1].color;
+    for (int panel = 0; panel < 6; panel++) {
+        long np = 0, na = 0;
+        for (int y = 30; y < 350; y++)
+            for (int x = panel * 266 + 2; x < panel * 266 + 264; x++) {
+                const uint8_t* p = img.rgb + 3 * ((long)y * img.w + x);
+                np += png_shade_of(p, passive, 6);
+                na += png_shade_of(p, active, 6);
+            }
+        CHECK(np > 500 && na > 500, "panel %d: %ld passive and %ld active pixels", panel, np, na);
+    }
+    png_free(&img);
+}
+
+/* ---- the PNG inspector of the shell tests ---- */
+
+static int parse_colours(int n, char** hex, uint8_t (*col)[3])
+{
+    for (int i = 0; i < n; i++) {
+        unsigned v;
+        if (strlen(hex[i]) != 6 || sscanf(hex[i], "%6x", &v) != 1) return fprintf(stderr, "bad colour '%s'\n", hex[i]), -1;
+        col[i][0] = (uint8_t)(v >> 16), col[i][1] = (uint8_t)(v >> 8), col[i][2] = (uint8_t)v;
+    }
+    return 0;
+}
+
+static int inspector(int argc, char** argv)
+{
+    char why[300];
+    uint8_t col[16][3];
+    if (!strcmp(argv[1], "--png-info") && argc >= 3 && argc - 3 <= 16) {
+        png_image img;
+        if (parse_colours(argc - 3, argv + 3, col)) return 2;
+        if (png_read_file(argv[2], &img, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        printf("%d %d", img.w, img.h);
+        for (int k = 0; k < argc - 3; k++) {
+            long n = 0;
+            for (long i = 0; i < (long)img.w * img.h; i++) n += png_shade_of(img.rgb + 3 * i, col[k], 8);
+            printf(" %ld", n);
+        }
+        printf("\n");
+        png_free(&img);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--png-diff") && argc >= 5 && argc - 4 <= 16) {
+        png_image a, b;
+        if (parse_colours(argc - 4, argv + 4, col)) return 2;
+        if (png_read_file(argv[2], &a, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        if (png_read_file(argv[3], &b, why, sizeof why)) return png_free(&a), fprintf(stderr, "%s: %s\n", argv[3], why), 1;
+        if (a.w != b.w || a.h != b.h) return png_free(&a), png_free(&b), fprintf(stderr, "sizes differ\n"), 1;
+        long n = 0;
+        for (long i = 0; i < (long)a.w * a.h; i++) {
+            const uint8_t *p = a.rgb + 3 * i, *q = b.rgb + 3 * i;
+            if (!memcmp(p, q, 3)) continue;
+            for (int k = 0; k < argc - 4; k++)
+                if (png_shade_of(p, col[k], 8) || png_shade_of(q, col[k], 8)) {
+                    n++;
+                    break;
+                }
+        }
+        printf("%ld\n", n);
+        png_free(&a);
+        png_free(&b);
+        return 0;
+    }
+    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB...\n");
+    return 2;
+}
+
+int main(int argc, char** argv)
+{
+    if (argc >= 2 && !strncmp(argv[1], "--png-", 6)) return inspector(argc, argv);
+    TEST_INIT(argc, argv);
+    RUN(test_crc32_vectors);
+    RUN(test_adler32_vectors);
+    RUN(test_png_roundtrip);
+    RUN(test_png_compresses_flat);
+    RUN(test_png_errors);
+    RUN(test_raster_triangles);
+    RUN(test_raster_cube);
+    RUN(test_raster_text);
+    RUN(test_filmstrip_png);
+    return SUMMARY();
+}
