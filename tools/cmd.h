@@ -9,6 +9,9 @@ int cmd_sim(int argc, char** argv);
 int cmd_bench(int argc, char** argv);
 int cmd_random(int argc, char** argv);
 int cmd_express(int argc, char** argv);
+int cmd_render(int argc, char** argv);
+int cmd_plot(int argc, char** argv);
+int cmd_view(int argc, char** argv);
 
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)
@@ -38,6 +41,16 @@ int tool_write_output(const char* out, const char* text, long len);
 
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
 void tool_bench_express(void);
+
+/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording in
+ * env with eval (its record field is ignored) and writes path atomically. Silent on success;
+ * 0, or 1 after a one-line message on stderr. */
+int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path);
+int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+                      const char* path);
+/* the best fitness against evaluations of run folders or experiment folders (a mean line and a
+ * standard-error band per variant) as SVG */
+int tool_write_plot(int ndirs, char** dirs, const char* path);
 
 /* one shared file buffer for the commands (they run one at a time) */
 #define TOOL_FILE_MAX (4L << 20)

@@ -1,0 +1,354 @@
+/* amorph render: a filmstrip PNG of one robot's evaluation, as the seed's Figures 5 and 7 (the
+ * initial shape, the settled shape, then snapshots of the motion), drawn by the library's
+ * rasteriser from recorded poses (docs/pictures.md). */
+#include "picture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define FILM_MAX_W 4096
+#define FILM_MAX_H 4096
+#define FILM_MAX_PIXELS (4096L * 1024L)
+#define FILM_MAX_PANELS 16
+
+static uint8_t film_rgb[FILM_MAX_PIXELS * 3];
+static float film_depth[FILM_MAX_PIXELS];
+/* room for am_png_max_size of the largest picture */
+static uint8_t film_png[FILM_MAX_PIXELS * 3 + FILM_MAX_H * 4 + (FILM_MAX_PIXELS * 3) / 8 + 4096];
+
+typedef struct film_opts {
+    int panels;         /* pictures side by side, >= 3 */
+    int width, height;  /* pixels of the whole strip */
+} film_opts;
+
+static const uint8_t col_floor[3] = {236, 236, 230}, col_grid[3] = {206, 206, 198}, col_shadow[3] = {196, 196, 190},
+                     col_text[3] = {30, 30, 30}, col_trail[3] = {190, 0, 190}, col_band[3] = {255, 255, 255},
+                     col_rule[3] = {160, 160, 160}, col_start[3] = {90, 90, 90};
+
+/* the fixed oblique camera: looking along +x+y from the front left, 28 degrees down */
+#define FILM_AZ (-0.6)
+#define FILM_EL (0.49)
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* 1, 2 or 5 times a power of ten, the smallest at least x */
+static double nice_step(double x)
+{
+    double p = pow(10.0, floor(log10(x)));
+    return x <= p ? p : x <= 2 * p ? 2 * p : x <= 5 * p ? 5 * p : 10 * p;
+}
+
+/* a length in metres as text: mm below 10 cm, cm below 1 m, else m */
+static void fmt_len(char* buf, int n, double m)
+{
+    double a = fabs(m);
+    if (a < 0.1) snprintf(buf, (size_t)n, "%.3g mm", m * 1000);
+    else if (a < 1) snprintf(buf, (size_t)n, "%.3g cm", m * 100);
+    else snprintf(buf, (size_t)n, "%.3g m", m);
+}
+
+/* a time in seconds as text: ms below 1 s */
+static void fmt_time(char* buf, int n, double t)
+{
+    if (fabs(t) < 1) snprintf(buf, (size_t)n, "%.3g ms", t * 1000);
+    else snprintf(buf, (size_t)n, "%.4g s", t);
+}
+
+/* the arrow head at (x1, y1) of a 2-D segment from (x0, y0) */
+static void arrow_head(am_canvas* c, const am_camera* cam, double x0, double y0, double x1, double y1, double size,
+                       const uint8_t rgb[3])
+{
+    double dx = x1 - x0, dy = y1 - y0, len = sqrt(dx * dx + dy * dy);
+    if (!(len > 1e-9)) return;
+    dx /= len, dy /= len;
+    double t[9] = {x1 + dx * size * 0.4, y1 + dy * size * 0.4, 0, x1 - dx * size * 0.8 - dy * size * 0.55,
+                   y1 - dy * size * 0.8 + dx * size * 0.55, 0, x1 - dx * size * 0.8 + dy * size * 0.55,
+                   y1 - dy * size * 0.8 - dx * size * 0.55, 0};
+    am_raster_triangle(c, cam, t, rgb, 0);
+}
+
+/* one panel: floor, grid, shadows, the centre-of-mass trail and the voxels of frame fr */
+static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo, int fr, int trail_from,
+                       double view_w)
+{
+    const double light[3] = {-0.26, -0.43, 0.865}; /* unit: up, towards the viewer's left */
+    double R = 2.5 * view_w / sin(FILM_EL) + 0.1;
+    double cx = cam->target[0], cy = cam->target[1];
+    /* floor: a square well past the viewport */
+    double corners[4][3] = {{cx - R, cy - R, 0}, {cx + R, cy - R, 0}, {cx + R, cy + R, 0}, {cx - R, cy + R, 0}}, s[4][3];
+    for (int k = 0; k < 4; k++) am_camera_project(cam, corners[k], s[k]);
+    double t1[9] = {s[0][0], s[0][1], s[0][2], s[1][0], s[1][1], s[1][2], s[2][0], s[2][1], s[2][2]};
+    double t2[9] = {s[0][0], s[0][1], s[0][2], s[2][0], s[2][1], s[2][2], s[3][0], s[3][1], s[3][2]};
+    am_raster_triangle(c, cam, t1, col_floor, 1);
+    am_raster_triangle(c, cam, t2, col_floor, 1);
+    /* grid lines at a round spacing, fixed in the world so motion shows against them */
+    double g = nice_step(view_w / 6);
+    double bias = 1e-4 * R;
+    for (double x = floor((cx - R) / g) * g; x <= cx + R; x += g) {
+        double a[3] = {x, cy - R, 0}, b[3] = {x, cy + R, 0};
+        am_raster_line3(c, cam, a, b, 1.0, bias, col_grid);
+    }
+    for (double y = floor((cy - R) / g) * g; y <= cy + R; y += g) {
+        double a[3] = {cx - R, y, 0}, b[3] = {cx + R, y, 0};
+        am_raster_line3(c, cam, a, b, 1.0, bias, col_grid);
+    }
+    /* shadows: each voxel's footprint straight below it */
+    const float* f = mo->pose + (long)fr * mo->nv * 7;
+    for (int i = 0; i < mo->nv; i++) {
+        double h[3];
+        tool_motion_half(mo, fr, i, h);
+        double r = (h[0] + h[1]) * 0.5, x = f[7 * i], y = f[7 * i + 1];
+        double q[4][3] = {{x - r, y - r, 0}, {x + r, y - r, 0}, {x + r, y + r, 0}, {x - r, y + r, 0}};
+        for (int k = 0; k < 4; k++) {
+            am_camera_project(cam, q[k], s[k]);
+            s[k][2] -= 2 * bias;
+        }
+        double u1[9] = {s[0][0], s[0][1], s[0][2], s[1][0], s[1][1], s[1][2], s[2][0], s[2][1], s[2][2]};
+        double u2[9] = {s[0][0], s[0][1], s[0][2], s[2][0], s[2][1], s[2][2], s[3][0], s[3][1], s[3][2]};
+        am_raster_triangle(c, cam, u1, col_shadow, 1);
+        am_raster_triangle(c, cam, u2, col_shadow, 1);
+    }
+    /* the centre of mass: a cross where it started, its path on the floor up to this frame */
+    if (trail_from >= 0) {
+        double c0[3], a[3], b[3];
+        tool_motion_com(mo, trail_from, c0);
+        double arm = view_w * 0.03;
+        double p1[3] = {c0[0] - arm, c0[1], 0}, p2[3] = {c0[0] + arm, c0[1], 0};
+        double p3[3] = {c0[0], c0[1] - arm, 0}, p4[3] = {c0[0], c0[1] + arm, 0};
+        am_raster_line3(c, cam, p1, p2, 2.0, 3 * bias, col_start);
+        am_raster_line3(c, cam, p3, p4, 2.0, 3 * bias, col_start);
+        a[0] = c0[0], a[1] = c0[1], a[2] = 0;
+        for (int k = trail_from + 1; k <= fr; k++) {
+            double ck[3];
+            tool_motion_com(mo, k, ck);
+            b[0] = ck[0], b[1] = ck[1], b[2] = 0;
+            am_raster_line3(c, cam, a, b, 2.5, 3 * bias, col_trail);
+            memcpy(a, b, sizeof a);
+        }
+    }
+    /* the voxels */
+    for (int i = 0; i < mo->nv; i++) {
+        double h[3], p[3] = {f[7 * i], f[7 * i + 1], f[7 * i + 2]}, q[4] = {f[7 * i + 3], f[7 * i + 4], f[7 * i + 5], f[7 * i + 6]};
+        double qn = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (!(qn > 0.5)) q[0] = 1, q[1] = q[2] = q[3] = 0, qn = 1;
+        for (int k = 0; k < 4; k++) q[k] /= qn;
+        tool_motion_half(mo, fr, i, h);
+        const uint8_t* col = mo->model->palette.mat[mo->model->mat[i]].color;
+        am_raster_box(c, cam, p, q, h, col, light, 0.35);
+    }
+}
+
+static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
+{
+    int np = o->panels;
+    /* frames: the first, the end of relaxation, then even steps over the movement segment */
+    int frame[FILM_MAX_PANELS];
+    frame[0] = 0;
+    frame[1] = mo->settled_frame;
+    int last = mo->frames - 1;
+    for (int k = 2; k < np; k++) {
+        int m = np - 2;
+        frame[k] = mo->settled_frame + (int)((double)(last - mo->settled_frame) * (k - 1) / m + 0.5);
+        if (frame[k] > last) frame[k] = last;
+    }
+    am_camera cam;
+    double zero[3] = {0, 0, 0};
+    am_camera_look(&cam, zero, FILM_AZ, FILM_EL, 1, 0, 0, 1, 1); /* for the view axes only */
+    /* extents of each frame about its centre of mass in the view plane, and of all about the mean */
+    double umin = 1e30, umax = -1e30, vmin = 1e30, vmax = -1e30;
+    double gu0 = 1e30, gu1 = -1e30, gv0 = 1e30, gv1 = -1e30, mean[3] = {0, 0, 0}, com[FILM_MAX_PANELS][3];
+    double pad = 0.9 * (double)mo->model->L;
+    for (int k = 0; k < np; k++) {
+        tool_motion_com(mo, frame[k], com[k]);
+        for (int j = 0; j < 3; j++) mean[j] += com[k][j] / np;
+    }
+    for (int k = 0; k < np; k++) {
+        const float* f = mo->pose + (long)frame[k] * mo->nv * 7;
+        for (int i = 0; i < mo->nv; i++) {
+            double p[3] = {f[7 * i], f[7 * i + 1], f[7 * i + 2]};
+            double d[3] = {p[0] - com[k][0], p[1] - com[k][1], p[2] - com[k][2]};
+            double e[3] = {p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
+            double u = dot3(d, cam.right), v = dot3(d, cam.up), gu = dot3(e, cam.right), gv = dot3(e, cam.up);
+            umin = fmin(umin, u - pad), umax = fmax(umax, u + pad), vmin = fmin(vmin, v - pad), vmax = fmax(vmax, v + pad);
+            gu0 = fmin(gu0, gu - pad), gu1 = fmax(gu1, gu + pad), gv0 = fmin(gv0, gv - pad), gv1 = fmax(gv1, gv + pad);
+        }
+    }
+    /* one fixed centre when the whole motion fits in not much more room than the body, so the
+     * panels show the real displacement; else each panel follows its centre of mass */
+    int fixed = (gu1 - gu0) <= 1.6 * (umax - umin) && (gv1 - gv0) <= 1.6 * (vmax - vmin);
+    if (fixed) umin = gu0, umax = gu1, vmin = gv0, vmax = gv1;
+    int cap_h = 44, label_h = 26;
+    int pw = o->width / np, ph = o->height - cap_h - label_h;
+    double scale = fmin((pw - 16) / (umax - umin), (ph - 12) / (vmax - vmin));
+    double view_w = (pw) / scale;
+
+    static const uint8_t white[3] = {255, 255, 255};
+    am_canvas_clear(c, white);
+    am_camera whole;
+    am_camera_look(&whole, zero, 0, 0, 1, 0, 0, c->w, c->h);
+    char text[160], len[64];
+    for (int k = 0; k < np; k++) {
+        double target[3];
+        const double* base = fixed ? mean : com[k];
+        double um = 0.5 * (umin + umax), vm = 0.5 * (vmin + vmax);
+        for (int j = 0; j < 3; j++) target[j] = base[j] + um * cam.right[j] + vm * cam.up[j];
+        am_camera panel;
+        am_camera_look(&panel, target, FILM_AZ, FILM_EL, ph / scale, k * pw, label_h, pw, ph);
+        draw_panel(c, &panel, mo, frame[k], k >= 2 ? frame[1] : -1, view_w);
+        double t = (double)mo->step[frame[k]] * mo->dt;
+        char tt[48];
+        fmt_time(tt, sizeof tt, t);
+        if (k == 0) snprintf(text, sizeof text, "1 initial");
+        else if (k == 1) snprintf(text, sizeof text, "2 settled t=%s", tt);
+        else snprintf(text, sizeof text, "%d t=%s", k + 1, tt);
+        am_camera label;
+        am_camera_look(&label, zero, 0, 0, 1, k * pw, 0, pw - 4, label_h);
+        am_raster_text(c, &label, k * pw + 8, 6, 2, text, col_text);
+        if (k > 0) am_raster_line2(c, &whole, k * pw, 0, k * pw, o->height - cap_h, 2, col_rule);
+    }
+    /* caption: direction of travel, distance, materials */
+    int y0 = o->height - cap_h;
+    am_raster_line2(c, &whole, 0, y0, np * pw, y0, 2, col_rule);
+    double cs[3], ce[3];
+    tool_motion_com(mo, frame[1], cs);
+    tool_motion_com(mo, frame[np - 1], ce);
+    double d[3] = {ce[0] - cs[0], ce[1] - cs[1], 0};
+    double dist = sqrt(d[0] * d[0] + d[1] * d[1]);
+    int x = 10, ym = y0 + cap_h / 2;
+    double su = dot3(d, cam.right), sv = -dot3(d, cam.up), sl = sqrt(su * su + sv * sv);
+    if (dist > 1e-9 && sl > 1e-12) {
+        double ax = 34 + 26 * su / sl, ay = ym + 14 * sv / sl, bx = 34 - 26 * su / sl, by = ym - 14 * sv / sl;
+        am_raster_line2(c, &whole, bx, by, ax, ay, 4, col_trail);
+        arrow_head(c, &whole, bx, by, ax, ay, 16, col_trail);
+    }
+    x = 72;
+    fmt_len(len, sizeof len, dist);
+    char tt[48];
+    fmt_time(tt, sizeof tt, (double)(mo->step[frame[np - 1]] - mo->step[frame[1]]) * mo->dt);
+    snprintf(text, sizeof text, "direction of travel: %s in %s%s", len, tt, mo->res.diverged ? "  (diverged)" : "");
+    x += am_raster_text(c, &whole, x, ym - 7, 2, text, col_text) + 24;
+    /* legend: the materials the robot uses */
+    const am_model* m = mo->model;
+    for (int k = 0; k < m->palette.count; k++) {
+        int used = 0;
+        for (int i = 0; i < m->nv && !used; i++) used = m->mat[i] == k;
+        if (!used) continue;
+        double sq[9] = {x, ym - 7, 0, x + 14, ym - 7, 0, x + 14, ym + 7, 0}, sq2[9] = {x, ym - 7, 0, x + 14, ym + 7, 0, x, ym + 7, 0};
+        am_raster_triangle(c, &whole, sq, m->palette.mat[k].color, 0);
+        am_raster_triangle(c, &whole, sq2, m->palette.mat[k].color, 0);
+        x += 20;
+        x += am_raster_text(c, &whole, x, ym - 7, 2, m->palette.mat[k].name, col_text) + 16;
+    }
+    (void)col_band;
+    return 0;
+}
+
+static film_opts film_defaults(void)
+{
+    film_opts o = {6, 1600, 400};
+    return o;
+}
+
+/* records, draws and writes; 0, or an exit status after one line on stderr */
+static int film_write(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const film_opts* o,
+                      const char* what, const char* path)
+{
+    static tool_motion mo;
+    int rc = tool_record_motion(lat, env, eval, 400, &mo, what);
+    if (rc) return rc;
+    am_canvas c = {o->width, o->height, film_rgb, film_depth};
+    film_draw(&mo, o, &c);
+    long n = 0;
+    char err[AM_ERR_MAX];
+    if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_FIXED, film_png, (long)sizeof film_png, &n, err,
+                      sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s: %s\n", path, err);
+        return 1;
+    }
+    if (am_port_write_file(path, film_png, n, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+{
+    film_opts o = film_defaults();
+    return film_write(lat, env, eval, &o, path, path) ? 1 : 0;
+}
+
+static const char render_help[] =
+    "usage: amorph render ROBOT | --scene NAME --out FILE.png [options]\n"
+    "Simulates the robot (relaxation, then actuation cycles, as amorph sim) and draws a filmstrip:\n"
+    "the initial shape, the settled shape, then snapshots of the motion, with the centre of mass\n"
+    "path and the direction of travel. ROBOT is a lattice or genome file or a run folder (its best\n"
+    "robot in the run's environment); NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "  --out FILE.png     the picture (written atomically); required\n"
+    "  --frames N         pictures side by side, 3..16 (6: initial, settled, 4 of the motion)\n"
+    "  --width W          pixels, 200..4096 (1600)\n"
+    "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
+    "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
+    "  --relax-max N      relaxation steps at most (4000)\n";
+
+int cmd_render(int argc, char** argv)
+{
+    const char* file = 0;
+    const char* out = 0;
+    int is_scene = 0, cycles = -1;
+    long relax = -1;
+    film_opts o = film_defaults();
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(render_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--scene")) {
+            if (!v) return tool_usage_error("render: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
+            if (file) return tool_usage_error("render: one robot at a time ('%s' and '%s')", file, v);
+            file = v, is_scene = 1, i++;
+        } else if (!strcmp(a, "--out")) {
+            if (!v) return tool_usage_error("render: --out needs a file name");
+            out = v, i++;
+        } else if (!strcmp(a, "--frames")) {
+            if (!tool_parse_int(v, 3, FILM_MAX_PANELS, &o.panels)) return tool_usage_error("render: --frames needs a whole number 3..%d", FILM_MAX_PANELS);
+            i++;
+        } else if (!strcmp(a, "--width")) {
+            if (!tool_parse_int(v, 200, FILM_MAX_W, &o.width)) return tool_usage_error("render: --width needs a whole number 200..%d", FILM_MAX_W);
+            i++;
+        } else if (!strcmp(a, "--height")) {
+            if (!tool_parse_int(v, 120, FILM_MAX_H, &o.height)) return tool_usage_error("render: --height needs a whole number 120..%d", FILM_MAX_H);
+            i++;
+        } else if (!strcmp(a, "--cycles")) {
+            if (!tool_parse_int(v, 0, 100000, &cycles)) return tool_usage_error("render: --cycles needs a whole number 0..100000");
+            i++;
+        } else if (!strcmp(a, "--relax-max")) {
+            if (!tool_parse_long(v, 1, 100000000, &relax)) return tool_usage_error("render: --relax-max needs a whole number >= 1");
+            i++;
+        } else if (a[0] == '-' && a[1]) {
+            return tool_usage_error("render: unknown option '%s' (amorph render --help)", a);
+        } else {
+            if (file) return tool_usage_error("render: one robot at a time ('%s' and '%s')", file, a);
+            file = a;
+        }
+    }
+    if (!file) return tool_usage_error("render: name a robot file, a run folder or --scene NAME (amorph render --help)");
+    int rc = tool_check_output(out, "render", ".png");
+    if (rc) return rc;
+    if ((long)o.width * o.height > FILM_MAX_PIXELS)
+        return tool_usage_error("render: %d x %d is more than %ld pixels", o.width, o.height, FILM_MAX_PIXELS);
+    if (o.width / o.panels < 60) return tool_usage_error("render: %d frames need a width of at least %d", o.panels, 60 * o.panels);
+    static am_lattice lat;
+    am_env env;
+    am_eval_def eval;
+    rc = tool_load_subject(file, is_scene, &lat, &env, &eval, "render");
+    if (rc) return rc;
+    if (cycles >= 0) eval.cycles = cycles;
+    if (relax >= 0) {
+        eval.relax_max_steps = relax;
+        if (eval.relax_min_steps > relax) eval.relax_min_steps = relax;
+    }
+    return film_write(&lat, &env, &eval, &o, file, out);
+}

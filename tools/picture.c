@@ -1,0 +1,120 @@
+/* What amorph render and amorph view share: one recorded evaluation of a robot, the size of each
+ * voxel in a recorded frame, centres of mass, and the robot argument (scene, file or run). */
+#include "picture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static am_model pic_model;
+static am_state pic_state;
+static float pic_pose[TOOL_REC_FLOATS];
+static long pic_step[TOOL_REC_MAX_FRAMES];
+
+int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
+                       const char* what)
+{
+    char err[AM_ERR_MAX];
+    memset(mo, 0, sizeof *mo);
+    am_status st = am_model_build(&pic_model, lat, env, err, sizeof err);
+    if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
+    if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
+    /* frames that fit: the float budget caps big bodies, the step list caps the count */
+    long fit = TOOL_REC_FLOATS / ((long)pic_model.nv * 7);
+    if (fit > TOOL_REC_MAX_FRAMES) fit = TOOL_REC_MAX_FRAMES;
+    if (want > fit) want = (int)fit;
+    if (want < 2) want = 2;
+    /* one frame every `every` steps over the longest the evaluation can take */
+    long total = eval->relax_max_steps + (long)eval->cycles * env->period_steps;
+    long every = (total + want - 2) / (want - 1);
+    if (every < 1) every = 1;
+    static am_record rec;
+    memset(&rec, 0, sizeof rec);
+    rec.every = (int)(every > 1000000000L ? 1000000000L : every);
+    rec.max_frames = (int)fit;
+    rec.pose = pic_pose;
+    rec.step = pic_step;
+    rec.pose_cap = TOOL_REC_FLOATS;
+    am_eval_def def = *eval;
+    def.record = &rec;
+    am_evaluate(&pic_model, &pic_state, &def, &mo->res);
+    /* keep the frames before the first non-finite value (a diverged run) */
+    int good = 0;
+    for (; good < rec.frames; good++) {
+        const float* f = pic_pose + (long)good * rec.nv * 7;
+        int ok = 1;
+        for (long k = 0; k < (long)rec.nv * 7 && ok; k++) ok = f[k] == f[k] && fabsf(f[k]) < 1e6f;
+        if (!ok) break;
+    }
+    if (good < 1) return tool_usage_error("%s: the simulation diverged at once, nothing to draw", what);
+    mo->model = &pic_model;
+    mo->nv = rec.nv;
+    mo->frames = good;
+    mo->pose = pic_pose;
+    mo->step = pic_step;
+    mo->dt = mo->res.dt;
+    mo->every = rec.every;
+    mo->settled_frame = 0;
+    for (int f = 0; f < good; f++)
+        if (pic_step[f] <= mo->res.relax_steps) mo->settled_frame = f;
+    return 0;
+}
+
+void tool_motion_com(const tool_motion* mo, int frame, double com[3])
+{
+    const float* f = mo->pose + (long)frame * mo->nv * 7;
+    double m = 0;
+    com[0] = com[1] = com[2] = 0;
+    for (int i = 0; i < mo->nv; i++) {
+        double w = (double)mo->model->mass[i];
+        for (int k = 0; k < 3; k++) com[k] += w * (double)f[7 * i + k];
+        m += w;
+    }
+    for (int k = 0; k < 3; k++) com[k] = m > 0 ? com[k] / m : 0;
+}
+
+void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3])
+{
+    const float* f = mo->pose + (long)frame * mo->nv * 7;
+    double L = (double)mo->model->L, sum = 0;
+    int have = 0;
+    for (int a = 0; a < 3; a++) {
+        double s = 0;
+        int n = 0;
+        for (int d = 2 * a; d < 2 * a + 2; d++) {
+            int j = mo->model->nbr[d][i];
+            if (j < 0) continue;
+            double dx = (double)f[7 * j] - (double)f[7 * i], dy = (double)f[7 * j + 1] - (double)f[7 * i + 1],
+                   dz = (double)f[7 * j + 2] - (double)f[7 * i + 2];
+            s += sqrt(dx * dx + dy * dy + dz * dz);
+            n++;
+        }
+        half[a] = n ? 0.5 * s / n : -1;
+        if (n) sum += half[a], have++;
+    }
+    /* an axis without neighbours takes the mean of the others, a lone voxel the nominal size */
+    for (int a = 0; a < 3; a++)
+        if (half[a] < 0) half[a] = have ? sum / have : 0.5 * L;
+    for (int a = 0; a < 3; a++)
+        if (half[a] > L) half[a] = L; /* a torn-apart link must not draw a giant box */
+}
+
+int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* env, am_eval_def* eval,
+                      const char* cmd)
+{
+    char err[AM_ERR_MAX];
+    *env = am_default_env();
+    *eval = am_default_eval();
+    am_status st = tool_load_robot(name, is_scene, lat, err, sizeof err);
+    if (st != AM_OK) return tool_usage_error("%s: %s", cmd, err);
+    return 0;
+}
+
+int tool_check_output(const char* path, const char* cmd, const char* ext)
+{
+    if (!path) return tool_usage_error("%s: --out FILE%s is required", cmd, ext);
+    size_t n = strlen(path);
+    if (n == 0) return tool_usage_error("%s: --out needs a file name", cmd);
+    if (path[n - 1] == '/') return tool_usage_error("%s: --out %s is a folder, not a file", cmd, path);
+    return 0;
+}

@@ -1,0 +1,41 @@
+/* tools/picture.h: what amorph render, view and plot share (tools/picture.c; docs/pictures.md). */
+#ifndef AMORPH_TOOLS_PICTURE_H
+#define AMORPH_TOOLS_PICTURE_H
+
+#include "cmd.h"
+
+/* the recording budget: poses of up to 128 frames of the largest body (more frames of smaller ones) */
+#define TOOL_REC_FLOATS (AM_MAX_VOXELS * 7L * 128L)
+#define TOOL_REC_MAX_FRAMES 1024
+
+/* one recorded evaluation; the arrays are static storage of tools/picture.c (one at a time) */
+typedef struct tool_motion {
+    const am_model* model;   /* the model simulated (palette, voxel materials, cells, neighbours) */
+    am_result res;           /* the evaluation's result */
+    int nv;                  /* voxels */
+    int frames;              /* usable frames (a diverged run keeps those before the first bad one) */
+    int settled_frame;       /* last frame of the relaxation */
+    int every;               /* steps between frames */
+    double dt;               /* s per step */
+    const float* pose;       /* (frames x nv x 7) x, y, z (m), qw, qx, qy, qz */
+    const long* step;        /* (frames) step of each frame */
+} tool_motion;
+
+/* evaluates the robot with recording, about `want` frames over the longest possible run (fewer
+ * for a big body); returns 0, or an exit status after a one-line message naming `what` */
+int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
+                       const char* what);
+/* mass-weighted centre of frame `frame`, m */
+void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
+/* half-extents of voxel i in frame `frame` along its own axes: half the mean distance to its lattice
+ * neighbours on each axis (so thermal expansion shows), m */
+void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3]);
+
+/* the robot argument of render and view: a scene or robot file (seed environment and evaluation)
+ * or a run folder (its best robot, environment and evaluation); 0 or an exit status after a message */
+int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* env, am_eval_def* eval,
+                      const char* cmd);
+/* --out FILE present and not a folder name; 0 or 2 after a message */
+int tool_check_output(const char* path, const char* cmd, const char* ext);
+
+#endif
