@@ -1,3 +1,271 @@
-#include "cmd.h"
-int cmd_view(int argc, char** argv) { (void)argc; (void)argv; return 2; }
-int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title, const char* path) { (void)lat; (void)env; (void)eval; (void)title; (void)path; return 1; }
+/* amorph view: one self-contained HTML file with a robot's recorded motion and a hand-written
+ * canvas renderer (no network, no external script; docs/pictures.md describes the data layout). */
+#include "picture.h"
+#include "view_page.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+/* the page: the poses in base64 (14 bytes a voxel a frame, 4/3 of it as text), the per-voxel and
+ * per-frame numbers as text, and the fixed page around them */
+#define VIEW_HTML_MAX ((TOOL_REC_FLOATS / 7) * 19L + AM_MAX_VOXELS * 32L + TOOL_REC_MAX_FRAMES * 96L + 262144L)
+static char view_html[VIEW_HTML_MAX];
+static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
+
+typedef struct text_out {
+    char* buf;
+    long cap, len;
+    int full;
+} text_out;
+
+static void out_fmt(text_out* o, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void out_fmt(text_out* o, const char* fmt, ...)
+{
+    if (o->full) return;
+    va_list ap;
+    va_start(ap, fmt);
+    long room = o->cap - o->len;
+    int n = vsnprintf(o->buf + o->len, (size_t)room, fmt, ap);
+    va_end(ap);
+    if (n < 0 || n >= room) o->full = 1;
+    else o->len += n;
+}
+
+static void out_str(text_out* o, const char* s)
+{
+    long n = (long)strlen(s);
+    if (o->full || n >= o->cap - o->len) {
+        o->full = 1;
+        return;
+    }
+    memcpy(o->buf + o->len, s, (size_t)n + 1);
+    o->len += n;
+}
+
+/* a JSON string safe inside a <script> element: <, >, & and controls as \u escapes */
+static void out_json_string(text_out* o, const char* s)
+{
+    out_str(o, "\"");
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') out_fmt(o, "\\%c", c);
+        else if (c < 0x20 || c == '<' || c == '>' || c == '&' || c == 0x7F) out_fmt(o, "\\u%04x", c);
+        else out_fmt(o, "%c", c);
+    }
+    out_str(o, "\"");
+}
+
+static void out_base64(text_out* o, const uint8_t* p, long n)
+{
+    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    long need = (n + 2) / 3 * 4;
+    if (o->full || need >= o->cap - o->len) {
+        o->full = 1;
+        return;
+    }
+    char* d = o->buf + o->len;
+    long i = 0;
+    for (; i + 2 < n; i += 3) {
+        uint32_t v = (uint32_t)p[i] << 16 | (uint32_t)p[i + 1] << 8 | p[i + 2];
+        *d++ = tab[v >> 18], *d++ = tab[(v >> 12) & 63], *d++ = tab[(v >> 6) & 63], *d++ = tab[v & 63];
+    }
+    if (i < n) {
+        uint32_t v = (uint32_t)p[i] << 16 | (i + 1 < n ? (uint32_t)p[i + 1] << 8 : 0);
+        *d++ = tab[v >> 18], *d++ = tab[(v >> 12) & 63];
+        *d++ = i + 1 < n ? tab[(v >> 6) & 63] : '=';
+        *d++ = '=';
+    }
+    *d = 0;
+    o->len += need;
+}
+
+/* 1, 2 or 5 times a power of ten, the smallest at least x */
+static double nice_step(double x)
+{
+    double p = pow(10.0, floor(log10(x)));
+    return x <= p ? p : x <= 2 * p ? 2 * p : x <= 5 * p ? 5 * p : 10 * p;
+}
+
+/* the data of the page as one JSON object */
+static void view_data(text_out* o, const tool_motion* mo, const am_eval_def* eval, const char* title)
+{
+    const am_model* m = mo->model;
+    int nv = mo->nv, nf = mo->frames;
+    long i;
+    /* quantised poses: positions as 16-bit steps over the recorded box, quaternions as x 32767 */
+    double lo[3] = {1e30, 1e30, 1e30}, hi[3] = {-1e30, -1e30, -1e30}, q[3];
+    for (i = 0; i < (long)nf * nv; i++)
+        for (int k = 0; k < 3; k++) {
+            double v = (double)mo->pose[7 * i + k];
+            lo[k] = fmin(lo[k], v), hi[k] = fmax(hi[k], v);
+        }
+    for (int k = 0; k < 3; k++) q[k] = hi[k] > lo[k] ? (hi[k] - lo[k]) / 65535.0 : 1e-9;
+    for (i = 0; i < (long)nf * nv; i++) {
+        uint8_t* r = view_raw + 14 * i;
+        for (int k = 0; k < 3; k++) {
+            long u = lround(((double)mo->pose[7 * i + k] - lo[k]) / q[k]);
+            u = u < 0 ? 0 : u > 65535 ? 65535 : u;
+            r[2 * k] = (uint8_t)u, r[2 * k + 1] = (uint8_t)(u >> 8);
+        }
+        for (int k = 0; k < 4; k++) {
+            long s = lround((double)mo->pose[7 * i + 3 + k] * 32767.0);
+            s = s < -32767 ? -32767 : s > 32767 ? 32767 : s;
+            uint16_t u = (uint16_t)(s < 0 ? s + 65536 : s);
+            r[6 + 2 * k] = (uint8_t)u, r[7 + 2 * k] = (uint8_t)(u >> 8);
+        }
+    }
+    /* framing: the body's size, and the whole path's */
+    double mean[3] = {0, 0, 0}, body = 0, all = 0, c[3];
+    for (int f = 0; f < nf; f++) {
+        tool_motion_com(mo, f, c);
+        for (int k = 0; k < 3; k++) mean[k] += c[k] / nf;
+    }
+    for (int f = 0; f < nf; f++) {
+        tool_motion_com(mo, f, c);
+        const float* p = mo->pose + (long)f * nv * 7;
+        for (int v = 0; v < nv; v++) {
+            double d2 = 0, e2 = 0;
+            for (int k = 0; k < 3; k++) {
+                double d = (double)p[7 * v + k] - c[k], e = (double)p[7 * v + k] - mean[k];
+                d2 += d * d, e2 += e * e;
+            }
+            body = fmax(body, sqrt(d2)), all = fmax(all, sqrt(e2));
+        }
+    }
+    double L = (double)m->L;
+    int follow = all > 3 * body;
+    double extent = 2 * (follow ? body : all) + 2 * L;
+
+    out_str(o, "{\"format\": \"amorph-view 1\",\n\"title\": ");
+    out_json_string(o, title);
+    out_fmt(o, ",\n\"nv\": %d, \"frames\": %d, \"dt\": %.9g, \"period_steps\": %d, \"cycles\": %d, \"every\": %d,\n", nv, nf,
+            mo->dt, m->env.period_steps, eval->cycles, mo->every);
+    out_fmt(o, "\"settled_frame\": %d, \"fitness\": %.9g, \"diverged\": %d, \"voxel_size\": %.9g,\n", mo->settled_frame,
+            mo->res.fitness, mo->res.diverged, L);
+    out_fmt(o, "\"size\": [%d, %d, %d], \"center\": [%.7g, %.7g, %.7g], \"extent\": %.7g, \"grid\": %.7g, \"follow\": %d,\n",
+            m->nx, m->ny, m->nz, mean[0], mean[1], mean[2], extent, nice_step(extent / 8), follow);
+    out_fmt(o, "\"origin\": [%.9g, %.9g, %.9g], \"quantum\": [%.9g, %.9g, %.9g],\n", lo[0], lo[1], lo[2], q[0], q[1], q[2]);
+    out_str(o, "\"materials\": [");
+    for (int k = 0; k < m->palette.count; k++) {
+        const uint8_t* col = m->palette.mat[k].color;
+        out_str(o, k ? ", {\"name\": " : "{\"name\": ");
+        out_json_string(o, m->palette.mat[k].name);
+        out_fmt(o, ", \"color\": \"#%02x%02x%02x\"}", col[0], col[1], col[2]);
+    }
+    out_str(o, "],\n\"steps\": [");
+    for (int f = 0; f < nf; f++) out_fmt(o, f ? ",%ld" : "%ld", mo->step[f]);
+    out_str(o, "],\n\"com\": [");
+    for (int f = 0; f < nf; f++) {
+        tool_motion_com(mo, f, c);
+        out_fmt(o, f ? ",%.7g,%.7g,%.7g" : "%.7g,%.7g,%.7g", c[0], c[1], c[2]);
+    }
+    out_str(o, "],\n\"mat\": [");
+    for (int v = 0; v < nv; v++) out_fmt(o, v ? ",%d" : "%d", m->mat[v]);
+    out_str(o, "],\n\"cell\": [");
+    for (int v = 0; v < nv; v++) {
+        int idx = m->cell[v], x = idx % m->nx, y = (idx / m->nx) % m->ny, z = idx / (m->nx * m->ny);
+        out_fmt(o, v ? ",%d,%d,%d" : "%d,%d,%d", x, y, z);
+    }
+    out_str(o, "],\n\"pose\": \"");
+    out_base64(o, view_raw, 14L * nf * nv);
+    out_str(o, "\"}\n");
+}
+
+static int view_write(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int frames, const char* title,
+                      const char* what, const char* path)
+{
+    static tool_motion mo;
+    int rc = tool_record_motion(lat, env, eval, frames, &mo, what);
+    if (rc) return rc;
+    text_out o = {view_html, VIEW_HTML_MAX, 0, 0};
+    view_html[0] = 0;
+    for (size_t k = 0; k < sizeof view_page_pre / sizeof view_page_pre[0]; k++) out_str(&o, view_page_pre[k]);
+    view_data(&o, &mo, eval, title);
+    for (size_t k = 0; k < sizeof view_page_post / sizeof view_page_post[0]; k++) out_str(&o, view_page_post[k]);
+    if (o.full) {
+        fprintf(stderr, "amorph: %s: the page does not fit in %ld bytes\n", path, (long)VIEW_HTML_MAX);
+        return 1;
+    }
+    return tool_write_output(path, view_html, o.len);
+}
+
+int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+                      const char* path)
+{
+    return view_write(lat, env, eval, 200, title ? title : path, path, path) ? 1 : 0;
+}
+
+static const char view_help[] =
+    "usage: amorph view ROBOT | --scene NAME --out FILE.html [options]\n"
+    "Simulates the robot (relaxation, then actuation cycles, as amorph sim) and writes one\n"
+    "self-contained HTML file that plays the recorded motion in a browser: drag to orbit, wheel to\n"
+    "zoom, play/pause, speed, a time slider, the centre-of-mass trail. URL hash parameters pick a\n"
+    "moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
+    "genome file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "  --out FILE.html    the page (written atomically); required\n"
+    "  --frames N         frames recorded, 2..1000 (200; fewer for big bodies)\n"
+    "  --title TEXT       the page's heading (the robot's name)\n"
+    "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
+    "  --relax-max N      relaxation steps at most (4000)\n";
+
+int cmd_view(int argc, char** argv)
+{
+    const char* file = 0;
+    const char* out = 0;
+    const char* title = 0;
+    int is_scene = 0, cycles = -1, frames = 200;
+    long relax = -1;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(view_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--scene")) {
+            if (!v) return tool_usage_error("view: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
+            if (file) return tool_usage_error("view: one robot at a time ('%s' and '%s')", file, v);
+            file = v, is_scene = 1, i++;
+        } else if (!strcmp(a, "--out")) {
+            if (!v) return tool_usage_error("view: --out needs a file name");
+            out = v, i++;
+        } else if (!strcmp(a, "--title")) {
+            if (!v) return tool_usage_error("view: --title needs a text");
+            title = v, i++;
+        } else if (!strcmp(a, "--frames")) {
+            if (!tool_parse_int(v, 2, 1000, &frames)) return tool_usage_error("view: --frames needs a whole number 2..1000");
+            i++;
+        } else if (!strcmp(a, "--cycles")) {
+            if (!tool_parse_int(v, 0, 100000, &cycles)) return tool_usage_error("view: --cycles needs a whole number 0..100000");
+            i++;
+        } else if (!strcmp(a, "--relax-max")) {
+            if (!tool_parse_long(v, 1, 100000000, &relax)) return tool_usage_error("view: --relax-max needs a whole number >= 1");
+            i++;
+        } else if (a[0] == '-' && a[1]) {
+            return tool_usage_error("view: unknown option '%s' (amorph view --help)", a);
+        } else {
+            if (file) return tool_usage_error("view: one robot at a time ('%s' and '%s')", file, a);
+            file = a;
+        }
+    }
+    if (!file) return tool_usage_error("view: name a robot file, a run folder or --scene NAME (amorph view --help)");
+    int rc = tool_check_output(out, "view", ".html");
+    if (rc) return rc;
+    static am_lattice lat;
+    am_env env;
+    am_eval_def eval;
+    rc = tool_load_subject(file, is_scene, &lat, &env, &eval, "view");
+    if (rc) return rc;
+    if (cycles >= 0) eval.cycles = cycles;
+    if (relax >= 0) {
+        eval.relax_max_steps = relax;
+        if (eval.relax_min_steps > relax) eval.relax_min_steps = relax;
+    }
+    return view_write(&lat, &env, &eval, frames, title ? title : file, file, out);
+}
