@@ -10,5 +10,6 @@
 #include "amorph/dct.h"
 #include "amorph/genotype.h"
 #include "amorph/sim.h"
+#include "amorph/evolve.h"
 #include "amorph/port.h"
 #endif

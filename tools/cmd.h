@@ -9,6 +9,12 @@ int cmd_sim(int argc, char** argv);
 int cmd_bench(int argc, char** argv);
 int cmd_random(int argc, char** argv);
 int cmd_express(int argc, char** argv);
+int cmd_evolve(int argc, char** argv);
+int cmd_experiment(int argc, char** argv);
+
+/* prints name=value lines of the default experiment's evaluations per hour on 1 and 2 threads
+ * (cmd_evolve.c); 0, or 1 when the two runs differ */
+int tool_bench_evolve(long evaluations);
 
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)
