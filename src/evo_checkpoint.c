@@ -330,7 +330,6 @@ am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char
             e->last.wall_s = bits_d(b[3]);
             seen_last = 1;
         } else if (strcmp(tok[0], "individual") == 0) {
-            if (restore) *restore = '\n'; /* the genome reader walks the text itself */
             st = read_ind(&r, e, tok, ntok, err, errsz);
             if (st != AM_OK) goto done;
             if (strcmp(tok[1], "pop") == 0) pop_seen++;

@@ -344,6 +344,8 @@ static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictur
     char hdr[128];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
     if (write_text(dir, "log.csv", hdr, n)) return 1;
+    /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
+    if (write_checkpoint(dir, &g_evo)) return 1;
     run_io io = {dir, quiet, pictures, label};
     int rc = run_loop(&g_evo, &io);
     if (rc == 0 && pictures) rc = finish_pictures(&g_evo, dir);
