@@ -10,6 +10,7 @@
 #include "amorph/dct.h"
 #include "amorph/genotype.h"
 #include "amorph/sim.h"
+#include "amorph/evolve.h"
 #include "amorph/image.h"
 #include "amorph/port.h"
 #endif

@@ -12,6 +12,18 @@ int cmd_express(int argc, char** argv);
 int cmd_render(int argc, char** argv);
 int cmd_plot(int argc, char** argv);
 int cmd_view(int argc, char** argv);
+int cmd_evolve(int argc, char** argv);
+int cmd_experiment(int argc, char** argv);
+
+/* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
+int tool_is_run_dir(const char* path);
+/* a run folder's best robot, and the environment and evaluation it evolved in (tools/run.c);
+ * env and eval may be NULL */
+am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_def* eval, char* err, int errsz);
+
+/* prints name=value lines of the default experiment's evaluations per hour on 1 and 2 threads
+ * (cmd_evolve.c); 0, or 1 when the two runs differ */
+int tool_bench_evolve(long evaluations);
 
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)

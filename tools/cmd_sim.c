@@ -161,14 +161,18 @@ static int bench_one(const char* scene, long steps, int collisions)
 
 static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off]\n"
+    "       amorph bench --evolve [--evals N]\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
-    "cube:10, self-collision off and on, then the genotype expression times.\n";
+    "cube:10, self-collision off and on, then the genotype expression times.\n"
+    "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
+    "each a run of N evaluations (60), and the speedup of the second core.\n";
 
 int cmd_bench(int argc, char** argv)
 {
     const char* scene = 0;
     long steps = 2000, n;
     int coll = -1;
+    long evolve_evals = 0;
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -182,7 +186,16 @@ int cmd_bench(int argc, char** argv)
         } else if (!strcmp(a, "--collisions")) {
             if (!tool_parse_onoff(v, &coll)) return tool_usage_error("bench: --collisions takes on or off");
             i++;
+        } else if (!strcmp(a, "--evolve")) {
+            evolve_evals = 60;
+        } else if (!strcmp(a, "--evals")) {
+            if (!tool_parse_long(v, 2, 1000000, &n)) return tool_usage_error("bench: --evals needs a whole number >= 2");
+            evolve_evals = n, i++;
         } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
+    }
+    if (evolve_evals) {
+        printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+        return tool_bench_evolve(evolve_evals);
     }
     printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
     if (scene) {

@@ -53,4 +53,13 @@
     + AM_MAX_GMX_POINTS * 8))
 /* ---- end of genotypes ---- */
 
+/* ---- evolver (include/amorph/evolve.h) ---- */
+#if defined(AM_PROFILE_BOARD)
+#define AM_MAX_POPULATION 20    /* individuals of a run */
+#define AM_MAX_WORKERS 1        /* evaluation workspaces (one per thread) */
+#else
+#define AM_MAX_POPULATION 256
+#define AM_MAX_WORKERS 16
+#endif
+
 #endif

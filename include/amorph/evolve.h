@@ -1,0 +1,158 @@
+/* amorph/evolve.h: the evolver (deterministic crowding), its configuration and checkpoints.
+ *
+ * A run is a population of genomes evolved by deterministic crowding (Mahfoud 1996), as in the
+ * seed paper: each generation pairs the parents at random, every pair makes two offspring by
+ * crossover and mutation, every offspring competes with the more similar of its two parents
+ * (Mahfoud's pairing rule on the body distance of am_genome_distance) and replaces it when it
+ * is strictly better. Offspring are made serially from one seeded stream; their evaluations go
+ * to the port's parallel map, each on a workspace of its own, and crowding is applied in a fixed
+ * order afterwards, so a run is bit-identical for any number of workers.
+ *
+ * The configuration (am_evo_def) is a set of `key = value` settings (docs/evolve.md lists every
+ * key); am_evo_set applies one, so config files and command-line flags share one parser.
+ * Everything a run needs to continue is in its checkpoint, a text file closed by a checksum.
+ */
+#ifndef AMORPH_EVOLVE_H
+#define AMORPH_EVOLVE_H
+
+#include <stdint.h>
+#include "amorph/config.h"
+#include "amorph/genotype.h"
+#include "amorph/lattice.h"
+#include "amorph/rng.h"
+#include "amorph/sim.h"
+#include "amorph/status.h"
+
+/* ---- configuration ---- */
+
+/* everything that defines a run; am_default_evo() is the seed's two-material experiment */
+typedef struct am_evo_def {
+    am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3) */
+    am_env env;               /* environment: gravity, floor, actuation, time step (am_default_env) */
+    am_eval_def eval;         /* evaluation: cycles, fitness measure, relaxation (record is ignored) */
+    am_real cte;              /* CTE of the actuated materials, per degree (0.01, volumetric) */
+    am_real mu_static;        /* static floor friction of every material (1.0) */
+    am_real mu_kinetic;       /* kinetic floor friction of every material (0.3) */
+    am_real voxel_size;       /* m (0.01) */
+    int population;           /* individuals, even, 2..AM_MAX_POPULATION (20) */
+    long evaluations;         /* the run stops after this many evaluations, >= population */
+    uint64_t seed;            /* the random stream (1) */
+    int threads;              /* workers for evaluations; 0: all cores. Never changes results */
+    long checkpoint_seconds;  /* 0: a checkpoint every generation; else at most one per this many s */
+} am_evo_def;
+
+/* the seed's two-material GMX experiment on the profile's workspace (20^3 desktop), 200 evaluations */
+am_evo_def am_default_evo(void);
+
+/* sets one key from its text value ("population", "20"); the message names the problem only
+ * (the caller adds "file:line: " or "--flag: "). AM_ERR_ARG for an unknown key, AM_ERR_RANGE for
+ * a value out of range or malformed */
+am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
+/* checks the whole definition (relations between keys); messages name the key */
+am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
+/* 1 when key is a configuration key */
+int am_evo_is_key(const char* key);
+/* the keys in their documented order: count, name and one-line help of key i (NULL past the end) */
+int am_evo_key_count(void);
+const char* am_evo_key_name(int i);
+const char* am_evo_key_help(int i);
+/* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
+ * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
+am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
+/* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
+am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
+/* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
+ * else 0 and the first differing key's name in key (capacity keysz) */
+int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
+/* the palette and expression settings a run's genomes are expressed and simulated with */
+am_palette am_evo_palette(const am_evo_def* d);
+
+/* ---- state ---- */
+
+/* one evaluated individual */
+typedef struct am_evo_ind {
+    am_genome genome;
+    double fitness;           /* m; 0 for an empty body; meaningless when diverged */
+    int voxels;               /* voxels of the expressed body */
+    int diverged;             /* 1: the simulation diverged (always loses) */
+    int empty;                /* 1: the body was empty (fitness 0, not simulated) */
+    long steps;               /* time steps simulated */
+    uint64_t state_hash;      /* am_state_hash at the end of the evaluation (0 when empty) */
+} am_evo_ind;
+
+/* statistics of one generation, after replacement (one row of log.csv) */
+typedef struct am_evo_stats {
+    long generation;          /* 0: the initial population */
+    long evaluations;         /* evaluations done so far */
+    double best, mean, median; /* of the population's fitness (diverged members left out) */
+    int diverged;             /* diverged evaluations in this generation */
+    int empty;                /* empty bodies in this generation */
+    double wall_s;            /* wall time of this generation, s */
+} am_evo_stats;
+
+/* a run: population, offspring, the random stream and counters. Large: declare it static. */
+typedef struct am_evo {
+    am_evo_def def;
+    am_palette palette;                       /* am_evo_palette(&def) */
+    am_rng rng;                               /* the one random stream */
+    long generation;                          /* generations completed (0 before the first) */
+    long evaluations;                         /* evaluations completed */
+    am_evo_ind pop[AM_MAX_POPULATION];        /* the population (def.population members) */
+    am_evo_ind child[AM_MAX_POPULATION];      /* offspring of the current generation */
+    am_evo_ind best;                          /* best individual ever evaluated */
+    int has_best;                             /* 1 once best is set */
+    uint64_t history;                         /* hash over every genome and fitness evaluated */
+    am_evo_stats last;                        /* statistics of the last generation */
+    int order[AM_MAX_POPULATION];             /* scratch: pairing and evaluation order */
+    uint8_t body[4][AM_MAX_CELLS];            /* scratch: the four bodies of one crowding pair */
+} am_evo;
+
+/* one worker's workspace for evaluations. Large: declare them static, one per worker. */
+typedef struct am_evo_work {
+    am_geno_work geno;
+    am_lattice lattice;
+    am_model model;
+    am_state state;
+} am_evo_work;
+
+/* ---- running ---- */
+
+/* a new run from d: checks it, seeds the stream and draws the random initial population (not yet
+ * evaluated: the first am_evo_generation evaluates it) */
+am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
+/* 1 when the run has done its evaluations */
+int am_evo_done(const am_evo* e);
+/* one generation: generation 0 evaluates the initial population; later ones make offspring,
+ * evaluate them on up to `workers` workspaces w[0..workers-1] through am_port_parallel_map and
+ * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations, no further
+ * evaluation starts, the generation is abandoned and e is left as it was before the call
+ * (AM_ERR_ARG, "interrupted").
+ * Fills e->last. */
+am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz);
+/* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec may be NULL */
+void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
+                     am_record* rec, am_evo_ind* out);
+/* expresses g into lat with the run's palette and voxel size */
+am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
+                         am_lattice* lat, char* err, int errsz);
+/* the 64-bit hash of the run so far: every genome and fitness evaluated, in order, and the
+ * final population (what `make repro` compares across platforms) */
+uint64_t am_evo_hash(const am_evo* e);
+
+/* ---- checkpoints ---- */
+
+/* the run as text (config, stream, counters, population, best), ending with a checksum line */
+am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz);
+/* reads a checkpoint (checksum first: a damaged file is refused); messages "fname:line: problem".
+ * text is used as scratch (its spaces and newlines may be overwritten) */
+am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);
+/* the largest checkpoint text of a population of n */
+#define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L))
+
+/* ---- statistics ---- */
+
+/* the log.csv header line (no newline) and one row for s; returns the characters written */
+const char* am_evo_log_header(void);
+int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
+
+#endif

@@ -1,0 +1,313 @@
+/* The evolver: deterministic crowding (Mahfoud 1996) over any genotype, evaluations on the
+ * port's parallel map, statistics. Randomness comes from one stream, consumed serially on the
+ * calling thread; workers only evaluate, each on its own workspace, and results are applied in a
+ * fixed order, so a run is the same for any number of workers. */
+#include "amorph/evolve.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "amorph/port.h"
+
+static am_express_def express_def(const am_evo_def* d, const am_palette* pal)
+{
+    am_express_def ex = am_default_express();
+    ex.palette = pal;
+    ex.voxel_size = d->voxel_size;
+    return ex;
+}
+
+am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
+                         am_lattice* lat, char* err, int errsz)
+{
+    am_express_def ex = express_def(d, pal);
+    return am_genome_to_lattice(g, &ex, w, lat, err, errsz);
+}
+
+void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
+                     am_record* rec, am_evo_ind* out)
+{
+    char err[AM_ERR_MAX];
+    out->genome = *g;
+    out->fitness = 0.0;
+    out->voxels = 0;
+    out->diverged = 0;
+    out->empty = 0;
+    out->steps = 0;
+    out->state_hash = 0;
+    if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
+        out->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
+        return;
+    }
+    out->voxels = w->geno.voxels;
+    am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, sizeof err);
+    if (st == AM_ERR_EMPTY) {
+        out->empty = 1; /* a valid body that goes nowhere */
+        return;
+    }
+    if (st != AM_OK) {
+        out->diverged = 1;
+        return;
+    }
+    am_eval_def ev = d->eval;
+    ev.record = rec;
+    am_result res;
+    am_evaluate(&w->model, &w->state, &ev, &res);
+    out->fitness = res.diverged ? -1.0 : res.fitness;
+    out->diverged = res.diverged;
+    out->steps = res.steps;
+    out->state_hash = res.hash;
+}
+
+am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
+{
+    am_status st = am_evo_check(d, err, errsz);
+    if (st != AM_OK) return st;
+    memset(e, 0, sizeof *e);
+    e->def = *d;
+    e->palette = am_evo_palette(d);
+    am_rng_seed(&e->rng, d->seed);
+    for (int i = 0; i < d->population; i++) {
+        st = am_genome_init(&e->pop[i].genome, &d->geno, &e->rng, err, errsz);
+        if (st != AM_OK) return st;
+    }
+    e->history = AM_HASH_INIT;
+    return AM_OK;
+}
+
+int am_evo_done(const am_evo* e)
+{
+    return e->evaluations >= e->def.evaluations;
+}
+
+/* a beats b: a valid body that is strictly further, or any valid body against a diverged one */
+static int better(const am_evo_ind* a, const am_evo_ind* b)
+{
+    if (a->diverged) return 0;
+    if (b->diverged) return 1;
+    return a->fitness > b->fitness;
+}
+
+/* ---- parallel evaluation ---- */
+
+typedef struct eval_job {
+    const am_evo* e;
+    am_evo_ind* items;
+    const int* order;        /* item i of the map evaluates items[order[i]] */
+    am_evo_work* work;
+    int (*cancel)(void);
+    int skipped[AM_MAX_POPULATION];
+} eval_job;
+
+static void eval_task(void* ctx, int item, int worker)
+{
+    eval_job* job = (eval_job*)ctx;
+    int idx = job->order[item];
+    if (job->cancel && job->cancel()) {
+        job->skipped[idx] = 1;
+        return;
+    }
+    am_evo_ind* it = &job->items[idx];
+    am_genome g = it->genome;
+    am_evo_evaluate(&job->e->def, &job->e->palette, &g, &job->work[worker], NULL, it);
+}
+
+/* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
+ * returns 1 when every item was evaluated */
+static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, int (*cancel)(void),
+                        char* err, int errsz, am_status* st)
+{
+    static eval_job job; /* one run at a time per process; its size keeps it off the stack */
+    int* order = e->order;
+    int voxels[AM_MAX_POPULATION];
+    am_express_def ex = express_def(&e->def, &e->palette);
+    char msg[AM_ERR_MAX];
+    for (int i = 0; i < n; i++) {
+        order[i] = i;
+        voxels[i] = am_genome_express(&items[i].genome, &ex, &w[0].geno, NULL, msg, sizeof msg) == AM_OK ? w[0].geno.voxels : 0;
+    }
+    /* insertion sort: most voxels first, ties by index (the order changes speed, never results) */
+    for (int i = 1; i < n; i++) {
+        int k = order[i], j = i;
+        while (j > 0 && voxels[order[j - 1]] < voxels[k]) {
+            order[j] = order[j - 1];
+            j--;
+        }
+        order[j] = k;
+    }
+    memset(&job, 0, sizeof job);
+    job.e = e;
+    job.items = items;
+    job.order = order;
+    job.work = w;
+    job.cancel = cancel;
+    *st = am_port_parallel_map(n, workers, eval_task, &job, err, errsz);
+    if (*st != AM_OK) return 0;
+    for (int i = 0; i < n; i++)
+        if (job.skipped[i]) return 0;
+    return 1;
+}
+
+/* ---- crowding ---- */
+
+static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w, uint8_t* body)
+{
+    am_express_def ex = express_def(&e->def, &e->palette);
+    char msg[AM_ERR_MAX];
+    int cells = g->nx * g->ny * g->nz;
+    if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) == AM_OK) memcpy(body, w->cell, (size_t)cells);
+    else memset(body, 0, (size_t)cells);
+}
+
+static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
+{
+    am_evo_ind* p1 = &e->pop[a];
+    am_evo_ind* p2 = &e->pop[b];
+    am_evo_ind* c1 = &e->child[c];
+    am_evo_ind* c2 = &e->child[c + 1];
+    const int cells = p1->genome.nx * p1->genome.ny * p1->genome.nz;
+    express_body(e, &p1->genome, w, e->body[0]);
+    express_body(e, &p2->genome, w, e->body[1]);
+    express_body(e, &c1->genome, w, e->body[2]);
+    express_body(e, &c2->genome, w, e->body[3]);
+    am_real straight = am_body_distance(e->body[0], e->body[2], cells) + am_body_distance(e->body[1], e->body[3], cells);
+    am_real crossed = am_body_distance(e->body[0], e->body[3], cells) + am_body_distance(e->body[1], e->body[2], cells);
+    if (!(straight <= crossed)) {
+        am_evo_ind* t = c1;
+        c1 = c2;
+        c2 = t;
+    }
+    /* each offspring meets its more similar parent and replaces it when strictly better */
+    if (better(c1, p1)) *p1 = *c1;
+    if (better(c2, p2)) *p2 = *c2;
+}
+
+/* ---- statistics ---- */
+
+static void population_stats(const am_evo* e, am_evo_stats* s)
+{
+    double v[AM_MAX_POPULATION];
+    int n = 0;
+    double sum = 0.0;
+    for (int i = 0; i < e->def.population; i++) {
+        if (e->pop[i].diverged) continue;
+        double f = e->pop[i].fitness;
+        int j = n++;
+        while (j > 0 && v[j - 1] > f) {
+            v[j] = v[j - 1];
+            j--;
+        }
+        v[j] = f;
+        sum += f;
+    }
+    if (n == 0) {
+        s->best = s->mean = s->median = -1.0;
+        return;
+    }
+    s->best = v[n - 1];
+    s->mean = sum / (double)n;
+    s->median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+static uint64_t ind_hash(uint64_t h, const am_evo_ind* it)
+{
+    uint64_t bits;
+    memcpy(&bits, &it->fitness, sizeof bits);
+    h = am_hash_u64(h, am_genome_hash(&it->genome));
+    h = am_hash_u64(h, bits);
+    h = am_hash_u64(h, (uint64_t)it->voxels);
+    h = am_hash_u64(h, (uint64_t)(it->diverged | it->empty << 1));
+    h = am_hash_u64(h, (uint64_t)it->steps);
+    return am_hash_u64(h, it->state_hash);
+}
+
+uint64_t am_evo_hash(const am_evo* e)
+{
+    uint64_t h = am_hash_u64(e->history, (uint64_t)e->evaluations);
+    for (int i = 0; i < e->def.population; i++) h = ind_hash(h, &e->pop[i]);
+    return h;
+}
+
+/* ---- one generation ---- */
+
+am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz)
+{
+    const int n = e->def.population;
+    const double t0 = am_port_now();
+    const am_rng saved = e->rng;
+    am_status st = AM_OK;
+    if (workers < 1) workers = 1;
+    if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
+    int parent[AM_MAX_POPULATION]; /* offspring 2k and 2k + 1 come from parent[2k] and parent[2k + 1] */
+    if (e->generation == 0) {
+        /* the initial population: evaluated as it is */
+        for (int i = 0; i < n; i++) {
+            e->child[i] = e->pop[i];
+            parent[i] = i;
+        }
+    } else {
+        /* random pairs: a Fisher-Yates shuffle of the population */
+        for (int i = 0; i < n; i++) parent[i] = i;
+        for (int i = n - 1; i > 0; i--) {
+            int j = (int)am_rng_below(&e->rng, (uint32_t)(i + 1));
+            int t = parent[i];
+            parent[i] = parent[j];
+            parent[j] = t;
+        }
+        for (int k = 0; k + 1 < n; k += 2) {
+            am_evo_ind* c1 = &e->child[k];
+            am_evo_ind* c2 = &e->child[k + 1];
+            st = am_genome_crossover(&e->pop[parent[k]].genome, &e->pop[parent[k + 1]].genome, &c1->genome, &c2->genome,
+                                     &e->def.geno, &e->rng, err, errsz);
+            if (st != AM_OK) {
+                e->rng = saved;
+                return st;
+            }
+            am_genome_mutate(&c1->genome, &e->def.geno, &e->rng);
+            am_genome_mutate(&c2->genome, &e->def.geno, &e->rng);
+        }
+    }
+    if (!evaluate_all(e, e->child, n, w, workers, cancel, err, errsz, &st)) {
+        e->rng = saved;
+        if (st != AM_OK) return st;
+        return am_fail(err, errsz, AM_ERR_ARG, "interrupted");
+    }
+    am_evo_stats s;
+    memset(&s, 0, sizeof s);
+    for (int i = 0; i < n; i++) {
+        e->history = ind_hash(e->history, &e->child[i]);
+        s.diverged += e->child[i].diverged;
+        s.empty += e->child[i].empty;
+        if (!e->has_best || better(&e->child[i], &e->best)) {
+            e->best = e->child[i];
+            e->has_best = 1;
+        }
+    }
+    if (e->generation == 0) {
+        for (int i = 0; i < n; i++) e->pop[i] = e->child[i];
+    } else {
+        for (int k = 0; k + 1 < n; k += 2) crowd_pair(e, parent[k], parent[k + 1], k, &w[0].geno);
+    }
+    e->evaluations += n;
+    s.generation = e->generation;
+    s.evaluations = e->evaluations;
+    population_stats(e, &s);
+    s.wall_s = am_port_now() - t0;
+    e->last = s;
+    e->generation++;
+    return AM_OK;
+}
+
+/* ---- log ---- */
+
+const char* am_evo_log_header(void)
+{
+    return "generation,evaluations,best,mean,median,diverged,empty,wall_s";
+}
+
+int am_evo_log_row(const am_evo_stats* s, char* buf, int cap)
+{
+    int n = snprintf(buf, (size_t)cap, "%ld,%ld,%.9g,%.9g,%.9g,%d,%d,%.3f", s->generation, s->evaluations, s->best, s->mean,
+                     s->median, s->diverged, s->empty, s->wall_s);
+    return n < 0 ? 0 : n;
+}

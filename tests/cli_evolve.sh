@@ -1,0 +1,172 @@
+# tests/cli_evolve.sh: `amorph evolve` and `amorph experiment` as a researcher runs them: run
+# folders, config files and flags, identical runs for 1, 2 and 3 threads, Ctrl-C and kill -9
+# followed by --resume ending exactly like an uninterrupted run, and every bad input refused with
+# one line and a non-zero exit without damaging the run. Run from the repository root.
+. tests/shlib.sh
+
+# a small configuration: each run takes a second or two
+cat >"$TMPD/small.cfg" <<'CFG'
+# small test run
+workspace = 8
+population = 6
+evaluations = 36
+cycles = 2
+period_steps = 100
+relax_max_steps = 300
+relax_min_steps = 50
+gmx_points = 24
+seed = 11
+CFG
+E="$AMORPH evolve --config $TMPD/small.cfg --quiet --no-pictures"
+
+# the log without its wall-clock column (the one column that differs between runs)
+nowall() { cut -d, -f1-7 "$1"; }
+# the run folder's summary line key=value
+sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }
+
+# --- a run and its folder ---
+expect_ok $E --out "$TMPD/a" --threads 1
+for f in config.txt log.csv best.genome best.lattice summary.txt checkpoint.txt; do
+    if [ -s "$TMPD/a/$f" ]; then ok; else ko "run folder lacks $f"; fi
+done
+if [ "$(head -n 1 "$TMPD/a/log.csv")" = "generation,evaluations,best,mean,median,diverged,empty,wall_s" ]; then ok
+else ko "log header: $(head -n 1 "$TMPD/a/log.csv")"; fi
+rows=$(($(wc -l <"$TMPD/a/log.csv") - 1))
+if [ "$rows" -eq 6 ]; then ok; else ko "36 evaluations of 6 should log 6 generations, got $rows rows"; fi
+if [ "$(tail -n 1 "$TMPD/a/log.csv" | cut -d, -f2)" = 36 ]; then ok; else ko "last row: $(tail -n 1 "$TMPD/a/log.csv")"; fi
+# best fitness never decreases under deterministic crowding
+if cut -d, -f3 "$TMPD/a/log.csv" | tail -n +2 | awk 'NR > 1 && $1 < prev { bad = 1 } { prev = $1 } END { exit bad }'; then ok
+else ko "best fitness decreased: $(cut -d, -f3 "$TMPD/a/log.csv" | tr '\n' ' ')"; fi
+# the best genome and lattice are readable robots, and the best genome simulates to the logged best
+if grep -q "^amorph-genome" "$TMPD/a/best.genome" && "$AMORPH" sim "$TMPD/a/best.lattice" --cycles 1 >/dev/null 2>&1; then ok
+else ko "best.genome / best.lattice unreadable"; fi
+if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
+else ko "config.txt does not hold the effective configuration"; fi
+
+# --- 1, 2 and 3 threads: the same run ---
+expect_ok $E --out "$TMPD/t2" --threads 2
+expect_ok $E --out "$TMPD/t3" --threads 3
+h1=$(sumval "$TMPD/a" run_hash); h2=$(sumval "$TMPD/t2" run_hash); h3=$(sumval "$TMPD/t3" run_hash)
+if [ -n "$h1" ] && [ "$h1" = "$h2" ] && [ "$h2" = "$h3" ]; then ok; else ko "run hashes differ: $h1 $h2 $h3"; fi
+if [ "$(nowall "$TMPD/a/log.csv")" = "$(nowall "$TMPD/t3/log.csv")" ] && cmp -s "$TMPD/a/best.genome" "$TMPD/t3/best.genome"; then ok
+else ko "logs or best genomes differ between 1 and 3 threads"; fi
+
+# --- configuration: file, flags over file, print-config round trip ---
+"$AMORPH" evolve --config "$TMPD/small.cfg" --population 8 --print-config >"$TMPD/p1.cfg" 2>"$TMPD/err"
+if grep -q "^population = 8$" "$TMPD/p1.cfg" && grep -q "^workspace = 8$" "$TMPD/p1.cfg"; then ok
+else ko "flags do not override the file: $(head -c 300 "$TMPD/p1.cfg")"; fi
+"$AMORPH" evolve --config "$TMPD/p1.cfg" --print-config >"$TMPD/p2.cfg" 2>&1
+if cmp -s "$TMPD/p1.cfg" "$TMPD/p2.cfg"; then ok; else ko "--print-config does not read back to itself"; fi
+"$AMORPH" evolve --print-config >"$TMPD/d.cfg"
+for kv in "representation = gmx" "materials = 2" "workspace = 20" "population = 20" "cte = 0.01" "amplitude = 30" \
+          "period_steps = 500" "mu_kinetic = 0.3" "mu_static = 1" "cte_mode = volumetric"; do
+    if grep -qx "$kv" "$TMPD/d.cfg"; then ok; else ko "default configuration lacks '$kv'"; fi
+done
+"$AMORPH" evolve --workspace=5x6x7 --print-config | grep -qx "workspace = 5x6x7" && ok || ko "--key=value form"
+"$AMORPH" evolve --period-steps 250 --print-config | grep -qx "period_steps = 250" && ok || ko "dashes in flag names"
+
+# --- bad input: one line, exit 2, nothing written ---
+expect_fail 2 "unknown option '--bogus'" "$AMORPH" evolve --bogus 1
+expect_fail 2 "population = 7.*even" "$AMORPH" evolve --population 7 --out "$TMPD/bad1"
+expect_fail 2 "population = 'x'" "$AMORPH" evolve --population x --out "$TMPD/bad1"
+expect_fail 2 "workspace = '50'.*profile" "$AMORPH" evolve --workspace 50 --out "$TMPD/bad1"
+expect_fail 2 "--population needs a value" "$AMORPH" evolve --population
+printf 'population = 6\nfrobnicate = 3\n' >"$TMPD/bad.cfg"
+expect_fail 2 "bad.cfg:2: unknown key 'frobnicate'" "$AMORPH" evolve --config "$TMPD/bad.cfg" --out "$TMPD/bad1"
+printf 'population 6\n' >"$TMPD/bad2.cfg"
+expect_fail 2 "bad2.cfg:1: expected 'key = value'" "$AMORPH" evolve --config "$TMPD/bad2.cfg" --out "$TMPD/bad1"
+expect_fail 2 "nothere.cfg: cannot open" "$AMORPH" evolve --config "$TMPD/nothere.cfg"
+if [ ! -e "$TMPD/bad1" ]; then ok; else ko "a refused run left a folder behind"; fi
+expect_fail 2 "holds a run already" $E --out "$TMPD/a"
+
+# --- resume: bad cases leave the run as it was ---
+cp -r "$TMPD/a" "$TMPD/r"
+snap() { (cd "$1" && cat config.txt log.csv best.genome checkpoint.txt | cksum); }
+before=$(snap "$TMPD/r")
+expect_fail 2 "configuration changed: population" "$AMORPH" evolve --resume "$TMPD/r" --population 8 --quiet
+sed -i 's/^mu_static = 1$/mu_static = 2/' "$TMPD/r/config.txt"
+expect_fail 2 "configuration changed: mu_static" "$AMORPH" evolve --resume "$TMPD/r" --quiet
+cp "$TMPD/a/config.txt" "$TMPD/r/config.txt"
+sed -i 's/^evaluations 36$/evaluations 37/' "$TMPD/r/checkpoint.txt"
+expect_fail 2 "checkpoint.txt:[0-9]+: checksum mismatch" "$AMORPH" evolve --resume "$TMPD/r" --quiet
+head -c 2000 "$TMPD/a/checkpoint.txt" >"$TMPD/r/checkpoint.txt"
+expect_fail 2 "missing checksum" "$AMORPH" evolve --resume "$TMPD/r" --quiet
+cp "$TMPD/a/checkpoint.txt" "$TMPD/r/checkpoint.txt"
+if [ "$(snap "$TMPD/r")" = "$before" ]; then ok; else ko "a refused resume changed the run folder"; fi
+expect_fail 2 "cannot open" "$AMORPH" evolve --resume "$TMPD/nothere" --quiet
+expect_fail 2 "--out does not apply" "$AMORPH" evolve --resume "$TMPD/r" --out "$TMPD/x"
+# a finished run resumed with more evaluations goes on; the result equals a longer run from scratch
+expect_ok "$AMORPH" evolve --resume "$TMPD/r" --evaluations 48 --quiet --no-pictures
+expect_ok $E --out "$TMPD/long" --evaluations 48
+if [ "$(nowall "$TMPD/r/log.csv")" = "$(nowall "$TMPD/long/log.csv")" ] && cmp -s "$TMPD/r/best.genome" "$TMPD/long/best.genome"; then ok
+else ko "extending a finished run differs from a longer run"; fi
+
+# --- interruptions: Ctrl-C (SIGINT) and kill -9 mid-generation, then --resume ---
+L="--evaluations 120"
+expect_ok $E --out "$TMPD/ref" $L
+# wait_rows DIR N: until DIR/log.csv has N data rows (10 s at most)
+wait_rows() {
+    i=0
+    while [ $i -lt 200 ]; do
+        [ -f "$1/log.csv" ] && [ $(($(wc -l <"$1/log.csv") - 1)) -ge "$2" ] && return 0
+        sleep 0.05; i=$((i + 1))
+    done
+    return 1
+}
+for how in INT KILL; do
+    d="$TMPD/int-$how"
+    $E --out "$d" $L >"$TMPD/out" 2>"$TMPD/err" &
+    pid=$!
+    if wait_rows "$d" 3; then ok; else ko "$how: the run did not start"; fi
+    sleep 0.1
+    kill -s $how $pid
+    wait $pid 2>/dev/null; rc=$?
+    if [ $how = INT ]; then
+        if [ $rc -eq 130 ] && grep -q "resume with: amorph evolve --resume $d" "$TMPD/err"; then ok
+        else ko "Ctrl-C: exit $rc, stderr: $(cat "$TMPD/err")"; fi
+    else
+        if [ $rc -eq 137 ]; then ok; else ko "kill -9: exit $rc"; fi
+    fi
+    done_rows=$(($(wc -l <"$d/log.csv") - 1))
+    if [ "$done_rows" -lt 20 ]; then ok; else ko "$how: the run finished before the interruption ($done_rows rows)"; fi
+    expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
+    if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok
+    else nowall "$d/log.csv" >"$TMPD/l1"; nowall "$TMPD/ref/log.csv" >"$TMPD/l2"; ko "$how: resumed log differs: $(diff "$TMPD/l1" "$TMPD/l2" | head -5)"; fi
+    if cmp -s "$d/best.genome" "$TMPD/ref/best.genome" && cmp -s "$d/best.lattice" "$TMPD/ref/best.lattice"; then ok
+    else ko "$how: resumed best genome differs"; fi
+    if [ "$(sumval "$d" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "$how: run hash differs"; fi
+done
+# a checkpoint every few seconds instead of every generation resumes just as exactly
+d="$TMPD/slow"
+$E --out "$d" $L --checkpoint-seconds 1 >"$TMPD/out" 2>"$TMPD/err" &
+pid=$!
+wait_rows "$d" 6; sleep 0.1; kill -9 $pid; wait $pid 2>/dev/null
+expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
+if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok; else ko "checkpoint_seconds: resumed log differs"; fi
+
+# --- experiments ---
+expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet
+for v in dct-1 dct-2 cppn-1 cppn-2 gmx-1 gmx-2; do
+    if [ -s "$TMPD/exp/$v/log.csv" ]; then ok; else ko "experiment lacks run $v"; fi
+done
+if grep -q "^representation = cppn$" "$TMPD/exp/cppn-2/config.txt" && grep -q "^seed = 12$" "$TMPD/exp/cppn-2/config.txt"; then ok
+else ko "experiment run settings: $(grep -E 'representation|seed' "$TMPD/exp/cppn-2/config.txt")"; fi
+if [ "$(grep -c '^gmx,' "$TMPD/exp/results.csv")" -eq 2 ] && head -n 1 "$TMPD/exp/results.csv" | grep -q "variant,evaluations,mean_best,stderr_best,runs"; then ok
+else ko "results.csv: $(head -c 300 "$TMPD/exp/results.csv")"; fi
+if grep -q "evaluations.*dct.*cppn.*gmx" "$TMPD/out"; then ok; else ko "experiment table: $(head -c 300 "$TMPD/out")"; fi
+# mean and standard error agree with the two runs' logs
+m=$(awk -F, -v a="$(tail -n 1 "$TMPD/exp/gmx-1/log.csv" | cut -d, -f3)" -v b="$(tail -n 1 "$TMPD/exp/gmx-2/log.csv" | cut -d, -f3)" \
+    'BEGIN { m = (a + b) / 2; s = sqrt(((a - m) ^ 2 + (b - m) ^ 2) / 1) / sqrt(2); printf "%.6g %.6g", m, s }')
+got=$(grep '^gmx,12,' "$TMPD/exp/results.csv" | awk -F, '{ printf "%.6g %.6g", $3, $4 }')
+if [ "$m" = "$got" ]; then ok; else ko "gmx mean/stderr at 12 evaluations: want $m, got $got"; fi
+# the same command again: every run is complete, nothing changes
+before=$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)
+expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet
+if [ "$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)" = "$before" ]; then ok; else ko "re-running a finished experiment changed it"; fi
+expect_fail 2 "unknown experiment 'colours'" "$AMORPH" experiment colours
+expect_fail 2 "--runs needs" "$AMORPH" experiment friction --runs 0
+for x in three-materials dynamic friction; do
+    "$AMORPH" experiment --help | grep -q "^  $x " && ok || ko "experiment --help lacks $x"
+done
+
+summary tests/cli_evolve.sh

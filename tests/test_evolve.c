@@ -1,0 +1,285 @@
+/* tests/test_evolve.c: the evolver. Configuration parsing and printing, the deterministic
+ * crowding rule, bit-identical runs for 1, 2 and 3 workers, checkpoints (round trip, resume
+ * equals an uninterrupted run, damage detected), cancellation, and a pinned golden run hash. */
+#include "harness.h"
+
+#include "amorph.h"
+
+static am_evo g_a, g_b, g_c;
+static am_evo_work g_work[3];
+static char g_text[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+static char g_text2[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+
+/* Golden hash of the small reference run of small_def() after 4 generations (float desktop build).
+ * Re-pin it deliberately when the simulator, the genotypes or the evolver change results. */
+#define GOLDEN_SMALL_RUN UINT64_C(0x98ed4930b840e682)
+
+/* a run small enough for a unit test: 8^3 workspace, population 6, short simulations */
+static am_evo_def small_def(int repr)
+{
+    am_evo_def d = am_default_evo();
+    char err[AM_ERR_MAX];
+    am_evo_set(&d, "workspace", "8", err, sizeof err);
+    d.geno.repr = repr;
+    d.geno.gmx_points = 24;
+    d.population = 6;
+    d.evaluations = 24;
+    d.eval.cycles = 2;
+    d.env.period_steps = 100;
+    d.eval.relax_max_steps = 300;
+    d.eval.relax_min_steps = 50;
+    d.seed = 7;
+    return d;
+}
+
+static int run_to_end(am_evo* e, int workers)
+{
+    char err[AM_ERR_MAX];
+    while (!am_evo_done(e))
+        if (am_evo_generation(e, g_work, workers, NULL, err, sizeof err) != AM_OK) {
+            fprintf(stderr, "generation: %s\n", err);
+            return 0;
+        }
+    return 1;
+}
+
+static void test_config_defaults_are_the_seed(void)
+{
+    am_evo_def d = am_default_evo();
+    CHECK(d.geno.repr == AM_REPR_GMX, "representation %d", d.geno.repr);
+    CHECK(d.geno.materials == 2, "materials %d", d.geno.materials);
+    CHECK(d.geno.nx == AM_MAX_DIM && d.geno.ny == AM_MAX_DIM && d.geno.nz == AM_MAX_DIM, "workspace");
+    CHECK(d.population == 20, "population %d", d.population);
+    NEAR(d.cte, 0.01, 1e-9);
+    NEAR(d.env.temp_amplitude, 30, 0);
+    CHECK(d.env.period_steps == 500, "period %d", d.env.period_steps);
+    NEAR(d.mu_kinetic, 0.3, 1e-7);
+    NEAR(d.mu_static, 1.0, 0);
+    CHECK(d.env.cte_mode == AM_CTE_VOLUMETRIC, "cte mode");
+    am_palette p = am_evo_palette(&d);
+    int act = am_palette_find(&p, "active"), pas = am_palette_find(&p, "passive");
+    CHECK(act >= 0 && pas >= 0, "palette names");
+    NEAR(p.mat[act].cte, 0.01, 1e-9);
+    NEAR(p.mat[pas].cte, 0, 0);
+    NEAR(p.mat[pas].mu_kinetic, 0.3, 1e-7);
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_check(&d, err, sizeof err) == AM_OK, "%s", err);
+}
+
+static void test_config_set_and_errors(void)
+{
+    am_evo_def d = am_default_evo();
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_set(&d, "workspace", "4x5x6", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(d.geno.nx == 4 && d.geno.ny == 5 && d.geno.nz == 6, "workspace %d %d %d", d.geno.nx, d.geno.ny, d.geno.nz);
+    CHECK(am_evo_set(&d, "representation", "cppn", err, sizeof err) == AM_OK && d.geno.repr == AM_REPR_CPPN, "repr");
+    CHECK(am_evo_set(&d, "mu_static", "5.0", err, sizeof err) == AM_OK, "%s", err);
+    NEAR(d.mu_static, 5, 0);
+    CHECK(am_evo_set(&d, "seed", "18446744073709551615", err, sizeof err) == AM_OK && d.seed == UINT64_MAX, "seed max");
+    CHECK(am_evo_set(&d, "collisions", "off", err, sizeof err) == AM_OK && d.env.collisions == 0, "collisions");
+    /* errors name the key and the problem */
+    CHECK(am_evo_set(&d, "populaton", "20", err, sizeof err) == AM_ERR_ARG && strstr(err, "unknown key 'populaton'"), "%s", err);
+    CHECK(am_evo_set(&d, "population", "20x", err, sizeof err) == AM_ERR_RANGE && strstr(err, "population"), "%s", err);
+    CHECK(am_evo_set(&d, "population", "1", err, sizeof err) == AM_ERR_RANGE, "population 1: %s", err);
+    CHECK(am_evo_set(&d, "workspace", "0", err, sizeof err) == AM_ERR_RANGE, "workspace 0: %s", err);
+    CHECK(am_evo_set(&d, "workspace", "4x5", err, sizeof err) == AM_ERR_RANGE, "workspace 4x5: %s", err);
+    CHECK(am_evo_set(&d, "workspace", "99", err, sizeof err) == AM_ERR_RANGE && strstr(err, "profile"), "%s", err);
+    CHECK(am_evo_set(&d, "representation", "dna", err, sizeof err) == AM_ERR_RANGE && strstr(err, "dct, cppn or gmx"), "%s", err);
+    CHECK(am_evo_set(&d, "cte", "nan", err, sizeof err) == AM_ERR_RANGE, "cte nan: %s", err);
+    CHECK(am_evo_set(&d, "cte", " 0.1", err, sizeof err) == AM_ERR_RANGE, "leading space: %s", err);
+    CHECK(am_evo_set(&d, "seed", "-1", err, sizeof err) == AM_ERR_RANGE, "seed -1: %s", err);
+    CHECK(am_evo_set(&d, "collisions", "yes", err, sizeof err) == AM_ERR_RANGE, "collisions yes: %s", err);
+    am_evo_def odd = am_default_evo();
+    odd.population = 7;
+    CHECK(am_evo_check(&odd, err, sizeof err) == AM_ERR_RANGE && strstr(err, "even"), "%s", err);
+    am_evo_def few = am_default_evo();
+    few.evaluations = 10;
+    CHECK(am_evo_check(&few, err, sizeof err) == AM_ERR_RANGE && strstr(err, "evaluations"), "%s", err);
+}
+
+static void test_config_text_round_trip(void)
+{
+    am_evo_def d = small_def(AM_REPR_CPPN), e = am_default_evo();
+    char err[AM_ERR_MAX], a[8192], b[8192];
+    long la = 0, lb = 0;
+    d.mu_kinetic = AM_R(0.1);
+    d.env.cte_mode = AM_CTE_LINEAR;
+    CHECK(am_evo_format(&d, 1, a, sizeof a, &la, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_parse(&e, a, "cfg", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_format(&e, 1, b, sizeof b, &lb, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(la == lb && strcmp(a, b) == 0, "text differs after a round trip");
+    char key[160];
+    CHECK(am_evo_same_run(&d, &e, key, sizeof key), "same run: %s", key);
+    e.evaluations = 999;
+    e.threads = 3;
+    CHECK(am_evo_same_run(&d, &e, key, sizeof key), "evaluations and threads never make another run: %s", key);
+    e.population = 8;
+    CHECK(!am_evo_same_run(&d, &e, key, sizeof key) && strstr(key, "population"), "%s", key);
+    /* parse errors carry file:line */
+    am_evo_def f = am_default_evo();
+    CHECK(am_evo_parse(&f, "# c\npopulation = 10\nbogus = 1\n", "x.cfg", err, sizeof err) == AM_ERR_PARSE &&
+              strstr(err, "x.cfg:3: unknown key 'bogus'"), "%s", err);
+    CHECK(f.population == 10, "population read before the error");
+    CHECK(am_evo_parse(&f, "population 10\n", "x.cfg", err, sizeof err) == AM_ERR_PARSE && strstr(err, "x.cfg:1: expected 'key = value'"),
+          "%s", err);
+    CHECK(am_evo_parse(&f, "\n\ncte =\n", "x.cfg", err, sizeof err) == AM_ERR_PARSE && strstr(err, "x.cfg:3: cte: missing value"), "%s", err);
+    CHECK(am_evo_parse(&f, "amplitude = 1e9\n", "x.cfg", err, sizeof err) == AM_ERR_RANGE && strstr(err, "x.cfg:1: amplitude"), "%s", err);
+}
+
+/* every slot after a generation holds its old member or one of the two offspring of its pair,
+ * and an offspring only ever replaces a worse member */
+static void test_crowding_rule(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(g_a.evaluations == 6 && g_a.generation == 1, "after generation 0: %ld evaluations", g_a.evaluations);
+    int replaced_total = 0;
+    for (int gen = 0; gen < 3; gen++) {
+        am_evo_ind before[AM_MAX_POPULATION];
+        for (int i = 0; i < d.population; i++) before[i] = g_a.pop[i];
+        double best_before = g_a.last.best;
+        CHECK(am_evo_generation(&g_a, g_work, 2, NULL, err, sizeof err) == AM_OK, "%s", err);
+        for (int i = 0; i < d.population; i++) {
+            int same = am_genome_equal(&g_a.pop[i].genome, &before[i].genome);
+            int from_child = -1;
+            for (int c = 0; c < d.population; c++)
+                if (am_genome_equal(&g_a.pop[i].genome, &g_a.child[c].genome)) from_child = c;
+            CHECK(same || from_child >= 0, "slot %d holds neither its member nor an offspring", i);
+            if (!same && from_child >= 0) {
+                replaced_total++;
+                const am_evo_ind* c = &g_a.child[from_child];
+                CHECK(!c->diverged, "a diverged offspring replaced a member");
+                CHECK(before[i].diverged || c->fitness > before[i].fitness, "offspring %.9g replaced a member of %.9g", c->fitness,
+                      before[i].fitness);
+            }
+        }
+        CHECK(g_a.last.best >= best_before, "the best fitness fell from %.9g to %.9g", best_before, g_a.last.best);
+        /* every offspring that is strictly better than both parents' best must be in the population
+         * (it beats whichever parent it meets) */
+    }
+    CHECK(replaced_total > 0, "no offspring ever replaced a member in 3 generations");
+    CHECK(g_a.has_best && g_a.best.fitness == g_a.last.best, "best ever %.9g vs population best %.9g", g_a.best.fitness, g_a.last.best);
+}
+
+static void test_workers_give_identical_runs(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX];
+    uint64_t h[3];
+    am_evo* runs[3] = {&g_a, &g_b, &g_c};
+    for (int w = 1; w <= 3; w++) {
+        CHECK(am_evo_init(runs[w - 1], &d, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(run_to_end(runs[w - 1], w), "run with %d workers", w);
+        h[w - 1] = am_evo_hash(runs[w - 1]);
+    }
+    CHECK(h[0] == h[1] && h[1] == h[2], "run hashes for 1, 2, 3 workers: %016llx %016llx %016llx", (unsigned long long)h[0],
+          (unsigned long long)h[1], (unsigned long long)h[2]);
+    CHECK(g_a.evaluations == 24 && g_a.generation == 4, "%ld evaluations in %ld generations", g_a.evaluations, g_a.generation);
+    if (GOLDEN_SMALL_RUN != 0 && sizeof(am_real) == sizeof(float) && AM_MAX_DIM == 20)
+        CHECK(h[0] == GOLDEN_SMALL_RUN, "golden run hash: got %016llx, pinned %016llx", (unsigned long long)h[0],
+              (unsigned long long)GOLDEN_SMALL_RUN);
+    else printf("  (golden run hash %016llx)\n", (unsigned long long)h[0]);
+    /* a different seed gives a different run */
+    d.seed = 8;
+    CHECK(am_evo_init(&g_c, &d, err, sizeof err) == AM_OK && run_to_end(&g_c, 1), "seed 8");
+    CHECK(am_evo_hash(&g_c) != h[0], "seeds 7 and 8 gave the same run");
+}
+
+static void test_checkpoint_resume_equals_uninterrupted(void)
+{
+    const int reprs[3] = {AM_REPR_DCT, AM_REPR_CPPN, AM_REPR_GMX};
+    for (int r = test_quick() ? 2 : 0; r < 3; r++) {
+        am_evo_def d = small_def(reprs[r]);
+        char err[AM_ERR_MAX];
+        long la = 0, lb = 0;
+        CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK && run_to_end(&g_a, 2), "uninterrupted %s", am_repr_name(reprs[r]));
+        CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_b, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_b, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_checkpoint_format(&g_b, g_text, sizeof g_text, &la, err, sizeof err) == AM_OK, "%s", err);
+        memcpy(g_text2, g_text, (size_t)la + 1);
+        CHECK(am_evo_checkpoint_parse(&g_c, g_text2, "ck", err, sizeof err) == AM_OK, "%s: %s", am_repr_name(reprs[r]), err);
+        CHECK(am_evo_checkpoint_format(&g_c, g_text2, sizeof g_text2, &lb, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(la == lb && memcmp(g_text, g_text2, (size_t)la) == 0, "%s: checkpoint text changes after a round trip",
+              am_repr_name(reprs[r]));
+        CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_b), "hash of the restored run");
+        CHECK(run_to_end(&g_c, 3), "resumed run");
+        CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a), "%s: resumed %016llx vs uninterrupted %016llx", am_repr_name(reprs[r]),
+              (unsigned long long)am_evo_hash(&g_c), (unsigned long long)am_evo_hash(&g_a));
+        CHECK(am_genome_equal(&g_c.best.genome, &g_a.best.genome) && g_c.best.fitness == g_a.best.fitness, "same best genome");
+    }
+}
+
+static void test_checkpoint_damage_is_refused(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX];
+    long len = 0;
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_checkpoint_format(&g_a, g_text, sizeof g_text, &len, err, sizeof err) == AM_OK, "%s", err);
+    /* one changed digit anywhere */
+    memcpy(g_text2, g_text, (size_t)len + 1);
+    char* p = strstr(g_text2, "generation 1");
+    CHECK(p != NULL, "generation line");
+    if (p) p[11] = '2';
+    CHECK(am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "ck.txt:") &&
+              strstr(err, "checksum mismatch"), "%s", err);
+    /* truncated */
+    memcpy(g_text2, g_text, (size_t)len + 1);
+    g_text2[len / 2] = 0;
+    CHECK(am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "missing checksum"), "%s", err);
+    /* empty, and not a checkpoint */
+    g_text2[0] = 0;
+    CHECK(am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "ck.txt:1: empty"), "%s", err);
+    /* too small a buffer is a capacity error, not an overflow */
+    CHECK(am_evo_checkpoint_format(&g_a, g_text2, 100, &len, err, sizeof err) == AM_ERR_CAPACITY, "capacity: %s", err);
+}
+
+static int cancel_now(void)
+{
+    return 1;
+}
+
+static void test_cancel_leaves_the_run_unchanged(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    uint64_t h = am_evo_hash(&g_a);
+    am_rng r = g_a.rng;
+    long gen = g_a.generation;
+    CHECK(am_evo_generation(&g_a, g_work, 2, cancel_now, err, sizeof err) == AM_ERR_ARG && strstr(err, "interrupted"), "%s", err);
+    CHECK(am_evo_hash(&g_a) == h && g_a.generation == gen && memcmp(&r, &g_a.rng, sizeof r) == 0, "cancelled generation changed the run");
+    /* and the run goes on as if nothing happened */
+    CHECK(run_to_end(&g_a, 1), "after a cancel");
+    CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK && run_to_end(&g_b, 1), "reference");
+    CHECK(am_evo_hash(&g_a) == am_evo_hash(&g_b), "a cancelled generation changed the rest of the run");
+}
+
+static void test_log_row(void)
+{
+    am_evo_stats s = {3, 80, 0.125, 0.0625, 0.05, 1, 2, 1.5};
+    char row[256];
+    int n = am_evo_log_row(&s, row, sizeof row);
+    CHECK(n > 0 && strcmp(row, "3,80,0.125,0.0625,0.05,1,2,1.500") == 0, "row '%s'", row);
+    CHECK(strcmp(am_evo_log_header(), "generation,evaluations,best,mean,median,diverged,empty,wall_s") == 0, "header");
+}
+
+int main(int argc, char** argv)
+{
+    TEST_INIT(argc, argv);
+    RUN(test_config_defaults_are_the_seed);
+    RUN(test_config_set_and_errors);
+    RUN(test_config_text_round_trip);
+    RUN(test_log_row);
+    RUN(test_crowding_rule);
+    RUN(test_workers_give_identical_runs);
+    RUN(test_checkpoint_resume_equals_uninterrupted);
+    RUN(test_checkpoint_damage_is_refused);
+    RUN(test_cancel_leaves_the_run_unchanged);
+    return SUMMARY();
+}

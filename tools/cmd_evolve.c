@@ -1,0 +1,697 @@
+/* amorph evolve: a run in a folder (config, log, best robot, summary, checkpoint), resumable;
+ * amorph experiment: the seed's experiments as groups of runs; bench --evolve. */
+#include "cmd.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static am_evo g_evo;
+static am_evo_work g_work[AM_MAX_WORKERS];
+static char g_ckpt[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+static am_lattice g_best_lat;
+
+static const char evolve_help[] =
+    "usage: amorph evolve [--config FILE] [--KEY VALUE]... [--out DIR] [options]\n"
+    "       amorph evolve --resume DIR [--evaluations N] [--threads N] [--quiet]\n"
+    "Evolves robots by deterministic crowding. With no options: the seed's two-material experiment\n"
+    "(GMX, 20^3 workspace, population 20, CTE 0.01, amplitude 30, period 500 steps, friction\n"
+    "0.3 / 1.0) for 200 evaluations. Settings come from the defaults, then --config FILE, then\n"
+    "flags: every configuration key is a flag (--workspace 8, --representation dct ...;\n"
+    "--help-config lists them).\n"
+    "  --out DIR          the run folder (default: a new folder runs/run-NNN)\n"
+    "  --resume DIR       continue the run in DIR from its checkpoint\n"
+    "  --print-config     print the effective configuration and exit\n"
+    "  --help-config      list the configuration keys\n"
+    "  --quiet            no progress output\n"
+    "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
+    "The run folder holds config.txt, log.csv, best.genome, best.lattice, summary.txt and\n"
+    "checkpoint.txt. Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
+
+/* ---- options shared by evolve and experiment ---- */
+
+typedef struct evo_opts {
+    const char* config;       /* --config FILE */
+    const char* out;          /* --out DIR */
+    const char* resume;       /* --resume DIR */
+    int print_config, quiet, pictures;
+    int nflags;
+    const char* key[64];      /* KEY VALUE flags in order */
+    const char* val[64];
+} evo_opts;
+
+/* one option at argv[*i]; returns 1 when consumed, 0 when unknown, -1 after an error message */
+static int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
+{
+    const char* a = argv[*i];
+    const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
+    if (strncmp(a, "--", 2) != 0) return 0;
+    const char* name = a + 2;
+    char keybuf[64];
+    const char* eq = strchr(name, '=');
+    if (eq) {
+        size_t n = (size_t)(eq - name);
+        if (n >= sizeof keybuf) return 0;
+        memcpy(keybuf, name, n);
+        keybuf[n] = 0;
+        name = keybuf;
+        v = eq + 1;
+    }
+    /* flags may spell keys with '-' for '_' */
+    char norm[64];
+    snprintf(norm, sizeof norm, "%s", name);
+    for (char* c = norm; *c; c++)
+        if (*c == '-') *c = '_';
+    if (!strcmp(norm, "quiet")) o->quiet = 1;
+    else if (!strcmp(norm, "no_pictures")) o->pictures = 0;
+    else if (!strcmp(norm, "print_config")) o->print_config = 1;
+    else if (!strcmp(norm, "config") || !strcmp(norm, "out") || !strcmp(norm, "resume") || am_evo_is_key(norm)) {
+        if (!v || (!eq && !strncmp(v, "--", 2))) {
+            tool_usage_error("%s: --%s needs a value", cmd, name);
+            return -1;
+        }
+        if (!eq) (*i)++;
+        if (!strcmp(norm, "config")) o->config = v;
+        else if (!strcmp(norm, "out")) o->out = v;
+        else if (!strcmp(norm, "resume")) o->resume = v;
+        else {
+            if (o->nflags == 64) {
+                tool_usage_error("%s: too many settings on the command line", cmd);
+                return -1;
+            }
+            /* keep the key as spelt in the table */
+            for (int k = 0; k < am_evo_key_count(); k++)
+                if (!strcmp(am_evo_key_name(k), norm)) o->key[o->nflags] = am_evo_key_name(k);
+            o->val[o->nflags++] = v;
+        }
+    } else return 0;
+    return 1;
+}
+
+/* defaults, then the config file, then the flags */
+static int build_def(const evo_opts* o, am_evo_def* d, const char* cmd)
+{
+    char err[AM_ERR_MAX];
+    *d = am_default_evo();
+    if (o->config) {
+        long len = 0;
+        if (am_port_read_file(o->config, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+        if (strlen(tool_file_buf) != (size_t)len) return tool_usage_error("%s:1: binary data (a NUL byte) in a text file", o->config);
+        if (am_evo_parse(d, tool_file_buf, o->config, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    }
+    for (int k = 0; k < o->nflags; k++)
+        if (am_evo_set(d, o->key[k], o->val[k], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
+    if (am_evo_check(d, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
+    return 0;
+}
+
+static void help_config(void)
+{
+    am_evo_def d = am_default_evo();
+    char buf[8192];
+    long len = 0;
+    char err[AM_ERR_MAX];
+    am_evo_format(&d, 1, buf, sizeof buf, &len, err, sizeof err);
+    printf("configuration keys (config file 'key = value', or flag --key VALUE), with defaults:\n");
+    for (int k = 0; k < am_evo_key_count(); k++) {
+        const char* name = am_evo_key_name(k);
+        const char* line = buf;
+        char value[64] = "?";
+        while ((line = strstr(line, name)) != NULL) {
+            if ((line == buf || line[-1] == '\n') && !strncmp(line + strlen(name), " = ", 3)) {
+                sscanf(line + strlen(name) + 3, "%63s", value);
+                break;
+            }
+            line++;
+        }
+        printf("  %-20s %-12s %s\n", name, value, am_evo_key_help(k));
+    }
+}
+
+/* ---- run folder ---- */
+
+/* dir/file into out; a path too long for out is cut (and then fails to open, with its name) */
+static int path_join(char* out, size_t cap, const char* dir, const char* file)
+{
+    int n = snprintf(out, cap, "%s/%s", dir, file);
+    return n >= 0 && (size_t)n < cap;
+}
+
+static int write_text(const char* dir, const char* file, const char* text, long len)
+{
+    char path[4096], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, file);
+    if (am_port_write_file(path, text, len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+static int write_config(const char* dir, const am_evo_def* d)
+{
+    char buf[8192], err[AM_ERR_MAX];
+    long len = 0;
+    if (am_evo_format(d, 1, buf, sizeof buf, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err) != 0;
+    return write_text(dir, "config.txt", buf, len);
+}
+
+static int write_checkpoint(const char* dir, const am_evo* e)
+{
+    char err[AM_ERR_MAX];
+    long len = 0;
+    if (am_evo_checkpoint_format(e, g_ckpt, sizeof g_ckpt, &len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: checkpoint: %s\n", err);
+        return 1;
+    }
+    return write_text(dir, "checkpoint.txt", g_ckpt, len);
+}
+
+static int write_best(const char* dir, const am_evo* e)
+{
+    char err[AM_ERR_MAX];
+    long len = 0;
+    if (am_genome_format(&e->best.genome, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK ||
+        write_text(dir, "best.genome", tool_file_buf, len))
+        return 1;
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &g_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK ||
+        am_lattice_format(&g_best_lat, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: best lattice: %s\n", err);
+        return 1;
+    }
+    return write_text(dir, "best.lattice", tool_file_buf, len);
+}
+
+static int write_summary(const char* dir, const am_evo* e, double wall)
+{
+    char buf[2048];
+    int n = snprintf(buf, sizeof buf,
+                     "# amorph evolve summary\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\nbest_fitness = %.9g\n"
+                     "best_voxels = %d\nbest_steps = %ld\nbest_state_hash = %016llx\nfinal_best = %.9g\nfinal_mean = %.9g\n"
+                     "final_median = %.9g\nrun_hash = %016llx\nwall_s = %.3f\nbuild = %s %s\n",
+                     am_repr_name(e->def.geno.repr), e->evaluations, e->generation, e->best.fitness, e->best.voxels,
+                     e->best.steps, (unsigned long long)e->best.state_hash, e->last.best, e->last.mean, e->last.median,
+                     (unsigned long long)am_evo_hash(e), wall, AM_REAL_NAME, AM_PROFILE_NAME);
+    return write_text(dir, "summary.txt", buf, n);
+}
+
+static int append_log(const char* dir, const am_evo_stats* s)
+{
+    char row[256], path[4096], err[AM_ERR_MAX];
+    int n = am_evo_log_row(s, row, (int)sizeof row - 1);
+    row[n++] = '\n';
+    path_join(path, sizeof path, dir, "log.csv");
+    if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+/* log.csv cut back to the header and the first `rows` rows (rows the checkpoint has seen) */
+static int trim_log(const char* dir, long rows)
+{
+    char path[4096], err[AM_ERR_MAX];
+    long len = 0;
+    path_join(path, sizeof path, dir, "log.csv");
+    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    const char* hdr = am_evo_log_header();
+    size_t hl = strlen(hdr);
+    if (strncmp(tool_file_buf, hdr, hl) != 0 || tool_file_buf[hl] != '\n')
+        return tool_usage_error("%s:1: not an amorph log (expected the header '%s')", path, hdr);
+    long pos = (long)hl + 1, have = 0;
+    while (have < rows) {
+        char* nl = strchr(tool_file_buf + pos, '\n');
+        if (!nl) break;
+        pos = (long)(nl - tool_file_buf) + 1;
+        have++;
+    }
+    if (have < rows)
+        return tool_usage_error("%s: %ld rows, but the checkpoint is at generation %ld (the log is damaged)", path, have, rows);
+    if (pos == len) return 0;
+    if (am_port_write_file(path, tool_file_buf, pos, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    return 0;
+}
+
+/* a fresh folder name under runs/ */
+static int default_out(char* out, size_t cap)
+{
+    char err[AM_ERR_MAX];
+    if (am_port_make_dir("runs", err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    for (int k = 1; k < 100000; k++) {
+        snprintf(out, cap, "runs/run-%03d", k);
+        if (!am_port_exists(out)) return 0;
+    }
+    return tool_usage_error("runs/: no free run-NNN name left");
+}
+
+/* ---- the loop ---- */
+
+typedef struct run_io {
+    const char* dir;
+    int quiet;
+    int pictures;
+    const char* label;        /* prefix of progress lines (experiments), or NULL */
+} run_io;
+
+static void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
+{
+    if (quiet) return;
+    double now = am_port_now(), el = now - t_start;
+    double rate = el > 0 ? (double)(e->evaluations - evals_start) / el : 0.0;
+    double left = rate > 0 ? (double)(e->def.evaluations - e->evaluations) / rate : 0.0;
+    if (left < 0) left = 0;
+    char line[256];
+    snprintf(line, sizeof line, "%s%sevaluations %ld/%ld  best %.4f m  mean %.4f m  %.2f eval/s  %.0f s left",
+             label ? label : "", label ? ": " : "", e->evaluations, e->def.evaluations, e->last.best, e->last.mean, rate, left);
+    if (am_port_is_terminal()) {
+        am_port_progress(line);
+        if (final) am_port_progress(NULL);
+    } else if (final || now - *last_line >= 5.0) {
+        fprintf(stderr, "%s\n", line);
+        *last_line = now;
+    }
+}
+
+static int workers_of(const am_evo_def* d)
+{
+    int w = d->threads > 0 ? d->threads : am_port_cores();
+    if (w > AM_MAX_WORKERS) w = AM_MAX_WORKERS;
+    return w < 1 ? 1 : w;
+}
+
+/* runs e to its end in io->dir; 0 done, 130 interrupted, 1 error */
+static int run_loop(am_evo* e, const run_io* io)
+{
+    char err[AM_ERR_MAX];
+    const int workers = workers_of(&e->def);
+    const double t0 = am_port_now();
+    const long evals0 = e->evaluations;
+    double last_ckpt = t0, last_line = t0;
+    int dirty = 0;
+    while (!am_evo_done(e)) {
+        double best_before = e->has_best ? e->best.fitness : 0.0;
+        int had_best = e->has_best;
+        am_status st = am_evo_generation(e, g_work, workers, am_port_interrupted, err, sizeof err);
+        if (st != AM_OK) {
+            if (am_port_interrupted()) break;
+            fprintf(stderr, "amorph: %s\n", err);
+            return 1;
+        }
+        if (append_log(io->dir, &e->last)) return 1;
+        if ((!had_best || e->best.fitness != best_before || e->generation == 1) && write_best(io->dir, e)) return 1;
+        dirty = 1;
+        double now = am_port_now();
+        if (e->def.checkpoint_seconds == 0 || now - last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
+            if (write_checkpoint(io->dir, e)) return 1;
+            last_ckpt = now;
+            dirty = 0;
+        }
+        progress(e, t0, evals0, am_evo_done(e), &last_line, io->quiet, io->label);
+        if (am_port_interrupted()) break;
+    }
+    if (am_port_interrupted() && !am_evo_done(e)) {
+        if (dirty && write_checkpoint(io->dir, e)) return 1;
+        am_port_progress(NULL);
+        fprintf(stderr, "amorph: interrupted after %ld evaluations (generation %ld); the checkpoint in %s stands.\n"
+                        "amorph: resume with: amorph evolve --resume %s\n",
+                e->evaluations, e->generation, io->dir, io->dir);
+        return 130;
+    }
+    if (write_summary(io->dir, e, am_port_now() - t0)) return 1;
+    return 0;
+}
+
+static int finish_pictures(const am_evo* e, const char* dir)
+{
+    (void)e;
+    (void)dir;
+    return 0;
+}
+
+/* a new run in dir (created), or a resumed one; 0, 1, 2 or 130 */
+static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+{
+    char err[AM_ERR_MAX], path[4096];
+    path_join(path, sizeof path, dir, "checkpoint.txt");
+    if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
+    path_join(path, sizeof path, dir, "config.txt");
+    if (am_port_exists(path)) return tool_usage_error("%s holds a run already (config.txt): choose another --out", dir);
+    if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (am_evo_init(&g_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (write_config(dir, d)) return 1;
+    char hdr[128];
+    int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
+    if (write_text(dir, "log.csv", hdr, n)) return 1;
+    /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
+    if (write_checkpoint(dir, &g_evo)) return 1;
+    run_io io = {dir, quiet, pictures, label};
+    int rc = run_loop(&g_evo, &io);
+    if (rc == 0 && pictures) rc = finish_pictures(&g_evo, dir);
+    return rc;
+}
+
+/* loads the run in dir and checks it against the settings the user gives now */
+static int resume_run(const char* dir, const evo_opts* o, int quiet, int pictures, const char* label)
+{
+    char err[AM_ERR_MAX], path[4096], what[160];
+    long len = 0;
+    path_join(path, sizeof path, dir, "checkpoint.txt");
+    if (am_port_read_file(path, g_ckpt, sizeof g_ckpt, &len, err, sizeof err) != AM_OK)
+        return tool_usage_error("--resume: %s", err);
+    if (strlen(g_ckpt) != (size_t)len) return tool_usage_error("%s:1: binary data in a checkpoint (damaged)", path);
+    if (am_evo_checkpoint_parse(&g_evo, g_ckpt, path, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    /* what the run folder's config.txt and today's flags say */
+    evo_opts now = *o;
+    char cfg[4096];
+    path_join(cfg, sizeof cfg, dir, "config.txt");
+    if (!now.config) now.config = cfg;
+    am_evo_def d;
+    if (build_def(&now, &d, "resume")) return 2;
+    if (!am_evo_same_run(&g_evo.def, &d, what, sizeof what))
+        return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
+    g_evo.def.evaluations = d.evaluations;
+    g_evo.def.threads = d.threads;
+    g_evo.def.checkpoint_seconds = d.checkpoint_seconds;
+    if (g_evo.def.evaluations < g_evo.evaluations)
+        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, g_evo.def.evaluations, g_evo.evaluations);
+    if (trim_log(dir, g_evo.generation)) return 2;
+    if (write_config(dir, &g_evo.def)) return 1;
+    run_io io = {dir, quiet, pictures, label};
+    int rc = run_loop(&g_evo, &io);
+    if (rc == 0 && pictures) rc = finish_pictures(&g_evo, dir);
+    return rc;
+}
+
+static void print_result(const am_evo* e, const char* dir)
+{
+    printf("run = %s\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\nbest_fitness = %.9g\nbest_voxels = %d\n"
+           "run_hash = %016llx\n",
+           dir, am_repr_name(e->def.geno.repr), e->evaluations, e->generation, e->best.fitness, e->best.voxels,
+           (unsigned long long)am_evo_hash(e));
+}
+
+int cmd_evolve(int argc, char** argv)
+{
+    evo_opts o;
+    memset(&o, 0, sizeof o);
+    o.pictures = 1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(evolve_help, stdout);
+            return 0;
+        }
+        if (!strcmp(argv[i], "--help-config")) {
+            help_config();
+            return 0;
+        }
+        int r = parse_common(argc, argv, &i, &o, "evolve");
+        if (r < 0) return 2;
+        if (r == 0) return tool_usage_error("evolve: unknown option '%s' (amorph evolve --help)", argv[i]);
+    }
+    if (o.resume && o.out) return tool_usage_error("evolve: --resume DIR continues in DIR; --out does not apply");
+    if (o.resume && o.config) return tool_usage_error("evolve: --resume reads the run's own config.txt; --config does not apply");
+    am_evo_def d;
+    if (!o.resume) {
+        if (build_def(&o, &d, "evolve")) return 2;
+        if (o.print_config) {
+            char buf[8192], err[AM_ERR_MAX];
+            long len = 0;
+            am_evo_format(&d, 1, buf, sizeof buf, &len, err, sizeof err);
+            fputs(buf, stdout);
+            return 0;
+        }
+    } else if (o.print_config) return tool_usage_error("evolve: --print-config and --resume: print a run's settings with cat DIR/config.txt");
+    char dir[1024];
+    if (strlen(o.resume ? o.resume : o.out ? o.out : "") >= sizeof dir) return tool_usage_error("evolve: folder name too long");
+    if (o.resume) snprintf(dir, sizeof dir, "%s", o.resume);
+    else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
+    else if (default_out(dir, sizeof dir)) return 2;
+    am_port_catch_interrupt();
+    int rc = o.resume ? resume_run(dir, &o, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
+    if (rc == 0) print_result(&g_evo, dir);
+    return rc;
+}
+
+/* ---- experiments ---- */
+
+typedef struct variant {
+    const char* name;
+    const char* settings;     /* "key=value key=value" */
+} variant;
+
+typedef struct experiment {
+    const char* name;
+    const char* about;
+    variant v[6];
+} experiment;
+
+static const experiment experiments[] = {
+    {"representations", "DCT, CPPN and GMX on the two-material task (the seed's Figure 6)",
+     {{"dct", "representation=dct"}, {"cppn", "representation=cppn"}, {"gmx", "representation=gmx"}, {NULL, NULL}}},
+    {"three-materials", "two materials against three (a second actuator 90 degrees out of phase)",
+     {{"two", "materials=2"}, {"three", "materials=3"}, {NULL, NULL}}},
+    {"dynamic", "dynamic response: actuation period and internal damping",
+     {{"base", "period_steps=500 damping_internal=1"},
+      {"fast", "period_steps=250 damping_internal=1"},
+      {"lowdamp", "period_steps=500 damping_internal=0.1"},
+      {"fast_lowdamp", "period_steps=250 damping_internal=0.1"},
+      {NULL, NULL}}},
+    {"friction", "floor friction kinetic / static: 0.3 / 1.0 (seed), 0.1 / 5.0 and 0.4 / 0.5",
+     {{"k0.3_s1.0", "mu_kinetic=0.3 mu_static=1.0"},
+      {"k0.1_s5.0", "mu_kinetic=0.1 mu_static=5.0"},
+      {"k0.4_s0.5", "mu_kinetic=0.4 mu_static=0.5"},
+      {NULL, NULL}}},
+};
+#define EXPERIMENTS ((int)(sizeof experiments / sizeof experiments[0]))
+
+static const char experiment_help[] =
+    "usage: amorph experiment NAME [--evals N] [--runs R] [--out DIR] [--KEY VALUE]... [--quiet]\n"
+    "Runs one of the seed's experiments: every variant R times (seeds seed, seed+1, ...), each a\n"
+    "run folder DIR/<variant>-<k>, then writes DIR/results.csv (mean and standard error of the best\n"
+    "fitness against evaluations, per variant) and prints the table. Running the same command again\n"
+    "resumes unfinished runs and skips finished ones. Other flags set configuration keys of every\n"
+    "run (amorph evolve --help-config).\n"
+    "  --evals N     evaluations per run (the configuration's, 200)\n"
+    "  --runs R      runs per variant (3)\n"
+    "  --out DIR     experiment folder (default runs/NAME-NNN)\n"
+    "experiments:\n";
+
+/* applies "key=value ..." to d */
+static int apply_settings(am_evo_def* d, const char* settings)
+{
+    char buf[256], err[AM_ERR_MAX];
+    snprintf(buf, sizeof buf, "%s", settings);
+    for (char* tok = strtok(buf, " "); tok; tok = strtok(NULL, " ")) {
+        char* eq = strchr(tok, '=');
+        if (!eq) return 1;
+        *eq = 0;
+        if (am_evo_set(d, tok, eq + 1, err, sizeof err) != AM_OK) return tool_usage_error("experiment: %s", err);
+    }
+    return 0;
+}
+
+/* reads the best-fitness column of dir/log.csv: evals[i], best[i] for up to cap rows */
+static int read_log(const char* dir, long* evals, double* best, int cap)
+{
+    char path[4096], err[AM_ERR_MAX];
+    long len = 0;
+    path_join(path, sizeof path, dir, "log.csv");
+    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return -1;
+    char* p = strchr(tool_file_buf, '\n');
+    int n = 0;
+    while (p && p[1] && n < cap) {
+        long g, e;
+        double b;
+        if (sscanf(p + 1, "%ld,%ld,%lf", &g, &e, &b) != 3) break;
+        evals[n] = e;
+        best[n] = b;
+        n++;
+        p = strchr(p + 1, '\n');
+    }
+    return n;
+}
+
+#define EXP_ROWS 4096
+static long g_exp_evals[EXP_ROWS];
+static double g_exp_best[6][EXP_ROWS][16];
+static int g_exp_rows[6][16];
+
+int cmd_experiment(int argc, char** argv)
+{
+    evo_opts o;
+    memset(&o, 0, sizeof o);
+    o.pictures = 1;
+    const char* name = NULL;
+    long evals = 0, runs = 3;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(experiment_help, stdout);
+            for (int k = 0; k < EXPERIMENTS; k++) printf("  %-16s %s\n", experiments[k].name, experiments[k].about);
+            return 0;
+        } else if (!strcmp(a, "--evals")) {
+            if (!tool_parse_long(v, 2, 1000000000L, &evals)) return tool_usage_error("experiment: --evals needs a whole number >= 2");
+            i++;
+        } else if (!strcmp(a, "--runs")) {
+            if (!tool_parse_long(v, 1, 16, &runs)) return tool_usage_error("experiment: --runs needs a whole number in [1, 16]");
+            i++;
+        } else if (a[0] != '-' && !name) {
+            name = a;
+        } else {
+            int r = parse_common(argc, argv, &i, &o, "experiment");
+            if (r < 0) return 2;
+            if (r == 0) return tool_usage_error("experiment: unknown option '%s' (amorph experiment --help)", a);
+        }
+    }
+    if (o.resume) return tool_usage_error("experiment: run the same command with the same --out again to resume");
+    if (o.print_config) return tool_usage_error("experiment: --print-config applies to amorph evolve");
+    if (!name) return tool_usage_error("experiment: which one? (amorph experiment --help lists them)");
+    const experiment* x = NULL;
+    for (int k = 0; k < EXPERIMENTS; k++)
+        if (!strcmp(experiments[k].name, name)) x = &experiments[k];
+    if (!x) return tool_usage_error("experiment: unknown experiment '%s' (representations, three-materials, dynamic, friction)", name);
+    am_evo_def base;
+    if (build_def(&o, &base, "experiment")) return 2;
+    if (evals) base.evaluations = evals;
+    char dir[1024], err[AM_ERR_MAX];
+    if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");
+    if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
+    else {
+        if (am_port_make_dir("runs", err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+        for (int k = 1;; k++) {
+            snprintf(dir, sizeof dir, "runs/%s-%03d", name, k);
+            if (!am_port_exists(dir)) break;
+        }
+    }
+    if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    {
+        char about[512];
+        int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
+                         base.evaluations);
+        if (write_text(dir, "experiment.txt", about, n)) return 1;
+    }
+    am_port_catch_interrupt();
+    int nv = 0;
+    while (nv < 6 && x->v[nv].name) nv++;
+    for (int v = 0; v < nv; v++) {
+        for (long k = 1; k <= runs; k++) {
+            am_evo_def d = base;
+            if (apply_settings(&d, x->v[v].settings)) return 2;
+            d.seed = base.seed + (uint64_t)(k - 1);
+            if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", x->v[v].name, err);
+            char rdir[2048], ck[4096], label[96];
+            if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
+                return tool_usage_error("experiment: folder name too long");
+            snprintf(label, sizeof label, "%s-%ld", x->v[v].name, k);
+            path_join(ck, sizeof ck, rdir, "checkpoint.txt");
+            int rc;
+            if (am_port_exists(ck)) {
+                evo_opts ro;
+                memset(&ro, 0, sizeof ro);
+                char evs[32], ths[32];
+                snprintf(evs, sizeof evs, "%ld", d.evaluations);
+                snprintf(ths, sizeof ths, "%d", d.threads);
+                ro.key[0] = "evaluations";
+                ro.val[0] = evs;
+                ro.key[1] = "threads";
+                ro.val[1] = ths;
+                ro.nflags = 2;
+                rc = resume_run(rdir, &ro, o.quiet, 0, label);
+            } else rc = start_run(&d, rdir, o.quiet, 0, label);
+            if (rc == 130) {
+                fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
+                return rc;
+            }
+            if (rc) return rc;
+        }
+    }
+    /* results: mean and standard error of the runs' best fitness at each logged evaluation count */
+    int rows = EXP_ROWS;
+    for (int v = 0; v < nv; v++)
+        for (long k = 1; k <= runs; k++) {
+            char rdir[2048];
+            if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
+                return tool_usage_error("experiment: folder name too long");
+            double tmp[EXP_ROWS];
+            int n = read_log(rdir, g_exp_evals, tmp, EXP_ROWS);
+            if (n <= 0) return tool_usage_error("%s/log.csv: no rows", rdir);
+            if (n < rows) rows = n;
+            for (int r = 0; r < n; r++) g_exp_best[v][r][k - 1] = tmp[r];
+            g_exp_rows[v][k - 1] = n;
+        }
+    long len = 0;
+    len += snprintf(tool_file_buf + len, (size_t)(TOOL_FILE_MAX - len), "variant,evaluations,mean_best,stderr_best,runs\n");
+    double mean_at[6][8], se_at[6][8];
+    int marks[8], nm = 0;
+    for (int q = 1; q <= 5; q++) {
+        int r = (int)((long)rows * q / 5) - 1;
+        if (r < 0) r = 0;
+        if (nm == 0 || marks[nm - 1] != r) marks[nm++] = r;
+    }
+    for (int v = 0; v < nv; v++)
+        for (int r = 0; r < rows; r++) {
+            double s = 0, s2 = 0;
+            for (long k = 0; k < runs; k++) s += g_exp_best[v][r][k];
+            double m = s / (double)runs;
+            for (long k = 0; k < runs; k++) s2 += (g_exp_best[v][r][k] - m) * (g_exp_best[v][r][k] - m);
+            double se = runs > 1 ? sqrt(s2 / (double)(runs - 1)) / sqrt((double)runs) : 0.0;
+            if (len < TOOL_FILE_MAX - 256)
+                len += snprintf(tool_file_buf + len, (size_t)(TOOL_FILE_MAX - len), "%s,%ld,%.9g,%.9g,%ld\n", x->v[v].name, g_exp_evals[r],
+                                m, se, runs);
+            for (int q = 0; q < nm; q++)
+                if (marks[q] == r) {
+                    mean_at[v][q] = m;
+                    se_at[v][q] = se;
+                }
+        }
+    if (write_text(dir, "results.csv", tool_file_buf, len)) return 1;
+    printf("experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
+    for (int v = 0; v < nv; v++) printf(" %22s", x->v[v].name);
+    printf("\n");
+    for (int q = 0; q < nm; q++) {
+        printf("%-12ld", g_exp_evals[marks[q]]);
+        for (int v = 0; v < nv; v++) printf("   %9.4f +- %7.4f", mean_at[v][q], se_at[v][q]);
+        printf("\n");
+    }
+    printf("folder = %s\nresults = %s/results.csv\n", dir, dir);
+    return 0;
+}
+
+/* ---- bench --evolve ---- */
+
+int tool_bench_evolve(long evaluations)
+{
+    char err[AM_ERR_MAX];
+    am_evo_def d = am_default_evo();
+    d.evaluations = evaluations;
+    uint64_t hash[2] = {0, 0};
+    double rate[2] = {0, 0};
+    int cores = am_port_cores();
+    printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
+           d.population, evaluations, cores);
+    for (int t = 1; t <= 2; t++) {
+        if (am_evo_init(&g_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+        double t0 = am_port_now();
+        long steps = 0, voxel_steps = 0;
+        while (!am_evo_done(&g_evo)) {
+            if (am_evo_generation(&g_evo, g_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            for (int i = 0; i < d.population; i++) {
+                steps += g_evo.child[i].steps;
+                voxel_steps += g_evo.child[i].steps * g_evo.child[i].voxels;
+            }
+        }
+        double el = am_port_now() - t0;
+        rate[t - 1] = (double)g_evo.evaluations / el * 3600.0;
+        hash[t - 1] = am_evo_hash(&g_evo);
+        printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
+               "voxel_steps_per_s=%.0f run_hash=%016llx\n",
+               t, g_evo.evaluations, el, rate[t - 1], (double)steps / (double)g_evo.evaluations,
+               steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
+    }
+    printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
+           hash[0] == hash[1] ? "yes" : "NO");
+    return hash[0] == hash[1] ? 0 : 1;
+}
