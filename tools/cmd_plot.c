@@ -1,3 +1,441 @@
+/* amorph plot: best fitness against evaluations as SVG, one line per run folder; for an
+ * experiment folder, the mean of each variant's runs with a band of one standard error (the
+ * seed's Figure 6). docs/pictures.md. */
+#define _POSIX_C_SOURCE 200809L /* opendir: the one directory listing of the tools (experiment folders) */
 #include "cmd.h"
-int cmd_plot(int argc, char** argv) { (void)argc; (void)argv; return 2; }
-int tool_write_plot(int ndirs, char** dirs, const char* path) { (void)ndirs; (void)dirs; (void)path; return 1; }
+
+#include <dirent.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PLOT_MAX_RUNS 128
+#define PLOT_MAX_SERIES 64
+#define PLOT_MAX_POINTS (1L << 18)  /* rows of all runs together */
+#define PLOT_PATH_MAX 1024
+#define PLOT_SVG_MAX (PLOT_MAX_POINTS * 48L + (1L << 20))
+
+typedef struct plot_run {
+    char dir[PLOT_PATH_MAX];
+    char name[96];       /* the folder's last component */
+    long first, n;       /* rows in plot_x / plot_y */
+    int series;          /* the series (line) it belongs to */
+} plot_run;
+
+typedef struct plot_series {
+    char label[96];
+    int runs[PLOT_MAX_RUNS]; /* indices into plot_runs */
+    int nruns;
+    int experiment;          /* 1: a variant of an experiment folder (mean and band) */
+    long first, n;           /* mean points in plot_mx / plot_my / plot_se */
+} plot_series;
+
+static plot_run plot_runs[PLOT_MAX_RUNS];
+static plot_series plot_ser[PLOT_MAX_SERIES];
+static int plot_nruns, plot_nser;
+static double plot_x[PLOT_MAX_POINTS], plot_y[PLOT_MAX_POINTS];
+static long plot_used;
+static double plot_mx[PLOT_MAX_POINTS], plot_my[PLOT_MAX_POINTS], plot_se[PLOT_MAX_POINTS];
+static long plot_mused;
+static char plot_svg[PLOT_SVG_MAX];
+
+static const char* const plot_colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+
+static const char* base_name(const char* path, char* buf, int n)
+{
+    size_t len = strlen(path);
+    while (len > 1 && path[len - 1] == '/') len--;
+    size_t s = len;
+    while (s > 0 && path[s - 1] != '/') s--;
+    snprintf(buf, (size_t)n, "%.*s", (int)(len - s), path + s);
+    return buf;
+}
+
+/* reads dir/log.csv into a new run of series `series`; 0 or 2 after a message */
+static int load_run(const char* dir, int series)
+{
+    char path[PLOT_PATH_MAX + 16], err[AM_ERR_MAX];
+    if (plot_nruns >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d runs", PLOT_MAX_RUNS);
+    if (strlen(dir) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dir);
+    snprintf(path, sizeof path, "%s/log.csv", dir);
+    long len = 0;
+    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK)
+        return tool_usage_error("plot: %s", err);
+    /* the header names the columns; evaluations and best are found by name */
+    char* line = tool_file_buf;
+    char* nl = strchr(line, '\n');
+    if (nl) *nl = 0;
+    if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
+    int ce = -1, cb = -1, col = 0;
+    for (char* p = line; p; col++) {
+        char* comma = strchr(p, ',');
+        size_t n = comma ? (size_t)(comma - p) : strlen(p);
+        if (n == 11 && !strncmp(p, "evaluations", n)) ce = col;
+        if (n == 4 && !strncmp(p, "best", n)) cb = col;
+        p = comma ? comma + 1 : NULL;
+    }
+    if (ce < 0 || cb < 0) return tool_usage_error("%s:1: the header has no 'evaluations' and 'best' columns", path);
+    plot_run* r = &plot_runs[plot_nruns];
+    snprintf(r->dir, sizeof r->dir, "%s", dir);
+    base_name(dir, r->name, sizeof r->name);
+    r->first = plot_used;
+    r->n = 0;
+    r->series = series;
+    int lineno = 1;
+    double best = -HUGE_VAL;
+    while (nl) {
+        line = nl + 1;
+        lineno++;
+        nl = strchr(line, '\n');
+        if (nl) *nl = 0;
+        if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
+        if (!*line) continue;
+        double e = NAN, b = NAN;
+        col = 0;
+        for (char* p = line; p; col++) {
+            char* comma = strchr(p, ',');
+            if (comma) *comma = 0;
+            if (col == ce || col == cb) {
+                double v;
+                if (!tool_parse_real(p, -1e300, 1e300, &v))
+                    return tool_usage_error("%s:%d: column %d is not a number: '%.40s'", path, lineno, col + 1, p);
+                if (col == ce) e = v;
+                else b = v;
+            }
+            p = comma ? comma + 1 : NULL;
+        }
+        if (e != e || b != b) return tool_usage_error("%s:%d: too few columns", path, lineno);
+        if (r->n > 0 && e < plot_x[plot_used - 1])
+            return tool_usage_error("%s:%d: evaluations go backwards (%.17g after %.17g)", path, lineno, e, plot_x[plot_used - 1]);
+        if (plot_used >= PLOT_MAX_POINTS) return tool_usage_error("plot: more than %ld rows in all", PLOT_MAX_POINTS);
+        /* the best so far: a generation's best may fall back under crowding */
+        if (b > best) best = b;
+        plot_x[plot_used] = e;
+        plot_y[plot_used] = best;
+        plot_used++;
+        r->n++;
+    }
+    if (r->n == 0) return tool_usage_error("%s: no generations logged yet", path);
+    plot_nruns++;
+    return 0;
+}
+
+static int new_series(const char* label)
+{
+    if (plot_nser >= PLOT_MAX_SERIES) return -1;
+    plot_series* s = &plot_ser[plot_nser];
+    memset(s, 0, sizeof *s);
+    snprintf(s->label, sizeof s->label, "%s", label);
+    return plot_nser++;
+}
+
+static int cmp_names(const void* a, const void* b) { return strcmp((const char*)a, (const char*)b); }
+
+/* an experiment folder: its run subfolders, grouped by variant (the name before the last '-') */
+static int load_experiment(const char* dir)
+{
+    static char names[PLOT_MAX_RUNS][96];
+    int n = 0;
+    DIR* d = opendir(dir);
+    if (!d) return tool_usage_error("plot: %s: cannot open the folder", dir);
+    for (struct dirent* e = readdir(d); e; e = readdir(d)) {
+        char sub[PLOT_PATH_MAX + 128], csv[PLOT_PATH_MAX + 160];
+        if (e->d_name[0] == '.' || strlen(e->d_name) >= sizeof names[0]) continue;
+        snprintf(sub, sizeof sub, "%s/%s", dir, e->d_name);
+        snprintf(csv, sizeof csv, "%s/log.csv", sub);
+        if (!am_port_exists(csv) || !strrchr(e->d_name, '-')) continue;
+        if (n >= PLOT_MAX_RUNS) {
+            closedir(d);
+            return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
+        }
+        snprintf(names[n++], sizeof names[0], "%s", e->d_name);
+    }
+    closedir(d);
+    if (n == 0) return tool_usage_error("plot: %s: no run folders (<variant>-<k>/log.csv) in the experiment folder", dir);
+    qsort(names, (size_t)n, sizeof names[0], cmp_names);
+    int s = -1;
+    for (int i = 0; i < n; i++) {
+        char label[96], sub[PLOT_PATH_MAX + 128];
+        snprintf(label, sizeof label, "%.*s", (int)(strrchr(names[i], '-') - names[i]), names[i]);
+        if (s < 0 || strcmp(plot_ser[s].label, label)) {
+            s = new_series(label);
+            if (s < 0) return tool_usage_error("plot: more than %d lines", PLOT_MAX_SERIES);
+            plot_ser[s].experiment = 1;
+        }
+        snprintf(sub, sizeof sub, "%s/%.95s", dir, names[i]);
+        int rc = load_run(sub, s);
+        if (rc) return rc;
+        plot_ser[s].runs[plot_ser[s].nruns++] = plot_nruns - 1;
+    }
+    return 0;
+}
+
+/* mean and standard error of each series over the rows all its runs have */
+static void series_means(void)
+{
+    for (int s = 0; s < plot_nser; s++) {
+        plot_series* S = &plot_ser[s];
+        long rows = -1;
+        for (int k = 0; k < S->nruns; k++) {
+            long n = plot_runs[S->runs[k]].n;
+            if (rows < 0 || n < rows) rows = n;
+        }
+        S->first = plot_mused;
+        S->n = 0;
+        for (long r = 0; r < rows && plot_mused < PLOT_MAX_POINTS; r++) {
+            double sx = 0, sy = 0, s2 = 0;
+            int m = S->nruns;
+            for (int k = 0; k < m; k++) {
+                const plot_run* R = &plot_runs[S->runs[k]];
+                sx += plot_x[R->first + r];
+                sy += plot_y[R->first + r];
+            }
+            double my = sy / m;
+            for (int k = 0; k < m; k++) {
+                double d = plot_y[plot_runs[S->runs[k]].first + r] - my;
+                s2 += d * d;
+            }
+            plot_mx[plot_mused] = sx / m;
+            plot_my[plot_mused] = my;
+            plot_se[plot_mused] = m > 1 ? sqrt(s2 / (m - 1)) / sqrt((double)m) : 0;
+            plot_mused++;
+            S->n++;
+        }
+    }
+}
+
+typedef struct svg_out {
+    char* buf;
+    long cap, len;
+    int full;
+} svg_out;
+
+static void put(svg_out* o, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void put(svg_out* o, const char* fmt, ...)
+{
+    if (o->full) return;
+    va_list ap;
+    va_start(ap, fmt);
+    long room = o->cap - o->len;
+    int n = vsnprintf(o->buf + o->len, (size_t)room, fmt, ap);
+    va_end(ap);
+    if (n < 0 || n >= room) o->full = 1;
+    else o->len += n;
+}
+
+/* text with &, <, > and " escaped */
+static void put_text(svg_out* o, const char* s)
+{
+    for (; *s; s++) {
+        if (*s == '&') put(o, "&amp;");
+        else if (*s == '<') put(o, "&lt;");
+        else if (*s == '>') put(o, "&gt;");
+        else if (*s == '"') put(o, "&quot;");
+        else if ((unsigned char)*s < 0x20) put(o, " ");
+        else put(o, "%c", *s);
+    }
+}
+
+/* ticks: a round step giving about `want` intervals over [lo, hi] */
+static double tick_step(double lo, double hi, int want)
+{
+    double span = hi - lo, raw = span / want, p = pow(10.0, floor(log10(raw))), f = raw / p;
+    return (f <= 1 ? 1 : f <= 2 ? 2 : f <= 2.5 ? 2.5 : f <= 5 ? 5 : 10) * p;
+}
+
+static void fmt_num(char* buf, int n, double v)
+{
+    if (fabs(v) < 1e-12) v = 0;
+    snprintf(buf, (size_t)n, "%.6g", v);
+}
+
+static int plot_svg_write(const char* title, const char* path)
+{
+    /* data range; fitness shown in mm below 10 cm, else in m */
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    for (long i = 0; i < plot_used; i++) {
+        x0 = fmin(x0, plot_x[i]), x1 = fmax(x1, plot_x[i]);
+        y0 = fmin(y0, plot_y[i]), y1 = fmax(y1, plot_y[i]);
+    }
+    for (long i = 0; i < plot_mused; i++) y0 = fmin(y0, plot_my[i] - plot_se[i]), y1 = fmax(y1, plot_my[i] + plot_se[i]);
+    double unit = fmax(fabs(y0), fabs(y1)) < 0.1 ? 1000 : 1;
+    const char* uname = unit == 1000 ? "mm" : "m";
+    y0 *= unit, y1 *= unit;
+    if (y0 > 0) y0 = 0; /* fitness from zero, as the seed's figure */
+    if (!(y1 > y0)) y1 = y0 + 1;
+    if (!(x1 > x0)) x1 = x0 + 1;
+    double xs = tick_step(x0, x1, 6), ys = tick_step(y0, y1, 6);
+    x0 = floor(x0 / xs) * xs, x1 = ceil(x1 / xs) * xs;
+    y0 = floor(y0 / ys) * ys, y1 = ceil(y1 / ys) * ys;
+    const int W = 860, H = 520, ml = 78, mr = 190, mt = 46, mb = 58;
+    const int pw = W - ml - mr, ph = H - mt - mb;
+#define PX(x) (ml + ((x) - x0) / (x1 - x0) * pw)
+#define PY(y) (mt + ph - ((y) * unit - y0) / (y1 - y0) * ph)
+    svg_out o = {plot_svg, PLOT_SVG_MAX, 0, 0};
+    put(&o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    put(&o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" "
+            "font-family=\"sans-serif\" font-size=\"13\">\n", W, H, W, H);
+    put(&o, "<rect width=\"%d\" height=\"%d\" fill=\"#ffffff\"/>\n", W, H);
+    put(&o, "<text x=\"%d\" y=\"26\" font-size=\"16\" font-weight=\"bold\">", ml);
+    put_text(&o, title);
+    put(&o, "</text>\n");
+    /* grid, ticks and tick labels */
+    char num[48];
+    put(&o, "<g stroke=\"#e4e4e4\" stroke-width=\"1\">\n");
+    for (double x = x0; x <= x1 + xs * 1e-9; x += xs) put(&o, "<line x1=\"%.2f\" y1=\"%d\" x2=\"%.2f\" y2=\"%d\"/>\n", PX(x), mt, PX(x), mt + ph);
+    for (double y = y0; y <= y1 + ys * 1e-9; y += ys)
+        put(&o, "<line x1=\"%d\" y1=\"%.2f\" x2=\"%d\" y2=\"%.2f\"/>\n", ml, PY(y / unit), ml + pw, PY(y / unit));
+    put(&o, "</g>\n<g class=\"ticks\" fill=\"#333333\">\n");
+    for (double x = x0; x <= x1 + xs * 1e-9; x += xs) {
+        fmt_num(num, sizeof num, x);
+        put(&o, "<line x1=\"%.2f\" y1=\"%d\" x2=\"%.2f\" y2=\"%d\" stroke=\"#333333\"/>", PX(x), mt + ph, PX(x), mt + ph + 5);
+        put(&o, "<text x=\"%.2f\" y=\"%d\" text-anchor=\"middle\">%s</text>\n", PX(x), mt + ph + 19, num);
+    }
+    for (double y = y0; y <= y1 + ys * 1e-9; y += ys) {
+        fmt_num(num, sizeof num, y);
+        put(&o, "<line x1=\"%d\" y1=\"%.2f\" x2=\"%d\" y2=\"%.2f\" stroke=\"#333333\"/>", ml - 5, PY(y / unit), ml, PY(y / unit));
+        put(&o, "<text x=\"%d\" y=\"%.2f\" text-anchor=\"end\">%s</text>\n", ml - 8, PY(y / unit) + 4, num);
+    }
+    put(&o, "</g>\n<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"#333333\"/>\n", ml, mt, pw, ph);
+    put(&o, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">evaluations</text>\n", ml + pw / 2, H - 14);
+    put(&o, "<text transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">best fitness so far (%s)</text>\n",
+        mt + ph / 2, uname);
+    /* the lines: each run alone, or each variant's mean with its standard-error band */
+    int ly = mt + 8, any_band = 0;
+    for (int s = 0; s < plot_nser; s++) {
+        const plot_series* S = &plot_ser[s];
+        const char* col = plot_colours[s % 8];
+        int grouped = S->experiment;
+        if (grouped && S->n > 0) {
+            put(&o, "<path class=\"band\" fill=\"%s\" fill-opacity=\"0.18\" stroke=\"none\" d=\"", col);
+            for (long i = 0; i < S->n; i++) {
+                long k = S->first + i;
+                put(&o, "%s%.2f,%.2f", i ? " L" : "M", PX(plot_mx[k]), PY(plot_my[k] + plot_se[k]));
+            }
+            for (long i = S->n - 1; i >= 0; i--) {
+                long k = S->first + i;
+                put(&o, " L%.2f,%.2f", PX(plot_mx[k]), PY(plot_my[k] - plot_se[k]));
+            }
+            put(&o, " Z\"/>\n");
+            for (int r = 0; r < S->nruns; r++) {
+                const plot_run* R = &plot_runs[S->runs[r]];
+                put(&o, "<polyline class=\"run\" fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.35\" stroke-width=\"1\" points=\"", col);
+                for (long i = 0; i < R->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
+                put(&o, "\"/>\n");
+            }
+            put(&o, "<polyline class=\"mean\" fill=\"none\" stroke=\"%s\" stroke-width=\"2.5\" points=\"", col);
+            for (long i = 0; i < S->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_mx[S->first + i]), PY(plot_my[S->first + i]));
+            put(&o, "\"/>\n");
+        } else {
+            const plot_run* R = &plot_runs[S->runs[0]];
+            put(&o, "<polyline class=\"run\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"", col);
+            for (long i = 0; i < R->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
+            put(&o, "\"/>\n");
+        }
+        /* legend entry */
+        put(&o, "<g class=\"legend\"><line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" stroke-width=\"3\"/>", ml + pw + 16,
+            ly, ml + pw + 40, ly, col);
+        put(&o, "<text x=\"%d\" y=\"%d\">", ml + pw + 46, ly + 4);
+        put_text(&o, S->label);
+        if (grouped) put(&o, ", %d run%s", S->nruns, S->nruns == 1 ? "" : "s");
+        put(&o, "</text></g>\n");
+        ly += 20;
+        any_band |= grouped;
+    }
+    if (any_band)
+        put(&o, "<text x=\"%d\" y=\"%d\" font-size=\"11\" fill=\"#555555\">thick: mean of the runs;</text>\n"
+                "<text x=\"%d\" y=\"%d\" font-size=\"11\" fill=\"#555555\">band: &#177; one standard error</text>\n",
+            ml + pw + 16, ly + 6, ml + pw + 16, ly + 20);
+    put(&o, "</svg>\n");
+#undef PX
+#undef PY
+    if (o.full) {
+        fprintf(stderr, "amorph: %s: the plot does not fit in %ld bytes\n", path ? path : "plot", (long)PLOT_SVG_MAX);
+        return 1;
+    }
+    return tool_write_output(path, plot_svg, o.len);
+}
+
+/* loads every folder: a run folder (log.csv) is one line, an experiment folder one per variant */
+static int plot_load(int ndirs, char** dirs)
+{
+    plot_nruns = plot_nser = 0;
+    plot_used = plot_mused = 0;
+    for (int i = 0; i < ndirs; i++) {
+        char csv[PLOT_PATH_MAX + 16], exp[PLOT_PATH_MAX + 24];
+        if (strlen(dirs[i]) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dirs[i]);
+        snprintf(csv, sizeof csv, "%s/log.csv", dirs[i]);
+        snprintf(exp, sizeof exp, "%s/experiment.txt", dirs[i]);
+        if (!am_port_exists(dirs[i])) return tool_usage_error("plot: %s: no such folder", dirs[i]);
+        if (am_port_exists(csv)) {
+            char name[96];
+            int s = new_series(base_name(dirs[i], name, sizeof name));
+            if (s < 0) return tool_usage_error("plot: more than %d lines", PLOT_MAX_SERIES);
+            int rc = load_run(dirs[i], s);
+            if (rc) return rc;
+            plot_ser[s].runs[plot_ser[s].nruns++] = plot_nruns - 1;
+        } else if (am_port_exists(exp)) {
+            int rc = load_experiment(dirs[i]);
+            if (rc) return rc;
+        } else
+            return tool_usage_error("plot: %s: neither a run folder (log.csv) nor an experiment folder (experiment.txt)", dirs[i]);
+    }
+    series_means();
+    return 0;
+}
+
+int tool_write_plot(int ndirs, char** dirs, const char* path)
+{
+    if (plot_load(ndirs, dirs)) return 1;
+    return plot_svg_write("best fitness against evaluations", path) ? 1 : 0;
+}
+
+static const char plot_help[] =
+    "usage: amorph plot DIR... --out FILE.svg [--title TEXT]\n"
+    "Plots the best fitness so far against evaluations (the log.csv of each folder) as SVG. A run\n"
+    "folder (amorph evolve --out DIR) is one line; an experiment folder (amorph experiment --out\n"
+    "DIR) gives one line per variant: the mean of its runs (<variant>-<k> subfolders) with a band\n"
+    "of one standard error, and each run faintly, as the seed's Figure 6.\n"
+    "  --out FILE.svg   the picture (written atomically); required\n"
+    "  --title TEXT     the heading (\"best fitness against evaluations\")\n";
+
+int cmd_plot(int argc, char** argv)
+{
+    const char* out = 0;
+    const char* title = "best fitness against evaluations";
+    static char* dirs[PLOT_MAX_RUNS];
+    int nd = 0;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            fputs(plot_help, stdout);
+            return 0;
+        } else if (!strcmp(a, "--out")) {
+            if (!v) return tool_usage_error("plot: --out needs a file name");
+            out = v, i++;
+        } else if (!strcmp(a, "--title")) {
+            if (!v) return tool_usage_error("plot: --title needs a text");
+            title = v, i++;
+        } else if (a[0] == '-' && a[1]) {
+            return tool_usage_error("plot: unknown option '%s' (amorph plot --help)", a);
+        } else {
+            if (nd >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d folders", PLOT_MAX_RUNS);
+            dirs[nd++] = argv[i];
+        }
+    }
+    if (nd == 0) return tool_usage_error("plot: name run or experiment folders (amorph plot --help)");
+    if (!out) return tool_usage_error("plot: --out FILE.svg is required");
+    size_t n = strlen(out);
+    if (n == 0 || out[n - 1] == '/') return tool_usage_error("plot: --out needs a file name");
+    int rc = plot_load(nd, dirs);
+    if (rc) return rc;
+    return plot_svg_write(title, out);
+}

@@ -105,6 +105,10 @@ int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* e
     char err[AM_ERR_MAX];
     *env = am_default_env();
     *eval = am_default_eval();
+    if (!is_scene && tool_is_run_dir(name)) {
+        if (tool_load_run(name, lat, env, eval, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
+        return 0;
+    }
     am_status st = tool_load_robot(name, is_scene, lat, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s: %s", cmd, err);
     return 0;
