@@ -150,7 +150,7 @@ static int load_experiment(const char* dir)
             closedir(d);
             return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
         }
-        snprintf(names[n++], sizeof names[0], "%s", e->d_name);
+        memcpy(names[n++], e->d_name, strlen(e->d_name) + 1); /* shorter than names[0]: checked above */
     }
     closedir(d);
     if (n == 0) return tool_usage_error("plot: %s: no run folders (<variant>-<k>/log.csv) in the experiment folder", dir);

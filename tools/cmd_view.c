@@ -145,8 +145,8 @@ static void view_data(text_out* o, const tool_motion* mo, const am_eval_def* eva
 
     out_str(o, "{\"format\": \"amorph-view 1\",\n\"title\": ");
     out_json_string(o, title);
-    out_fmt(o, ",\n\"nv\": %d, \"frames\": %d, \"dt\": %.9g, \"period_steps\": %d, \"cycles\": %d, \"every\": %d,\n", nv, nf,
-            mo->dt, m->env.period_steps, eval->cycles, mo->every);
+    out_fmt(o, ",\n\"nv\": %d, \"frames\": %d, \"dt\": %.9g, \"period_steps\": %d, \"cycles\": %d,\n", nv, nf, mo->dt,
+            m->env.period_steps, eval->cycles);
     out_fmt(o, "\"settled_frame\": %d, \"fitness\": %.9g, \"diverged\": %d, \"voxel_size\": %.9g,\n", mo->settled_frame,
             mo->res.fitness, mo->res.diverged, L);
     out_fmt(o, "\"size\": [%d, %d, %d], \"center\": [%.7g, %.7g, %.7g], \"extent\": %.7g, \"grid\": %.7g, \"follow\": %d,\n",

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static am_model pic_model;
@@ -19,14 +20,14 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
     am_status st = am_model_build(&pic_model, lat, env, err, sizeof err);
     if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
     if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
-    /* frames that fit: the float budget caps big bodies, the step list caps the count */
+    /* frames that fit: the float budget caps big bodies, the step list caps the count. Record as
+     * many as fit over the longest the evaluation can take, then keep `want` of them */
     long fit = TOOL_REC_FLOATS / ((long)pic_model.nv * 7);
     if (fit > TOOL_REC_MAX_FRAMES) fit = TOOL_REC_MAX_FRAMES;
     if (want > fit) want = (int)fit;
     if (want < 2) want = 2;
-    /* one frame every `every` steps over the longest the evaluation can take */
     long total = eval->relax_max_steps + (long)eval->cycles * env->period_steps;
-    long every = (total + want - 2) / (want - 1);
+    long every = (total + fit - 2) / (fit - 1);
     if (every < 1) every = 1;
     static am_record rec;
     memset(&rec, 0, sizeof rec);
@@ -54,9 +55,31 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
     mo->step = pic_step;
     mo->dt = mo->res.dt;
     mo->every = rec.every;
-    mo->settled_frame = 0;
+    int settled = 0;
     for (int f = 0; f < good; f++)
-        if (pic_step[f] <= mo->res.relax_steps) mo->settled_frame = f;
+        if (pic_step[f] <= mo->res.relax_steps) settled = f;
+    /* keep `want` frames evenly spread; the one nearest the end of relaxation becomes that frame
+     * (never the first or the last) */
+    if (good > want) {
+        static int sel[TOOL_REC_MAX_FRAMES];
+        int near = 0;
+        for (int k = 0; k < want; k++) {
+            sel[k] = (int)((long)k * (good - 1) / (want - 1));
+            if (abs(sel[k] - settled) < abs(sel[near] - settled)) near = k;
+        }
+        if (near == 0 && settled > 0) near = 1;
+        if (near == want - 1 && settled < good - 1) near = want - 2;
+        if (near > 0 && near < want - 1 && sel[near - 1] < settled && settled < sel[near + 1]) sel[near] = settled;
+        mo->settled_frame = 0;
+        for (int k = 0; k < want; k++) {
+            memmove(pic_pose + (long)k * rec.nv * 7, pic_pose + (long)sel[k] * rec.nv * 7, sizeof(float) * 7 * (size_t)rec.nv);
+            pic_step[k] = pic_step[sel[k]];
+            if (sel[k] <= settled) mo->settled_frame = k;
+        }
+        good = want;
+    } else
+        mo->settled_frame = settled;
+    mo->frames = good;
     return 0;
 }
 

@@ -1,0 +1,101 @@
+# tests/cli_render.sh: amorph render, plot and view write valid files (PNGs decoded by the test
+# program's own inflate, checked for size and the materials' colours; SVG and HTML checked for
+# their parts), and bad input gives one line, a non-zero exit and no damaged output.
+# Run from the repository root: sh tests/cli_render.sh
+. tests/shlib.sh
+PNG=${PNG_TOOL:-$BUILD/tests/test_image}
+check() { d=$1; shift; if "$@"; then ok; else ko "$d"; fi; }
+# colours of tests/data/walker.lattice: passive, active, active90
+PASSIVE=285adc ACTIVE=f0c81e ACTIVE90=dc2828
+W=tests/data/walker.lattice
+QUICK="--cycles 2 --relax-max 400"
+
+# render: a filmstrip of the default size with the three materials' shades in it
+expect_ok "$AMORPH" render "$W" $QUICK --out "$TMPD/w.png"
+info=$("$PNG" --png-info "$TMPD/w.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
+check "render: not a valid PNG: $info" [ $? -eq 0 ]
+set -- $info
+check "render: size $1 x $2, want 1600 x 400" [ "$1" = 1600 ] && [ "$2" = 400 ]
+check "render: too few passive/active/active90 pixels: $info" [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ] && [ "${5:-0}" -gt 1000 ]
+
+# options: size and frames; a scene
+expect_ok "$AMORPH" render --scene sphere:6 --cycles 1 --relax-max 300 --frames 4 --width 800 --height 260 --out "$TMPD/s.png"
+info=$("$PNG" --png-info "$TMPD/s.png" $PASSIVE $ACTIVE 2>&1)
+set -- $info
+check "render --width 800 --height 260: got $info" [ "$1" = 800 ] && [ "$2" = 260 ] && [ "${3:-0}" -gt 500 ] && [ "${4:-0}" -gt 500 ]
+
+# a run folder stands for its best robot (a small run of amorph evolve)
+cat >"$TMPD/small.cfg" <<'CFG'
+workspace = 6
+population = 4
+evaluations = 8
+cycles = 1
+period_steps = 100
+relax_max_steps = 200
+relax_min_steps = 50
+seed = 3
+CFG
+expect_ok "$AMORPH" evolve --config "$TMPD/small.cfg" --quiet --no-pictures --out "$TMPD/run"
+expect_ok "$AMORPH" render "$TMPD/run" --out "$TMPD/run.png"
+check "render RUN: not a valid PNG: $("$PNG" --png-info "$TMPD/run.png" 2>&1)" "$PNG" --png-info "$TMPD/run.png" >/dev/null
+expect_ok "$AMORPH" view "$TMPD/run" --out "$TMPD/run.html"
+check "view RUN: no data in the page" grep -q '"format": "amorph-view 1"' "$TMPD/run.html"
+
+# view: one self-contained page (no URL to load anything from), the data and the renderer
+expect_ok "$AMORPH" view "$W" $QUICK --frames 50 --title "walker <test>" --out "$TMPD/w.html"
+check "view: no doctype" grep -q '^<!DOCTYPE html>' "$TMPD/w.html"
+check "view: no data block" grep -q '<script type="application/json" id="amorph-data">' "$TMPD/w.html"
+check "view: the title is not escaped" grep -q '"title": "walker \\u003ctest\\u003e"' "$TMPD/w.html"
+check "view: loads something from outside" sh -c "! grep -qiE '(src|href)=|https?://|@import|fetch\\(' '$TMPD/w.html'"
+check "view: not 50 frames" grep -q '"frames": 50,' "$TMPD/w.html"
+check "view: no closing tag" grep -q '</html>' "$TMPD/w.html"
+
+# plot: a single run and an experiment folder (a band per variant)
+expect_ok "$AMORPH" plot tests/data/plot-run --out "$TMPD/one.svg"
+check "plot: not an SVG" grep -q '<svg xmlns="http://www.w3.org/2000/svg"' "$TMPD/one.svg"
+check "plot: one run should be one line and no band" [ "$(grep -c 'class="run"' "$TMPD/one.svg")" -eq 1 ] && [ "$(grep -c 'class="band"' "$TMPD/one.svg")" -eq 0 ]
+check "plot: axis labels" grep -q '>evaluations</text>' "$TMPD/one.svg"
+expect_ok "$AMORPH" plot tests/data/plot-exp "$TMPD/run" --out "$TMPD/exp.svg" --title "representations"
+check "plot: two variants should give two bands and two mean lines" [ "$(grep -c 'class="band"' "$TMPD/exp.svg")" -eq 2 ] && [ "$(grep -c 'class="mean"' "$TMPD/exp.svg")" -eq 2 ]
+check "plot: 6 experiment runs and 1 run" [ "$(grep -c 'class="run"' "$TMPD/exp.svg")" -eq 7 ]
+check "plot: legend" grep -q '>dct, 3 runs<' "$TMPD/exp.svg"
+check "plot: legend" grep -q '>gmx, 3 runs<' "$TMPD/exp.svg"
+check "plot: title" grep -q '>representations</text>' "$TMPD/exp.svg"
+check "plot: unbalanced tags" [ "$(grep -c '<svg' "$TMPD/exp.svg")" -eq 1 ] && tail -n 1 "$TMPD/exp.svg" | grep -q '^</svg>$'
+
+# bad input: exit 2 (bad files and flags) or 1 (cannot write), one line, no output left behind
+expect_fail 2 "no-such-robot" "$AMORPH" render "$TMPD/no-such-robot.lattice" --out "$TMPD/x.png"
+expect_fail 2 "unknown option" "$AMORPH" render "$W" --out "$TMPD/x.png" --bogus
+expect_fail 2 "frames" "$AMORPH" render "$W" --out "$TMPD/x.png" --frames 99
+expect_fail 2 "width" "$AMORPH" render "$W" --out "$TMPD/x.png" --width 10x
+expect_fail 2 "--out" "$AMORPH" render "$W"
+expect_fail 2 "scene" "$AMORPH" render --scene nosuch:3 --out "$TMPD/x.png"
+printf 'amorph-lattice 1\nsize 2 1 1\nlayer 0\n..\n' >"$TMPD/empty.lattice"
+expect_fail 2 "no voxel" "$AMORPH" render "$TMPD/empty.lattice" --out "$TMPD/x.png"
+expect_fail 2 "no-such-robot" "$AMORPH" view "$TMPD/no-such-robot.lattice" --out "$TMPD/x.html"
+expect_fail 2 "frames" "$AMORPH" view "$W" --out "$TMPD/x.html" --frames 1
+expect_fail 2 "unknown option" "$AMORPH" view "$W" --out "$TMPD/x.html" --bogus
+expect_fail 2 "no-such-run" "$AMORPH" plot "$TMPD/no-such-run" --out "$TMPD/x.svg"
+expect_fail 2 "--out" "$AMORPH" plot tests/data/plot-run
+mkdir -p "$TMPD/notrun"
+expect_fail 2 "neither a run folder" "$AMORPH" plot "$TMPD/notrun" --out "$TMPD/x.svg"
+mkdir -p "$TMPD/badrun"
+printf 'generation,evaluations,best\n0,20,0.001\n1,40,zero\n' >"$TMPD/badrun/log.csv"
+expect_fail 2 "badrun/log.csv:3: column 3 is not a number" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
+printf 'generation,evals,fitness\n0,20,0.001\n' >"$TMPD/badrun/log.csv"
+expect_fail 2 "log.csv:1: the header" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
+check "failed commands left an output file" [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.html" ] && [ ! -e "$TMPD/x.svg" ]
+# unwritable outputs: a folder that does not exist, a file in place of a folder; an older file stays whole
+expect_fail 1 "nodir" "$AMORPH" render "$W" $QUICK --out "$TMPD/nodir/x.png"
+touch "$TMPD/afile"
+expect_fail 1 "afile" "$AMORPH" view "$W" $QUICK --out "$TMPD/afile/x.html"
+expect_fail 1 "nodir" "$AMORPH" plot tests/data/plot-run --out "$TMPD/nodir/x.svg"
+cp "$TMPD/w.png" "$TMPD/keep.png"
+expect_fail 2 "frames" "$AMORPH" render "$W" --out "$TMPD/keep.png" --frames 2
+check "a failed render changed the existing file" cmp -s "$TMPD/w.png" "$TMPD/keep.png"
+check "no temporary files left behind: $(ls "$TMPD")" [ -z "$(ls "$TMPD" | grep -iE 'tmp|\.part')" ]
+expect_ok "$AMORPH" render --help
+expect_ok "$AMORPH" plot --help
+expect_ok "$AMORPH" view --help
+
+summary "cli_render.sh"
