@@ -23,7 +23,7 @@ typedef struct film_opts {
 } film_opts;
 
 static const uint8_t col_floor[3] = {236, 236, 230}, col_grid[3] = {206, 206, 198}, col_shadow[3] = {196, 196, 190},
-                     col_text[3] = {30, 30, 30}, col_trail[3] = {190, 0, 190}, col_band[3] = {255, 255, 255},
+                     col_text[3] = {30, 30, 30}, col_trail[3] = {190, 0, 190},
                      col_rule[3] = {160, 160, 160}, col_start[3] = {90, 90, 90};
 
 /* the fixed oblique camera: looking along +x+y from the front left, 28 degrees down */
@@ -215,14 +215,14 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
     tool_motion_com(mo, frame[np - 1], ce);
     double d[3] = {ce[0] - cs[0], ce[1] - cs[1], 0};
     double dist = sqrt(d[0] * d[0] + d[1] * d[1]);
-    int x = 10, ym = y0 + cap_h / 2;
+    int ym = y0 + cap_h / 2;
     double su = dot3(d, cam.right), sv = -dot3(d, cam.up), sl = sqrt(su * su + sv * sv);
     if (dist > 1e-9 && sl > 1e-12) {
         double ax = 34 + 26 * su / sl, ay = ym + 14 * sv / sl, bx = 34 - 26 * su / sl, by = ym - 14 * sv / sl;
         am_raster_line2(c, &whole, bx, by, ax, ay, 4, col_trail);
         arrow_head(c, &whole, bx, by, ax, ay, 16, col_trail);
     }
-    x = 72;
+    int x = 72;
     fmt_len(len, sizeof len, dist);
     char tt[48];
     fmt_time(tt, sizeof tt, (double)(mo->step[frame[np - 1]] - mo->step[frame[1]]) * mo->dt);
@@ -240,7 +240,6 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
         x += 20;
         x += am_raster_text(c, &whole, x, ym - 7, 2, m->palette.mat[k].name, col_text) + 16;
     }
-    (void)col_band;
     return 0;
 }
 

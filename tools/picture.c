@@ -54,7 +54,6 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
     mo->pose = pic_pose;
     mo->step = pic_step;
     mo->dt = mo->res.dt;
-    mo->every = rec.every;
     int settled = 0;
     for (int f = 0; f < good; f++)
         if (pic_step[f] <= mo->res.relax_steps) settled = f;

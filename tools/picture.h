@@ -15,7 +15,6 @@ typedef struct tool_motion {
     int nv;                  /* voxels */
     int frames;              /* usable frames (a diverged run keeps those before the first bad one) */
     int settled_frame;       /* last frame of the relaxation */
-    int every;               /* steps between frames */
     double dt;               /* s per step */
     const float* pose;       /* (frames x nv x 7) x, y, z (m), qw, qx, qy, qz */
     const long* step;        /* (frames) step of each frame */
