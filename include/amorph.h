@@ -11,4 +11,6 @@
 #include "amorph/genotype.h"
 #include "amorph/sim.h"
 #include "amorph/port.h"
+#include "amorph/xml.h"
+#include "amorph/vxa.h"
 #endif
