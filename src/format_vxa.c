@@ -749,6 +749,7 @@ static const char* num(char out[40], double v, int real)
 {
 #if defined(AM_REAL_DOUBLE)
     const int max = 17;
+    (void)real; /* am_real is double: one kind of number */
 #else
     const int max = real ? 9 : 17;
 #endif
