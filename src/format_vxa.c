@@ -109,6 +109,14 @@ static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
     return AM_OK;
 }
 
+/* a value quoted in a message stays on one line */
+static const char* flat(char* v)
+{
+    for (char* p = v; *p; p++)
+        if ((unsigned char)*p < 0x20) *p = ' ';
+    return v;
+}
+
 static am_status double_of(const vctx* c, int n, double* out)
 {
     char v[VXA_VALUE_MAX];
@@ -117,7 +125,7 @@ static am_status double_of(const vctx* c, int n, double* out)
     char* end = NULL;
     double x = v[0] ? strtod(v, &end) : 0;
     if (!v[0] || *end || !(x - x == 0))
-        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, v);
+        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
     *out = x;
     return AM_OK;
 }
@@ -135,7 +143,7 @@ static am_status real_of(const vctx* c, int n, am_real* out)
     am_real x = v[0] ? strtof(v, &end) : 0;
 #endif
     if (!v[0] || *end || !am_finite(x))
-        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, v);
+        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
     *out = x;
     return AM_OK;
 }
@@ -159,7 +167,7 @@ static am_status int_of(const vctx* c, int n, long lo, long hi, long* out)
     if (st != AM_OK) return st;
     char* end = NULL;
     long x = v[0] ? strtol(v, &end, 10) : 0;
-    if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a whole number", NAME(c, n), VXA_SHOW, v);
+    if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a whole number", NAME(c, n), VXA_SHOW, flat(v));
     if (x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%.*s> %ld is outside %ld..%ld", NAME(c, n), x, lo, hi);
     *out = x;
     return AM_OK;
@@ -173,7 +181,7 @@ static am_status bool_of(const vctx* c, int n, int* out)
     if (st != AM_OK) return st;
     if (!strcmp(v, "1") || !strcmp(v, "true")) *out = 1;
     else if (!strcmp(v, "0") || !strcmp(v, "false")) *out = 0;
-    else return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not 0 or 1", NAME(c, n), VXA_SHOW, v);
+    else return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not 0 or 1", NAME(c, n), VXA_SHOW, flat(v));
     return AM_OK;
 }
 
@@ -231,7 +239,7 @@ static am_status read_voxel(vctx* c, int n)
     if (at[0] >= 0) {
         char v[VXA_VALUE_MAX];
         if ((st = text_of(c, at[0], v, sizeof v, NULL)) != AM_OK) return st;
-        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %.*s not supported (amorph voxels are boxes); BOX used", VXA_SHOW, v);
+        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %.*s not supported (amorph voxels are boxes); BOX used", VXA_SHOW, flat(v));
     }
     for (int i = 1; i < 4; i++) {
         double v;
@@ -406,7 +414,7 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
                         "Compression=\"%s\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64",
                         v);
         else
-            return verr(c, n, AM_ERR_PARSE, "Compression=\"%.*s\" is not supported (ASCII_READABLE or BASE64)", VXA_SHOW, v);
+            return verr(c, n, AM_ERR_PARSE, "Compression=\"%.*s\" is not supported (ASCII_READABLE or BASE64)", VXA_SHOW, flat(v));
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     long dim[3];
@@ -467,8 +475,8 @@ static am_status read_vxc(vctx* c, int n, am_lattice* lat)
         if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         double ver = atof(v);
         if (ver < 0.925)
-            return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%.*s\">: only versions 0.93 and 0.94 are read", VXA_SHOW, v);
-        if (ver > 0.945) warn(c, n, "<VXC Version=\"%.*s\"> is newer than 0.94: read as 0.94", VXA_SHOW, v);
+            return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%.*s\">: only versions 0.93 and 0.94 are read", VXA_SHOW, flat(v));
+        if (ver > 0.945) warn(c, n, "<VXC Version=\"%.*s\"> is newer than 0.94: read as 0.94", VXA_SHOW, flat(v));
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     if (at[0] >= 0 && (st = read_lattice(c, at[0], lat)) != AM_OK) return st;
@@ -624,7 +632,7 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
         if ((st = text_of(c, at[0], m, sizeof m, NULL)) != AM_OK) return st;
         if (!strcmp(m, "volumetric")) env->cte_mode = AM_CTE_VOLUMETRIC;
         else if (!strcmp(m, "linear")) env->cte_mode = AM_CTE_LINEAR;
-        else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%.*s' is not volumetric or linear", VXA_SHOW, m);
+        else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%.*s' is not volumetric or linear", VXA_SHOW, flat(m));
     }
     if (at[1] >= 0) {
         if ((st = int_of(c, at[1], 1, 1000000000L, &v)) != AM_OK) return st;
@@ -693,7 +701,7 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
         char v[VXA_VALUE_MAX];
         if (am_xml_attr_text(work, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         if (strcmp(v, "1.0") != 0 && strcmp(v, "1.1") != 0)
-            warn(&c, 0, "<VXA Version=\"%.*s\">: this reader knows versions 1.0 and 1.1", VXA_SHOW, v);
+            warn(&c, 0, "<VXA Version=\"%.*s\">: this reader knows versions 1.0 and 1.1", VXA_SHOW, flat(v));
     }
     static const char* const tags[] = {"VXC", "Simulator", "Environment", "Amorph"};
     int at[MAX_TAGS];

@@ -18,6 +18,10 @@
 #include <stdio.h>
 #include <string.h>
 
+/* element and attribute indices are int16_t, offsets int32_t */
+_Static_assert(AM_XML_MAX_NODES <= 32767 && AM_XML_MAX_ATTRS <= 32767, "xml: indices must fit int16_t");
+_Static_assert(AM_XML_MAX_BYTES < 2147483647L, "xml: offsets must fit int32_t");
+
 #define XML_NAME_MAX 255
 #define XML_REF_MAX 32 /* longest entity or character reference read between '&' and ';' */
 

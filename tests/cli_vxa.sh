@@ -89,10 +89,10 @@ sed 's|<X_Voxels>6</X_Voxels>|<X_Voxels>999</X_Voxels>|' "$F" >"$D/wide.vxa"
 expect_fail 2 "$D/wide.vxa:141: <X_Voxels> 999 exceeds the (desktop|board) profile's" "$AMORPH" sim "$D/wide.vxa"
 
 # a deeply nested file is refused within the fixed memory
-awk 'BEGIN { printf "<VXA>"; for (i = 0; i < 100000; i++) printf "<a>"; print "" }' >"$D/deep.vxa"
+awk 'BEGIN { printf "<VXA>"; for (i = 0; i < 10000; i++) printf "<a>"; print "" }' >"$D/deep.vxa"
 expect_fail 2 "$D/deep.vxa:1: elements nested deeper than [0-9]+ levels" "$AMORPH" sim "$D/deep.vxa"
 # so is one with more elements than the reader holds (the element past the limit is named)
-awk 'BEGIN { print "<VXA>"; for (i = 0; i < 200000; i++) print "<a/>"; print "</VXA>" }' >"$D/many.vxa"
+awk 'BEGIN { print "<VXA>"; for (i = 0; i < 20000; i++) print "<a/>"; print "</VXA>" }' >"$D/many.vxa"
 expect_fail 2 "$D/many.vxa:[0-9]+: more than [0-9]+ elements \(the XML reader's capacity" "$AMORPH" sim "$D/many.vxa"
 # and one larger than any buffer of the build
 awk 'BEGIN { print "<VXA>"; s = sprintf("%1000s", ""); for (i = 0; i < 5000; i++) print "<!--" s "-->"; print "</VXA>" }' >"$D/huge.vxa"

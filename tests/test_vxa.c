@@ -225,7 +225,8 @@ static void test_vxa_round_trip_everything(void)
         am_material* m = &lat_a.palette.mat[k];
         *m = am_default_material();
         memset(m->name, 0, sizeof m->name);
-        snprintf(m->name, sizeof m->name, "m-%d_%s", k, k == 3 ? "a_very_long_name_1" : "x");
+        if (k == 3) strcpy(m->name, "m-3_the_longest_name_23"); /* AM_NAME_MAX - 1 characters */
+        else snprintf(m->name, sizeof m->name, "m-%d_x", k);
         m->E = AM_R(1.2345678e6) * (am_real)(k + 1);
         m->density = AM_R(987.654321) + (am_real)k;
         m->poisson = AM_R(0.49) - AM_R(0.03) * (am_real)k;
@@ -465,6 +466,8 @@ static void test_vxa_errors(void)
     expect_vxa(vxa(0, MAT("<CTE>abc</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'abc' is not a finite number");
     expect_vxa(vxa(0, MAT("<CTE>nan</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'nan' is not a finite number");
     expect_vxa(vxa(0, MAT("<CTE></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '' is not a finite number");
+    /* a quoted value keeps the message on one line */
+    expect_vxa(vxa(0, MAT("<CTE><![CDATA[1\n2]]></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '1 2' is not a finite number");
     expect_vxa(vxa(0, MAT("<Density>1e999</Density>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <Density>: '1e999' is not a finite number");
     expect_vxa(vxa(0, "<Material><Display><Red>1.5</Red></Display></Material>", 0, 0), AM_ERR_RANGE, "t.vxa:5: <Red> 1.5 must be in [0, 1]");
     expect_vxa(vxa(0, MAT("<CTE>1</CTE><CTE>2</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE> given twice in <Mechanical> (first on line 5)");
