@@ -13,4 +13,6 @@
 #include "amorph/evolve.h"
 #include "amorph/image.h"
 #include "amorph/port.h"
+#include "amorph/xml.h"
+#include "amorph/vxa.h"
 #endif

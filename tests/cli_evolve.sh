@@ -40,6 +40,10 @@ else ko "best fitness decreased: $(cut -d, -f3 "$TMPD/a/log.csv" | tr '\n' ' ')"
 # the best genome and lattice are readable robots, and the best genome simulates to the logged best
 if grep -q "^amorph-genome" "$TMPD/a/best.genome" && "$AMORPH" sim "$TMPD/a/best.lattice" --cycles 1 >/dev/null 2>&1; then ok
 else ko "best.genome / best.lattice unreadable"; fi
+# the run folder replays: amorph sim DIR simulates the best robot in the run's settings to its logged fitness
+f=$("$AMORPH" sim "$TMPD/a" | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/a" best_fitness)" ]; then ok
+else ko "amorph sim RUN gives fitness '$f', the run logged $(sumval "$TMPD/a" best_fitness)"; fi
 if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
 else ko "config.txt does not hold the effective configuration"; fi
 

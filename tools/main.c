@@ -15,6 +15,7 @@ static const struct {
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
     {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
     {"express", cmd_express, "express a genome into a lattice file"},
+    {"export", cmd_export, "write a robot as a VXA file for VoxCAD (--vxa) or a lattice file"},
     {"render", cmd_render, "draw a filmstrip PNG of a robot's motion (initial, settled, snapshots)"},
     {"plot", cmd_plot, "plot best fitness against evaluations of runs or experiments (SVG)"},
     {"view", cmd_view, "write a self-contained HTML viewer of a robot's recorded motion"},
