@@ -41,6 +41,11 @@ check "render RUN: not a valid PNG: $("$PNG" --png-info "$TMPD/run.png" 2>&1)" "
 expect_ok "$AMORPH" view "$TMPD/run" --out "$TMPD/run.html"
 check "view RUN: no data in the page" grep -q '"format": "amorph-view 1"' "$TMPD/run.html"
 
+# a VXA file in its own environment (warnings about VoxCAD tags go to stderr)
+expect_ok "$AMORPH" render tests/data/voxcad_quadruped.vxa --cycles 1 --frames 3 --width 600 --height 200 --out "$TMPD/vxa.png"
+info=$("$PNG" --png-info "$TMPD/vxa.png" 2>&1)
+check "render VXA: $info" [ "$info" = "600 200" ]
+
 # view: one self-contained page (no URL to load anything from), the data and the renderer
 expect_ok "$AMORPH" view "$W" $QUICK --frames 50 --title "walker <test>" --out "$TMPD/w.html"
 check "view: no doctype" grep -q '^<!DOCTYPE html>' "$TMPD/w.html"

@@ -133,6 +133,14 @@ int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* e
     }
     am_status st = tool_load_robot(name, is_scene, lat, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s: %s", cmd, err);
+    if (tool_vxa_loaded) {
+        /* a VXA file brings its environment (as amorph sim); its period in seconds becomes steps
+         * of this robot's time step */
+        *env = tool_vxa_info.env;
+        if (!tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0 &&
+            am_model_build(&pic_model, lat, env, err, sizeof err) == AM_OK)
+            env->period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(env->dt_frac * pic_model.dt_rec));
+    }
     return 0;
 }
 
