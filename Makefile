@@ -30,7 +30,7 @@ TARGET_CFLAGS :=
 TARGET_LDFLAGS :=
 ifneq ($(TARGET),)
 ifeq ($(TARGET_$(TARGET)),)
-$(error unknown TARGET '$(TARGET)' (known: $(patsubst TARGET_%,%,$(filter TARGET_%-%,$(.VARIABLES)))))
+$(error unknown TARGET '$(TARGET)' (known: $(sort $(filter-out CFLAGS LDFLAGS,$(patsubst TARGET_%,%,$(filter TARGET_%,$(.VARIABLES)))))))
 endif
 ifneq ($(origin PORT),file)
 ifneq ($(PORT),$(word 1,$(TARGET_$(TARGET))))

@@ -19,7 +19,7 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
     l = $0; sub(/.*label: "/, "", l); sub(/".*/, "", l)
     if (match(l, /[0-9]+ bytes/)) {
         b = substr(l, RSTART, RLENGTH); sub(/ bytes/, "", b); frame[t] = b + 0; defined[t] = 1
-        if (l ~ /dynamic/) dyn[t] = 1
+        if (match(l, /bytes \([a-z,]+\)/)) { qual[t] = substr(l, RSTART + 6, RLENGTH - 6); if (qual[t] ~ /dynamic/) dyn[t] = 1 }
         n = split(l, parts, "\\\\n"); where[t] = parts[2]
     }
     next
@@ -58,7 +58,7 @@ END {
     total = depth(root)
     printf "largest frames (bytes):\n"
     cmd = "sort -rn | head -n 12"
-    for (f in defined) printf "%8d  %s  %s%s\n", frame[f], f, where[f], (f in dyn) ? " (dynamic)" : "" | cmd
+    for (f in defined) printf "%8d  %s  %s%s\n", frame[f], f, where[f], (f in dyn) ? " " qual[f] : "" | cmd
     close(cmd)
     printf "\ndeepest chain from %s (* = reached through a function pointer):\n", root
     f = root; n = 0
