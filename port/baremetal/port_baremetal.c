@@ -242,7 +242,10 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
 {
     int32_t h = sh_open(path, SH_MODE_AB);
     if (h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open for appending (host errno %d)", path, (int)sh_call(SH_SYS_ERRNO, 0));
-    int bad = write_all(h, data, n);
+    /* QEMU 7.2 opens "ab" without O_APPEND (its semihosting drops the flag) and would write at
+     * the start: go to the end first, harmless where the host appends anyway */
+    int32_t end = sh_flen(h);
+    int bad = end < 0 || sh_seek(h, (uint32_t)end) != 0 || write_all(h, data, n);
     if (sh_close(h) != 0) bad = 1;
     if (bad) return am_fail(err, errsz, AM_ERR_IO, "%s: write error", path);
     return AM_OK;

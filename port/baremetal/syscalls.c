@@ -68,6 +68,11 @@ int _open(const char* name, int flags, int mode)
     }
     files[k].handle = h;
     files[k].pos = 0;
+    if (flags & NL_O_APPEND) {
+        /* QEMU 7.2 drops the host's O_APPEND (see am_port_append_file): start at the end */
+        int32_t end = sh_flen(h);
+        if (end > 0 && sh_seek(h, (uint32_t)end) == 0) files[k].pos = end;
+    }
     return k + 3;
 }
 
