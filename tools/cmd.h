@@ -72,8 +72,13 @@ int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_de
  * standard-error band per variant) as SVG */
 int tool_write_plot(int ndirs, char** dirs, const char* path);
 
-/* one shared file buffer for the commands (they run one at a time) */
+/* one shared file buffer for the commands (they run one at a time): 4 MiB on the desktop; in the
+ * board profile the largest text amorph writes itself (a genome or a lattice), plus its NUL */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_FILE_MAX ((AM_GENOME_TEXT_MAX > AM_LATTICE_TEXT_MAX ? AM_GENOME_TEXT_MAX : AM_LATTICE_TEXT_MAX) + 1L)
+#else
 #define TOOL_FILE_MAX (4L << 20)
+#endif
 extern char tool_file_buf[TOOL_FILE_MAX];
 
 #endif
