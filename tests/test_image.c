@@ -238,6 +238,10 @@ static void test_raster_text(void)
 
 static void test_filmstrip_png(void)
 {
+#if !TOOL_PICTURES
+    CHECK(tool_write_filmstrip(0, 0, 0, "x.png") == 1, "the board profile's stand-in returns 1");
+    return;
+#endif
     static am_lattice lat;
     char err[AM_ERR_MAX], why[200];
     CHECK(am_scene_build(&lat, "sphere:6", err, sizeof err) == AM_OK, "%s", err);

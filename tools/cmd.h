@@ -62,6 +62,14 @@ int tool_write_output(const char* out, const char* text, long len);
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
 void tool_bench_express(void);
 
+/* 1 when the picture commands are built in. Not in the board profile: a microcontroller shows no
+ * pictures, and their buffers would be many times its RAM; there render, plot and view say so and
+ * exit 2, and the three functions below print that and return 1. */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_PICTURES 0
+#else
+#define TOOL_PICTURES 1
+#endif
 /* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording in
  * env with eval (its record field is ignored) and writes path atomically. Silent on success;
  * 0, or 1 after a one-line message on stderr. */

@@ -3,6 +3,7 @@
  * seed's Figure 6). docs/pictures.md. */
 #define _POSIX_C_SOURCE 200809L /* opendir: the one directory listing of the tools (experiment folders) */
 #include "cmd.h"
+#if TOOL_PICTURES
 
 #include <dirent.h>
 #include <math.h>
@@ -439,3 +440,7 @@ int cmd_plot(int argc, char** argv)
     if (rc) return rc;
     return plot_svg_write(title, out);
 }
+
+#else
+typedef int tool_plot_not_built; /* board profile: tools/picture.c has the stand-ins */
+#endif

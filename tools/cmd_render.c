@@ -2,6 +2,7 @@
  * initial shape, the settled shape, then snapshots of the motion), drawn by the library's
  * rasteriser from recorded poses (docs/pictures.md). */
 #include "picture.h"
+#if TOOL_PICTURES
 
 #include <math.h>
 #include <stdio.h>
@@ -351,3 +352,7 @@ int cmd_render(int argc, char** argv)
     }
     return film_write(&lat, &env, &eval, &o, file, out);
 }
+
+#else
+typedef int tool_render_not_built; /* board profile: tools/picture.c has the stand-ins */
+#endif

@@ -1,6 +1,7 @@
 /* amorph view: one self-contained HTML file with a robot's recorded motion and a hand-written
  * canvas renderer (no network, no external script; docs/pictures.md describes the data layout). */
 #include "picture.h"
+#if TOOL_PICTURES
 #include "view_page.h"
 
 #include <math.h>
@@ -269,3 +270,7 @@ int cmd_view(int argc, char** argv)
     }
     return view_write(&lat, &env, &eval, frames, title ? title : file, file, out);
 }
+
+#else
+typedef int tool_view_not_built; /* board profile: tools/picture.c has the stand-ins */
+#endif

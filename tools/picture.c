@@ -1,6 +1,7 @@
 /* What amorph render and amorph view share: one recorded evaluation of a robot, the size of each
  * voxel in a recorded frame, centres of mass, and the robot argument (scene, file or run). */
 #include "picture.h"
+#if TOOL_PICTURES
 
 #include <math.h>
 #include <stdio.h>
@@ -152,3 +153,42 @@ int tool_check_output(const char* path, const char* cmd, const char* ext)
     if (path[n - 1] == '/') return tool_usage_error("%s: --out %s is a folder, not a file", cmd, path);
     return 0;
 }
+
+#else
+/* the board profile: the commands and functions exist and say they are not built in */
+static int not_built(const char* what)
+{
+    return tool_usage_error("%s: pictures are not built into the board profile (build the desktop profile)", what);
+}
+int cmd_render(int argc, char** argv)
+{
+    (void)argc, (void)argv;
+    return not_built("render");
+}
+int cmd_plot(int argc, char** argv)
+{
+    (void)argc, (void)argv;
+    return not_built("plot");
+}
+int cmd_view(int argc, char** argv)
+{
+    (void)argc, (void)argv;
+    return not_built("view");
+}
+int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+{
+    (void)lat, (void)env, (void)eval;
+    return not_built(path) ? 1 : 0;
+}
+int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+                      const char* path)
+{
+    (void)lat, (void)env, (void)eval, (void)title;
+    return not_built(path) ? 1 : 0;
+}
+int tool_write_plot(int ndirs, char** dirs, const char* path)
+{
+    (void)ndirs, (void)dirs;
+    return not_built(path ? path : "plot") ? 1 : 0;
+}
+#endif
