@@ -14,6 +14,7 @@ int cmd_plot(int argc, char** argv);
 int cmd_view(int argc, char** argv);
 int cmd_evolve(int argc, char** argv);
 int cmd_experiment(int argc, char** argv);
+int cmd_repro(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
