@@ -47,6 +47,13 @@ else ko "amorph sim RUN gives fitness '$f', the run logged $(sumval "$TMPD/a" be
 if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
 else ko "config.txt does not hold the effective configuration"; fi
 
+# --- pictures at the end of a run (unless --no-pictures) ---
+expect_ok "$AMORPH" evolve --config "$TMPD/small.cfg" --evaluations 12 --quiet --out "$TMPD/pic"
+if [ "$(head -c 8 "$TMPD/pic/best.png" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] && grep -q "<svg" "$TMPD/pic/fitness.svg" &&
+   grep -q "<canvas" "$TMPD/pic/best.html"; then ok
+else ko "run folder pictures: $(ls "$TMPD/pic")"; fi
+if [ ! -e "$TMPD/a/best.png" ] && [ ! -e "$TMPD/a/best.html" ]; then ok; else ko "--no-pictures still drew pictures"; fi
+
 # --- 1, 2 and 3 threads: the same run ---
 expect_ok $E --out "$TMPD/t2" --threads 2
 expect_ok $E --out "$TMPD/t3" --threads 3

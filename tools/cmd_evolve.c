@@ -3,6 +3,7 @@
 #include "cmd.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,8 +33,9 @@ static const char evolve_help[] =
     "  --help-config      list the configuration keys\n"
     "  --quiet            no progress output\n"
     "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
-    "The run folder holds config.txt, log.csv, best.genome, best.lattice, summary.txt and\n"
-    "checkpoint.txt. Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
+    "The run folder holds config.txt, log.csv, best.genome, best.lattice, summary.txt,\n"
+    "checkpoint.txt and, at the end, best.png (filmstrip), best.html (viewer) and fitness.svg.\n"
+    "Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
 
 /* ---- options shared by evolve and experiment ---- */
 
@@ -329,11 +331,28 @@ static int run_loop(am_evo* e, const run_io* io)
     return 0;
 }
 
+/* the run's pictures: the best robot's filmstrip (best.png) and viewer page (best.html), and the
+ * fitness plot (fitness.svg); builds without pictures (the board profile) skip them */
 static int finish_pictures(const am_evo* e, const char* dir)
 {
-    (void)e;
-    (void)dir;
-    return 0;
+    if (!TOOL_PICTURES) return 0;
+    char path[4096], err[AM_ERR_MAX], title[256];
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &g_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: best robot: %s\n", err);
+        return 1;
+    }
+    am_eval_def ev = e->def.eval;
+    ev.record = NULL;
+    if (am_lattice_count(&g_best_lat) > 0) {
+        path_join(path, sizeof path, dir, "best.png");
+        if (tool_write_filmstrip(&g_best_lat, &e->def.env, &ev, path)) return 1;
+        path_join(path, sizeof path, dir, "best.html");
+        snprintf(title, sizeof title, "amorph: best of %s (%.4f m)", dir, e->best.fitness);
+        if (tool_write_viewer(&g_best_lat, &e->def.env, &ev, title, path)) return 1;
+    }
+    path_join(path, sizeof path, dir, "fitness.svg");
+    char* dirs[1] = {(char*)(uintptr_t)dir};
+    return tool_write_plot(1, dirs, path);
 }
 
 /* a new run in dir (created), or a resumed one; 0, 1, 2 or 130 */
@@ -519,10 +538,16 @@ static int read_log(const char* dir, long* evals, double* best, int cap)
     return n;
 }
 
+#if defined(AM_PROFILE_BOARD)
+#define EXP_ROWS 64             /* generations an experiment's table reads per run */
+#define EXP_MAX_RUNS 4          /* runs per variant */
+#else
 #define EXP_ROWS 4096
+#define EXP_MAX_RUNS 16
+#endif
 static long g_exp_evals[EXP_ROWS];
-static double g_exp_best[6][EXP_ROWS][16];
-static int g_exp_rows[6][16];
+static double g_exp_best[6][EXP_ROWS][EXP_MAX_RUNS];
+static double g_exp_tmp[EXP_ROWS];
 
 int cmd_experiment(int argc, char** argv)
 {
@@ -542,7 +567,8 @@ int cmd_experiment(int argc, char** argv)
             if (!tool_parse_long(v, 2, 1000000000L, &evals)) return tool_usage_error("experiment: --evals needs a whole number >= 2");
             i++;
         } else if (!strcmp(a, "--runs")) {
-            if (!tool_parse_long(v, 1, 16, &runs)) return tool_usage_error("experiment: --runs needs a whole number in [1, 16]");
+            if (!tool_parse_long(v, 1, EXP_MAX_RUNS, &runs))
+                return tool_usage_error("experiment: --runs needs a whole number in [1, %d]", EXP_MAX_RUNS);
             i++;
         } else if (a[0] != '-' && !name) {
             name = a;
@@ -621,12 +647,11 @@ int cmd_experiment(int argc, char** argv)
             char rdir[2048];
             if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
                 return tool_usage_error("experiment: folder name too long");
-            double tmp[EXP_ROWS];
+            double* tmp = g_exp_tmp;
             int n = read_log(rdir, g_exp_evals, tmp, EXP_ROWS);
             if (n <= 0) return tool_usage_error("%s/log.csv: no rows", rdir);
             if (n < rows) rows = n;
             for (int r = 0; r < n; r++) g_exp_best[v][r][k - 1] = tmp[r];
-            g_exp_rows[v][k - 1] = n;
         }
     long len = 0;
     len += snprintf(tool_file_buf + len, (size_t)(TOOL_FILE_MAX - len), "variant,evaluations,mean_best,stderr_best,runs\n");
@@ -654,6 +679,11 @@ int cmd_experiment(int argc, char** argv)
                 }
         }
     if (write_text(dir, "results.csv", tool_file_buf, len)) return 1;
+    if (TOOL_PICTURES && o.pictures) {
+        char svg[2048];
+        char* dirs[1] = {dir};
+        if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
+    }
     printf("experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
     for (int v = 0; v < nv; v++) printf(" %22s", x->v[v].name);
     printf("\n");
