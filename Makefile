@@ -4,7 +4,7 @@
 #   make bench                benchmarks that print figures
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)
-#          REAL=float|double  PROFILE=desktop|board  OPT= (default -O3)  CC=
+#          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
 ARCH    ?= native
 BUILD   ?= build
 REAL    ?= float
@@ -16,8 +16,8 @@ ifeq ($(origin CC),default)
 CC := gcc
 endif
 
-ifeq ($(filter $(REAL),float double),)
-$(error REAL must be float or double, not '$(REAL)')
+ifeq ($(filter $(REAL),float double fixed),)
+$(error REAL must be float, double or fixed, not '$(REAL)')
 endif
 ifeq ($(filter $(PROFILE),desktop board),)
 $(error PROFILE must be desktop or board, not '$(PROFILE)')
@@ -28,8 +28,10 @@ DEFS    := -DAM_REAL_$(shell echo $(REAL) | tr a-z A-Z) -DAM_PROFILE_$(shell ech
 WARN    := -Wall -Wextra -Wpedantic -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
            -Wvla -Wdouble-promotion -Wcast-qual -Wformat=2 -Wundef
 CFLAGS  ?=
+# fixed point (docs/fixed.md): sums of am_real wrap around instead of being undefined
+FIXFLAGS := $(if $(filter fixed,$(REAL)),-fwrapv)
 ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
-           -fno-math-errno -fno-trapping-math -g $(DEFS) -Iinclude $(CFLAGS)
+           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(CFLAGS)
 LDLIBS  := -lm -lpthread
 
 LIB_SRC  := $(sort $(wildcard src/*.c))

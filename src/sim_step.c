@@ -18,11 +18,15 @@ static void actuation(const am_model* m, am_state* s)
     const am_env* e = &m->env;
     int changed = !s->scales_valid;
     for (int k = 0; k < m->palette.count; k++) {
-        am_real T = e->temp_base;
+        am_real T = m->temp_base;
         if (s->actuate) {
             long ph = (s->step - s->actuation_step0) % e->period_steps; /* exact phase in steps */
+#if defined(AM_REAL_FIXED_POINT)
+            am_real arg = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)e->period_steps * AM_FIX_ONE) + m->mat_phase[k];
+#else
             am_real arg = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps)) + m->mat_phase[k];
-            T += AM_MUL(e->temp_amplitude, am_sin(arg));
+#endif
+            T += AM_MUL(m->temp_amplitude, am_sin(arg));
         }
         am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
         changed |= sc != s->mat_scale[k];
@@ -100,7 +104,7 @@ static am_real link_forces(const am_model* m, am_state* s, int l0, int l1, int a
         s->strain[l] = strain;
         am_real as = am_fabs(strain);
         max_strain = as > max_strain ? as : max_strain;
-        if (!(as == as)) max_strain = AM_REAL_MAX; /* NaN */
+        if (AM_ISNAN(as)) max_strain = AM_REAL_MAX; /* NaN */
     }
     return max_strain;
 }
@@ -164,7 +168,7 @@ static am_real integrate(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
     const am_real dt = s->dt;
-    const am_real g = m->env.gravity;
+    const am_real g = m->gravity;
     const int floor_on = m->env.floor;
     am_real max_v2 = AM_R(0);
     for (int i = 0; i < nv; i++) {
@@ -215,7 +219,7 @@ static am_real integrate(const am_model* m, am_state* s)
         s->q[2][i] = AM_MUL(q.y, inv); s->q[3][i] = AM_MUL(q.z, inv);
 
         am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
-        if (!(v2 <= max_v2)) max_v2 = v2 == v2 ? v2 : AM_REAL_MAX; /* NaN counts as too fast */
+        if (!(v2 <= max_v2)) max_v2 = !AM_ISNAN(v2) ? v2 : AM_REAL_MAX; /* NaN counts as too fast */
     }
     return max_v2;
 }
@@ -235,7 +239,7 @@ void am_step(const am_model* m, am_state* s)
     am_sim_collide(m, s);
     am_real v2 = integrate(m, s);
     s->step++;
-    s->t = AM_MUL(AM_R(s->step), s->dt);
+    s->t = AM_MUL_INT(s->dt, s->step);
     if (!(strain <= AM_DIVERGE_STRAIN) || !(v2 <= AM_MUL(m->max_speed, m->max_speed))) {
         s->diverged = 1;
         s->diverge_step = s->step;

@@ -6,6 +6,8 @@
  * contraction into fused multiply-adds). */
 #include "amorph/mathx.h"
 
+#if !defined(AM_REAL_FIXED_POINT)
+
 /* pi/2 split so that k * PIO2_HI is exact for |k| < 2^20 */
 #define PIO2_HI 1.57079632673412561417e+00
 #define PIO2_LO 6.07710050650619224932e-11
@@ -190,3 +192,169 @@ am_real am_cbrt(am_real xr)
     for (int i = 0; i < 2; i++) y = y - (y * y * y - x) / (3.0 * y * y); /* Newton polish */
     return (am_real)(neg ? -y : y);
 }
+
+#endif
+
+#if defined(AM_REAL_FIXED_POINT)
+/* The fixed-point build: the same functions on integers only. Inputs and outputs are Q7.24;
+ * kernels work in Q30 on int64_t (a product of two Q30 values below 4 fits in 63 bits), range
+ * reduction subtracts multiples of pi/2 or ln 2 held in Q40, and every rounding is to nearest
+ * (half up), so the results are the same on every platform; the error is within an ulp or two of
+ * Q24 (tests/test_util.c measures it). */
+#define Q30 ((int64_t)1 << 30)
+#define Q40_PIO2 INT64_C(1727108826179)  /* pi/2 * 2^40 */
+#define Q40_LN2 INT64_C(762123384786)    /* ln 2 * 2^40 */
+#define Q30_SQRT2 INT64_C(1518500250)    /* sqrt(2) * 2^30 */
+#define Q30_SQRTH INT64_C(759250125)     /* sqrt(1/2) * 2^30 */
+
+static int64_t mul30(int64_t a, int64_t b) { return (a * b + (Q30 >> 1)) >> 30; }
+static int64_t div30(int64_t a, int64_t b) /* a / b in Q30, |a| < 2^32, b > 0 */
+{
+    int64_t n = a * Q30;
+    return (n >= 0 ? n + b / 2 : n - b / 2) / b;
+}
+static int64_t round_shift(int64_t v, int sh) { return sh <= 0 ? v * ((int64_t)1 << -sh) : (v + ((int64_t)1 << (sh - 1))) >> sh; }
+static am_real sat32(int64_t v) { return v > INT32_MAX ? INT32_MAX : (v < -INT32_MAX ? -INT32_MAX : (am_real)v); }
+
+am_real am_fx_sqrt(am_real x)
+{
+    if (x <= 0) return 0;
+    uint64_t n = (uint64_t)x << AM_FIX_FRAC, res = 0, bit = (uint64_t)1 << 62;
+    while (bit > n) bit >>= 2;
+    while (bit) {
+        if (n >= res + bit) {
+            n -= res + bit;
+            res = (res >> 1) + bit;
+        } else res >>= 1;
+        bit >>= 2;
+    }
+    if (n > res) res++; /* to nearest */
+    return (am_real)res;
+}
+
+/* sin and cos of |r| <= pi/4 (Q30) by Horner on their Taylor series */
+static int64_t sin30(int64_t r)
+{
+    int64_t r2 = mul30(r, r), t = Q30;
+    static const int div[5] = {156, 110, 72, 42, 20};
+    for (int i = 0; i < 5; i++) t = Q30 - mul30(r2, t) / div[i];
+    t = Q30 - mul30(r2, t) / 6;
+    return mul30(r, t);
+}
+static int64_t cos30(int64_t r)
+{
+    int64_t r2 = mul30(r, r), t = Q30;
+    static const int div[6] = {132, 90, 56, 30, 12, 2};
+    for (int i = 0; i < 6; i++) t = Q30 - mul30(r2, t) / div[i];
+    return t;
+}
+/* x (Q24) = k pi/2 + r: r in Q30, quadrant k mod 4 */
+static int64_t reduce_fx(am_real x, int* quadrant)
+{
+    int64_t x40 = (int64_t)x * ((int64_t)1 << (40 - AM_FIX_FRAC));
+    int64_t k = (x40 >= 0 ? x40 + Q40_PIO2 / 2 : x40 - Q40_PIO2 / 2) / Q40_PIO2;
+    int64_t r40 = x40 - k * Q40_PIO2;
+    *quadrant = (int)(((k % 4) + 4) % 4);
+    return round_shift(r40, 10);
+}
+static am_real to24(int64_t v30) { return sat32(round_shift(v30, 30 - AM_FIX_FRAC)); }
+
+am_real am_sin(am_real x)
+{
+    int q;
+    int64_t r = reduce_fx(x, &q);
+    switch (q) {
+    case 0: return to24(sin30(r));
+    case 1: return to24(cos30(r));
+    case 2: return to24(-sin30(r));
+    default: return to24(-cos30(r));
+    }
+}
+am_real am_cos(am_real x)
+{
+    int q;
+    int64_t r = reduce_fx(x, &q);
+    switch (q) {
+    case 0: return to24(cos30(r));
+    case 1: return to24(-sin30(r));
+    case 2: return to24(-cos30(r));
+    default: return to24(sin30(r));
+    }
+}
+
+/* e^x for x in Q30 (any int64 below 2^40): Q30, saturated at 2^61 */
+static int64_t exp30(int64_t x30)
+{
+    if (x30 > 40 * Q30) return INT64_C(1) << 61;
+    if (x30 < -40 * Q30) return 0;
+    int64_t x40 = x30 * 1024;
+    int64_t k = (x40 >= 0 ? x40 + Q40_LN2 / 2 : x40 - Q40_LN2 / 2) / Q40_LN2;
+    int64_t r = round_shift(x40 - k * Q40_LN2, 10); /* |r| <= ln2 / 2 */
+    int64_t t = Q30;
+    for (int n = 10; n >= 1; n--) t = Q30 + mul30(r, t) / n;
+    return k >= 0 ? (k > 30 ? INT64_C(1) << 61 : t << k) : round_shift(t, (int)-k);
+}
+/* ln x for x > 0 in Q24: Q30 */
+static int64_t log30(am_real x)
+{
+    int64_t m = (int64_t)x * ((int64_t)1 << (30 - AM_FIX_FRAC)); /* Q30 */
+    int e = 0;
+    while (m >= Q30_SQRT2) { m = (m + 1) >> 1; e++; }
+    while (m < Q30_SQRTH) { m <<= 1; e--; }
+    int64_t z = div30(m - Q30, m + Q30), z2 = mul30(z, z), sum = 0;
+    for (int n = 13; n >= 3; n -= 2) sum = mul30(z2, sum + Q30 / n);
+    sum = mul30(z, Q30 + sum);
+    return 2 * sum + round_shift((int64_t)e * Q40_LN2, 10);
+}
+
+am_real am_exp(am_real x) { return to24(exp30((int64_t)x * ((int64_t)1 << (30 - AM_FIX_FRAC)))); }
+am_real am_log(am_real x) { return x > 0 ? to24(log30(x)) : -AM_REAL_MAX; }
+am_real am_pow(am_real x, am_real y)
+{
+    if (x <= 0) return 0;
+    return to24(exp30(round_shift(log30(x) * y, AM_FIX_FRAC)));
+}
+am_real am_cbrt(am_real x)
+{
+    if (x == 0) return 0;
+    int64_t r = exp30(log30(x < 0 ? -x : x) / 3);
+    return to24(x < 0 ? -r : r);
+}
+/* atan of a Q30 value in [0, 1]: Q30 */
+static int64_t atan30(int64_t a)
+{
+    static const int64_t T8 = INT64_C(444758426);  /* tan(pi/8) * 2^30 */
+    static const int64_t T16 = INT64_C(213580528); /* tan(pi/16) * 2^30 */
+    int64_t base = 0;
+    if (a > T8) { /* atan a = pi/4 + atan((a - 1) / (a + 1)) */
+        a = div30(a - Q30, a + Q30);
+        base = round_shift(Q40_PIO2, 11);
+    }
+    int neg = a < 0;
+    if (neg) a = -a;
+    int64_t off = 0;
+    if (a > T16) { /* atan a = pi/8 + atan((a - t8) / (1 + a t8)) */
+        a = div30(a - T8, Q30 + mul30(a, T8));
+        off = round_shift(Q40_PIO2, 12);
+    }
+    int64_t a2 = mul30(a, a), sum = 0;
+    for (int n = 15; n >= 3; n -= 2) sum = mul30(a2, Q30 / n - sum);
+    int64_t v = off + mul30(a, Q30 - sum);
+    return base + (neg ? -v : v);
+}
+am_real am_atan2(am_real y, am_real x)
+{
+    int64_t pio2 = round_shift(Q40_PIO2, 10);
+    if (x == 0) return y > 0 ? to24(pio2) : (y < 0 ? to24(-pio2) : 0);
+    int64_t ay = y < 0 ? -(int64_t)y : y, ax = x < 0 ? -(int64_t)x : x;
+    int64_t a = ay <= ax ? atan30(div30(ay, ax)) : pio2 - atan30(div30(ax, ay));
+    if (x < 0) a = 2 * pio2 - a;
+    return to24(y < 0 ? -a : a);
+}
+am_real am_acos(am_real x)
+{
+    if (x > AM_FIX_ONE) x = AM_FIX_ONE;
+    if (x < -AM_FIX_ONE) x = -AM_FIX_ONE;
+    return am_atan2(am_fx_sqrt(AM_MUL(AM_FIX_ONE - x, AM_FIX_ONE + x)), x);
+}
+#endif
