@@ -122,13 +122,15 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     if (N < AM_R(0)) N = AM_R(0); /* the floor pushes, never pulls */
     F->z += N;
 
+    /* squared norms as wide products: in the fixed-point build these forces and speeds are small
+     * (gravity is 1e-4 of a unit) and their squares would fall below the resolution */
     const am_real vx = s->v[0][i], vy = s->v[1][i];
-    am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy);
+    am_wide v2 = AM_MULW(vx, vx) + AM_MULW(vy, vy);
     if (s->contact[i] == 0) s->contact[i] = v2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
-    am_real fh2 = AM_MUL(F->x, F->x) + AM_MUL(F->y, F->y);
+    am_wide fh2 = AM_MULW(F->x, F->x) + AM_MULW(F->y, F->y);
     if (s->contact[i] == 1) {
         am_real lim = AM_MUL(m->mu_s[i], N);
-        if (fh2 <= AM_MUL(lim, lim)) {
+        if (fh2 <= AM_MULW(lim, lim)) {
             F->x = F->y = AM_R(0);
             return 1;
         }
@@ -137,6 +139,18 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     /* sliding: kinetic friction against the velocity (against the force when not yet moving) */
     am_real fk = AM_MUL(m->mu_k[i], N);
     am_real dx, dy;
+#if defined(AM_REAL_FIXED_POINT)
+    /* the direction as quotients (1 / |v| may be beyond the range) */
+    if (v2 > 0) {
+        am_real n = AM_WIDE_SQRT(v2);
+        dx = AM_DIV(vx, n);
+        dy = AM_DIV(vy, n);
+    } else if (fh2 > 0) {
+        am_real n = AM_WIDE_SQRT(fh2);
+        dx = AM_DIV(F->x, n);
+        dy = AM_DIV(F->y, n);
+    } else {
+#else
     if (v2 > AM_R(0)) {
         am_real inv = AM_DIV(AM_R(1), am_sqrt(v2));
         dx = AM_MUL(vx, inv);
@@ -146,6 +160,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         dx = AM_MUL(F->x, inv);
         dy = AM_MUL(F->y, inv);
     } else {
+#endif
         s->contact[i] = 1;
         return 1;
     }
@@ -153,7 +168,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     /* friction may stop the voxel within the step but never reverse it: then it sticks */
     am_real px = s->p[0][i], py = s->p[1][i];
     am_real nx = px + AM_MUL(fx, s->dt), ny = py + AM_MUL(fy, s->dt);
-    if (v2 > AM_R(0) && AM_MUL(nx, px) + AM_MUL(ny, py) <= AM_R(0)) {
+    if (v2 > AM_R(0) && AM_MULW(nx, px) + AM_MULW(ny, py) <= AM_R(0)) {
         s->contact[i] = 1;
         F->x = F->y = AM_R(0);
         return 1;

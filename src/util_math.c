@@ -216,10 +216,12 @@ static int64_t div30(int64_t a, int64_t b) /* a / b in Q30, |a| < 2^32, b > 0 */
 static int64_t round_shift(int64_t v, int sh) { return sh <= 0 ? v * ((int64_t)1 << -sh) : (v + ((int64_t)1 << (sh - 1))) >> sh; }
 static am_real sat32(int64_t v) { return v > INT32_MAX ? INT32_MAX : (v < -INT32_MAX ? -INT32_MAX : (am_real)v); }
 
-am_real am_fx_sqrt(am_real x)
+am_real am_fx_sqrt(am_real x) { return x <= 0 ? 0 : am_fx_sqrt_wide((am_wide)x << AM_FIX_FRAC); }
+
+am_real am_fx_sqrt_wide(am_wide w)
 {
-    if (x <= 0) return 0;
-    uint64_t n = (uint64_t)x << AM_FIX_FRAC, res = 0, bit = (uint64_t)1 << 62;
+    if (w <= 0) return 0;
+    uint64_t n = (uint64_t)w, res = 0, bit = (uint64_t)1 << 62;
     while (bit > n) bit >>= 2;
     while (bit) {
         if (n >= res + bit) {

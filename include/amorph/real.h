@@ -58,7 +58,14 @@ static inline am_real am_fx_div(am_real a, am_real b)
     int64_t q = (n >= 0 ? n + h : n - h) / d;
     return q > INT32_MAX ? INT32_MAX : (q < -INT32_MAX ? -INT32_MAX : (am_real)q);
 }
-am_real am_fx_sqrt(am_real x); /* util_math.c: exact floor of the root, 0 for x <= 0 */
+am_real am_fx_sqrt(am_real x); /* util_math.c: the root rounded to nearest, 0 for x <= 0 */
+/* a product kept whole (Q14.48 in int64_t), for squared norms of small vectors (friction forces
+ * and speeds, whose squares would fall below the Q24 resolution) and exact sign tests */
+typedef int64_t am_wide;
+#define AM_MULW(a, b) ((int64_t)(a) * (b))
+am_real am_fx_sqrt_wide(am_wide w); /* the root of a wide value, as am_real, rounded to nearest */
+#define AM_WIDE_SQRT(w) am_fx_sqrt_wide(w)
+
 #define AM_MUL(a, b) am_fx_mul((a), (b))
 #define AM_DIV(a, b) am_fx_div((a), (b))
 #define am_sqrt(x) am_fx_sqrt(x)
@@ -106,6 +113,9 @@ typedef am_real am_param;
 #define AM_R(c) ((am_real)(c))
 #define AM_P(c) ((am_param)(c))
 #define AM_INT(n) ((am_real)(n))
+typedef am_real am_wide;
+#define AM_MULW(a, b) AM_MUL((a), (b))
+#define AM_WIDE_SQRT(w) am_sqrt(w)
 #define AM_DIV_INT(a, n) AM_DIV((a), (am_real)(n))
 #define AM_RATIO(p, q) AM_DIV((am_real)(p), (am_real)(q))
 #define AM_MUL_INT(a, n) AM_MUL((am_real)(n), (a))
