@@ -357,6 +357,6 @@ am_real am_acos(am_real x)
 {
     if (x > AM_FIX_ONE) x = AM_FIX_ONE;
     if (x < -AM_FIX_ONE) x = -AM_FIX_ONE;
-    return am_atan2(am_fx_sqrt(AM_MUL(AM_FIX_ONE - x, AM_FIX_ONE + x)), x);
+    return am_atan2(am_fx_sqrt_wide(AM_MULW(AM_FIX_ONE - x, AM_FIX_ONE + x)), x); /* the product kept whole */
 }
 #endif
