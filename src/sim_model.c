@@ -316,6 +316,11 @@ void am_state_reset(const am_model* m, am_state* s)
     s->npairs = -1; /* the first step builds the collision list */
     s->max_npairs = 0;
     s->scales_valid = 0; /* the first step sets scales and rest lengths */
+#if defined(AM_REAL_FIXED_POINT)
+    memset(s->x_rem, 0, sizeof s->x_rem);
+    memset(s->p_rem, 0, sizeof s->p_rem);
+    memset(s->h_rem, 0, sizeof s->h_rem);
+#endif
     for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale[k] = AM_R(1);
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {

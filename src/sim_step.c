@@ -209,19 +209,25 @@ static am_real integrate(const am_model* m, am_state* s)
 
         /* p += F dt; x += p dt / m (a stuck voxel keeps no horizontal momentum) */
         const am_real im = m->inv_mass[i];
-        am_real px = s->p[0][i] + AM_MUL(F.x, dt), py = s->p[1][i] + AM_MUL(F.y, dt), pz = s->p[2][i] + AM_MUL(F.z, dt);
-        if (stuck) px = py = AM_R(0);
+        am_real px = AM_ACC(s->p[0][i], s->p_rem[0][i], F.x, dt), py = AM_ACC(s->p[1][i], s->p_rem[1][i], F.y, dt),
+                pz = AM_ACC(s->p[2][i], s->p_rem[2][i], F.z, dt);
+        if (stuck) {
+            px = py = AM_R(0);
+            AM_REM_CLEAR(s->p_rem[0][i]);
+            AM_REM_CLEAR(s->p_rem[1][i]);
+        }
         if (m->fixed[i]) px = py = pz = AM_R(0);
         am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
         s->p[0][i] = px; s->p[1][i] = py; s->p[2][i] = pz;
         s->v[0][i] = vx; s->v[1][i] = vy; s->v[2][i] = vz;
-        s->x[0][i] += AM_MUL(vx, dt);
-        s->x[1][i] += AM_MUL(vy, dt);
-        s->x[2][i] += AM_MUL(vz, dt);
+        s->x[0][i] = AM_ACC(s->x[0][i], s->x_rem[0][i], vx, dt);
+        s->x[1][i] = AM_ACC(s->x[1][i], s->x_rem[1][i], vy, dt);
+        s->x[2][i] = AM_ACC(s->x[2][i], s->x_rem[2][i], vz, dt);
 
         /* h += M dt; q = quat(w dt) q, renormalised */
         const am_real ii = m->inv_inertia[i];
-        am_real hx = s->h[0][i] + AM_MUL(M.x, dt), hy = s->h[1][i] + AM_MUL(M.y, dt), hz = s->h[2][i] + AM_MUL(M.z, dt);
+        am_real hx = AM_ACC(s->h[0][i], s->h_rem[0][i], M.x, dt), hy = AM_ACC(s->h[1][i], s->h_rem[1][i], M.y, dt),
+                hz = AM_ACC(s->h[2][i], s->h_rem[2][i], M.z, dt);
         if (m->fixed[i]) hx = hy = hz = AM_R(0);
         vec3 w = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
         s->h[0][i] = hx; s->h[1][i] = hy; s->h[2][i] = hz;

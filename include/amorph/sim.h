@@ -155,6 +155,11 @@ typedef struct am_state {
     int32_t bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
     int32_t bucket_next[AM_MAX_VOXELS];
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
+#if defined(AM_REAL_FIXED_POINT)
+    /* the rounding remainders of x, p and h (Q48 - Q24 parts, error diffusion): a step adds
+     * F dt and v dt exactly, so no increment below the resolution is lost (docs/fixed.md) */
+    am_real x_rem[3][AM_MAX_VOXELS], p_rem[3][AM_MAX_VOXELS], h_rem[3][AM_MAX_VOXELS];
+#endif
     int scales_valid;                    /* 0 until voxel scales and rest lengths follow mat_scale */
 } am_state;
 
