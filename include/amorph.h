@@ -12,4 +12,6 @@
 #include "amorph/sim.h"
 #include "amorph/evolve.h"
 #include "amorph/port.h"
+#include "amorph/xml.h"
+#include "amorph/vxa.h"
 #endif

@@ -117,7 +117,7 @@ static void eval_task(void* ctx, int item, int worker)
 static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, int (*cancel)(void),
                         char* err, int errsz, am_status* st)
 {
-    static eval_job job; /* one run at a time per process; its size keeps it off the stack */
+    eval_job job;
     int* order = e->order;
     int voxels[AM_MAX_POPULATION];
     am_express_def ex = express_def(&e->def, &e->palette);

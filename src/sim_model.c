@@ -41,6 +41,15 @@ double am_unit(const am_model* m, int dim)
 double am_to_si(const am_model* m, am_real v, int dim) { return AM_TO_DOUBLE(v) * am_unit(m, dim); }
 am_real am_from_si(const am_model* m, double v, int dim) { return AM_FROM_DOUBLE(v / am_unit(m, dim)); }
 
+double am_dt_si(const am_model* m, am_param dt_frac)
+{
+#if defined(AM_REAL_FIXED_POINT)
+    return dt_frac * am_to_si(m, m->dt_rec, AM_DIM_TIME);
+#else
+    return (double)(dt_frac * m->dt_rec);
+#endif
+}
+
 am_env am_default_env(void)
 {
     am_env e;

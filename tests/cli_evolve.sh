@@ -40,6 +40,10 @@ else ko "best fitness decreased: $(cut -d, -f3 "$TMPD/a/log.csv" | tr '\n' ' ')"
 # the best genome and lattice are readable robots, and the best genome simulates to the logged best
 if grep -q "^amorph-genome" "$TMPD/a/best.genome" && "$AMORPH" sim "$TMPD/a/best.lattice" --cycles 1 >/dev/null 2>&1; then ok
 else ko "best.genome / best.lattice unreadable"; fi
+# the run folder replays: amorph sim DIR simulates the best robot in the run's settings to its logged fitness
+f=$("$AMORPH" sim "$TMPD/a" | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/a" best_fitness)" ]; then ok
+else ko "amorph sim RUN gives fitness '$f', the run logged $(sumval "$TMPD/a" best_fitness)"; fi
 if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
 else ko "config.txt does not hold the effective configuration"; fi
 
@@ -143,6 +147,23 @@ pid=$!
 wait_rows "$d" 6; sleep 0.1; kill -9 $pid; wait $pid 2>/dev/null
 expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
 if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok; else ko "checkpoint_seconds: resumed log differs"; fi
+
+# --- progress: a live line on a terminal, plain lines otherwise, nothing with --quiet ---
+P="$AMORPH evolve --config $TMPD/small.cfg --evaluations 18 --no-pictures"
+$P --out "$TMPD/p1" >"$TMPD/out" 2>"$TMPD/err"
+if [ "$(grep -c 'evaluations 18/18  best' "$TMPD/err")" -eq 1 ] && ! grep -q "$(printf '\r')" "$TMPD/err"; then ok
+else ko "progress without a terminal: $(head -c 300 "$TMPD/err")"; fi
+$P --out "$TMPD/p2" --quiet >"$TMPD/out" 2>"$TMPD/err"
+if [ ! -s "$TMPD/err" ] && grep -q "^run_hash = " "$TMPD/out"; then ok; else ko "--quiet printed: $(head -c 300 "$TMPD/err")"; fi
+if command -v script >/dev/null 2>&1; then
+    script -qc "$P --out $TMPD/p3" /dev/null >"$TMPD/tty" 2>&1
+    esc=$(printf '\r\033\[K')
+    if [ "$(grep -o "${esc}evaluations [0-9]*/18" "$TMPD/tty" | wc -l)" -ge 3 ] && grep -q "s left" "$TMPD/tty"; then ok
+    else ko "progress on a terminal: $(od -c "$TMPD/tty" | head -5)"; fi
+else
+    echo "SKIPPED: terminal progress test (no 'script' command)"
+fi
+"$AMORPH" evolve --help-config | grep -qE "^  population +20 +individuals" && ok || ko "--help-config"
 
 # --- experiments ---
 expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet

@@ -11,6 +11,7 @@ int cmd_random(int argc, char** argv);
 int cmd_express(int argc, char** argv);
 int cmd_evolve(int argc, char** argv);
 int cmd_experiment(int argc, char** argv);
+int cmd_export(int argc, char** argv);
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);
@@ -30,12 +31,19 @@ int tool_usage_error(const char* fmt, ...)
     ;
 
 /* loads a robot: "scene:NAME" style names (cube:N ...) when is_scene, else a file in any format
- * amorph reads (lattice text; genome text, expressed). Messages are "file:line: problem". */
+ * amorph reads (lattice text; genome text, expressed; VXA). Messages are "file:line: problem". */
 am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz);
 
 /* genome text (any representation) -> lattice; implemented with the genotypes (cmd_genome.c).
  * Returns AM_ERR_ARG without a message when text is not a genome, so the caller tries others. */
 am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
+
+/* VXA text -> lattice (cmd_export.c); prints the reader's warnings on stderr. Returns AM_ERR_ARG
+ * without a message when text is not XML. On success tool_vxa_loaded is 1 and tool_vxa_info holds
+ * the file's environment (tool_load_robot sets tool_vxa_loaded to 0 before each load). */
+am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
+extern int tool_vxa_loaded;
+extern am_vxa_info tool_vxa_info;
 
 /* strict value parsers (tools/args.c): 1 when the whole token is a number in [lo, hi] */
 int tool_parse_u64(const char* s, uint64_t* out);

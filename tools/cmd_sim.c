@@ -11,8 +11,10 @@ static am_state g_state;
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
     "Simulates one robot in the seed's environment (relaxation, then actuation cycles) and prints\n"
-    "its fitness and diagnostics. FILE is a lattice (.lattice) or a genome; NAME a built-in scene\n"
-    "(cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file (.vxa, whose\n"
+    "environment is used; the options below override it) or a run folder of amorph evolve (its best\n"
+    "robot, in the run's environment and evaluation); NAME a built-in scene (cube:N, sphere:D,\n"
+    "cantilever:N, chain:N).\n"
     "  --cycles N            actuation cycles (10)\n"
     "  --period-steps N      actuation period in time steps (500)\n"
     "  --amplitude DEG       temperature amplitude (30)\n"
@@ -27,6 +29,23 @@ static const char sim_help[] =
     "  --relax-max N         relaxation steps at most (4000)\n"
     "  --json                one JSON object instead of name = value lines\n";
 
+enum { G_PERIOD = 1, G_AMPLITUDE = 2, G_DT_FRAC = 4, G_GRAVITY = 8, G_COLLISIONS = 16, G_FLOOR = 32, G_CTE = 64,
+       G_CYCLES = 128, G_FITNESS = 256, G_RELAX = 512, G_DT_SEARCH = 1024 };
+
+/* a file's environment (VXA file, run folder), with the flags given on the command line on top */
+static am_env merge_env(const am_env* file, const am_env* cli, unsigned given)
+{
+    am_env e = *file;
+    if (given & G_PERIOD) e.period_steps = cli->period_steps;
+    if (given & G_AMPLITUDE) e.temp_amplitude = cli->temp_amplitude;
+    if (given & G_DT_FRAC) e.dt_frac = cli->dt_frac;
+    if (given & G_GRAVITY) e.gravity = cli->gravity;
+    if (given & G_COLLISIONS) e.collisions = cli->collisions;
+    if (given & G_FLOOR) e.floor = cli->floor;
+    if (given & G_CTE) e.cte_mode = cli->cte_mode;
+    return e;
+}
+
 int cmd_sim(int argc, char** argv)
 {
     const char* file = 0;
@@ -34,6 +53,7 @@ int cmd_sim(int argc, char** argv)
     double dt_fixed = 0;
     am_env env = am_default_env();
     am_eval_def def = am_default_eval();
+    unsigned given = 0; /* environment flags given, which win over a VXA file's environment */
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -43,49 +63,49 @@ int cmd_sim(int argc, char** argv)
             fputs(sim_help, stdout);
             return 0;
         } else if (!strcmp(a, "--json")) json = 1;
-        else if (!strcmp(a, "--dt-search")) def.dt_search = 1;
+        else if (!strcmp(a, "--dt-search")) def.dt_search = 1, given |= G_DT_SEARCH;
         else if (!strcmp(a, "--scene")) {
             if (!v) return tool_usage_error("sim: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
             file = v, is_scene = 1, i++;
         } else if (!strcmp(a, "--cycles")) {
             if (!tool_parse_long(v, 0, 100000, &n)) return tool_usage_error("sim: --cycles needs a whole number 0..100000");
-            def.cycles = (int)n, i++;
+            def.cycles = (int)n, given |= G_CYCLES, i++;
         } else if (!strcmp(a, "--period-steps")) {
             if (!tool_parse_long(v, 1, 10000000, &n)) return tool_usage_error("sim: --period-steps needs a whole number 1..10000000");
-            env.period_steps = (int)n, i++;
+            env.period_steps = (int)n, given |= G_PERIOD, i++;
         } else if (!strcmp(a, "--relax-max")) {
             if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
-            def.relax_max_steps = n, i++;
+            def.relax_max_steps = n, given |= G_RELAX, i++;
             if (def.relax_min_steps > n) def.relax_min_steps = n;
         } else if (!strcmp(a, "--amplitude")) {
             if (!tool_parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
-            env.temp_amplitude = AM_PARAM_FROM_DOUBLE(r), i++;
+            env.temp_amplitude = AM_PARAM_FROM_DOUBLE(r), given |= G_AMPLITUDE, i++;
         } else if (!strcmp(a, "--dt")) {
             if (!tool_parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
             dt_fixed = r, i++;
         } else if (!strcmp(a, "--dt-frac")) {
             if (!tool_parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
-            env.dt_frac = AM_PARAM_FROM_DOUBLE(r), i++;
+            env.dt_frac = AM_PARAM_FROM_DOUBLE(r), given |= G_DT_FRAC, i++;
         } else if (!strcmp(a, "--gravity")) {
             if (!tool_parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
-            env.gravity = AM_PARAM_FROM_DOUBLE(r), i++;
+            env.gravity = AM_PARAM_FROM_DOUBLE(r), given |= G_GRAVITY, i++;
         } else if (!strcmp(a, "--collisions")) {
             if (!tool_parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
-            i++;
+            given |= G_COLLISIONS, i++;
         } else if (!strcmp(a, "--floor")) {
             if (!tool_parse_onoff(v, &env.floor)) return tool_usage_error("sim: --floor takes on or off");
-            i++;
+            given |= G_FLOOR, i++;
         } else if (!strcmp(a, "--cte")) {
             if (v && !strcmp(v, "linear")) env.cte_mode = AM_CTE_LINEAR;
             else if (v && !strcmp(v, "volume")) env.cte_mode = AM_CTE_VOLUMETRIC;
             else return tool_usage_error("sim: --cte takes linear or volume");
-            i++;
+            given |= G_CTE, i++;
         } else if (!strcmp(a, "--fitness")) {
             if (v && !strcmp(v, "horizontal")) def.fitness = AM_FIT_HORIZONTAL;
             else if (v && !strcmp(v, "x")) def.fitness = AM_FIT_PLUS_X;
             else if (v && !strcmp(v, "3d")) def.fitness = AM_FIT_3D;
             else return tool_usage_error("sim: --fitness takes horizontal, x or 3d");
-            i++;
+            given |= G_FITNESS, i++;
         } else if (a[0] == '-' && a[1]) {
             return tool_usage_error("sim: unknown option '%s' (amorph sim --help)", a);
         } else {
@@ -97,8 +117,28 @@ int cmd_sim(int argc, char** argv)
     if (def.dt_search && dt_fixed > 0) return tool_usage_error("sim: --dt and --dt-search exclude each other");
 
     char err[AM_ERR_MAX];
-    am_status st = tool_load_robot(file, is_scene, &g_lat, err, sizeof err);
-    if (st != AM_OK) return tool_usage_error("%s", err);
+    am_status st;
+    if (!is_scene && tool_is_run_dir(file)) {
+        /* a run folder: its best robot, in the environment and evaluation it evolved in */
+        am_env renv;
+        am_eval_def rdef;
+        st = tool_load_run(file, &g_lat, &renv, &rdef, err, sizeof err);
+        if (st != AM_OK) return tool_usage_error("%s", err);
+        env = merge_env(&renv, &env, given);
+        if (given & G_CYCLES) rdef.cycles = def.cycles;
+        if (given & G_FITNESS) rdef.fitness = def.fitness;
+        if (given & G_DT_SEARCH) rdef.dt_search = def.dt_search;
+        if (given & G_RELAX) {
+            rdef.relax_max_steps = def.relax_max_steps;
+            if (rdef.relax_min_steps > def.relax_max_steps) rdef.relax_min_steps = def.relax_max_steps;
+        }
+        rdef.record = def.record;
+        def = rdef;
+    } else {
+        st = tool_load_robot(file, is_scene, &g_lat, err, sizeof err);
+        if (st != AM_OK) return tool_usage_error("%s", err);
+        if (tool_vxa_loaded) env = merge_env(&tool_vxa_info.env, &env, given);
+    }
     st = am_model_build(&g_model, &g_lat, &env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
@@ -111,6 +151,9 @@ int cmd_sim(int argc, char** argv)
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
     if (dt_fixed > 0) g_model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&g_model, g_model.dt_rec, AM_DIM_TIME));
+    /* a VXA file's period is in seconds: in steps of this robot's time step */
+    if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
+        g_model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&g_model, g_model.env.dt_frac));
 
     am_result res;
     double t0 = am_port_now();

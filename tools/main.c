@@ -15,6 +15,7 @@ static const struct {
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
     {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
     {"express", cmd_express, "express a genome into a lattice file"},
+    {"export", cmd_export, "write a robot as a VXA file for VoxCAD (--vxa) or a lattice file"},
 };
 
 static void usage(FILE* f)

@@ -1,4 +1,4 @@
-/* Loading robots for the commands: scenes, lattice files, genome files. */
+/* Loading robots for the commands: scenes, lattice files, genome files, VXA files. */
 #include "cmd.h"
 
 #include <stdarg.h>
@@ -37,12 +37,15 @@ int tool_write_output(const char* out, const char* text, long len)
 
 am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz)
 {
+    tool_vxa_loaded = 0;
     if (is_scene) return am_scene_build(lat, name, err, errsz);
     long len = 0;
     am_status st = am_port_read_file(name, tool_file_buf, TOOL_FILE_MAX, &len, err, errsz);
     if (st != AM_OK) return st;
     if (strlen(tool_file_buf) != (size_t)len)
         return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: binary data (a NUL byte) in a text file", name);
+    st = tool_vxa_text_to_lattice(tool_file_buf, name, lat, err, errsz);
+    if (st != AM_ERR_ARG) return st;
     st = tool_genome_text_to_lattice(tool_file_buf, name, lat, err, errsz);
     if (st != AM_ERR_ARG) return st;
     return am_lattice_parse(lat, tool_file_buf, name, err, errsz);

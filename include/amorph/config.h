@@ -62,4 +62,20 @@
 #define AM_MAX_WORKERS 16
 #endif
 
+/* ---- XML and VXA files (include/amorph/xml.h, include/amorph/vxa.h, docs/vxa.md) ---- */
+#if defined(AM_PROFILE_BOARD)
+#define AM_XML_MAX_NODES 768    /* elements of one XML document */
+#define AM_XML_MAX_ATTRS 128    /* attributes of one XML document */
+#define AM_XML_MAX_DEPTH 16     /* element nesting */
+#define AM_XML_MAX_BYTES (256L << 10) /* longest XML text read, bytes */
+#define AM_VXA_WARN_TEXT 1024   /* bytes of warning lines kept by the VXA reader */
+#else
+#define AM_XML_MAX_NODES 8192
+#define AM_XML_MAX_ATTRS 1024
+#define AM_XML_MAX_DEPTH 32
+#define AM_XML_MAX_BYTES (4L << 20)
+#define AM_VXA_WARN_TEXT 4096
+#endif
+/* ---- end of XML and VXA ---- */
+
 #endif

@@ -103,6 +103,8 @@ double am_unit(const am_model* m, int dim);
 double am_to_si(const am_model* m, am_real v, int dim);
 /* an SI value in model units (exactly (am_real)v in the float and double builds) */
 am_real am_from_si(const am_model* m, double v, int dim);
+/* the time step dt_frac * dt_rec, s (rounded to am_real first in the float and double builds) */
+double am_dt_si(const am_model* m, am_param dt_frac);
 
 /* recording of voxel poses every `every` steps into a caller's fixed buffer */
 typedef struct am_record {

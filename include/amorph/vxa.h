@@ -1,0 +1,55 @@
+/* amorph/vxa.h: VoxCAD / Voxelyze files (VXA 1.1 holding a VXC 0.94 object), read and written.
+ *
+ * docs/vxa.md is the manual: which tags map to which amorph fields, the CTE convention (VXA's CTE
+ * is linear per degree: a file read here sets env.cte_mode = AM_CTE_LINEAR), and what is not
+ * supported. The reader parses the text with the fixed-memory XML reader (amorph/xml.h) into a
+ * caller's workspace, fills a lattice and an environment, and lists every tag it does not
+ * support as a warning line "fname:line: warning: unsupported tag <X> ignored" (never silence).
+ * Malformed files are errors "fname:line: problem".
+ *
+ * The writer produces what VoxCAD writes (ASCII_READABLE structure) plus one <Amorph> element that
+ * VoxCAD ignores and this reader uses, holding what VXA cannot say (per-material damping, fixed
+ * materials, the volumetric CTE convention, the period in steps), so writing then reading gives
+ * back the same lattice and materials bit for bit.
+ */
+#ifndef AMORPH_VXA_H
+#define AMORPH_VXA_H
+
+#include "amorph/config.h"
+#include "amorph/lattice.h"
+#include "amorph/sim.h"
+#include "amorph/status.h"
+#include "amorph/xml.h"
+
+/* what a VXA file says beside the lattice */
+typedef struct am_vxa_info {
+    am_env env;              /* the file's environment mapped to amorph (docs/vxa.md) */
+    double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
+    int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
+                                converts temp_period with am_vxa_period_steps once dt is known */
+    int warnings;            /* warnings found (all counted, the first ones kept in warning) */
+    char warning[AM_VXA_WARN_TEXT]; /* warning lines, each ended by '\n'; NUL-terminated */
+} am_vxa_info;
+
+/* 1 when text looks like XML (after an optional byte order mark and blanks it starts with '<') */
+int am_vxa_sniff(const char* text);
+
+/* reads the NUL-terminated VXA text into lat and info, using work as the XML workspace (large:
+ * declare it static). fname is used only in messages. AM_ERR_PARSE for malformed XML or VXA,
+ * AM_ERR_RANGE for a value outside its range, AM_ERR_CAPACITY past a capacity of the build. */
+am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
+                       int errsz);
+
+/* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
+ * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
+ * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment
+ * that cannot be written, AM_ERR_CAPACITY when buf is short (AM_VXA_TEXT_MAX always suffices). */
+am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
+                        int errsz);
+#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS + AM_MAX_DIM * 64L + 8192L)
+
+/* the actuation period in steps for a period in seconds and a time step: the nearest whole
+ * number, at least 1, at most 1e9 */
+int am_vxa_period_steps(double period_s, double dt);
+
+#endif

@@ -1,0 +1,934 @@
+/* VoxCAD / Voxelyze files: VXA 1.1 with a VXC 0.94 object (include/amorph/vxa.h, docs/vxa.md).
+ *
+ * Reading is two steps: the XML reader (src/xml.c) checks the text and builds a tree in the
+ * caller's workspace, then this file walks the few levels VXA has with plain loops over the
+ * children of each known element (the depth is fixed by the format, so no recursion is needed).
+ * Each level knows its tags from a table; a tag given twice is an error, a tag it does not know is
+ * a warning line and is skipped with everything inside it. Where VoxCAD's own reader gives a
+ * missing tag a meaning (no <GravEnabled> inside <Gravity> is "off"), this reader does the same;
+ * elsewhere a missing tag keeps amorph's default. Sections are read in a fixed order (VXC, then
+ * Simulator, Environment, Amorph) whatever their order in the file, because the damping of
+ * <Simulator> and the exact values of <Amorph> land on the materials read from <VXC>.
+ *
+ * Writing follows what VoxCAD writes (tag order, ASCII_READABLE layers in CDATA), then adds the
+ * <Amorph> element for the values VXA cannot hold. Reals are printed in the shortest form that
+ * reads back to the same bits, so a written file reads back to the same lattice.
+ */
+#include "amorph/vxa.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define VXA_SHOW 40 /* longest piece of input quoted in a message */
+#define VXA_VALUE_MAX 256
+#define VXA_LAYER_MAX (2L * AM_MAX_DIM * AM_MAX_DIM + 512L) /* decoded text of one <Layer> */
+#define VXA_TEMP_BASE 25.0                                 /* the reference temperature written (VoxCAD's default) */
+
+typedef struct vctx {
+    const am_xml_doc* d;
+    am_vxa_info* info;
+    long wlen; /* bytes of info->warning in use */
+    char* err;
+    int errsz;
+} vctx;
+
+/* ---- messages ---------------------------------------------------------------------------- */
+
+static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+static void warn(vctx* c, int n, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* "fname:line: message", line of element n */
+static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...)
+{
+    if (c->err && c->errsz > 0) {
+        int k = snprintf(c->err, (size_t)c->errsz, "%s:%d: ", c->d->fname, (int)c->d->node[n].line);
+        if (k >= 0 && k < c->errsz) {
+            va_list ap;
+            va_start(ap, fmt);
+            vsnprintf(c->err + k, (size_t)(c->errsz - k), fmt, ap);
+            va_end(ap);
+        }
+    }
+    return code;
+}
+
+/* appends "fname:line: warning: message\n" to the info's warning text while it has room */
+static void warn(vctx* c, int n, const char* fmt, ...)
+{
+    char line[320];
+    int k = snprintf(line, sizeof line, "%s:%d: warning: ", c->d->fname, (int)c->d->node[n].line);
+    if (k >= 0 && k < (int)sizeof line) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(line + k, sizeof line - (size_t)k, fmt, ap);
+        va_end(ap);
+    }
+    c->info->warnings++;
+    size_t m = strlen(line);
+    if (c->wlen + (long)m + 2 <= (long)sizeof c->info->warning) {
+        memcpy(c->info->warning + c->wlen, line, m);
+        c->wlen += (long)m;
+        c->info->warning[c->wlen++] = '\n';
+        c->info->warning[c->wlen] = 0;
+    }
+}
+
+#define NAME(c, n) (int)(c)->d->node[n].name_len, (c)->d->text + (c)->d->node[n].start + 1
+
+static void unsupported(vctx* c, int n) { warn(c, n, "unsupported tag <%.*s> ignored", NAME(c, n)); }
+
+/* ---- values ------------------------------------------------------------------------------ */
+
+static int is_blank(char ch) { return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r'; }
+
+/* the text of element n without leading and trailing blanks; an element with elements inside is
+ * not a value */
+static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
+{
+    if (c->d->node[n].child >= 0) return verr(c, n, AM_ERR_PARSE, "<%.*s> must hold a value, not elements", NAME(c, n));
+    long k = 0;
+    if (am_xml_text(c->d, n, buf, cap, &k) != AM_OK)
+        return verr(c, n, AM_ERR_CAPACITY, "<%.*s>: its text is longer than %ld bytes", NAME(c, n), cap - 1);
+    long s = 0;
+    while (s < k && is_blank(buf[s])) s++;
+    while (k > s && is_blank(buf[k - 1])) k--;
+    memmove(buf, buf + s, (size_t)(k - s));
+    buf[k - s] = 0;
+    if (len) *len = k - s;
+    return AM_OK;
+}
+
+/* a value quoted in a message stays on one line */
+static const char* flat(char* v)
+{
+    for (char* p = v; *p; p++)
+        if ((unsigned char)*p < 0x20) *p = ' ';
+    return v;
+}
+
+static am_status double_of(const vctx* c, int n, double* out)
+{
+    char v[VXA_VALUE_MAX];
+    am_status st = text_of(c, n, v, sizeof v, NULL);
+    if (st != AM_OK) return st;
+    char* end = NULL;
+    double x = v[0] ? strtod(v, &end) : 0;
+    if (!v[0] || *end || !(x - x == 0))
+        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
+    *out = x;
+    return AM_OK;
+}
+
+/* read as am_param the way the lattice format reads it (strtof in the float build) */
+static am_status real_of(const vctx* c, int n, am_param* out)
+{
+    char v[VXA_VALUE_MAX];
+    am_status st = text_of(c, n, v, sizeof v, NULL);
+    if (st != AM_OK) return st;
+    char* end = NULL;
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+    am_param x = v[0] ? strtod(v, &end) : 0;
+#else
+    am_param x = v[0] ? strtof(v, &end) : 0;
+#endif
+    if (!v[0] || *end || !am_param_finite(x))
+        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
+    *out = x;
+    return AM_OK;
+}
+
+/* a real with a range: lo <= x (or lo < x when open) and x <= hi */
+static am_status real_in(const vctx* c, int n, am_param* out, double lo, int open, double hi, const char* what)
+{
+    am_param x = AM_P(0);
+    am_status st = real_of(c, n, &x);
+    if (st != AM_OK) return st;
+    if ((open ? !((double)x > lo) : !((double)x >= lo)) || (double)x > hi)
+        return verr(c, n, AM_ERR_RANGE, "<%.*s> %.9g %s", NAME(c, n), (double)x, what);
+    *out = x;
+    return AM_OK;
+}
+
+static am_status int_of(const vctx* c, int n, long lo, long hi, long* out)
+{
+    char v[VXA_VALUE_MAX];
+    am_status st = text_of(c, n, v, sizeof v, NULL);
+    if (st != AM_OK) return st;
+    char* end = NULL;
+    long x = v[0] ? strtol(v, &end, 10) : 0;
+    if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a whole number", NAME(c, n), VXA_SHOW, flat(v));
+    if (x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%.*s> %ld is outside %ld..%ld", NAME(c, n), x, lo, hi);
+    *out = x;
+    return AM_OK;
+}
+
+/* VoxCAD writes booleans as 0 or 1; "true" and "false" are read too */
+static am_status bool_of(const vctx* c, int n, int* out)
+{
+    char v[VXA_VALUE_MAX];
+    am_status st = text_of(c, n, v, sizeof v, NULL);
+    if (st != AM_OK) return st;
+    if (!strcmp(v, "1") || !strcmp(v, "true")) *out = 1;
+    else if (!strcmp(v, "0") || !strcmp(v, "false")) *out = 0;
+    else return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not 0 or 1", NAME(c, n), VXA_SHOW, flat(v));
+    return AM_OK;
+}
+
+/* ---- the children of one element --------------------------------------------------------- */
+
+enum { MAX_TAGS = 16 };
+
+/* walks the children of element n: each one named in tags[] is stored in at[] (index, or -1 when
+ * absent; a second one is an error), each other one is a warning unless it is named `repeat`
+ * (those are left for the caller to walk) */
+static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
+{
+    for (int i = 0; i < ntags; i++) at[i] = -1;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+        int i = 0;
+        while (i < ntags && !am_xml_is(c->d, k, tags[i])) i++;
+        if (i < ntags) {
+            if (at[i] >= 0)
+                return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%.*s> (first on line %d)", tags[i], NAME(c, n),
+                            (int)c->d->node[at[i]].line);
+            at[i] = k;
+        } else if (!repeat || !am_xml_is(c->d, k, repeat))
+            unsupported(c, k);
+    }
+    return AM_OK;
+}
+
+/* ---- VXC: lattice, voxel, palette, structure --------------------------------------------- */
+
+static am_status read_lattice(vctx* c, int n, am_lattice* lat)
+{
+    static const char* const tags[] = {"Lattice_Dim", "X_Dim_Adj", "Y_Dim_Adj", "Z_Dim_Adj",
+                                       "X_Line_Offset", "Y_Line_Offset", "X_Layer_Offset", "Y_Layer_Offset"};
+    int at[MAX_TAGS];
+    am_status st = children(c, n, tags, 8, at, NULL);
+    if (st != AM_OK) return st;
+    if (at[0] >= 0 && (st = real_in(c, at[0], &lat->voxel_size, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
+    for (int i = 1; i < 8; i++) {
+        double v, want = i <= 3 ? 1 : 0;
+        if (at[i] < 0) continue;
+        if ((st = double_of(c, at[i], &v)) != AM_OK) return st;
+        if (v != want)
+            warn(c, at[i], "<%s> %.9g not supported (amorph lattices are cubic cells on a rectangular grid); %g used", tags[i], v,
+                 want);
+    }
+    return AM_OK;
+}
+
+static am_status read_voxel(vctx* c, int n)
+{
+    static const char* const tags[] = {"Vox_Name", "X_Squeeze", "Y_Squeeze", "Z_Squeeze"};
+    int at[MAX_TAGS];
+    am_status st = children(c, n, tags, 4, at, NULL);
+    if (st != AM_OK) return st;
+    if (at[0] >= 0) {
+        char v[VXA_VALUE_MAX];
+        if ((st = text_of(c, at[0], v, sizeof v, NULL)) != AM_OK) return st;
+        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %.*s not supported (amorph voxels are boxes); BOX used", VXA_SHOW, flat(v));
+    }
+    for (int i = 1; i < 4; i++) {
+        double v;
+        if (at[i] < 0) continue;
+        if ((st = double_of(c, at[i], &v)) != AM_OK) return st;
+        if (v != 1) warn(c, at[i], "<%s> %.9g not supported; 1 used", tags[i], v);
+    }
+    return AM_OK;
+}
+
+/* a VXA name (free text) as an amorph material name: letters, digits, '_' and '-' kept, any other
+ * byte becomes '_', cut to AM_NAME_MAX - 1 */
+static void clean_name(char* dst, const char* src)
+{
+    size_t i = 0;
+    memset(dst, 0, AM_NAME_MAX);
+    for (; src[i] && i < AM_NAME_MAX - 1; i++) {
+        char ch = src[i];
+        int ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-';
+        dst[i] = ok ? ch : '_';
+    }
+}
+
+static am_status read_material(vctx* c, int n, am_material* m, int id)
+{
+    static const char* const tags[] = {"MatType", "Name", "Display", "Mechanical"};
+    static const char* const disp[] = {"Red", "Green", "Blue", "Alpha"};
+    static const char* const mech[] = {"MatModel", "Elastic_Mod", "Plastic_Mod", "Yield_Stress", "FailModel", "Fail_Stress",
+                                       "Fail_Strain", "Density", "Poissons_Ratio", "CTE", "MaterialTempPhase", "uStatic",
+                                       "uDynamic"};
+    int at[MAX_TAGS], dt[MAX_TAGS], mt[MAX_TAGS];
+    am_status st;
+    long v;
+    *m = am_default_material();
+    memset(m->name, 0, sizeof m->name);
+    snprintf(m->name, sizeof m->name, "material%d", id);
+    int a = am_xml_attr_find(c->d, n, "ID");
+    if (a >= 0) {
+        char idv[VXA_VALUE_MAX];
+        char* end = NULL;
+        if (am_xml_attr_text(c->d, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
+            warn(c, n, "<Material ID=\"%.*s\"> is material %d of the palette: materials are numbered by their order, as in VoxCAD",
+                 VXA_SHOW, idv, id);
+    }
+    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    if (at[0] >= 0) {
+        static const char* const kinds[] = {"single", "internal structure", "dither", "external file"};
+        if ((st = int_of(c, at[0], 0, 1000000, &v)) != AM_OK) return st;
+        if (v != 0)
+            return verr(c, at[0], AM_ERR_PARSE, "material %d: MatType %ld (%s) is not supported: only single materials (MatType 0)",
+                        id, v, v <= 3 ? kinds[v] : "unknown");
+    }
+    if (at[1] >= 0) {
+        char nm[VXA_VALUE_MAX];
+        if ((st = text_of(c, at[1], nm, sizeof nm, NULL)) != AM_OK) return st;
+        if (nm[0]) clean_name(m->name, nm);
+    }
+    if (at[2] >= 0) {
+        if ((st = children(c, at[2], disp, 4, dt, NULL)) != AM_OK) return st;
+        for (int i = 0; i < 4; i++) {
+            am_param x = AM_P(0);
+            if (dt[i] < 0) continue;
+            if ((st = real_in(c, dt[i], &x, 0, 0, 1, "must be in [0, 1]")) != AM_OK) return st;
+            m->color[i] = (uint8_t)floor((double)x * 255.0 + 0.5);
+        }
+    }
+    if (at[3] < 0) return AM_OK;
+    if ((st = children(c, at[3], mech, 13, mt, NULL)) != AM_OK) return st;
+    if (mt[0] >= 0) {
+        if ((st = int_of(c, mt[0], 0, 1000000, &v)) != AM_OK) return st;
+        if (v != 0) warn(c, mt[0], "<MatModel> %ld (non-linear) not supported: material %d is linear elastic here", v, id);
+    }
+    for (int i = 2; i <= 6; i++) { /* parameters of the non-linear models: checked, no effect */
+        double x;
+        if (mt[i] >= 0 && (st = double_of(c, mt[i], &x)) != AM_OK) return st;
+    }
+    if (mt[1] >= 0 && (st = real_in(c, mt[1], &m->E, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
+    if (mt[7] >= 0 && (st = real_in(c, mt[7], &m->density, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
+    if (mt[8] >= 0 && (st = real_in(c, mt[8], &m->poisson, 0, 0, 0.5, "must be in [0, 0.5)")) != AM_OK) return st;
+    if (mt[8] >= 0 && !(m->poisson < AM_P(0.5)))
+        return verr(c, mt[8], AM_ERR_RANGE, "<Poissons_Ratio> 0.5 must be in [0, 0.5)");
+    if (mt[9] >= 0 && (st = real_of(c, mt[9], &m->cte)) != AM_OK) return st;
+    if (mt[10] >= 0 && (st = real_of(c, mt[10], &m->phase)) != AM_OK) return st;
+    if (mt[11] >= 0 && (st = real_in(c, mt[11], &m->mu_static, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (mt[12] >= 0 && (st = real_in(c, mt[12], &m->mu_kinetic, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    return AM_OK;
+}
+
+static am_status read_palette(vctx* c, int n, am_palette* pal)
+{
+    am_status st;
+    pal->count = 0;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+        if (!am_xml_is(c->d, k, "Material")) {
+            unsupported(c, k);
+            continue;
+        }
+        if (pal->count >= AM_MAX_MATERIALS)
+            return verr(c, k, AM_ERR_CAPACITY, "more than %d materials (the palette's capacity)", AM_MAX_MATERIALS);
+        if ((st = read_material(c, k, &pal->mat[pal->count], pal->count + 1)) != AM_OK) return st;
+        pal->count++;
+    }
+    if (pal->count == 0) return verr(c, n, AM_ERR_PARSE, "<Palette> has no <Material>");
+    /* names unique, as amorph looks materials up by name */
+    for (int i = 1; i < pal->count; i++) {
+        char base[AM_NAME_MAX];
+        memcpy(base, pal->mat[i].name, sizeof base);
+        for (int suffix = 2, clash = 1; clash && suffix < 100; suffix++) {
+            clash = 0;
+            for (int j = 0; j < i; j++) clash |= strcmp(pal->mat[j].name, pal->mat[i].name) == 0;
+            if (clash) {
+                char tail[8];
+                int tl = snprintf(tail, sizeof tail, "_%d", suffix);
+                int bl = (int)strlen(base);
+                if (bl + tl > AM_NAME_MAX - 1) bl = AM_NAME_MAX - 1 - tl;
+                memset(pal->mat[i].name, 0, sizeof pal->mat[i].name);
+                memcpy(pal->mat[i].name, base, (size_t)bl);
+                memcpy(pal->mat[i].name + bl, tail, (size_t)tl);
+            }
+        }
+    }
+    return AM_OK;
+}
+
+static int b64_value(char ch)
+{
+    if (ch >= 'A' && ch <= 'Z') return ch - 'A';
+    if (ch >= 'a' && ch <= 'z') return ch - 'a' + 26;
+    if (ch >= '0' && ch <= '9') return ch - '0' + 52;
+    if (ch == '+') return 62;
+    if (ch == '/') return 63;
+    return -1;
+}
+
+/* base64 text -> bytes in place (blanks skipped, '=' padding ends it); -1 on a bad character */
+static long b64_decode(char* s, long n)
+{
+    long o = 0;
+    unsigned acc = 0;
+    int bits = 0;
+    for (long i = 0; i < n; i++) {
+        if (is_blank(s[i])) continue;
+        if (s[i] == '=') break;
+        int v = b64_value(s[i]);
+        if (v < 0) return -1;
+        acc = (acc << 6) | (unsigned)v;
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            s[o++] = (char)((acc >> bits) & 0xFF);
+        }
+    }
+    return o;
+}
+
+enum { COMP_ASCII, COMP_BASE64 };
+
+static am_status read_structure(vctx* c, int n, am_lattice* lat)
+{
+    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data"};
+    int at[MAX_TAGS];
+    am_status st;
+    int comp = COMP_BASE64; /* VoxCAD's reader: no Compression attribute means BASE64 */
+    int a = am_xml_attr_find(c->d, n, "Compression");
+    if (a >= 0) {
+        char v[VXA_VALUE_MAX];
+        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (!strcmp(v, "ASCII_READABLE")) comp = COMP_ASCII;
+        else if (!strcmp(v, "BASE64")) comp = COMP_BASE64;
+        else if (!strcmp(v, "ZLIB") || !strcmp(v, "QT_ZLIB"))
+            return verr(c, n, AM_ERR_PARSE,
+                        "Compression=\"%s\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64",
+                        v);
+        else
+            return verr(c, n, AM_ERR_PARSE, "Compression=\"%.*s\" is not supported (ASCII_READABLE or BASE64)", VXA_SHOW, flat(v));
+    }
+    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    long dim[3];
+    for (int i = 0; i < 3; i++) {
+        if (at[i] < 0) return verr(c, n, AM_ERR_PARSE, "<Structure> has no <%s>", tags[i]);
+        if ((st = int_of(c, at[i], 1, 1000000000L, &dim[i])) != AM_OK) return st;
+        if (dim[i] > AM_MAX_DIM)
+            return verr(c, at[i], AM_ERR_CAPACITY, "<%s> %ld exceeds the %s profile's %d cells per side", tags[i], dim[i],
+                        AM_PROFILE_NAME, AM_MAX_DIM);
+    }
+    if (at[3] < 0) return verr(c, n, AM_ERR_PARSE, "<Structure> has no <Data>");
+    lat->nx = (int)dim[0];
+    lat->ny = (int)dim[1];
+    lat->nz = (int)dim[2];
+    long per = dim[0] * dim[1];
+    int z = 0;
+    char buf[VXA_LAYER_MAX];
+    for (int k = c->d->node[at[3]].child; k >= 0; k = c->d->node[k].next) {
+        if (!am_xml_is(c->d, k, "Layer")) {
+            unsupported(c, k);
+            continue;
+        }
+        if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <Layer> elements than Z_Voxels = %d", lat->nz);
+        long len = 0;
+        if ((st = text_of(c, k, buf, sizeof buf, &len)) != AM_OK) return st;
+        if (comp == COMP_BASE64 && (len = b64_decode(buf, len)) < 0)
+            return verr(c, k, AM_ERR_PARSE, "layer %d: bad base64 data", z);
+        if (len != per)
+            return verr(c, k, AM_ERR_PARSE, "layer %d has %ld cells, expected %ld (X_Voxels x Y_Voxels = %d x %d)", z, len, per,
+                        lat->nx, lat->ny);
+        for (long i = 0; i < per; i++) {
+            int v = comp == COMP_ASCII ? buf[i] - '0' : (unsigned char)buf[i];
+            if (v < 0 || v > lat->palette.count) {
+                char shown[16];
+                unsigned char u = (unsigned char)buf[i];
+                if (comp == COMP_ASCII && u > 0x20 && u < 0x7f) snprintf(shown, sizeof shown, "'%c'", buf[i]);
+                else snprintf(shown, sizeof shown, "byte %d", u);
+                return verr(c, k, AM_ERR_RANGE,
+                            "layer %d: cell %ld (x = %ld, y = %ld) is %s, not a material number 0..%d%s", z, i, i % dim[0],
+                            i / dim[0], shown, lat->palette.count, comp == COMP_ASCII ? " (written as '0' + number)" : "");
+            }
+            lat->cell[per * z + i] = (uint8_t)v;
+        }
+        z++;
+    }
+    if (z < lat->nz) return verr(c, at[3], AM_ERR_PARSE, "<Data> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    return AM_OK;
+}
+
+static am_status read_vxc(vctx* c, int n, am_lattice* lat)
+{
+    static const char* const tags[] = {"Lattice", "Voxel", "Palette", "Structure"};
+    int at[MAX_TAGS];
+    am_status st;
+    int a = am_xml_attr_find(c->d, n, "Version");
+    if (a >= 0) {
+        char v[VXA_VALUE_MAX];
+        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        double ver = atof(v);
+        if (ver < 0.925)
+            return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%.*s\">: only versions 0.93 and 0.94 are read", VXA_SHOW, flat(v));
+        if (ver > 0.945) warn(c, n, "<VXC Version=\"%.*s\"> is newer than 0.94: read as 0.94", VXA_SHOW, flat(v));
+    }
+    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    if (at[0] >= 0 && (st = read_lattice(c, at[0], lat)) != AM_OK) return st;
+    if (at[1] >= 0 && (st = read_voxel(c, at[1])) != AM_OK) return st;
+    if (at[2] < 0) return verr(c, n, AM_ERR_PARSE, "<VXC> has no <Palette>");
+    if ((st = read_palette(c, at[2], &lat->palette)) != AM_OK) return st;
+    if (at[3] < 0) return verr(c, n, AM_ERR_PARSE, "<VXC> has no <Structure>");
+    return read_structure(c, at[3], lat);
+}
+
+/* ---- Simulator and Environment ----------------------------------------------------------- */
+
+static am_status read_simulator(vctx* c, int n, am_lattice* lat)
+{
+    static const char* const tags[] = {"Integration", "Damping", "Collisions"};
+    static const char* const integ[] = {"Integrator", "DtFrac"};
+    static const char* const damp[] = {"BondDampingZ", "ColDampingZ", "SlowDampingZ"};
+    static const char* const coll[] = {"SelfColEnabled", "ColSystem", "CollisionHorizon"};
+    int at[MAX_TAGS], it[MAX_TAGS];
+    am_status st;
+    long v;
+    am_env* env = &c->info->env;
+    if ((st = children(c, n, tags, 3, at, NULL)) != AM_OK) return st;
+    if (at[0] >= 0) {
+        if ((st = children(c, at[0], integ, 2, it, NULL)) != AM_OK) return st;
+        if (it[0] >= 0) {
+            if ((st = int_of(c, it[0], 0, 1000000, &v)) != AM_OK) return st;
+            if (v != 0) warn(c, it[0], "<Integrator> %ld not supported: amorph integrates with semi-implicit Euler", v);
+        }
+        if (it[1] >= 0) {
+            /* a setting of Voxelyze's integrator: amorph's is stable to about 0.4 of its dt_rec
+             * (docs/physics.md), so a larger fraction keeps amorph's default */
+            am_param f = AM_P(0);
+            if ((st = real_in(c, it[1], &f, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
+            if (f > env->dt_frac)
+                warn(c, it[1], "<DtFrac> %g is above the step amorph's integrator is stable at: %g used (amorph sim --dt-frac "
+                               "overrides)", (double)f, (double)env->dt_frac);
+            else
+                env->dt_frac = f;
+        }
+    }
+    if (at[1] >= 0) {
+        if ((st = children(c, at[1], damp, 3, it, NULL)) != AM_OK) return st;
+        for (int i = 0; i < 3; i++) {
+            am_param z = AM_P(0);
+            if (it[i] < 0) continue;
+            if ((st = real_in(c, it[i], &z, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+            for (int k = 0; k < lat->palette.count; k++) {
+                am_material* m = &lat->palette.mat[k];
+                if (i == 0) m->zeta_internal = z;
+                else if (i == 1) m->zeta_collision = z;
+                else m->zeta_global = z;
+            }
+        }
+    }
+    if (at[2] >= 0) {
+        if ((st = children(c, at[2], coll, 3, it, NULL)) != AM_OK) return st;
+        if (it[0] >= 0 && (st = bool_of(c, it[0], &env->collisions)) != AM_OK) return st;
+        for (int i = 1; i < 3; i++) /* how Voxelyze finds collision pairs: checked, no effect here */
+            if (it[i] >= 0 && (st = int_of(c, it[i], 0, 1000000000L, &v)) != AM_OK) return st;
+    }
+    return AM_OK;
+}
+
+/* <Boundary_Conditions>, <Fixed_Regions>, <Forced_Regions>: a count and regions (not supported) */
+static am_status read_regions(vctx* c, int n, const char* count_tag)
+{
+    const char* const tags[] = {count_tag};
+    int at[MAX_TAGS];
+    long v;
+    am_status st = children(c, n, tags, 1, at, "FRegion");
+    if (st != AM_OK) return st;
+    if (at[0] >= 0 && (st = int_of(c, at[0], 0, 1000000000L, &v)) != AM_OK) return st;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next)
+        if (am_xml_is(c->d, k, "FRegion"))
+            warn(c, k, "unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material instead)");
+    return AM_OK;
+}
+
+static am_status read_environment(vctx* c, int n)
+{
+    static const char* const tags[] = {"Boundary_Conditions", "Fixed_Regions", "Forced_Regions", "Gravity", "Thermal"};
+    static const char* const grav[] = {"GravEnabled", "GravAcc", "FloorEnabled"};
+    static const char* const therm[] = {"TempEnabled", "TempAmplitude", "TempAmp", "TempBase", "VaryTempEnabled", "TempPeriod"};
+    int at[MAX_TAGS], it[MAX_TAGS];
+    am_status st;
+    am_env* env = &c->info->env;
+    if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
+    if (at[0] >= 0 && (st = read_regions(c, at[0], "NumBCs")) != AM_OK) return st;
+    if (at[1] >= 0 && (st = read_regions(c, at[1], "NumFixed")) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_regions(c, at[2], "NumForced")) != AM_OK) return st;
+    if (at[3] >= 0) {
+        /* VoxCAD's reader: inside <Gravity> a missing switch is off, a missing GravAcc -9.81 */
+        int on = 0;
+        double acc = -9.81;
+        if ((st = children(c, at[3], grav, 3, it, NULL)) != AM_OK) return st;
+        if (it[0] >= 0 && (st = bool_of(c, it[0], &on)) != AM_OK) return st;
+        if (it[1] >= 0 && (st = double_of(c, it[1], &acc)) != AM_OK) return st;
+        env->floor = 0;
+        if (it[2] >= 0 && (st = bool_of(c, it[2], &env->floor)) != AM_OK) return st;
+        if (on && acc > 0)
+            return verr(c, it[1], AM_ERR_RANGE, "<GravAcc> %.9g points up: amorph's gravity pulls along -z (GravAcc <= 0)", acc);
+        env->gravity = on ? (am_param)-acc : AM_P(0);
+    }
+    if (at[4] >= 0) {
+        /* VoxCAD's reader: missing switches are off, TempBase 25, TempPeriod 0.1 s; an old file's
+         * TempAmp is the peak temperature, so its amplitude is TempAmp - TempBase */
+        int enabled = 0, vary = 0;
+        double amp = 0, amp_old = 0, base = 25, period = 0.1;
+        if ((st = children(c, at[4], therm, 6, it, NULL)) != AM_OK) return st;
+        if (it[0] >= 0 && (st = bool_of(c, it[0], &enabled)) != AM_OK) return st;
+        if (it[1] >= 0 && (st = double_of(c, it[1], &amp)) != AM_OK) return st;
+        if (it[2] >= 0 && (st = double_of(c, it[2], &amp_old)) != AM_OK) return st;
+        if (it[3] >= 0 && (st = double_of(c, it[3], &base)) != AM_OK) return st;
+        if (it[4] >= 0 && (st = bool_of(c, it[4], &vary)) != AM_OK) return st;
+        if (it[5] >= 0 && (st = double_of(c, it[5], &period)) != AM_OK) return st;
+        if (it[1] < 0 && it[2] >= 0) amp = amp_old - base;
+        if (!(fabs(amp) <= 1e30)) return verr(c, at[4], AM_ERR_RANGE, "<Thermal>: the temperature amplitude is too large");
+        env->temp_base = AM_P(0);
+        env->temp_amplitude = AM_P(0);
+        if (enabled && vary) {
+            if (!(period > 0))
+                return verr(c, it[5] >= 0 ? it[5] : at[4], AM_ERR_RANGE, "<TempPeriod> %.9g must be greater than 0", period);
+            env->temp_amplitude = (am_param)amp;
+            c->info->temp_period = period;
+        } else if (enabled) {
+            env->temp_base = (am_param)amp; /* a constant temperature TempBase + TempAmplitude */
+        }
+    }
+    return AM_OK;
+}
+
+/* ---- Amorph: the exact values VXA has no place for ---------------------------------------- */
+
+static am_status read_amorph(vctx* c, int n, am_lattice* lat)
+{
+    static const char* const tags[] = {"CTEMode", "PeriodSteps", "TempOffset", "Lift", "ZetaInternalScale", "ZetaGlobalScale",
+                                       "DtFrac"};
+    static const char* const mtags[] = {"CTE", "ZetaInternal", "ZetaGlobal", "ZetaCollision", "Fixed"};
+    int at[MAX_TAGS], mt[MAX_TAGS];
+    int cte_given[AM_MAX_MATERIALS] = {0};
+    am_status st;
+    long v;
+    am_env* env = &c->info->env;
+    int a = am_xml_attr_find(c->d, n, "Version");
+    char ver[VXA_VALUE_MAX] = "";
+    if (a >= 0 && am_xml_attr_text(c->d, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
+    if (strcmp(ver, "1") != 0)
+        return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%.*s\">: this build reads version 1", VXA_SHOW, ver);
+    if ((st = children(c, n, tags, 7, at, "Material")) != AM_OK) return st;
+    if (at[0] >= 0) {
+        char m[VXA_VALUE_MAX];
+        if ((st = text_of(c, at[0], m, sizeof m, NULL)) != AM_OK) return st;
+        if (!strcmp(m, "volumetric")) env->cte_mode = AM_CTE_VOLUMETRIC;
+        else if (!strcmp(m, "linear")) env->cte_mode = AM_CTE_LINEAR;
+        else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%.*s' is not volumetric or linear", VXA_SHOW, flat(m));
+    }
+    if (at[1] >= 0) {
+        if ((st = int_of(c, at[1], 1, 1000000000L, &v)) != AM_OK) return st;
+        env->period_steps = (int)v;
+        c->info->period_steps_given = 1;
+    }
+    if (at[2] >= 0 && (st = real_of(c, at[2], &env->temp_base)) != AM_OK) return st;
+    if (at[3] >= 0 && (st = real_in(c, at[3], &env->lift, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+        if (!am_xml_is(c->d, k, "Material")) continue;
+        char idv[VXA_VALUE_MAX] = "";
+        int ia = am_xml_attr_find(c->d, k, "ID");
+        if (ia >= 0 && am_xml_attr_text(c->d, ia, idv, sizeof idv, NULL) != AM_OK) idv[0] = 0;
+        char* end = NULL;
+        long id = idv[0] ? strtol(idv, &end, 10) : 0;
+        if (!idv[0] || *end || id < 1 || id > lat->palette.count)
+            return verr(c, k, AM_ERR_PARSE, "<Material ID=\"%.*s\"> in <Amorph>: the ID must be a material number 1..%d", VXA_SHOW,
+                        idv, lat->palette.count);
+        am_material* m = &lat->palette.mat[id - 1];
+        if ((st = children(c, k, mtags, 5, mt, NULL)) != AM_OK) return st;
+        if (mt[0] >= 0 && (st = real_of(c, mt[0], &m->cte)) != AM_OK) return st;
+        cte_given[id - 1] |= mt[0] >= 0;
+        if (mt[1] >= 0 && (st = real_in(c, mt[1], &m->zeta_internal, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+        if (mt[2] >= 0 && (st = real_in(c, mt[2], &m->zeta_global, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+        if (mt[3] >= 0 && (st = real_in(c, mt[3], &m->zeta_collision, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+        if (mt[4] >= 0 && (st = bool_of(c, mt[4], &m->fixed)) != AM_OK) return st;
+    }
+    /* a volumetric CTE not given exactly: three times the linear one (the same small strains) */
+    if (env->cte_mode == AM_CTE_VOLUMETRIC)
+        for (int k = 0; k < lat->palette.count; k++)
+            if (!cte_given[k]) lat->palette.mat[k].cte = AM_P(3) * lat->palette.mat[k].cte;
+    return AM_OK;
+}
+
+/* ---- reading ----------------------------------------------------------------------------- */
+
+int am_vxa_sniff(const char* text)
+{
+    if (!text) return 0;
+    const char* p = text;
+    if ((unsigned char)p[0] == 0xEF && (unsigned char)p[1] == 0xBB && (unsigned char)p[2] == 0xBF) p += 3;
+    while (is_blank(*p)) p++;
+    return *p == '<';
+}
+
+am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
+                       int errsz)
+{
+    if (!lat || !info || !work || !text) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
+    memset(lat, 0, sizeof *lat);
+    memset(info, 0, sizeof *info);
+    lat->voxel_size = AM_P(0.001); /* VoxCAD's default Lattice_Dim */
+    info->env = am_default_env();
+    info->env.cte_mode = AM_CTE_LINEAR; /* VXA's CTE is linear */
+    info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
+    am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
+    if (st != AM_OK) return st;
+    vctx c = {work, info, 0, err, errsz};
+    if (!am_xml_is(work, 0, "VXA"))
+        return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%.*s>, expected <VXA>", NAME(&c, 0));
+    int a = am_xml_attr_find(work, 0, "Version");
+    if (a >= 0) {
+        char v[VXA_VALUE_MAX];
+        if (am_xml_attr_text(work, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (strcmp(v, "1.0") != 0 && strcmp(v, "1.1") != 0)
+            warn(&c, 0, "<VXA Version=\"%.*s\">: this reader knows versions 1.0 and 1.1", VXA_SHOW, flat(v));
+    }
+    static const char* const tags[] = {"VXC", "Simulator", "Environment", "Amorph"};
+    int at[MAX_TAGS];
+    if ((st = children(&c, 0, tags, 4, at, NULL)) != AM_OK) return st;
+    if (at[0] < 0) return verr(&c, 0, AM_ERR_PARSE, "<VXA> has no <VXC> element (the robot)");
+    if ((st = read_vxc(&c, at[0], lat)) != AM_OK) return st;
+    if (at[1] >= 0 && (st = read_simulator(&c, at[1], lat)) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_environment(&c, at[2])) != AM_OK) return st;
+    if (at[3] >= 0 && (st = read_amorph(&c, at[3], lat)) != AM_OK) return st;
+    return AM_OK;
+}
+
+int am_vxa_period_steps(double period_s, double dt)
+{
+    double k = dt > 0 ? period_s / dt : 0;
+    if (!(k >= 1)) return 1;
+    if (k >= 1e9) return 1000000000;
+    return (int)floor(k + 0.5);
+}
+
+/* ---- writing ----------------------------------------------------------------------------- */
+
+typedef struct wbuf {
+    char* buf;
+    long cap, len;
+    int full;
+} wbuf;
+
+static void put(wbuf* w, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void put(wbuf* w, const char* fmt, ...)
+{
+    if (w->full) return;
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(w->buf + w->len, (size_t)(w->cap - w->len), fmt, ap);
+    va_end(ap);
+    if (n < 0 || (long)n >= w->cap - w->len) {
+        w->full = 1;
+        w->buf[w->len] = 0;
+        return;
+    }
+    w->len += n;
+}
+
+/* the shortest "%.Ng" that reads back (as am_param when real, else as double) to the same value,
+ * preferring a form without an exponent (1000000 rather than 1e+06, but 1e-30 as is) */
+static const char* num(char out[40], double v, int real)
+{
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+    const int max = 17;
+    (void)real; /* am_param is double: one kind of number */
+#else
+    const int max = real ? 9 : 17;
+#endif
+    int first = 0;
+    for (int digits = 1; digits <= max; digits++) {
+        snprintf(out, 40, "%.*g", digits, v);
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+        int same = strtod(out, NULL) == v;
+#else
+        int same = real ? strtof(out, NULL) == (am_param)v : strtod(out, NULL) == v;
+#endif
+        if (!same) continue;
+        if (!strchr(out, 'e')) return out;
+        if (!first) first = digits;
+    }
+    int digits = first >= 1 && first <= 17 ? first : 17;
+    snprintf(out, 40, "%.*g", digits, v);
+    return out;
+}
+
+static int name_ok(const char* s)
+{
+    const char* nul = memchr(s, 0, AM_NAME_MAX);
+    if (!nul || nul == s) return 0;
+    for (; s < nul; s++) {
+        char ch = *s;
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '-'))
+            return 0;
+    }
+    return 1;
+}
+
+/* the checks of am_lattice_format and am_model_build, so what is written reads back */
+static am_status check_input(const am_lattice* lat, const am_env* env, double dt, char* err, int errsz)
+{
+    if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa format: size %d %d %d outside 1..%d", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
+    if (!am_param_finite(lat->voxel_size) || !(lat->voxel_size > AM_P(0)))
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa format: the voxel size must be a positive finite number");
+    const am_palette* pal = &lat->palette;
+    if (pal->count < 1 || pal->count > AM_MAX_MATERIALS)
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa format: palette count %d outside 1..%d", pal->count, AM_MAX_MATERIALS);
+    for (int i = 0; i < pal->count; i++) {
+        const am_material* m = &pal->mat[i];
+        if (!name_ok(m->name)) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: material %d has a bad name", i + 1);
+        if (!(m->E > AM_P(0)) || !am_param_finite(m->E) || !(m->density > AM_P(0)) || !am_param_finite(m->density) ||
+            !(m->poisson >= AM_P(0) && m->poisson < AM_P(0.5)) || !am_param_finite(m->cte) || !am_param_finite(m->phase) ||
+            !(m->mu_static >= AM_P(0)) || !am_param_finite(m->mu_static) || !(m->mu_kinetic >= AM_P(0)) || !am_param_finite(m->mu_kinetic) ||
+            !(m->zeta_internal >= AM_P(0)) || !am_param_finite(m->zeta_internal) || !(m->zeta_global >= AM_P(0)) ||
+            !am_param_finite(m->zeta_global) || !(m->zeta_collision >= AM_P(0)) || !am_param_finite(m->zeta_collision) ||
+            (m->fixed != 0 && m->fixed != 1))
+            return am_fail(err, errsz, AM_ERR_ARG, "vxa format: material '%s' has a value outside its range", m->name);
+    }
+    int cells = lat->nx * lat->ny * lat->nz;
+    for (int i = 0; i < cells; i++)
+        if (lat->cell[i] > pal->count)
+            return am_fail(err, errsz, AM_ERR_ARG, "vxa format: cell %d holds material id %d, the palette has %d", i, lat->cell[i],
+                           pal->count);
+    if (!(env->gravity >= AM_P(0)) || !am_param_finite(env->gravity) || env->period_steps < 1 || !(env->dt_frac > AM_P(0)) ||
+        !am_param_finite(env->dt_frac) || !am_param_finite(env->temp_base) || !am_param_finite(env->temp_amplitude) || !am_param_finite(env->lift) ||
+        !(env->lift >= AM_P(0)) || !(env->zeta_internal_scale >= AM_P(0)) || !am_param_finite(env->zeta_internal_scale) ||
+        !(env->zeta_global_scale >= AM_P(0)) || !am_param_finite(env->zeta_global_scale) ||
+        (env->cte_mode != AM_CTE_VOLUMETRIC && env->cte_mode != AM_CTE_LINEAR))
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa format: an environment value is outside its range");
+    if (!(dt > 0) || !(dt < 1e30)) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: the time step must be a positive number");
+    return AM_OK;
+}
+
+am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
+                        int errsz)
+{
+    if (len) *len = 0;
+    if (!lat || !env || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: no lattice, environment or buffer");
+    buf[0] = 0;
+    am_status st = check_input(lat, env, dt, err, errsz);
+    if (st != AM_OK) return st;
+    const am_palette* pal = &lat->palette;
+    const am_material* m0 = &pal->mat[0];
+    int vol = env->cte_mode == AM_CTE_VOLUMETRIC;
+    char a[40], b[40];
+    wbuf w = {buf, cap, 0, 0};
+
+    put(&w, "<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n<VXA Version=\"1.1\">\n");
+    put(&w, "  <!-- written by amorph (docs/vxa.md); VoxCAD ignores the <Amorph> element at the end -->\n");
+    put(&w, "  <Simulator>\n    <Integration>\n      <Integrator>0</Integrator>\n");
+    put(&w, "      <DtFrac>%s</DtFrac>\n    </Integration>\n", num(a, (double)env->dt_frac, 1));
+    /* one damping ratio per kind in VXA: material 1's, scaled as the simulator scales it */
+    put(&w, "    <Damping>\n      <BondDampingZ>%s</BondDampingZ>\n",
+        num(a, (double)(m0->zeta_internal * env->zeta_internal_scale), 1));
+    put(&w, "      <ColDampingZ>%s</ColDampingZ>\n", num(a, (double)m0->zeta_collision, 1));
+    put(&w, "      <SlowDampingZ>%s</SlowDampingZ>\n    </Damping>\n",
+        num(a, (double)(m0->zeta_global * env->zeta_global_scale), 1));
+    put(&w, "    <Collisions>\n      <SelfColEnabled>%d</SelfColEnabled>\n      <ColSystem>3</ColSystem>\n"
+            "      <CollisionHorizon>3</CollisionHorizon>\n    </Collisions>\n  </Simulator>\n",
+        env->collisions ? 1 : 0);
+
+    put(&w, "  <Environment>\n    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
+    put(&w, "      <GravAcc>%s</GravAcc>\n      <FloorEnabled>%d</FloorEnabled>\n    </Gravity>\n",
+        env->gravity > AM_P(0) ? num(a, -(double)env->gravity, 1) : "-9.81", env->floor ? 1 : 0);
+    /* VoxCAD's temperature: TempBase + TempAmplitude sin(2 pi t / TempPeriod + phase); expansion
+     * follows the difference to TempBase. A constant offset alone is VaryTempEnabled 0. */
+    int vary = env->temp_amplitude != AM_P(0) || env->temp_base == AM_P(0);
+    double amp = vary ? (double)env->temp_amplitude : (double)env->temp_base;
+    put(&w, "    <Thermal>\n      <TempEnabled>1</TempEnabled>\n      <TempAmplitude>%s</TempAmplitude>\n", num(a, amp, 1));
+    put(&w, "      <TempAmp>%s</TempAmp>\n      <TempBase>%s</TempBase>\n", num(a, VXA_TEMP_BASE + amp, 0),
+        num(b, VXA_TEMP_BASE, 0));
+    put(&w, "      <VaryTempEnabled>%d</VaryTempEnabled>\n      <TempPeriod>%s</TempPeriod>\n    </Thermal>\n  </Environment>\n",
+        vary, num(a, (double)env->period_steps * dt, 0));
+
+    put(&w, "  <VXC Version=\"0.94\">\n    <Lattice>\n      <Lattice_Dim>%s</Lattice_Dim>\n", num(a, (double)lat->voxel_size, 1));
+    put(&w, "      <X_Dim_Adj>1</X_Dim_Adj>\n      <Y_Dim_Adj>1</Y_Dim_Adj>\n      <Z_Dim_Adj>1</Z_Dim_Adj>\n"
+            "      <X_Line_Offset>0</X_Line_Offset>\n      <Y_Line_Offset>0</Y_Line_Offset>\n"
+            "      <X_Layer_Offset>0</X_Layer_Offset>\n      <Y_Layer_Offset>0</Y_Layer_Offset>\n    </Lattice>\n");
+    put(&w, "    <Voxel>\n      <Vox_Name>BOX</Vox_Name>\n      <X_Squeeze>1</X_Squeeze>\n      <Y_Squeeze>1</Y_Squeeze>\n"
+            "      <Z_Squeeze>1</Z_Squeeze>\n    </Voxel>\n    <Palette>\n");
+    for (int i = 0; i < pal->count; i++) {
+        const am_material* m = &pal->mat[i];
+        put(&w, "      <Material ID=\"%d\">\n        <MatType>0</MatType>\n        <Name>%s</Name>\n        <Display>\n", i + 1,
+            m->name);
+        static const char* const rgba[4] = {"Red", "Green", "Blue", "Alpha"};
+        for (int k = 0; k < 4; k++) /* 6 digits of c / 255 read back to c */
+            put(&w, "          <%s>%.6g</%s>\n", rgba[k], m->color[k] / 255.0, rgba[k]);
+        put(&w, "        </Display>\n        <Mechanical>\n          <MatModel>0</MatModel>\n");
+        put(&w, "          <Elastic_Mod>%s</Elastic_Mod>\n", num(a, (double)m->E, 1));
+        put(&w, "          <Plastic_Mod>0</Plastic_Mod>\n          <Yield_Stress>0</Yield_Stress>\n          <FailModel>0</FailModel>\n"
+                "          <Fail_Stress>0</Fail_Stress>\n          <Fail_Strain>0</Fail_Strain>\n");
+        put(&w, "          <Density>%s</Density>\n", num(a, (double)m->density, 1));
+        put(&w, "          <Poissons_Ratio>%s</Poissons_Ratio>\n", num(a, (double)m->poisson, 1));
+        /* VXA's CTE is linear: a volumetric one is written as its small-strain equivalent / 3 */
+        put(&w, "          <CTE>%s</CTE>\n", num(a, vol ? (double)m->cte / 3.0 : (double)m->cte, vol ? 0 : 1));
+        put(&w, "          <MaterialTempPhase>%s</MaterialTempPhase>\n", num(a, (double)m->phase, 1));
+        put(&w, "          <uStatic>%s</uStatic>\n", num(a, (double)m->mu_static, 1));
+        put(&w, "          <uDynamic>%s</uDynamic>\n        </Mechanical>\n      </Material>\n", num(a, (double)m->mu_kinetic, 1));
+    }
+    put(&w, "    </Palette>\n    <Structure Compression=\"ASCII_READABLE\">\n");
+    put(&w, "      <X_Voxels>%d</X_Voxels>\n      <Y_Voxels>%d</Y_Voxels>\n      <Z_Voxels>%d</Z_Voxels>\n      <Data>\n",
+        lat->nx, lat->ny, lat->nz);
+    long per = (long)lat->nx * lat->ny;
+    for (int z = 0; z < lat->nz && !w.full; z++) {
+        put(&w, "        <Layer><![CDATA[");
+        if (w.full || w.cap - w.len < per + 1) {
+            w.full = 1;
+            break;
+        }
+        for (long i = 0; i < per; i++) w.buf[w.len++] = (char)('0' + lat->cell[per * z + i]);
+        w.buf[w.len] = 0;
+        put(&w, "]]></Layer>\n");
+    }
+    put(&w, "      </Data>\n    </Structure>\n  </VXC>\n");
+
+    put(&w, "  <Amorph Version=\"1\">\n    <CTEMode>%s</CTEMode>\n    <PeriodSteps>%d</PeriodSteps>\n",
+        vol ? "volumetric" : "linear", env->period_steps);
+    put(&w, "    <TempOffset>%s</TempOffset>\n", num(a, (double)env->temp_base, 1));
+    put(&w, "    <Lift>%s</Lift>\n", num(a, (double)env->lift, 1));
+    put(&w, "    <ZetaInternalScale>%s</ZetaInternalScale>\n", num(a, (double)env->zeta_internal_scale, 1));
+    put(&w, "    <ZetaGlobalScale>%s</ZetaGlobalScale>\n", num(a, (double)env->zeta_global_scale, 1));
+    put(&w, "    <DtFrac>%s</DtFrac>\n", num(a, (double)env->dt_frac, 1));
+    for (int i = 0; i < pal->count; i++) {
+        const am_material* m = &pal->mat[i];
+        put(&w, "    <Material ID=\"%d\">", i + 1);
+        if (vol) put(&w, "<CTE>%s</CTE>", num(a, (double)m->cte, 1));
+        put(&w, "<ZetaInternal>%s</ZetaInternal>", num(a, (double)m->zeta_internal, 1));
+        put(&w, "<ZetaGlobal>%s</ZetaGlobal>", num(a, (double)m->zeta_global, 1));
+        put(&w, "<ZetaCollision>%s</ZetaCollision>", num(a, (double)m->zeta_collision, 1));
+        put(&w, "<Fixed>%d</Fixed></Material>\n", m->fixed);
+    }
+    put(&w, "  </Amorph>\n</VXA>\n");
+    if (w.full) {
+        buf[0] = 0;
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "vxa format: the text needs more than the %ld bytes given", cap);
+    }
+    if (len) *len = w.len;
+    return AM_OK;
+}

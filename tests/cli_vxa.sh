@@ -1,0 +1,114 @@
+# tests/cli_vxa.sh: VoxCAD files through the command (docs/vxa.md): amorph export --vxa, amorph sim
+# FILE.vxa, warnings for unsupported tags, exit status 2 with one "FILE:LINE: problem" line for
+# malformed or oversized files, and no output file left behind by a failed export.
+. tests/shlib.sh
+
+D=$TMPD/vxa
+mkdir -p "$D"
+hash_of() { grep '^hash = ' "$1" | cut -d' ' -f3; }
+# the size of the scenes, within every profile
+N=$("$AMORPH" --help | sed -n 's/.*workspace up to \([0-9]*\)^3.*/\1/p')
+S=6; [ "$N" -ge 8 ] && S=8
+
+# export then import through the command: the same robot simulates to the same state
+expect_ok "$AMORPH" export --scene sphere:$S --vxa "$D/sphere.vxa"
+if head -n 2 "$D/sphere.vxa" | grep -q '<VXA Version="1.1">' && grep -q '<Structure Compression="ASCII_READABLE">' "$D/sphere.vxa"
+then ok; else ko "sphere.vxa does not look like VXA 1.1"; fi
+"$AMORPH" sim --scene sphere:$S --cycles 2 >"$D/direct.out" 2>&1
+"$AMORPH" sim "$D/sphere.vxa" --cycles 2 >"$D/vxa.out" 2>"$D/vxa.err"
+if [ -n "$(hash_of "$D/direct.out")" ] && [ "$(hash_of "$D/direct.out")" = "$(hash_of "$D/vxa.out")" ]; then ok
+else ko "sim of the exported VXA differs: $(hash_of "$D/direct.out") vs $(hash_of "$D/vxa.out")"; fi
+if [ ! -s "$D/vxa.err" ]; then ok; else ko "our own VXA gave warnings: $(head -c 300 "$D/vxa.err")"; fi
+
+# the lattice read back from the VXA is the lattice written directly, byte for byte
+expect_ok "$AMORPH" export --scene sphere:$S --lattice "$D/direct.lattice"
+expect_ok "$AMORPH" export "$D/sphere.vxa" --lattice "$D/back.lattice"
+if cmp -s "$D/direct.lattice" "$D/back.lattice"; then ok; else ko "lattice -> vxa -> lattice differs"; fi
+# and a VXA written from a VXA is the same file
+expect_ok "$AMORPH" export "$D/sphere.vxa" --vxa "$D/again.vxa"
+if cmp -s "$D/sphere.vxa" "$D/again.vxa"; then ok; else ko "vxa -> vxa differs"; fi
+
+# a genome exports too, and simulates the same as a VXA file
+expect_ok "$AMORPH" random --repr gmx --size 5 --seed 1 --out "$D/g.genome"
+expect_ok "$AMORPH" export "$D/g.genome" --vxa "$D/g.vxa"
+"$AMORPH" sim "$D/g.genome" --cycles 1 --relax-max 50 >"$D/g1.out" 2>&1
+"$AMORPH" sim "$D/g.vxa" --cycles 1 --relax-max 50 >"$D/g2.out" 2>&1
+if [ -n "$(hash_of "$D/g1.out")" ] && [ "$(hash_of "$D/g1.out")" = "$(hash_of "$D/g2.out")" ]; then ok
+else ko "genome and its VXA simulate differently: $(cat "$D/g1.out" "$D/g2.out" | head -c 600)"; fi
+# to the standard output with '-'
+"$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
+if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi
+
+# a file written the way VoxCAD writes it: it runs, with one warning per unsupported tag
+F=tests/data/voxcad_quadruped.vxa
+"$AMORPH" sim "$F" --cycles 2 --relax-max 400 >"$D/q.out" 2>"$D/q.err"; rc=$?
+if [ $rc -eq 0 ] && grep -q '^voxels = 44$' "$D/q.out" && grep -q '^diverged = 0$' "$D/q.out"; then ok
+else ko "sim $F -> exit $rc: $(head -c 300 "$D/q.out") $(head -c 300 "$D/q.err")"; fi
+for w in "$F:18: warning: unsupported tag <Features> ignored" "$F:23: warning: unsupported tag <StopCondition> ignored" \
+         "$F:86: warning: unsupported tag <IsConductive> ignored" "$F:6: warning: <DtFrac> 0.9 is above"; do
+    if grep -qF "$w" "$D/q.err"; then ok; else ko "missing warning '$w' in: $(cat "$D/q.err")"; fi
+done
+if [ "$(wc -l <"$D/q.err")" -eq 4 ]; then ok; else ko "expected 4 warning lines: $(cat "$D/q.err")"; fi
+# its materials and environment arrive: names made safe, linear CTE, amplitude, damping
+expect_ok "$AMORPH" export "$F" --lattice "$D/q.lattice"
+if grep -q '^material Active__ E=1000000 density=1000 poisson=0.35 cte=0.01 phase=0 mu_s=1 mu_k=0.5 zeta_int=1 zeta_glob=0.01 zeta_col=0.8 color=#ff0000 fixed=0$' "$D/q.lattice"
+then ok; else ko "fixture material: $(grep '^material' "$D/q.lattice")"; fi
+expect_ok "$AMORPH" export "$F" --vxa "$D/q.vxa"
+if grep -q '<CTEMode>linear</CTEMode>' "$D/q.vxa" && grep -q '<TempAmplitude>39</TempAmplitude>' "$D/q.vxa" && \
+   grep -q '<SelfColEnabled>0</SelfColEnabled>' "$D/q.vxa" && grep -q '<GravAcc>-9.81</GravAcc>' "$D/q.vxa"
+then ok; else ko "the fixture's environment did not come through export"; fi
+# command-line flags win over the file's environment
+"$AMORPH" sim "$F" --cycles 1 --relax-max 50 --amplitude 0 --json >"$D/flag.out" 2>/dev/null
+"$AMORPH" sim "$F" --cycles 1 --relax-max 50 --json >"$D/noflag.out" 2>/dev/null
+if grep -q '"fitness"' "$D/flag.out" && ! cmp -s "$D/flag.out" "$D/noflag.out"; then ok; else ko "--amplitude did not override the file"; fi
+
+# an unsupported tag: a warning with its line, never silence, and the run goes on
+sed 's|<Simulator>|<Simulator>\n    <Wobble>1</Wobble>|' "$F" >"$D/wobble.vxa"
+"$AMORPH" sim "$D/wobble.vxa" --cycles 1 --relax-max 20 >"$D/out" 2>"$D/err"; rc=$?
+if [ $rc -eq 0 ] && grep -qxF "$D/wobble.vxa:4: warning: unsupported tag <Wobble> ignored" "$D/err"; then ok
+else ko "unsupported tag: exit $rc, stderr $(cat "$D/err")"; fi
+
+# malformed XML and VXA: exit 2, one line FILE:LINE: problem
+printf '<VXA>\n<VXC>\n</VXA>\n' >"$D/mismatch.vxa"
+expect_fail 2 "^amorph: $D/mismatch.vxa:3: </VXA> does not close <VXC> \(opened on line 2\)$" "$AMORPH" sim "$D/mismatch.vxa"
+printf '<?xml version="1.0"?>\n<VXA>\n<VXC>\n' >"$D/eof.vxa"
+expect_fail 2 "$D/eof.vxa:3: the file ends inside <VXC> \(opened on line 3\)" "$AMORPH" sim "$D/eof.vxa"
+printf '<VXA>\n<VXC Version="0.94">&bogus;</VXC>\n</VXA>\n' >"$D/entity.vxa"
+expect_fail 2 "$D/entity.vxa:2: unknown entity" "$AMORPH" sim "$D/entity.vxa"
+printf '<Robot/>\n' >"$D/root.vxa"
+expect_fail 2 "$D/root.vxa:1: not a VXA file: the root element is <Robot>, expected <VXA>" "$AMORPH" sim "$D/root.vxa"
+sed 's|ASCII_READABLE|ZLIB|' "$F" >"$D/zlib.vxa"
+expect_fail 2 "$D/zlib.vxa:140: Compression=\"ZLIB\" is not supported" "$AMORPH" sim "$D/zlib.vxa"
+sed 's|<!\[CDATA\[011110011110011110011110\]\]>|<![CDATA[0111100111100111100111]]>|' "$F" >"$D/short.vxa"
+expect_fail 2 "$D/short.vxa:147: layer 2 has 22 cells, expected 24" "$AMORPH" sim "$D/short.vxa"
+sed 's|<Elastic_Mod>1e+006</Elastic_Mod>|<Elastic_Mod>stiff</Elastic_Mod>|' "$F" >"$D/junk.vxa"
+expect_fail 2 "$D/junk.vxa:74: <Elastic_Mod>: 'stiff' is not a finite number" "$AMORPH" sim "$D/junk.vxa"
+sed 's|<Poissons_Ratio>0.35</Poissons_Ratio>|<Poissons_Ratio>0.5</Poissons_Ratio>|' "$F" >"$D/range.vxa"
+expect_fail 2 "$D/range.vxa:81: <Poissons_Ratio> 0.5 must be in \[0, 0.5\)" "$AMORPH" sim "$D/range.vxa"
+sed 's|<X_Voxels>6</X_Voxels>|<X_Voxels>999</X_Voxels>|' "$F" >"$D/wide.vxa"
+expect_fail 2 "$D/wide.vxa:141: <X_Voxels> 999 exceeds the (desktop|board) profile's" "$AMORPH" sim "$D/wide.vxa"
+
+# a deeply nested file is refused within the fixed memory
+awk 'BEGIN { printf "<VXA>"; for (i = 0; i < 10000; i++) printf "<a>"; print "" }' >"$D/deep.vxa"
+expect_fail 2 "$D/deep.vxa:1: elements nested deeper than [0-9]+ levels" "$AMORPH" sim "$D/deep.vxa"
+# so is one with more elements than the reader holds (the element past the limit is named)
+awk 'BEGIN { print "<VXA>"; for (i = 0; i < 20000; i++) print "<a/>"; print "</VXA>" }' >"$D/many.vxa"
+expect_fail 2 "$D/many.vxa:[0-9]+: more than [0-9]+ elements \(the XML reader's capacity" "$AMORPH" sim "$D/many.vxa"
+# and one larger than any buffer of the build
+awk 'BEGIN { print "<VXA>"; s = sprintf("%1000s", ""); for (i = 0; i < 5000; i++) print "<!--" s "-->"; print "</VXA>" }' >"$D/huge.vxa"
+expect_fail 2 "huge.vxa.*(larger than|more than)" "$AMORPH" sim "$D/huge.vxa"
+
+# a failed export leaves no file, and does not touch an existing one
+expect_fail 2 "$D/mismatch.vxa:3:" "$AMORPH" export "$D/mismatch.vxa" --vxa "$D/new.vxa"
+if [ ! -e "$D/new.vxa" ]; then ok; else ko "a failed export left $D/new.vxa"; fi
+cp "$D/sphere.vxa" "$D/keep.vxa"
+expect_fail 2 "$D/junk.vxa:74:" "$AMORPH" export "$D/junk.vxa" --vxa "$D/keep.vxa"
+if cmp -s "$D/sphere.vxa" "$D/keep.vxa"; then ok; else ko "a failed export changed an existing file"; fi
+if [ -z "$(ls -A "$D" | grep "\.tmp\.")" ]; then ok; else ko "temporary files left: $(ls -A "$D")"; fi
+
+# usage errors
+expect_fail 2 "export: say what to write" "$AMORPH" export --scene cube:2
+expect_fail 2 "export: name a robot" "$AMORPH" export --vxa "$D/x.vxa"
+expect_fail 2 "export: unknown option '--png'" "$AMORPH" export --scene cube:2 --png x.png
+
+summary cli_vxa.sh

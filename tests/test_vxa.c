@@ -1,0 +1,547 @@
+/* Tests of the XML reader (src/xml.c) and the VXA format (src/format_vxa.c): parser edge cases,
+ * exact round trips, VoxCAD conventions (legacy TempAmp, names, damping, BASE64 layers), warnings,
+ * and one check per malformed input with its status and exact "fname:line: problem" message. */
+#include "amorph.h"
+#include "harness.h"
+
+#include <stdint.h>
+
+static am_xml_doc doc;
+static am_lattice lat_a, lat_b;
+static am_vxa_info info_a, info_b;
+static char text[AM_VXA_TEXT_MAX];
+static char text2[AM_VXA_TEXT_MAX];
+static char big[1L << 20];
+static char msg[512];
+
+/* ---- the XML reader ---------------------------------------------------------------------- */
+
+static am_status xml(const char* t, char* err)
+{
+    err[0] = 0;
+    return am_xml_parse(&doc, t, (long)strlen(t), "t.xml", err, AM_ERR_MAX);
+}
+
+static void expect_xml(const char* t, am_status code, const char* want)
+{
+    char err[AM_ERR_MAX];
+    am_status st = xml(t, err);
+    CHECK(st == code && strcmp(err, want) == 0, "'%.60s': status %d (want %d), message '%s' (want '%s')", t, st, code, err, want);
+}
+
+static void test_xml_basics(void)
+{
+    char err[AM_ERR_MAX], out[256];
+    long len = -1;
+    const char* t = "\xEF\xBB\xBF<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n<!-- top -->\n"
+                    "<a x=\"1\" y = 'two &amp; &quot;three&quot;'>\n  <b>t&lt;&#65;&#x42;&gt;&apos;</b><!-- c -->\n"
+                    "  <c/><?pi data?>\n  <![CDATA[<raw & text>]]>\n</a>\n<!-- after -->\n";
+    CHECK(xml(t, err) == AM_OK, "%s", err);
+    CHECK(doc.nnodes == 3, "nodes %d", doc.nnodes);
+    CHECK(am_xml_is(&doc, 0, "a") && am_xml_is(&doc, 1, "b") && am_xml_is(&doc, 2, "c") && !am_xml_is(&doc, 0, "ab"), "names");
+    CHECK(doc.node[0].child == 1 && doc.node[1].next == 2 && doc.node[2].next == -1 && doc.node[1].parent == 0, "tree links");
+    CHECK(doc.node[0].line == 3 && doc.node[1].line == 4 && doc.node[2].line == 5, "lines %d %d %d", (int)doc.node[0].line,
+          (int)doc.node[1].line, (int)doc.node[2].line);
+    int a = am_xml_attr_find(&doc, 0, "y");
+    CHECK(a >= 0 && am_xml_attr_find(&doc, 0, "z") < 0, "attribute lookup");
+    CHECK(am_xml_attr_text(&doc, a, out, sizeof out, &len) == AM_OK && !strcmp(out, "two & \"three\"") && len == 13, "attr '%s'", out);
+    CHECK(am_xml_text(&doc, 1, out, sizeof out, &len) == AM_OK && !strcmp(out, "t<AB>'") && len == 6, "text '%s'", out);
+    /* the root's own character data: blanks and the CDATA, not the children's text */
+    CHECK(am_xml_text(&doc, 0, out, sizeof out, NULL) == AM_OK && strstr(out, "<raw & text>") && !strstr(out, "t<"), "root '%s'", out);
+    CHECK(am_xml_text(&doc, 2, out, sizeof out, &len) == AM_OK && len == 0, "empty element");
+    /* too small an output buffer: a capacity status and an empty string */
+    CHECK(am_xml_text(&doc, 1, out, 4, &len) == AM_ERR_CAPACITY && out[0] == 0, "short buffer");
+    /* UTF-8 from a character reference; tabs and newlines in attributes read as spaces */
+    CHECK(xml("<a v=\"x\ty\nz\">&#233;&#x1F600;</a>", err) == AM_OK, "%s", err);
+    CHECK(am_xml_text(&doc, 0, out, sizeof out, NULL) == AM_OK && !strcmp(out, "\xC3\xA9\xF0\x9F\x98\x80"), "utf-8");
+    CHECK(am_xml_attr_text(&doc, 0, out, sizeof out, NULL) == AM_OK && !strcmp(out, "x y z"), "attr blanks '%s'", out);
+    /* CRLF line ends count as one line and read as '\n' */
+    CHECK(xml("<a>\r\n<b>x\r\ny</b>\r\n</a>", err) == AM_OK && doc.node[1].line == 2, "crlf");
+    CHECK(am_xml_text(&doc, 1, out, sizeof out, NULL) == AM_OK && !strcmp(out, "x\ny"), "crlf text");
+}
+
+static void test_xml_errors(void)
+{
+    expect_xml("", AM_ERR_PARSE, "t.xml:1: no root element (the file is empty or holds only comments)");
+    expect_xml("<!-- only -->\n", AM_ERR_PARSE, "t.xml:1: no root element (the file is empty or holds only comments)");
+    expect_xml("<a>\n<b>\n</a>", AM_ERR_PARSE, "t.xml:3: </a> does not close <b> (opened on line 2)");
+    expect_xml("<a>\n<b></b>\n", AM_ERR_PARSE, "t.xml:2: the file ends inside <a> (opened on line 1)");
+    expect_xml("</a>", AM_ERR_PARSE, "t.xml:1: end tag </a> without a start tag");
+    expect_xml("<a>\n&foo;</a>", AM_ERR_PARSE, "t.xml:2: unknown entity (XML predefines only &lt; &gt; &amp; &quot; &apos;)");
+    expect_xml("<a>x & y</a>", AM_ERR_PARSE, "t.xml:1: '&' must start a reference such as &amp; (write &amp; for a literal '&')");
+    expect_xml("<a>&#0;</a>", AM_ERR_PARSE, "t.xml:1: character reference to a character XML does not allow");
+    expect_xml("<a>&#xD800;</a>", AM_ERR_PARSE, "t.xml:1: character reference to a character XML does not allow");
+    expect_xml("<a>&#12a;</a>", AM_ERR_PARSE, "t.xml:1: bad digit in a character reference");
+    expect_xml("<a>&#x110000;</a>", AM_ERR_PARSE, "t.xml:1: character reference beyond U+10FFFF");
+    expect_xml("<a>]]></a>", AM_ERR_PARSE, "t.xml:1: ']]>' is not allowed in text (write ]]&gt;)");
+    expect_xml("<a x=\"1\" x=\"2\"/>", AM_ERR_PARSE, "t.xml:1: attribute 'x' given twice in <a>");
+    expect_xml("<a x=1/>", AM_ERR_PARSE, "t.xml:1: the value of attribute 'x' must be quoted (\" or ')");
+    expect_xml("<a x/>", AM_ERR_PARSE, "t.xml:1: attribute 'x' of <a> has no '=' and value");
+    expect_xml("<a x=\"1\"y=\"2\"/>", AM_ERR_PARSE, "t.xml:1: expected a blank before attribute 'y' in <a>");
+    expect_xml("<a x=\"<\"/>", AM_ERR_PARSE, "t.xml:1: '<' in the value of attribute 'x' (write &lt;)");
+    expect_xml("<a x=\"1/>", AM_ERR_PARSE, "t.xml:1: the value of attribute 'x' is not closed");
+    expect_xml("<a\n", AM_ERR_PARSE, "t.xml:1: start tag <a> not closed (the file ends)");
+    expect_xml("<a / >", AM_ERR_PARSE, "t.xml:1: expected '/>' after '/' in <a>");
+    expect_xml("<a>< b</a>", AM_ERR_PARSE, "t.xml:1: '<' followed by 0x20 does not start a tag (write &lt; for a literal '<')");
+    expect_xml("<a>\n<!-- x -- y -->\n</a>", AM_ERR_PARSE, "t.xml:2: '--' inside a comment");
+    expect_xml("<a>\n<!-- x </a>", AM_ERR_PARSE, "t.xml:2: comment not closed (no '-->')");
+    expect_xml("<a><![CDATA[x</a>", AM_ERR_PARSE, "t.xml:1: CDATA section not closed (no ']]>')");
+    expect_xml("<![CDATA[x]]><a/>", AM_ERR_PARSE, "t.xml:1: CDATA section outside the root element");
+    expect_xml("<!DOCTYPE a [<!ENTITY e \"x\">]>\n<a>&e;</a>", AM_ERR_PARSE, "t.xml:1: DOCTYPE declarations are not supported");
+    expect_xml("<a><!ELEMENT a></a>", AM_ERR_PARSE, "t.xml:1: unexpected '<!' (expected a comment <!-- --> or a CDATA section)");
+    expect_xml("<a/>\n<?xml version=\"1.0\"?>", AM_ERR_PARSE, "t.xml:2: the XML declaration <?xml ...?> must come first in the file");
+    expect_xml("<?xml version=\"1.0\"", AM_ERR_PARSE, "t.xml:1: the XML declaration is not closed with '?>'");
+    expect_xml("<a><? x?></a>", AM_ERR_PARSE, "t.xml:1: a processing instruction '<?' needs a target name");
+    expect_xml("<a/>\n<b/>", AM_ERR_PARSE, "t.xml:2: a second root element <b> (an XML document has exactly one)");
+    expect_xml("x<a/>", AM_ERR_PARSE, "t.xml:1: text before the root element");
+    expect_xml("<a/>\n\nx", AM_ERR_PARSE, "t.xml:3: text after the root element");
+    expect_xml("<a>\x01</a>", AM_ERR_PARSE, "t.xml:1: control character 0x01 is not allowed in XML");
+    expect_xml("<a></a >", AM_OK, "");
+    expect_xml("<a></a", AM_ERR_PARSE, "t.xml:1: end tag </a> not closed with '>'");
+    expect_xml("<a></>", AM_ERR_PARSE, "t.xml:1: '</' must be followed by an element name");
+    /* a NUL byte inside the given length */
+    char err[AM_ERR_MAX];
+    CHECK(am_xml_parse(&doc, "<a>\0</a>", 8, "t.xml", err, sizeof err) == AM_ERR_PARSE &&
+              !strcmp(err, "t.xml:1: a NUL byte (binary data) in an XML file"), "%s", err);
+    /* a short message buffer is cut, never overrun */
+    char tiny[12];
+    memset(tiny, 'x', sizeof tiny);
+    CHECK(am_xml_parse(&doc, "<a>", 3, "t.xml", tiny, 8) == AM_ERR_PARSE && strlen(tiny) == 7 && tiny[8] == 'x', "cut message");
+}
+
+/* the fixed memory: depth, element count and text size are each refused with a capacity status */
+static void test_xml_limits(void)
+{
+    char want[AM_ERR_MAX];
+    long n = 0;
+    /* nesting one deeper than allowed: fine at the limit, refused past it */
+    for (int i = 0; i < AM_XML_MAX_DEPTH; i++) n += sprintf(big + n, "<d>");
+    for (int i = 0; i < AM_XML_MAX_DEPTH; i++) n += sprintf(big + n, "</d>");
+    expect_xml(big, AM_OK, "");
+    n = 0;
+    for (int i = 0; i < 10000; i++) n += sprintf(big + n, "<d>");
+    snprintf(want, sizeof want, "t.xml:1: elements nested deeper than %d levels (the XML reader's limit, %s profile)",
+             AM_XML_MAX_DEPTH, AM_PROFILE_NAME);
+    expect_xml(big, AM_ERR_CAPACITY, want);
+    /* one element more than the capacity, on its own line */
+    n = sprintf(big, "<r>\n");
+    for (int i = 0; i < AM_XML_MAX_NODES; i++) n += sprintf(big + n, "<e/>\n");
+    sprintf(big + n, "</r>\n");
+    snprintf(want, sizeof want, "t.xml:%d: more than %d elements (the XML reader's capacity, %s profile)", AM_XML_MAX_NODES + 1,
+             AM_XML_MAX_NODES, AM_PROFILE_NAME);
+    expect_xml(big, AM_ERR_CAPACITY, want);
+    /* attributes past their capacity */
+    n = sprintf(big, "<r>");
+    for (int i = 0; i <= AM_XML_MAX_ATTRS; i++) n += sprintf(big + n, "<e a=\"1\"/>");
+    sprintf(big + n, "</r>");
+    snprintf(want, sizeof want, "t.xml:1: more than %d attributes (the XML reader's capacity, %s profile)", AM_XML_MAX_ATTRS,
+             AM_PROFILE_NAME);
+    expect_xml(big, AM_ERR_CAPACITY, want);
+    /* a text longer than the reader takes is refused before any byte is read (the length is
+     * checked first, so a short buffer with a long claimed length is a fair probe) */
+    char err[AM_ERR_MAX];
+    snprintf(want, sizeof want, "t.xml:1: %ld bytes of XML: more than the %ld the reader takes (%s profile)",
+             (long)AM_XML_MAX_BYTES + 1, (long)AM_XML_MAX_BYTES, AM_PROFILE_NAME);
+    CHECK(am_xml_parse(&doc, "<a/>", AM_XML_MAX_BYTES + 1, "t.xml", err, sizeof err) == AM_ERR_CAPACITY && !strcmp(err, want),
+          "%s", err);
+    /* a name longer than 255 bytes */
+    memset(big, 'n', 300);
+    big[0] = '<';
+    strcpy(big + 300, "/>");
+    CHECK(xml(big, err) == AM_ERR_CAPACITY && strstr(err, "t.xml:1: element name 'nnn") && strstr(err, "longer than 255 bytes"),
+          "%s", err);
+}
+
+/* ---- VXA: round trips --------------------------------------------------------------------- */
+
+/* field by field, reals by their bits, names up to their NUL; cells over the used part */
+static int same_lattice(const am_lattice* a, const am_lattice* b)
+{
+    if (a->nx != b->nx || a->ny != b->ny || a->nz != b->nz) return 0;
+    if (memcmp(&a->voxel_size, &b->voxel_size, sizeof a->voxel_size)) return 0;
+    if (a->palette.count != b->palette.count) return 0;
+    for (int i = 0; i < a->palette.count; i++) {
+        const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
+        if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
+        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
+                                 &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
+        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
+                                 &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
+        for (int k = 0; k < 10; k++)
+            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
+    }
+    return memcmp(a->cell, b->cell, (size_t)(a->nx * a->ny * a->nz)) == 0;
+}
+
+static int same_env(const am_env* a, const am_env* b)
+{
+    return a->gravity == b->gravity && a->floor == b->floor && a->collisions == b->collisions && a->cte_mode == b->cte_mode &&
+           a->temp_base == b->temp_base && a->temp_amplitude == b->temp_amplitude && a->period_steps == b->period_steps &&
+           a->dt_frac == b->dt_frac && a->lift == b->lift && a->zeta_internal_scale == b->zeta_internal_scale &&
+           a->zeta_global_scale == b->zeta_global_scale;
+}
+
+/* write lat and env, read them back, compare, and check a second write gives the same text */
+static void round_trip(const am_lattice* lat, const am_env* env, const char* what)
+{
+    char err[AM_ERR_MAX] = "";
+    long len = -1, len2 = -1;
+    am_status st = am_vxa_format(lat, env, 2.5e-5, text, sizeof text, &len, err, sizeof err);
+    CHECK(st == AM_OK && len == (long)strlen(text), "%s: format: %s", what, err);
+    st = am_vxa_parse(&lat_b, &info_b, &doc, text, what, err, sizeof err);
+    CHECK(st == AM_OK, "%s: parse: %s", what, err);
+    CHECK(info_b.warnings == 0, "%s: %d warnings: %s", what, info_b.warnings, info_b.warning);
+    CHECK(same_lattice(lat, &lat_b), "%s: the lattice differs after a round trip", what);
+    CHECK(same_env(env, &info_b.env) && info_b.period_steps_given, "%s: the environment differs after a round trip", what);
+    /* the period in seconds, unless the temperature is constant (VaryTempEnabled 0) */
+    if (env->temp_amplitude != AM_P(0) || env->temp_base == AM_P(0)) NEAR_REL(info_b.temp_period, env->period_steps * 2.5e-5, 1e-15);
+    else CHECK(info_b.temp_period == 0, "%s: constant temperature has no period", what);
+    st = am_vxa_format(&lat_b, &info_b.env, 2.5e-5, text2, sizeof text2, &len2, err, sizeof err);
+    CHECK(st == AM_OK && len2 == len && strcmp(text, text2) == 0, "%s: second format differs", what);
+}
+
+static void test_vxa_round_trip_scenes(void)
+{
+    static const char* const scenes[] = {"cube:1", "cube:3", "sphere:7", "sphere:20", "cantilever:5", "chain:4", "cube:20"};
+    char err[AM_ERR_MAX] = "";
+    am_env env = am_default_env();
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        int side = atoi(strchr(scenes[i], ':') + 1);
+        if (side > AM_MAX_DIM || (test_quick() && side > 8)) continue; /* the board profile; valgrind */
+        CHECK(am_scene_build(&lat_a, scenes[i], err, sizeof err) == AM_OK, "%s", err);
+        round_trip(&lat_a, &env, scenes[i]);
+    }
+}
+
+/* every material field and every environment field away from its default, both CTE conventions,
+ * all 16 materials in use, and values that need every digit */
+static void test_vxa_round_trip_everything(void)
+{
+    char err[AM_ERR_MAX] = "";
+    CHECK(am_lattice_init(&lat_a, AM_MAX_DIM, AM_MAX_DIM > 3 ? 3 : AM_MAX_DIM, 2, AM_P(0.0123456789), err, sizeof err) == AM_OK,
+          "%s", err);
+    lat_a.palette.count = AM_MAX_MATERIALS;
+    for (int k = 0; k < AM_MAX_MATERIALS; k++) {
+        am_material* m = &lat_a.palette.mat[k];
+        *m = am_default_material();
+        memset(m->name, 0, sizeof m->name);
+        if (k == 3) strcpy(m->name, "m-3_the_longest_name_23"); /* AM_NAME_MAX - 1 characters */
+        else snprintf(m->name, sizeof m->name, "m-%d_x", k);
+        m->E = AM_P(1.2345678e6) * (am_param)(k + 1);
+        m->density = AM_P(987.654321) + (am_param)k;
+        m->poisson = AM_P(0.49) - AM_P(0.03) * (am_param)k;
+        m->cte = AM_P(0.0123456) * (am_param)(k - 5);
+        m->phase = AM_P(-3.14159265) + AM_P(0.3) * (am_param)k;
+        m->mu_static = AM_P(0.1) * (am_param)k;
+        m->mu_kinetic = AM_P(0.07) * (am_param)k;
+        m->zeta_internal = AM_P(0.11) * (am_param)k;
+        m->zeta_global = AM_P(0.013) * (am_param)k;
+        m->zeta_collision = AM_P(0.17) * (am_param)k;
+        for (int c = 0; c < 4; c++) m->color[c] = (uint8_t)(k * 16 + c * 50);
+        m->fixed = k % 5 == 4;
+    }
+    int cells = lat_a.nx * lat_a.ny * lat_a.nz;
+    for (int i = 0; i < cells; i++) lat_a.cell[i] = (uint8_t)((i * 7) % (AM_MAX_MATERIALS + 1));
+    am_env env = am_default_env();
+    env.gravity = AM_P(1.625);
+    env.floor = 0;
+    env.collisions = 0;
+    env.temp_base = AM_P(-2.5);
+    env.temp_amplitude = AM_P(17.25);
+    env.period_steps = 777;
+    env.dt_frac = AM_P(0.123);
+    env.lift = AM_P(0.002);
+    env.zeta_internal_scale = AM_P(0.5);
+    env.zeta_global_scale = AM_P(2);
+    round_trip(&lat_a, &env, "everything-volumetric");
+    env.cte_mode = AM_CTE_LINEAR;
+    round_trip(&lat_a, &env, "everything-linear");
+    /* a constant temperature alone is VoxCAD's VaryTempEnabled 0 */
+    env.temp_amplitude = AM_P(0);
+    round_trip(&lat_a, &env, "constant-temperature");
+    env.gravity = AM_P(0);
+    round_trip(&lat_a, &env, "no-gravity");
+}
+
+/* the same robot and environment simulate to the same state after a round trip */
+static void test_vxa_round_trip_simulates_the_same(void)
+{
+    static am_model m1, m2;
+    static am_state s1, s2;
+    char err[AM_ERR_MAX] = "";
+    am_env env = am_default_env();
+    long len;
+    CHECK(am_scene_build(&lat_a, AM_MAX_DIM >= 6 ? "sphere:6" : "cube:3", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_vxa_format(&lat_a, &env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "s.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&m1, &lat_a, &env, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&m2, &lat_b, &info_b.env, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&m1, &s1);
+    am_state_reset(&m2, &s2);
+    s1.actuate = s2.actuate = 1;
+    am_steps(&m1, &s1, 300);
+    am_steps(&m2, &s2, 300);
+    CHECK(am_state_hash(&m1, &s1) == am_state_hash(&m2, &s2), "hashes differ after 300 steps");
+}
+
+/* ---- VXA: reading what VoxCAD writes ----------------------------------------------------- */
+
+static void test_vxa_voxcad_conventions(void)
+{
+    char err[AM_ERR_MAX] = "";
+    const char* t =
+        "<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n"
+        "<VXA Version=\"1.0\">\n"
+        "<Simulator><Damping><BondDampingZ>0.5</BondDampingZ><ColDampingZ>0.25</ColDampingZ>"
+        "<SlowDampingZ>1.7378e-005</SlowDampingZ></Damping><Collisions><SelfColEnabled>0</SelfColEnabled></Collisions>"
+        "<Integration><DtFrac>0.2</DtFrac></Integration></Simulator>\n"
+        "<Environment><Gravity><GravEnabled>1</GravEnabled><GravAcc>-9.81</GravAcc><FloorEnabled>1</FloorEnabled></Gravity>"
+        "<Thermal><TempEnabled>1</TempEnabled><TempAmp>39</TempAmp><TempBase>25</TempBase><VaryTempEnabled>1</VaryTempEnabled>"
+        "<TempPeriod>0.025</TempPeriod></Thermal></Environment>\n"
+        "<VXC Version=\"0.93\"><Lattice><Lattice_Dim>0.001</Lattice_Dim></Lattice><Palette>\n"
+        "<Material ID=\"1\"><MatType>0</MatType><Name>Active_+</Name><Display><Red>1</Red><Green>0.5</Green><Blue>0</Blue>"
+        "<Alpha>1</Alpha></Display><Mechanical><MatModel>0</MatModel><Elastic_Mod>1e+007</Elastic_Mod><Density>1e+006</Density>"
+        "<Poissons_Ratio>0.35</Poissons_Ratio><CTE>0.01</CTE><MaterialTempPhase>1.5</MaterialTempPhase><uStatic>1</uStatic>"
+        "<uDynamic>0.5</uDynamic></Mechanical></Material>\n"
+        "<Material ID=\"2\"><Name>Active_-</Name><Mechanical><Elastic_Mod>2e6</Elastic_Mod><Density>1000</Density></Mechanical>"
+        "</Material>\n"
+        "<Material ID=\"3\"><Name>Active_+</Name></Material>\n"
+        "</Palette><Structure Compression=\"BASE64\"><X_Voxels>3</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>2</Z_Voxels><Data>\n"
+        "<Layer><![CDATA[AQID]]></Layer><Layer>AAEA</Layer></Data></Structure></VXC>\n"
+        "</VXA>\n";
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "v.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_a.warnings == 0, "warnings: %s", info_a.warning);
+    const am_material* m = &lat_a.palette.mat[0];
+    CHECK(lat_a.palette.count == 3 && !strcmp(m->name, "Active__") && !strcmp(lat_a.palette.mat[1].name, "Active_-") &&
+              !strcmp(lat_a.palette.mat[2].name, "Active___2"),
+          "names '%s' '%s' '%s'", m->name, lat_a.palette.mat[1].name, lat_a.palette.mat[2].name);
+    CHECK(m->E == AM_P(1e7) && m->density == AM_P(1e6) && m->poisson == AM_P(0.35) && m->cte == AM_P(0.01) &&
+              m->phase == AM_P(1.5) && m->mu_static == AM_P(1) && m->mu_kinetic == AM_P(0.5),
+          "mechanical values");
+    CHECK(m->color[0] == 255 && m->color[1] == 128 && m->color[2] == 0 && m->color[3] == 255, "colour %d %d %d %d", m->color[0],
+          m->color[1], m->color[2], m->color[3]);
+    /* damping from <Simulator> on every material */
+    for (int k = 0; k < 3; k++)
+        CHECK(lat_a.palette.mat[k].zeta_internal == AM_P(0.5) && lat_a.palette.mat[k].zeta_collision == AM_P(0.25) &&
+                  lat_a.palette.mat[k].zeta_global == AM_P(1.7378e-5),
+              "damping of material %d", k + 1);
+    /* the environment: gravity -GravAcc, linear CTE, old TempAmp is the peak (39 - 25 = 14) */
+    const am_env* e = &info_a.env;
+    CHECK(e->gravity == AM_P(9.81) && e->floor == 1 && e->collisions == 0 && e->cte_mode == AM_CTE_LINEAR, "gravity, floor, cte");
+    CHECK(e->temp_amplitude == AM_P(14) && e->temp_base == AM_P(0) && e->dt_frac == AM_P(0.2), "amplitude %g", (double)e->temp_amplitude);
+    CHECK(info_a.temp_period == 0.025 && !info_a.period_steps_given, "period %g", info_a.temp_period);
+    CHECK(am_vxa_period_steps(info_a.temp_period, 5e-5) == 500 && am_vxa_period_steps(1e-9, 1e-3) == 1 &&
+              am_vxa_period_steps(1, 0) == 1 && am_vxa_period_steps(1e12, 1e-3) == 1000000000,
+          "period in steps");
+    /* BASE64 layers: bytes 1 2 3, then 0 1 0 */
+    CHECK(lat_a.nx == 3 && lat_a.ny == 1 && lat_a.nz == 2 && lat_a.voxel_size == AM_P(0.001), "size");
+    CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 2 && lat_a.cell[2] == 3 && lat_a.cell[3] == 0 && lat_a.cell[4] == 1 &&
+              lat_a.cell[5] == 0,
+          "cells");
+    /* a constant temperature (VaryTempEnabled 0) is an offset; TempEnabled 0 is none */
+    const char* c2 = "<VXA><Environment><Thermal><TempEnabled>1</TempEnabled><TempAmplitude>7</TempAmplitude>"
+                     "<VaryTempEnabled>0</VaryTempEnabled></Thermal><Gravity/></Environment><VXC><Palette><Material/></Palette>"
+                     "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
+                     "<Data><Layer>1</Layer></Data></Structure></VXC></VXA>";
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, c2, "c.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_a.env.temp_base == AM_P(7) && info_a.env.temp_amplitude == AM_P(0) && info_a.temp_period == 0, "constant temperature");
+    /* VoxCAD: inside <Gravity> a missing switch is off */
+    CHECK(info_a.env.gravity == AM_P(0) && info_a.env.floor == 0, "empty <Gravity>");
+    CHECK(!strcmp(lat_a.palette.mat[0].name, "material1") && lat_a.palette.mat[0].E == AM_P(1e6), "defaults of an empty material");
+}
+
+static void test_vxa_warnings(void)
+{
+    char err[AM_ERR_MAX] = "";
+    const char* t = "<VXA Version=\"1.1\">\n"
+                    "<GPU><HeapSize>0.5</HeapSize></GPU>\n"
+                    "<Simulator><Integration><Integrator>1</Integrator><DtFrac>0.9</DtFrac></Integration></Simulator>\n"
+                    "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X></FRegion></Boundary_Conditions>"
+                    "</Environment>\n"
+                    "<VXC><Lattice><X_Dim_Adj>0.5</X_Dim_Adj></Lattice><Palette><Material ID=\"7\">\n"
+                    "<Mechanical><MatModel>1</MatModel><IsConductive>1</IsConductive></Mechanical></Material></Palette>\n"
+                    "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
+                    "<Data><Layer>1</Layer></Data><PhaseOffset/></Structure></VXC>\n"
+                    "</VXA>\n";
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "w.vxa", err, sizeof err) == AM_OK, "%s", err);
+    const char* want =
+        "w.vxa:2: warning: unsupported tag <GPU> ignored\n"
+        "w.vxa:6: warning: <X_Dim_Adj> 0.5 not supported (amorph lattices are cubic cells on a rectangular grid); 1 used\n"
+        "w.vxa:6: warning: <Material ID=\"7\"> is material 1 of the palette: materials are numbered by their order, as in VoxCAD\n"
+        "w.vxa:7: warning: unsupported tag <IsConductive> ignored\n"
+        "w.vxa:7: warning: <MatModel> 1 (non-linear) not supported: material 1 is linear elastic here\n"
+        "w.vxa:8: warning: unsupported tag <PhaseOffset> ignored\n"
+        "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
+        "w.vxa:3: warning: <DtFrac> 0.9 is above the step amorph's integrator is stable at: 0.3 used (amorph sim --dt-frac "
+        "overrides)\n"
+        "w.vxa:5: warning: unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material "
+        "instead)\n";
+    CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 9, "%d warnings:\n%s", info_a.warnings, info_a.warning);
+    CHECK(info_a.env.dt_frac == am_default_env().dt_frac, "dt_frac kept");
+    /* many warnings: all counted, the text stays within its buffer */
+    long n = sprintf(big, "<VXA>");
+    for (int i = 0; i < 500; i++) n += sprintf(big + n, "<Unknown%d/>", i);
+    sprintf(big + n, "<VXC><Palette><Material/></Palette><Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels>"
+                     "<Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data><Layer>1</Layer></Data></Structure></VXC></VXA>");
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, big, "m.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_a.warnings == 500 && strlen(info_a.warning) < sizeof info_a.warning, "%d warnings", info_a.warnings);
+    CHECK(!strncmp(info_a.warning, "m.vxa:1: warning: unsupported tag <Unknown0> ignored\n", 52), "first warning");
+}
+
+/* ---- VXA: malformed files ---------------------------------------------------------------- */
+
+/* a small VXA text, one piece per line: 1 <VXA>, 2 extra, 3 <VXC>, 4 <Palette>, 5 the material,
+ * 6 </Palette>, 7 the structure's head, 8 the layer, 9 the tail, 10 </VXA> */
+static const char* vxa(const char* extra, const char* material, const char* shead, const char* layer)
+{
+    snprintf(big, sizeof big, "<VXA Version=\"1.1\">\n%s\n<VXC Version=\"0.94\">\n<Palette>\n%s\n</Palette>\n%s\n%s\n"
+                              "</Data></Structure></VXC>\n</VXA>\n",
+             extra ? extra : "<!-- -->",
+             material ? material
+                      : "<Material ID=\"1\"><Name>m</Name><Mechanical><Elastic_Mod>1e6</Elastic_Mod><Density>1000</Density>"
+                        "</Mechanical></Material>",
+             shead ? shead
+                   : "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels>"
+                     "<Z_Voxels>1</Z_Voxels><Data>",
+             layer ? layer : "<Layer><![CDATA[11]]></Layer>");
+    return big;
+}
+
+static void expect_vxa(const char* t, am_status code, const char* want)
+{
+    char err[AM_ERR_MAX] = "";
+    am_status st = am_vxa_parse(&lat_a, &info_a, &doc, t, "t.vxa", err, sizeof err);
+    CHECK(st == code && strcmp(err, want) == 0, "status %d (want %d), message '%s' (want '%s')", st, code, err, want);
+}
+
+#define SH(x, y, z) "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>" x "</X_Voxels><Y_Voxels>" y "</Y_Voxels><Z_Voxels>" z \
+                    "</Z_Voxels><Data>"
+#define MAT(mech) "<Material><Mechanical>" mech "</Mechanical></Material>"
+
+static void test_vxa_errors(void)
+{
+    char want[AM_ERR_MAX];
+    expect_vxa(vxa(0, 0, 0, 0), AM_OK, "");
+    expect_vxa("<?xml version=\"1.0\"?>\n<Robot/>\n", AM_ERR_PARSE, "t.vxa:2: not a VXA file: the root element is <Robot>, expected <VXA>");
+    expect_vxa("<VXA>\n<Simulator/>\n</VXA>", AM_ERR_PARSE, "t.vxa:1: <VXA> has no <VXC> element (the robot)");
+    expect_vxa("<VXA>\n<VXC/></VXA>", AM_ERR_PARSE, "t.vxa:2: <VXC> has no <Palette>");
+    expect_vxa("<VXA><VXC Version=\"0.92\"/></VXA>", AM_ERR_PARSE, "t.vxa:1: <VXC Version=\"0.92\">: only versions 0.93 and 0.94 are read");
+    expect_vxa("<VXA><VXC><Palette/></VXC></VXA>", AM_ERR_PARSE, "t.vxa:1: <Palette> has no <Material>");
+    expect_vxa("<VXA><VXC><Palette><Material/></Palette></VXC></VXA>", AM_ERR_PARSE, "t.vxa:1: <VXC> has no <Structure>");
+    expect_vxa("<VXA><VXC></VXC><VXC/></VXA>", AM_ERR_PARSE, "t.vxa:1: <VXC> given twice in <VXA> (first on line 1)");
+    /* XML errors come through with their line */
+    expect_vxa(vxa(0, 0, 0, "<Layer>11</Lay>"), AM_ERR_PARSE, "t.vxa:8: </Lay> does not close <Layer> (opened on line 8)");
+    /* structure */
+    expect_vxa(vxa(0, 0, "<Structure Compression=\"ZLIB\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>",
+                   "<Layer>eJxjYCADMAIxE/HKAQDpAAQ=</Layer>"),
+               AM_ERR_PARSE,
+               "t.vxa:7: Compression=\"ZLIB\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64");
+    expect_vxa(vxa(0, 0, "<Structure Compression=\"RLE\"><Data>", 0), AM_ERR_PARSE,
+               "t.vxa:7: Compression=\"RLE\" is not supported (ASCII_READABLE or BASE64)");
+    expect_vxa(vxa(0, 0, "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Z_Voxels>1</Z_Voxels><Data>", 0),
+               AM_ERR_PARSE, "t.vxa:7: <Structure> has no <Y_Voxels>");
+    expect_vxa(vxa(0, 0, SH("2", "1", "x"), 0), AM_ERR_PARSE, "t.vxa:7: <Z_Voxels>: 'x' is not a whole number");
+    expect_vxa(vxa(0, 0, SH("0", "1", "1"), 0), AM_ERR_RANGE, "t.vxa:7: <X_Voxels> 0 is outside 1..1000000000");
+    snprintf(want, sizeof want, "t.vxa:7: <Y_Voxels> 99 exceeds the %s profile's %d cells per side", AM_PROFILE_NAME, AM_MAX_DIM);
+    expect_vxa(vxa(0, 0, SH("2", "99", "1"), 0), AM_ERR_CAPACITY, want);
+    expect_vxa(vxa(0, 0, 0, "<Layer>111</Layer>"), AM_ERR_PARSE, "t.vxa:8: layer 0 has 3 cells, expected 2 (X_Voxels x Y_Voxels = 2 x 1)");
+    expect_vxa(vxa(0, 0, 0, "<Layer>1Z</Layer>"), AM_ERR_RANGE,
+               "t.vxa:8: layer 0: cell 1 (x = 1, y = 0) is 'Z', not a material number 0..1 (written as '0' + number)");
+    expect_vxa(vxa(0, 0, 0, "<Layer>12</Layer>"), AM_ERR_RANGE,
+               "t.vxa:8: layer 0: cell 1 (x = 1, y = 0) is '2', not a material number 0..1 (written as '0' + number)");
+    expect_vxa(vxa(0, 0, 0, "<Layer>11</Layer><Layer>11</Layer>"), AM_ERR_PARSE, "t.vxa:8: more <Layer> elements than Z_Voxels = 1");
+    expect_vxa(vxa(0, 0, SH("2", "1", "2"), "<Layer>11</Layer>"), AM_ERR_PARSE, "t.vxa:7: <Data> has 1 <Layer> elements, Z_Voxels says 2");
+    expect_vxa(vxa(0, 0, "<Structure><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>", "<Layer>AQ*</Layer>"),
+               AM_ERR_PARSE, "t.vxa:8: layer 0: bad base64 data");
+    expect_vxa(vxa(0, 0, "<Structure><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>", "<Layer>AQc=</Layer>"),
+               AM_ERR_RANGE, "t.vxa:8: layer 0: cell 1 (x = 1, y = 0) is byte 7, not a material number 0..1");
+    expect_vxa(vxa(0, 0, 0, "<Layer><b>11</b></Layer>"), AM_ERR_PARSE, "t.vxa:8: <Layer> must hold a value, not elements");
+    /* materials */
+    expect_vxa(vxa(0, "<Material><MatType>2</MatType></Material>", 0, 0), AM_ERR_PARSE,
+               "t.vxa:5: material 1: MatType 2 (dither) is not supported: only single materials (MatType 0)");
+    expect_vxa(vxa(0, MAT("<Elastic_Mod>0</Elastic_Mod>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Elastic_Mod> 0 must be greater than 0");
+    expect_vxa(vxa(0, MAT("<Density>-1</Density>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Density> -1 must be greater than 0");
+    expect_vxa(vxa(0, MAT("<Poissons_Ratio>0.5</Poissons_Ratio>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Poissons_Ratio> 0.5 must be in [0, 0.5)");
+    expect_vxa(vxa(0, MAT("<uStatic>-0.5</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> -0.5 must be 0 or more");
+    expect_vxa(vxa(0, MAT("<CTE>abc</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'abc' is not a finite number");
+    expect_vxa(vxa(0, MAT("<CTE>nan</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'nan' is not a finite number");
+    expect_vxa(vxa(0, MAT("<CTE></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '' is not a finite number");
+    /* a quoted value keeps the message on one line */
+    expect_vxa(vxa(0, MAT("<CTE><![CDATA[1\n2]]></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '1 2' is not a finite number");
+    expect_vxa(vxa(0, MAT("<Density>1e999</Density>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <Density>: '1e999' is not a finite number");
+    expect_vxa(vxa(0, "<Material><Display><Red>1.5</Red></Display></Material>", 0, 0), AM_ERR_RANGE, "t.vxa:5: <Red> 1.5 must be in [0, 1]");
+    expect_vxa(vxa(0, MAT("<CTE>1</CTE><CTE>2</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE> given twice in <Mechanical> (first on line 5)");
+    long n = 0;
+    char mats[4096];
+    for (int k = 0; k <= AM_MAX_MATERIALS; k++) n += snprintf(mats + n, sizeof mats - (size_t)n, "<Material/>");
+    snprintf(want, sizeof want, "t.vxa:5: more than %d materials (the palette's capacity)", AM_MAX_MATERIALS);
+    expect_vxa(vxa(0, mats, 0, 0), AM_ERR_CAPACITY, want);
+    /* simulator and environment */
+    expect_vxa(vxa("<Simulator><Integration><DtFrac>0</DtFrac></Integration></Simulator>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DtFrac> 0 must be in (0, 100]");
+    expect_vxa(vxa("<Simulator><Damping><BondDampingZ>-1</BondDampingZ></Damping></Simulator>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <BondDampingZ> -1 must be 0 or more");
+    expect_vxa(vxa("<Simulator><Collisions><SelfColEnabled>yes</SelfColEnabled></Collisions></Simulator>", 0, 0, 0), AM_ERR_PARSE,
+               "t.vxa:2: <SelfColEnabled>: 'yes' is not 0 or 1");
+    expect_vxa(vxa("<Environment><Gravity><GravEnabled>1</GravEnabled><GravAcc>9.81</GravAcc></Gravity></Environment>", 0, 0, 0),
+               AM_ERR_RANGE, "t.vxa:2: <GravAcc> 9.81 points up: amorph's gravity pulls along -z (GravAcc <= 0)");
+    expect_vxa(vxa("<Environment><Thermal><TempEnabled>1</TempEnabled><VaryTempEnabled>1</VaryTempEnabled>"
+                   "<TempPeriod>0</TempPeriod></Thermal></Environment>", 0, 0, 0),
+               AM_ERR_RANGE, "t.vxa:2: <TempPeriod> 0 must be greater than 0");
+    expect_vxa(vxa("<Amorph Version=\"2\"/>", 0, 0, 0), AM_ERR_PARSE, "t.vxa:2: <Amorph Version=\"2\">: this build reads version 1");
+    expect_vxa(vxa("<Amorph Version=\"1\"><CTEMode>cubic</CTEMode></Amorph>", 0, 0, 0), AM_ERR_PARSE,
+               "t.vxa:2: <CTEMode>: 'cubic' is not volumetric or linear");
+    expect_vxa(vxa("<Amorph Version=\"1\"><Material ID=\"2\"/></Amorph>", 0, 0, 0), AM_ERR_PARSE,
+               "t.vxa:2: <Material ID=\"2\"> in <Amorph>: the ID must be a material number 1..1");
+    expect_vxa(vxa("<Amorph Version=\"1\"><PeriodSteps>0</PeriodSteps></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <PeriodSteps> 0 is outside 1..1000000000");
+    /* a value too long for the reader's value buffer */
+    memset(mats, '1', 1000);
+    mats[1000] = 0;
+    char longv[4200];
+    snprintf(longv, sizeof longv, "<Material><Name>%s</Name></Material>", mats);
+    expect_vxa(vxa(0, longv, 0, 0), AM_ERR_CAPACITY, "t.vxa:5: <Name>: its text is longer than 255 bytes");
+}
+
+static void test_vxa_format_errors(void)
+{
+    char err[AM_ERR_MAX] = "";
+    long len = 7;
+    am_env env = am_default_env();
+    CHECK(am_scene_build(&lat_a, "cube:2", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_vxa_format(&lat_a, &env, 0, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG && len == 0 && text[0] == 0,
+          "dt 0: %s", err);
+    CHECK(am_vxa_format(&lat_a, &env, 1e-5, text, 100, &len, err, sizeof err) == AM_ERR_CAPACITY && text[0] == 0 &&
+              !strcmp(err, "vxa format: the text needs more than the 100 bytes given"),
+          "short buffer: %s", err);
+    lat_a.cell[0] = 42;
+    CHECK(am_vxa_format(&lat_a, &env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG &&
+              !strcmp(err, "vxa format: cell 0 holds material id 42, the palette has 9"),
+          "bad cell: %s", err);
+    lat_a.cell[0] = 1;
+    strcpy(lat_a.palette.mat[0].name, "bad name");
+    CHECK(am_vxa_format(&lat_a, &env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG, "bad name");
+    strcpy(lat_a.palette.mat[0].name, "ok");
+    env.period_steps = 0;
+    CHECK(am_vxa_format(&lat_a, &env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG, "bad environment");
+    CHECK(am_vxa_parse(NULL, &info_a, &doc, "<VXA/>", "x", err, sizeof err) == AM_ERR_ARG, "no lattice");
+    CHECK(am_vxa_sniff("\xEF\xBB\xBF \n<VXA>") && am_vxa_sniff("<?xml") && !am_vxa_sniff("amorph-lattice 1") && !am_vxa_sniff(""),
+          "sniff");
+    (void)msg;
+}
+
+int main(int argc, char** argv)
+{
+    TEST_INIT(argc, argv);
+    RUN(test_xml_basics);
+    RUN(test_xml_errors);
+    RUN(test_xml_limits);
+    RUN(test_vxa_round_trip_scenes);
+    RUN(test_vxa_round_trip_everything);
+    RUN(test_vxa_round_trip_simulates_the_same);
+    RUN(test_vxa_voxcad_conventions);
+    RUN(test_vxa_warnings);
+    RUN(test_vxa_errors);
+    RUN(test_vxa_format_errors);
+    return SUMMARY();
+}
