@@ -17,6 +17,42 @@ ifeq ($(origin CC),default)
 CC := gcc
 endif
 
+# Cross targets: `make TARGET=name` takes the port, the compiler and the CPU flags from the
+# name's line below and builds into build/<name>. A new board is a folder port/<port>/ (its
+# sources, and a port.mk with its link flags if it needs any) plus one line here.
+#   TARGET_<name> := <port> <compiler> <CPU flags...>
+TARGET_cortex-m3     := baremetal arm-none-eabi-gcc -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
+TARGET_cortex-m4     := baremetal arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+TARGET_aarch64-linux := posix aarch64-linux-gnu-gcc -static
+TARGET_armhf-linux   := posix arm-linux-gnueabihf-gcc -static
+TARGET_riscv64-linux := posix riscv64-linux-gnu-gcc -static
+TARGET  ?=
+TARGET_CFLAGS :=
+TARGET_LDFLAGS :=
+ifneq ($(TARGET),)
+ifeq ($(TARGET_$(TARGET)),)
+$(error unknown TARGET '$(TARGET)' (known: $(sort $(filter-out CFLAGS LDFLAGS,$(patsubst TARGET_%,%,$(filter TARGET_%,$(.VARIABLES)))))))
+endif
+ifneq ($(origin PORT),file)
+ifneq ($(PORT),$(word 1,$(TARGET_$(TARGET))))
+$(error TARGET=$(TARGET) is a PORT=$(word 1,$(TARGET_$(TARGET))) build, not PORT=$(PORT))
+endif
+endif
+PORT  := $(word 1,$(TARGET_$(TARGET)))
+ifneq ($(origin CC),command line)
+CC    := $(word 2,$(TARGET_$(TARGET)))
+endif
+ifneq ($(origin ARCH),command line)
+ARCH  :=
+endif
+ifneq ($(origin BUILD),command line)
+BUILD := build/$(TARGET)
+endif
+TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
+endif
+LDLIBS  := -lm -lpthread
+-include port/$(PORT)/port.mk
+
 ifeq ($(filter $(REAL),float double fixed),)
 $(error REAL must be float, double or fixed, not '$(REAL)')
 endif
@@ -32,8 +68,7 @@ CFLAGS  ?=
 # fixed point (docs/fixed.md): sums of am_real wrap around instead of being undefined
 FIXFLAGS := $(if $(filter fixed,$(REAL)),-fwrapv)
 ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
-           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(CFLAGS)
-LDLIBS  := -lm -lpthread
+           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*.c))
 PORT_SRC := $(sort $(wildcard port/$(PORT)/*.c))
@@ -43,9 +78,9 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/amorph/*.h tools/*.h tests/*.h)
+HEADERS  := $(wildcard include/*.h include/amorph/*.h tools/*.h tests/*.h port/$(PORT)/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fixed
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc repro stack check-fixed
 all: $(BUILD)/libamorph.a $(BUILD)/amorph
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -61,13 +96,13 @@ $(BUILD)/libamorph_port.a: $(PORT_OBJ)
 	rm -f $@ && ar rcs $@ $^
 
 $(BUILD)/amorph: $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
-	$(CC) $(ALLCFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
 $(BUILD)/tests/%: tests/%.c $(HEADERS) $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
 # no object of src/ or port/ may reference an allocator
 check-alloc: $(LIB_OBJ) $(PORT_OBJ)
@@ -85,10 +120,10 @@ test: all check-alloc
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
-# the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c and
-# util_math.c, whose sin and cbrt the actuation calls, and am_sim_scale of sim_model.c) cross-compiled for a Cortex-M3, which has
-# no FPU, must not call one soft-float helper (__aeabi_f*, __aeabi_d*, libm). Skipped without
-# arm-none-eabi-gcc.
+# the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
+# util_math.c with the actuation's sin and cbrt, and am_sim_scale of sim_model.c) cross-compiled
+# for a Cortex-M3, which has no FPU, must not call one soft-float helper (__aeabi_f*, __aeabi_d*,
+# libm). Skipped without arm-none-eabi-gcc.
 FIXED_HOT := src/sim_step.c src/sim_collide.c src/util_math.c
 M3CC := arm-none-eabi-gcc
 M3FLAGS := -std=c11 -pedantic-errors $(WARN) -O2 -mcpu=cortex-m3 -mthumb -ffp-contract=off -fwrapv \
@@ -120,6 +155,19 @@ valgrind:
 
 valgrind-run: $(TEST_BIN) $(BUILD)/amorph
 	@VALGRIND=1 BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
+
+# one reference computation on every target (x86-64 compilers, Linux under qemu-user, Cortex-M
+# under qemu-system-arm) must print the same pinned hash (docs/porting.md)
+repro:
+	@sh tools/repro.sh
+
+# worst-case stack depth from GCC's frame sizes and call graph: the board build, then the desktop
+# build (tools/stack.sh states the method)
+stack:
+	@$(MAKE) --no-print-directory TARGET=cortex-m4 PROFILE=board BUILD=build/stack/cortex-m4 CFLAGS="-fstack-usage -fcallgraph-info=su" build/stack/cortex-m4/amorph >/dev/null
+	@echo "== board (cortex-m4, PROFILE=board)"; sh tools/stack.sh build/stack/cortex-m4
+	@$(MAKE) --no-print-directory PROFILE=desktop ARCH= BUILD=build/stack/desktop CFLAGS="-fstack-usage -fcallgraph-info=su" build/stack/desktop/amorph >/dev/null
+	@echo; echo "== desktop (x86-64, PROFILE=desktop)"; sh tools/stack.sh build/stack/desktop
 
 clean:
 	rm -rf build

@@ -59,8 +59,13 @@ int tool_write_output(const char* out, const char* text, long len);
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
 void tool_bench_express(void);
 
-/* one shared file buffer for the commands (they run one at a time) */
+/* one shared file buffer for the commands (they run one at a time): 4 MiB on the desktop; in the
+ * board profile the largest text amorph writes itself (a genome or a lattice), plus its NUL */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_FILE_MAX ((AM_GENOME_TEXT_MAX > AM_LATTICE_TEXT_MAX ? AM_GENOME_TEXT_MAX : AM_LATTICE_TEXT_MAX) + 1L)
+#else
 #define TOOL_FILE_MAX (4L << 20)
+#endif
 extern char tool_file_buf[TOOL_FILE_MAX];
 
 #endif

@@ -1,0 +1,185 @@
+/* Tests of the POSIX port (port/posix): the parallel map hands every item out exactly once on
+ * 1, 2, 3 and 8 workers, with worker ids in range and never two calls at once for one worker id;
+ * files are replaced atomically, appended to, and directories made and found; the progress line
+ * is silent when stderr is not a terminal. Scratch files go to $BUILD/tests/port_scratch. */
+#define _POSIX_C_SOURCE 200809L
+#include "amorph.h"
+#include "harness.h"
+
+#include <fcntl.h>
+#include <stdatomic.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#define MAP_MAX_ITEMS 200
+#define MAP_MAX_WORKERS 8
+
+typedef struct map_probe {
+    atomic_int calls[MAP_MAX_ITEMS];       /* calls per item */
+    atomic_int busy[MAP_MAX_WORKERS];      /* calls running now per worker id */
+    atomic_int overlaps;                   /* calls that found their worker id busy */
+    atomic_int bad_worker;                 /* worker ids out of range */
+    atomic_int ticket;                     /* calls so far, in start order */
+    int order[MAP_MAX_ITEMS];              /* item of the k-th call (one worker only) */
+    int workers;
+} map_probe;
+
+static map_probe probe;
+
+static void probe_task(void* ctx, int item, int worker)
+{
+    map_probe* p = (map_probe*)ctx;
+    if (worker < 0 || worker >= p->workers) {
+        atomic_fetch_add(&p->bad_worker, 1);
+        return;
+    }
+    if (atomic_fetch_add(&p->busy[worker], 1) != 0) atomic_fetch_add(&p->overlaps, 1);
+    int k = atomic_fetch_add(&p->ticket, 1);
+    if (k < MAP_MAX_ITEMS) p->order[k] = item;
+    if (item >= 0 && item < MAP_MAX_ITEMS) atomic_fetch_add(&p->calls[item], 1);
+    /* stay a little while so that other workers run at the same time */
+    struct timespec ts = {0, 20000 + 1000 * (item % 7)};
+    nanosleep(&ts, NULL);
+    atomic_fetch_sub(&p->busy[worker], 1);
+}
+
+static void reset_probe(int workers)
+{
+    for (int i = 0; i < MAP_MAX_ITEMS; i++) atomic_store(&probe.calls[i], 0);
+    for (int i = 0; i < MAP_MAX_WORKERS; i++) atomic_store(&probe.busy[i], 0);
+    atomic_store(&probe.overlaps, 0);
+    atomic_store(&probe.bad_worker, 0);
+    atomic_store(&probe.ticket, 0);
+    probe.workers = workers;
+}
+
+static void test_parallel_map_covers_each_item_once(void)
+{
+    static const int worker_counts[] = {1, 2, 3, 8};
+    static const int item_counts[] = {0, 1, 2, 7, 64, MAP_MAX_ITEMS};
+    char err[AM_ERR_MAX];
+    size_t counts = sizeof item_counts / sizeof item_counts[0] - (test_quick() ? 1 : 0); /* valgrind: fewer */
+    for (size_t w = 0; w < sizeof worker_counts / sizeof worker_counts[0]; w++)
+        for (size_t c = 0; c < counts; c++) {
+            int workers = worker_counts[w], n = item_counts[c];
+            reset_probe(workers);
+            am_status st = am_port_parallel_map(n, workers, probe_task, &probe, err, sizeof err);
+            CHECK(st == AM_OK, "%d items on %d workers: status %d (%s)", n, workers, (int)st, err);
+            int once = 1;
+            for (int i = 0; i < n; i++) once &= atomic_load(&probe.calls[i]) == 1;
+            CHECK(once, "%d items on %d workers: an item was not called exactly once", n, workers);
+            CHECK(atomic_load(&probe.ticket) == n, "%d items on %d workers: %d calls", n, workers, atomic_load(&probe.ticket));
+            CHECK(atomic_load(&probe.bad_worker) == 0, "%d items on %d workers: worker id out of range", n, workers);
+            CHECK(atomic_load(&probe.overlaps) == 0, "%d items on %d workers: two calls at once for one worker id", n, workers);
+            if (workers == 1) {
+                int in_order = 1;
+                for (int i = 0; i < n; i++) in_order &= probe.order[i] == i;
+                CHECK(in_order, "one worker: items not called in order");
+            }
+        }
+}
+
+static void test_parallel_map_rejects_bad_arguments(void)
+{
+    char err[AM_ERR_MAX];
+    reset_probe(1);
+    CHECK(am_port_parallel_map(3, 0, probe_task, &probe, err, sizeof err) == AM_ERR_ARG, "0 workers accepted");
+    CHECK(am_port_parallel_map(-1, 2, probe_task, &probe, err, sizeof err) == AM_ERR_ARG, "-1 items accepted");
+    CHECK(atomic_load(&probe.ticket) == 0, "a rejected map called the task");
+    /* more workers than the port starts, or than items: still every item once */
+    reset_probe(MAP_MAX_WORKERS);
+    CHECK(am_port_parallel_map(5, 1000, probe_task, &probe, err, sizeof err) == AM_OK, "1000 workers: %s", err);
+    CHECK(atomic_load(&probe.ticket) == 5, "1000 workers on 5 items: %d calls", atomic_load(&probe.ticket));
+    CHECK(am_port_cores() >= 1, "cores = %d", am_port_cores());
+}
+
+static char scratch[512];
+
+/* scratch/name into out */
+static const char* path_of(char* out, size_t cap, const char* name)
+{
+    snprintf(out, cap, "%s/%s", scratch, name);
+    return out;
+}
+
+static void test_files(void)
+{
+    const char* build = getenv("BUILD");
+    snprintf(scratch, sizeof scratch, "%s/tests/port_scratch", build && *build ? build : "build");
+    char err[AM_ERR_MAX], p[600], q[700], buf[64];
+    long len = -1;
+
+    /* directories: made once, found again, a file in the way is an error */
+    CHECK(am_port_make_dir(scratch, err, sizeof err) == AM_OK, "make_dir %s: %s", scratch, err);
+    CHECK(am_port_make_dir(scratch, err, sizeof err) == AM_OK, "make_dir of an existing directory: %s", err);
+    CHECK(am_port_exists(scratch) == 1, "the directory is not found");
+    path_of(p, sizeof p, "missing");
+    unlink(p);
+    CHECK(am_port_exists(p) == 0, "a missing file exists");
+    CHECK(am_port_read_file(p, buf, sizeof buf, &len, err, sizeof err) == AM_ERR_IO, "reading a missing file");
+
+    /* atomic replace: the new content, and no temporary left beside it */
+    path_of(p, sizeof p, "replaced.txt");
+    CHECK(am_port_write_file(p, "first version\n", 14, err, sizeof err) == AM_OK, "write: %s", err);
+    CHECK(am_port_write_file(p, "two\n", 4, err, sizeof err) == AM_OK, "rewrite: %s", err);
+    CHECK(am_port_read_file(p, buf, sizeof buf, &len, err, sizeof err) == AM_OK && len == 4 && !strcmp(buf, "two\n"),
+          "replaced file reads '%s' (%ld bytes)", buf, len);
+    snprintf(q, sizeof q, "%s.tmp.%ld", p, (long)getpid());
+    CHECK(am_port_exists(q) == 0, "temporary %s left behind", q);
+    CHECK(am_port_make_dir(p, err, sizeof err) == AM_ERR_IO, "make_dir over a file accepted");
+
+    /* a file larger than the buffer is a capacity error, not a truncation */
+    CHECK(am_port_read_file(p, buf, 4, &len, err, sizeof err) == AM_ERR_CAPACITY, "4-byte file in a 4-byte buffer");
+    CHECK(am_port_read_file(p, buf, 5, &len, err, sizeof err) == AM_OK && len == 4, "4-byte file in a 5-byte buffer");
+
+    /* append: created when missing, then extended */
+    path_of(q, sizeof q, "log.txt");
+    unlink(q);
+    CHECK(am_port_append_file(q, "a,1\n", 4, err, sizeof err) == AM_OK, "append to a new file: %s", err);
+    CHECK(am_port_append_file(q, "b,2\n", 4, err, sizeof err) == AM_OK, "append: %s", err);
+    CHECK(am_port_read_file(q, buf, sizeof buf, &len, err, sizeof err) == AM_OK && !strcmp(buf, "a,1\nb,2\n"),
+          "appended file reads '%s'", buf);
+
+    /* writing into a missing directory fails with a message */
+    path_of(q, sizeof q, "no/such/dir/file");
+    err[0] = 0;
+    CHECK(am_port_write_file(q, "x", 1, err, sizeof err) == AM_ERR_IO && err[0], "write into a missing directory");
+}
+
+static void test_progress_is_silent_off_a_terminal(void)
+{
+    char err[AM_ERR_MAX], p[600];
+    if (!scratch[0]) return;
+    path_of(p, sizeof p, "stderr.txt");
+    fflush(stderr);
+    int saved = dup(2);
+    int fd = open(p, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    CHECK(saved >= 0 && fd >= 0, "cannot redirect stderr");
+    if (saved < 0 || fd < 0) return;
+    dup2(fd, 2);
+    close(fd);
+    int term = am_port_is_terminal();
+    am_port_progress("generation 1 of 10");
+    am_port_progress("generation 2 of 10");
+    am_port_progress(NULL);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    CHECK(term == 0, "a file is taken for a terminal");
+    char buf[64];
+    long len = -1;
+    CHECK(am_port_read_file(p, buf, sizeof buf, &len, err, sizeof err) == AM_OK && len == 0,
+          "progress wrote %ld bytes to a non-terminal stderr", len);
+    CHECK(am_port_interrupted() == 0, "interrupted without a request");
+}
+
+int main(int argc, char** argv)
+{
+    TEST_INIT(argc, argv);
+    RUN(test_parallel_map_covers_each_item_once);
+    RUN(test_parallel_map_rejects_bad_arguments);
+    RUN(test_files);
+    RUN(test_progress_is_silent_off_a_terminal);
+    return SUMMARY();
+}

@@ -1,0 +1,110 @@
+#!/bin/sh
+# tools/repro.sh (make repro): one reference computation, built and run on every target we claim
+# bit-identical results on, must print the same 64-bit hash everywhere, equal to the pinned one.
+#   x86-64: gcc -O0, gcc -O3 -march=native, clang -O2 (native)
+#   aarch64, armhf, riscv64 Linux: Debian cross compilers, static, under qemu-user
+#   Cortex-M3 (soft float) and Cortex-M4F (hard float): bare metal under qemu-system-arm
+#   (mps2-an385 / mps2-an386) with semihosting
+# Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
+# hash equals REPRO_EXPECT. Builds log to build/repro/<target>.log.
+# REPRO_ARGS is the reference computation: the amorph command line (without "amorph"); its
+# output must hold "repro_hash=<16 hex>" or a JSON "hash": "<16 hex>". Arguments must not
+# contain spaces (semihosting passes one command-line string).
+set -u
+cd "$(dirname "$0")/.."
+
+REPRO_ARGS=${REPRO_ARGS:-"sim --scene sphere:6 --cycles 1 --json"}
+REPRO_EXPECT=${REPRO_EXPECT:-9185e86e51d9ca11}
+JOBS=${JOBS:-2}
+MAKE=${MAKE:-make}
+TIMEOUT=${REPRO_TIMEOUT:-600}
+
+# name | make variables (besides PROFILE=board) | how to run (native, a qemu-user binary, or
+# board:<qemu-system-arm machine>)
+TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
+cortex-m4|TARGET=cortex-m4|board:mps2-an386
+x86_64-gcc-O0|BUILD=build/repro/gcc-O0 CC=gcc OPT=-O0 ARCH=|native
+x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native CC=gcc OPT=-O3 ARCH=native|native
+x86_64-clang-O2|BUILD=build/repro/clang-O2 CC=clang OPT=-O2 ARCH=|native
+aarch64-linux|TARGET=aarch64-linux|qemu-aarch64
+armhf-linux|TARGET=armhf-linux|qemu-arm
+riscv64-linux|TARGET=riscv64-linux|qemu-riscv64"
+
+mkdir -p build/repro
+out=build/repro/results.txt
+: >"$out"
+
+now() { date +%s.%N; }
+# the build folder a line's make variables select
+build_of() {
+    case "$1" in
+    *BUILD=*) echo "$1" | sed 's/.*BUILD=\([^ ]*\).*/\1/' ;;
+    *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')" ;;
+    esac
+}
+# runs one built amorph with REPRO_ARGS, output on stdout
+run_one() {
+    bin=$1 how=$2
+    case "$how" in
+    native) timeout "$TIMEOUT" "$bin" $REPRO_ARGS ;;
+    board:*)
+        sh_args="arg=amorph"
+        for a in $REPRO_ARGS; do sh_args="$sh_args,arg=$(echo "$a" | sed 's/,/,,/g')"; done
+        timeout "$TIMEOUT" qemu-system-arm -M "${how#board:}" -nographic -monitor none -serial none \
+            -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null ;;
+    *) timeout "$TIMEOUT" "$how" "$bin" $REPRO_ARGS ;;
+    esac
+}
+# builds and runs one target; appends "name hash seconds" to $out
+one() {
+    name=$1 vars=$2 how=$3
+    build=$(build_of "$vars")
+    log=build/repro/$name.log
+    # shellcheck disable=SC2086
+    if ! $MAKE --no-print-directory -j"$JOBS" PROFILE=board $vars "$build/amorph" >"$log" 2>&1; then
+        echo "$name (build-failed) -" >>"$out"
+        return
+    fi
+    t0=$(now)
+    res=$(run_one "$build/amorph" "$how" 2>>"$log")
+    rc=$?
+    t1=$(now)
+    echo "$res" >>"$log"
+    hash=$(echo "$res" | sed -n 's/.*repro_hash=\([0-9a-f]\{16\}\).*/\1/p; s/.*"hash": "\([0-9a-f]\{16\}\)".*/\1/p' | head -n 1)
+    [ $rc -eq 0 ] || hash="(exit-status-$rc)"
+    [ -n "$hash" ] || hash="(no-hash)"
+    echo "$name $hash $(echo "$t1 $t0" | awk '{printf "%.2f", $1 - $2}')" >>"$out"
+}
+
+start=$(now)
+echo "repro: amorph $REPRO_ARGS (expected hash $REPRO_EXPECT)"
+# the slow Cortex-M3 run goes on in the background while the others build
+echo "$TARGETS" | {
+    first=1
+    while IFS='|' read -r name vars how; do
+        if [ $first = 1 ]; then
+            first=0
+            one "$name" "$vars" "$how" &
+        else
+            one "$name" "$vars" "$how"
+        fi
+    done
+    wait
+}
+printf '%-22s %-18s %8s\n' target hash seconds
+bad=0
+for name in $(echo "$TARGETS" | cut -d'|' -f1); do
+    line=$(grep "^$name " "$out")
+    hash=$(echo "$line" | cut -d' ' -f2)
+    secs=$(echo "$line" | cut -d' ' -f3)
+    mark=""
+    [ "$hash" = "$REPRO_EXPECT" ] || { mark="  MISMATCH (build/repro/$name.log)"; bad=$((bad + 1)); }
+    printf '%-22s %-18s %8s%s\n' "$name" "${hash:-(missing)}" "${secs:--}" "$mark"
+done
+n=$(wc -l <"$out")
+total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
+if [ "$bad" -ne 0 ]; then
+    echo "repro: $bad of $n targets differ from $REPRO_EXPECT (${total}s)"
+    exit 1
+fi
+echo "repro: all $n targets print $REPRO_EXPECT (${total}s)"

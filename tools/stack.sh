@@ -1,0 +1,72 @@
+#!/bin/sh
+# tools/stack.sh BUILD [ROOT]: worst-case stack depth of a build compiled with
+#   -fstack-usage -fcallgraph-info=su   (make stack does this)
+# from GCC's per-function frame sizes and call graph (BUILD/**/*.ci).
+# Method: frame(f) is GCC's static frame size; depth(f) = frame(f) + the deepest depth among f's
+# callees. An indirect call (through a function pointer: the command table, the parallel map's
+# task, the genotype operation tables) may reach any function nobody calls directly, so it costs
+# the deepest of those. Library functions (libc, libgcc) have no frame figure here and count 0:
+# the figure is amorph's own stack, the C library's frames (printf) come on top.
+# Prints the largest frames, then the deepest chain from ROOT (default main) with its sum.
+BUILD=${1:?usage: tools/stack.sh BUILD [ROOT]}
+ROOT=${2:-main}
+files=$(find "$BUILD" -name '*.ci' | sort)
+[ -n "$files" ] || { echo "stack: no .ci files under $BUILD (build with -fcallgraph-info=su)"; exit 1; }
+cat $files | awk -v root="$ROOT" '
+function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
+/^node:/ {
+    t = $0; sub(/.*title: /, "", t); sub(/ label:.*/, "", t); t = q(t)
+    l = $0; sub(/.*label: "/, "", l); sub(/".*/, "", l)
+    if (match(l, /[0-9]+ bytes/)) {
+        b = substr(l, RSTART, RLENGTH); sub(/ bytes/, "", b); frame[t] = b + 0; defined[t] = 1
+        if (match(l, /bytes \([a-z,]+\)/)) { qual[t] = substr(l, RSTART + 6, RLENGTH - 6); if (qual[t] ~ /dynamic/) dyn[t] = 1 }
+        n = split(l, parts, "\\\\n"); where[t] = parts[2]
+    }
+    next
+}
+/^edge:/ {
+    s = $0; sub(/.*sourcename: /, "", s); sub(/ targetname:.*/, "", s); s = q(s)
+    d = $0; sub(/.*targetname: /, "", d); sub(/ label:.*/, "", d); sub(/ }.*/, "", d); d = q(d)
+    if (!((s, d) in seen)) { seen[s, d] = 1; ne[s]++; to[s, ne[s]] = d; if (d != "__indirect_call") called[d] = 1 }
+    next
+}
+# the deepest callee of an indirect call made by f: a command (cmd_*) when f is the root, else
+# any other function nobody calls directly; a function already on the chain is never re-entered
+function indirect(f,   c, d, best) {
+    best = 0; ibest[f] = ""
+    for (c in cand) {
+        if (onpath[c] || ((f == root) != (c ~ /^cmd_/))) continue
+        d = depth(c); if (d > best) { best = d; ibest[f] = c }
+    }
+    return best
+}
+function depth(f,   i, d, best, c) {
+    if (f in memo) return memo[f]
+    if (onpath[f]) { cycle = cycle " " f; return 0 }
+    onpath[f] = 1; best = 0; bestc[f] = ""
+    for (i = 1; i <= ne[f]; i++) {
+        c = to[f, i]
+        d = (c == "__indirect_call") ? indirect(f) : depth(c)
+        if (d > best) { best = d; bestc[f] = (c == "__indirect_call") ? "*" ibest[f] : c }
+    }
+    onpath[f] = 0
+    memo[f] = frame[f] + best
+    return memo[f]
+}
+END {
+    for (f in defined) if (!(f in called) && f != root && f !~ /(am_reset|on_[a-z_]+|_init|_fini)$/) cand[f] = 1
+    total = depth(root)
+    printf "largest frames (bytes):\n"
+    cmd = "sort -rn | head -n 12"
+    for (f in defined) printf "%8d  %s  %s%s\n", frame[f], f, where[f], (f in dyn) ? " " qual[f] : "" | cmd
+    close(cmd)
+    printf "\ndeepest chain from %s (* = reached through a function pointer):\n", root
+    f = root; n = 0
+    while (f != "" && n++ < 100) {
+        ind = (f ~ /^\*/); if (ind) f = substr(f, 2)
+        printf "%8d  %s%s%s\n", frame[f], ind ? "* " : "", f, (f in defined) ? "" : " (library: not counted)"
+        f = bestc[f]
+    }
+    printf "stack_worst_case_bytes=%d (amorph code only; C library frames come on top)\n", total
+    if (cycle != "") printf "warning: call cycle (recursion) through:%s\n", cycle
+}'
