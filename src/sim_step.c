@@ -39,11 +39,26 @@ static void actuation(const am_model* m, am_state* s)
     const int nv = m->nv, nl = m->nl;
     for (int i = 0; i < nv; i++) s->s[i] = s->mat_scale[m->mat[i]];
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+#if defined(AM_REAL_FIXED_POINT)
+    /* a rest length takes one value per pair of materials: one 64-bit division per change of value
+     * along the link list instead of one per link */
+    am_real last_r = 0, last_inv = 0;
+    for (int l = 0; l < nl; l++) {
+        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
+        if (r != last_r) {
+            last_r = r;
+            last_inv = AM_DIV(AM_R(1), r);
+        }
+        s->rest[l] = r;
+        s->inv_rest[l] = last_inv;
+    }
+#else
     for (int l = 0; l < nl; l++) {
         am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
         s->rest[l] = r;
         s->inv_rest[l] = AM_DIV(AM_R(1), r);
     }
+#endif
 }
 
 /* forces and moments of the links [l0, l1), all along one axis */
@@ -235,7 +250,14 @@ static am_real integrate(const am_model* m, am_state* s)
         quat dq = q_from_rotvec(v3_scale(w, dt));
         quat q = q_mul(dq, qt(s->q[0][i], s->q[1][i], s->q[2][i], s->q[3][i]));
         am_real n2 = AM_MUL(q.w, q.w) + AM_MUL(q.x, q.x) + AM_MUL(q.y, q.y) + AM_MUL(q.z, q.z);
+#if defined(AM_REAL_FIXED_POINT)
+        /* |q| is 1 to within a few ulp: one Newton step from 1, 1/sqrt(n2) = (3 - n2) / 2, is exact
+         * to O((n2 - 1)^2); the root and a division only when q is far from unit */
+        am_real dn = n2 - AM_R(1);
+        am_real inv = am_fabs(dn) < AM_R(0.0009765625) ? AM_R(1) - (dn >> 1) : AM_DIV(AM_R(1), am_sqrt(n2));
+#else
         am_real inv = AM_DIV(AM_R(1), am_sqrt(n2));
+#endif
         s->q[0][i] = AM_MUL(q.w, inv); s->q[1][i] = AM_MUL(q.x, inv);
         s->q[2][i] = AM_MUL(q.y, inv); s->q[3][i] = AM_MUL(q.z, inv);
 
