@@ -20,6 +20,7 @@
 #include "amorph/evolve.h"
 
 #include <stdarg.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -169,7 +170,7 @@ static int to_long(const char* s, long lo, long hi, long* out)
     }
     if (!*s) return 0;
     for (; *s; s++) {
-        if (*s < '0' || *s > '9' || v > 100000000000L) return 0;
+        if (*s < '0' || *s > '9' || v > (LONG_MAX - 9) / 10) return 0;
         v = v * 10 + (*s - '0');
     }
     if (neg) v = -v;

@@ -3,6 +3,7 @@
 #include "amorph/evolve.h"
 
 #include <stddef.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -145,7 +146,7 @@ static int parse_long(const char* s, long* out)
     if (!*s) return 0;
     for (; *s; s++) {
         if (*s < '0' || *s > '9') return 0;
-        if (v > 100000000000L) return 0;
+        if (v > (LONG_MAX - 9) / 10) return 0;
         v = v * 10 + (*s - '0');
     }
     *out = neg ? -v : v;

@@ -190,4 +190,11 @@ for x in three-materials dynamic friction; do
     "$AMORPH" experiment --help | grep -q "^  $x " && ok || ko "experiment --help lacks $x"
 done
 
+# --- repro: the reference run prints one hash, the same for any thread count ---
+r1=$("$AMORPH" repro | sed -n 's/^repro_hash=//p'); r2=$("$AMORPH" repro --threads 3 | sed -n 's/^repro_hash=//p')
+if echo "$r1" | grep -qE '^[0-9a-f]{16}$' && [ "$r1" = "$r2" ]; then ok; else ko "repro hashes '$r1' '$r2'"; fi
+r3=$("$AMORPH" repro --seed 1 | sed -n 's/^repro_hash=//p')
+if [ -n "$r3" ] && [ "$r3" != "$r1" ]; then ok; else ko "repro --seed 1 gave the reference hash"; fi
+expect_fail 2 "unknown option '--out'" "$AMORPH" repro --out x
+
 summary tests/cli_evolve.sh

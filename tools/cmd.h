@@ -11,6 +11,7 @@ int cmd_random(int argc, char** argv);
 int cmd_express(int argc, char** argv);
 int cmd_evolve(int argc, char** argv);
 int cmd_experiment(int argc, char** argv);
+int cmd_repro(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */

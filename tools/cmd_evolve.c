@@ -9,7 +9,13 @@
 
 static am_evo g_evo;
 static am_evo_work g_work[AM_MAX_WORKERS];
+#if defined(AM_PROFILE_BOARD)
+/* a board's checkpoints: genomes of the board profile's sizes written compactly fit easily;
+ * a larger one is refused with a capacity message, never overflowed */
+static char g_ckpt[48L << 10];
+#else
 static char g_ckpt[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+#endif
 static am_lattice g_best_lat;
 
 static const char evolve_help[] =
@@ -694,4 +700,56 @@ int tool_bench_evolve(long evaluations)
     printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
            hash[0] == hash[1] ? "yes" : "NO");
     return hash[0] == hash[1] ? 0 : 1;
+}
+
+/* ---- repro: the reference evolution of `make repro` ---- */
+
+static const char repro_help[] =
+    "usage: amorph repro [--KEY VALUE]...\n"
+    "Runs the reference evolution of `make repro` in memory (no files) and prints one line\n"
+    "repro_hash=<16 hex digits>: the run hash over every genome, fitness and final simulation\n"
+    "state of the run. Every build on every platform must print the same value. The reference\n"
+    "run: GMX, 6^3 workspace, population 8, 24 evaluations, 1 cycle of 100 steps after at most\n"
+    "150 steps of relaxation; flags (configuration keys) change it.\n";
+
+int cmd_repro(int argc, char** argv)
+{
+    evo_opts o;
+    memset(&o, 0, sizeof o);
+    static const char* const ref[][2] = {
+        {"representation", "gmx"}, {"workspace", "6"}, {"population", "8"}, {"evaluations", "24"}, {"cycles", "1"},
+        {"period_steps", "100"}, {"relax_min_steps", "50"}, {"relax_max_steps", "150"}, {"gmx_points", "12"},
+        {"seed", "2024"}, {"threads", "1"},
+    };
+    for (size_t k = 0; k < sizeof ref / sizeof ref[0]; k++) {
+        o.key[o.nflags] = ref[k][0];
+        o.val[o.nflags++] = ref[k][1];
+    }
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(repro_help, stdout);
+            return 0;
+        }
+        const char* a = argv[i];
+        int r = parse_common(argc, argv, &i, &o, "repro");
+        if (r < 0) return 2;
+        if (r == 0 || o.config || o.out || o.resume || o.print_config)
+            return tool_usage_error("repro: unknown option '%s' (amorph repro --help)", a);
+    }
+    am_evo_def d;
+    if (build_def(&o, &d, "repro")) return 2;
+    char err[AM_ERR_MAX];
+    if (am_evo_init(&g_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
+    const double t0 = am_port_now();
+    while (!am_evo_done(&g_evo))
+        if (am_evo_generation(&g_evo, g_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+            fprintf(stderr, "amorph: repro: %s\n", err);
+            return 1;
+        }
+    long voxel_steps = 0;
+    for (int i = 0; i < d.population; i++) voxel_steps += (long)g_evo.pop[i].voxels * g_evo.pop[i].steps;
+    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", g_evo.evaluations,
+           g_evo.generation, g_evo.best.fitness, voxel_steps, am_port_now() - t0);
+    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&g_evo));
+    return 0;
 }

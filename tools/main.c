@@ -11,6 +11,7 @@ static const struct {
 } commands[] = {
     {"evolve", cmd_evolve, "evolve robots (the seed's experiment by default; resumable run folders)"},
     {"experiment", cmd_experiment, "run one of the seed's experiments (representations, three-materials, ...)"},
+    {"repro", cmd_repro, "run the reference evolution of make repro and print its hash"},
     {"sim", cmd_sim, "simulate one robot (lattice, genome or --scene) and print its fitness"},
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
     {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},

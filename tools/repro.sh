@@ -13,8 +13,8 @@
 set -u
 cd "$(dirname "$0")/.."
 
-REPRO_ARGS=${REPRO_ARGS:-"sim --scene sphere:6 --cycles 1 --json"}
-REPRO_EXPECT=${REPRO_EXPECT:-9185e86e51d9ca11}
+REPRO_ARGS=${REPRO_ARGS:-"repro"}
+REPRO_EXPECT=${REPRO_EXPECT:-b9c47f68a0529b5f}
 JOBS=${JOBS:-2}
 MAKE=${MAKE:-make}
 TIMEOUT=${REPRO_TIMEOUT:-600}
