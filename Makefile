@@ -2,9 +2,10 @@
 #   make                      build/libamorph.a and build/amorph
 #   make test                 every test (the README's test command)
 #   make bench                benchmarks that print figures
+#   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)
-#          REAL=float|double  PROFILE=desktop|board  OPT= (default -O3)  CC=
+#          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
 ARCH    ?= native
 BUILD   ?= build
 REAL    ?= float
@@ -52,8 +53,8 @@ endif
 LDLIBS  := -lm -lpthread
 -include port/$(PORT)/port.mk
 
-ifeq ($(filter $(REAL),float double),)
-$(error REAL must be float or double, not '$(REAL)')
+ifeq ($(filter $(REAL),float double fixed),)
+$(error REAL must be float, double or fixed, not '$(REAL)')
 endif
 ifeq ($(filter $(PROFILE),desktop board),)
 $(error PROFILE must be desktop or board, not '$(PROFILE)')
@@ -64,8 +65,10 @@ DEFS    := -DAM_REAL_$(shell echo $(REAL) | tr a-z A-Z) -DAM_PROFILE_$(shell ech
 WARN    := -Wall -Wextra -Wpedantic -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
            -Wvla -Wdouble-promotion -Wcast-qual -Wformat=2 -Wundef
 CFLAGS  ?=
+# fixed point (docs/fixed.md): sums of am_real wrap around instead of being undefined
+FIXFLAGS := $(if $(filter fixed,$(REAL)),-fwrapv)
 ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
-           -fno-math-errno -fno-trapping-math -g $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
+           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*.c))
 PORT_SRC := $(sort $(wildcard port/$(PORT)/*.c))
@@ -77,7 +80,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h tools/*.h tests/*.h port/$(PORT)/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc repro stack
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc repro stack check-fixed
 all: $(BUILD)/libamorph.a $(BUILD)/amorph
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -112,7 +115,33 @@ unit: $(TEST_BIN) $(BUILD)/amorph
 
 test: all check-alloc
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
-	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed
+	@$(MAKE) --no-print-directory check-fixed
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
+
+# the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
+# util_math.c with the actuation's sin and cbrt, and am_sim_scale of sim_model.c) cross-compiled
+# for a Cortex-M3, which has no FPU, must not call one soft-float helper (__aeabi_f*, __aeabi_d*,
+# libm). Skipped without arm-none-eabi-gcc.
+FIXED_HOT := src/sim_step.c src/sim_collide.c src/util_math.c
+M3CC := arm-none-eabi-gcc
+M3FLAGS := -std=c11 -pedantic-errors $(WARN) -O2 -mcpu=cortex-m3 -mthumb -ffp-contract=off -fwrapv \
+           -DAM_REAL_FIXED -DAM_PROFILE_BOARD -Iinclude
+check-fixed:
+	@if ! command -v $(M3CC) >/dev/null 2>&1; then echo "check-fixed: $(M3CC) not found: skipped"; exit 0; fi; \
+	mkdir -p $(BUILD)/m3 && bad=0 && \
+	for f in $(FIXED_HOT); do o=$(BUILD)/m3/$$(basename $$f .c).o; \
+	    $(M3CC) $(M3FLAGS) -c $$f -o $$o || exit 1; \
+	    calls=$$(arm-none-eabi-nm -u $$o | awk '$$2 ~ /^__aeabi_([fd]|[iu]?[il]2[fd]|[fd]2)|^__(add|sub|mul|div|cmp|eq|lt|gt|le|ge|float|fix|extend|trunc)[sd]f|^(sqrt|floor|fabs|sin|cos|exp|log|pow|cbrt)f?$$/ {printf " %s", $$2}'); \
+	    if [ -n "$$calls" ]; then echo "check-fixed: $$f calls floating point:$$calls"; bad=1; fi; \
+	    echo "check-fixed: $$f calls:$$(arm-none-eabi-nm -u $$o | awk '{printf " %s", $$2}')"; done; \
+	$(M3CC) $(M3FLAGS) -c src/sim_model.c -o $(BUILD)/m3/sim_model.o || exit 1; \
+	scale=$$(arm-none-eabi-objdump -d --disassemble=am_sim_scale $(BUILD)/m3/sim_model.o | awk '/\tbl?\t/ {printf " %s", $$NF}'); \
+	case "$$scale" in *aeabi_[fd]*|*aeabi_[iu]*2[fd]*) echo "check-fixed: am_sim_scale calls floating point:$$scale"; bad=1;; esac; \
+	echo "check-fixed: am_sim_scale (sim_model.c, per material per step) calls:$$scale"; \
+	if [ $$bad -ne 0 ]; then echo "check-fixed: 0 passed, 1 failed"; exit 1; fi; \
+	echo "check-fixed: no floating-point call in $(FIXED_HOT) (Cortex-M3, REAL=fixed, PROFILE=board)"
 
 bench: all
 	$(BUILD)/amorph bench

@@ -12,12 +12,16 @@
 
 static void build_axis(am_real* b, int k, int n)
 {
-    am_real c0 = am_sqrt(AM_R(1) / (am_real)n), c1 = am_sqrt(AM_R(2) / (am_real)n);
+    am_real c0 = am_sqrt(AM_RATIO(1, n)), c1 = am_sqrt(AM_RATIO(2, n));
     for (int u = 0; u < k; u++)
         for (int x = 0; x < n; x++) {
             /* cos(pi m / (2n)) with m = (2x + 1) u reduced modulo one turn (4n) */
             int m = ((2 * x + 1) * u) % (4 * n);
+#if defined(AM_REAL_FIXED_POINT)
+            am_real ang = AM_RATIO((int64_t)AM_PI * m, (int64_t)(2 * n) * AM_FIX_ONE);
+#else
             am_real ang = AM_DIV(AM_PI * (am_real)m, (am_real)(2 * n));
+#endif
             b[u * n + x] = AM_MUL(u == 0 ? c0 : c1, am_cos(ang));
         }
 }

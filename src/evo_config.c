@@ -18,10 +18,10 @@ am_evo_def am_default_evo(void)
     d.env = am_default_env();
     d.eval = am_default_eval();
     d.eval.record = NULL;
-    d.cte = AM_R(0.01);
-    d.mu_static = AM_R(1.0);
-    d.mu_kinetic = AM_R(0.3);
-    d.voxel_size = AM_R(0.01);
+    d.cte = AM_P(0.01);
+    d.mu_static = AM_P(1.0);
+    d.mu_kinetic = AM_P(0.3);
+    d.voxel_size = AM_P(0.01);
     d.population = 20;
     d.evaluations = 200;
     d.seed = 1;
@@ -35,7 +35,7 @@ am_palette am_evo_palette(const am_evo_def* d)
     am_palette p = am_default_palette();
     for (int i = 0; i < p.count; i++) {
         /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
-        if (p.mat[i].cte != AM_R(0)) p.mat[i].cte = d->cte;
+        if (p.mat[i].cte != AM_P(0)) p.mat[i].cte = d->cte;
         p.mat[i].mu_static = d->mu_static;
         p.mat[i].mu_kinetic = d->mu_kinetic;
     }
@@ -44,7 +44,7 @@ am_palette am_evo_palette(const am_evo_def* d)
 
 /* ---- the key table ---- */
 
-typedef enum key_kind { K_INT, K_LONG, K_REAL, K_U64, K_ENUM, K_ONOFF, K_WORKSPACE } key_kind;
+typedef enum key_kind { K_INT, K_LONG, K_REAL, K_PARAM, K_U64, K_ENUM, K_ONOFF, K_WORKSPACE } key_kind;
 
 typedef struct key_def {
     const char* name;
@@ -72,23 +72,23 @@ static const key_def keys[] = {
     {"threads", K_INT, OFF(threads), 0, AM_MAX_WORKERS, NULL, 1, "evaluation workers; 0: every core"},
     {"cycles", K_INT, OFF(eval.cycles), 1, 10000, NULL, 0, "actuation cycles of the movement segment"},
     {"period_steps", K_INT, OFF(env.period_steps), 2, 1e7, NULL, 0, "actuation period, time steps"},
-    {"amplitude", K_REAL, OFF(env.temp_amplitude), 0, 1e4, NULL, 0, "temperature amplitude, degrees"},
-    {"temp_base", K_REAL, OFF(env.temp_base), -1e4, 1e4, NULL, 0, "temperature offset, degrees"},
-    {"cte", K_REAL, OFF(cte), -1, 1, NULL, 0, "thermal expansion of the actuated materials, per degree"},
+    {"amplitude", K_PARAM, OFF(env.temp_amplitude), 0, 1e4, NULL, 0, "temperature amplitude, degrees"},
+    {"temp_base", K_PARAM, OFF(env.temp_base), -1e4, 1e4, NULL, 0, "temperature offset, degrees"},
+    {"cte", K_PARAM, OFF(cte), -1, 1, NULL, 0, "thermal expansion of the actuated materials, per degree"},
     {"cte_mode", K_ENUM, OFF(env.cte_mode), 0, 1, cte_names, 0, "volumetric (seed) or linear (VXA)"},
-    {"mu_static", K_REAL, OFF(mu_static), 0, 100, NULL, 0, "static floor friction"},
-    {"mu_kinetic", K_REAL, OFF(mu_kinetic), 0, 100, NULL, 0, "kinetic floor friction"},
+    {"mu_static", K_PARAM, OFF(mu_static), 0, 100, NULL, 0, "static floor friction"},
+    {"mu_kinetic", K_PARAM, OFF(mu_kinetic), 0, 100, NULL, 0, "kinetic floor friction"},
     {"fitness", K_ENUM, OFF(eval.fitness), 0, 2, fit_names, 0, "centre of mass displacement: horizontal, x or 3d"},
     {"collisions", K_ONOFF, OFF(env.collisions), 0, 1, NULL, 0, "self-collision: on or off"},
-    {"gravity", K_REAL, OFF(env.gravity), 0, 1000, NULL, 0, "m/s^2"},
-    {"dt_frac", K_REAL, OFF(env.dt_frac), 1e-6, 1, NULL, 0, "time step, fraction of the analytic limit"},
+    {"gravity", K_PARAM, OFF(env.gravity), 0, 1000, NULL, 0, "m/s^2"},
+    {"dt_frac", K_PARAM, OFF(env.dt_frac), 1e-6, 1, NULL, 0, "time step, fraction of the analytic limit"},
     {"dt_search", K_ONOFF, OFF(eval.dt_search), 0, 1, NULL, 0, "the seed's empirical time step search"},
-    {"damping_internal", K_REAL, OFF(env.zeta_internal_scale), 0, 1000, NULL, 0, "scale of the internal damping"},
-    {"damping_global", K_REAL, OFF(env.zeta_global_scale), 0, 1000, NULL, 0, "scale of the global damping"},
+    {"damping_internal", K_PARAM, OFF(env.zeta_internal_scale), 0, 1000, NULL, 0, "scale of the internal damping"},
+    {"damping_global", K_PARAM, OFF(env.zeta_global_scale), 0, 1000, NULL, 0, "scale of the global damping"},
     {"relax_min_steps", K_LONG, OFF(eval.relax_min_steps), 0, 1e8, NULL, 0, "relaxation lasts at least this"},
     {"relax_max_steps", K_LONG, OFF(eval.relax_max_steps), 0, 1e8, NULL, 0, "and at most this"},
-    {"settle_speed", K_REAL, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
-    {"voxel_size", K_REAL, OFF(voxel_size), 1e-5, 10, NULL, 0, "cell edge, m"},
+    {"settle_speed", K_PARAM, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
+    {"voxel_size", K_PARAM, OFF(voxel_size), 1e-5, 10, NULL, 0, "cell edge, m"},
     {"dct_k", K_INT, OFF(geno.dct_k), 1, AM_MAX_DCT_K, NULL, 0, "DCT amplitudes per axis"},
     {"cppn_layers", K_INT, OFF(geno.cppn_layers), 1, AM_MAX_CPPN_LAYERS, NULL, 0, "CPPN layers"},
     {"cppn_nodes", K_INT, OFF(geno.cppn_nodes), 1, AM_MAX_CPPN_NODES, NULL, 0, "CPPN nodes per layer"},
@@ -199,11 +199,13 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
         *(uint64_t*)base = v;
         return AM_OK;
     }
-    case K_REAL: {
+    case K_REAL:
+    case K_PARAM: {
         double v;
         if (!parse_double(value, &v) || v < k->lo || v > k->hi)
             return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected a number in [%g, %g]", key, value, k->lo, k->hi);
-        *(am_real*)base = (am_real)v;
+        if (k->kind == K_PARAM) *(am_param*)base = AM_PARAM_FROM_DOUBLE(v);
+        else *(am_real*)base = AM_FROM_DOUBLE(v);
         return AM_OK;
     }
     case K_ENUM:
@@ -310,8 +312,17 @@ static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap
         /* the shortest text that reads back to the same am_real */
         const am_real v = *(const am_real*)base;
         for (int prec = 6; prec <= 17; prec++) {
-            snprintf(out, (size_t)cap, "%.*g", prec, (double)v);
-            if ((am_real)strtod(out, NULL) == v) break;
+            snprintf(out, (size_t)cap, "%.*g", prec, AM_TO_DOUBLE(v));
+            if (AM_FROM_DOUBLE(strtod(out, NULL)) == v) break;
+        }
+        break;
+    }
+    case K_PARAM: {
+        /* the shortest text that reads back to the same am_param */
+        const am_param v = *(const am_param*)base;
+        for (int prec = 6; prec <= 17; prec++) {
+            snprintf(out, (size_t)cap, "%.*g", prec, AM_PARAM_TO_DOUBLE(v));
+            if (AM_PARAM_FROM_DOUBLE(strtod(out, NULL)) == v) break;
         }
         break;
     }

@@ -84,16 +84,16 @@ static int tok_is(const char* ts, const char* te, const char* word)
 static int show_len(const char* ts, const char* te) { return te - ts > LAT_SHOW ? LAT_SHOW : (int)(te - ts); }
 
 /* a real: the whole token must be a finite number */
-static int parse_real(const char* ts, const char* te, am_real* out)
+static int parse_real(const char* ts, const char* te, am_param* out)
 {
     char* end = NULL;
     if (ts >= te) return 0;
-#if defined(AM_REAL_DOUBLE)
-    am_real v = strtod(ts, &end);
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+    am_param v = strtod(ts, &end);
 #else
-    am_real v = strtof(ts, &end);
+    am_param v = strtof(ts, &end);
 #endif
-    if (end != te || !am_finite(v)) return 0;
+    if (end != te || !am_param_finite(v)) return 0;
     *out = v;
     return 1;
 }
@@ -151,7 +151,7 @@ static const char* const key_names[K_COUNT] = {"E", "density", "poisson", "cte",
                                                "zeta_int", "zeta_glob", "zeta_col", "color", "fixed"};
 #define KEY_LIST "E, density, poisson, cte, phase, mu_s, mu_k, zeta_int, zeta_glob, zeta_col, color, fixed"
 
-static am_real get_real(const am_material* m, int k)
+static am_param get_real(const am_material* m, int k)
 {
     switch (k) {
     case K_E: return m->E;
@@ -167,7 +167,7 @@ static am_real get_real(const am_material* m, int k)
     }
 }
 
-static void set_real(am_material* m, int k, am_real v)
+static void set_real(am_material* m, int k, am_param v)
 {
     switch (k) {
     case K_E: m->E = v; break;
@@ -184,14 +184,14 @@ static void set_real(am_material* m, int k, am_real v)
 }
 
 /* the allowed range of each real key; NULL when v is allowed */
-static const char* range_problem(int k, am_real v)
+static const char* range_problem(int k, am_param v)
 {
-    if (!am_finite(v)) return "must be a finite number";
+    if (!am_param_finite(v)) return "must be a finite number";
     switch (k) {
-    case K_E: case K_DENSITY: return v > AM_R(0) ? NULL : "must be greater than 0";
-    case K_POISSON: return v >= AM_R(0) && v < AM_R(0.5) ? NULL : "must be in [0, 0.5)";
+    case K_E: case K_DENSITY: return v > AM_P(0) ? NULL : "must be greater than 0";
+    case K_POISSON: return v >= AM_P(0) && v < AM_P(0.5) ? NULL : "must be in [0, 0.5)";
     case K_MU_S: case K_MU_K: case K_ZETA_INT: case K_ZETA_GLOB: case K_ZETA_COL:
-        return v >= AM_R(0) ? NULL : "must be 0 or more";
+        return v >= AM_P(0) ? NULL : "must be 0 or more";
     default: return NULL;
     }
 }
@@ -234,7 +234,7 @@ static am_status parse_material(const pctx* c, am_palette* pal, const char* p, c
                 return perr(c, AM_ERR_PARSE, "material '%s': fixed must be 0 or 1, not '%.*s'", m->name, show_len(vs, te), vs);
             m->fixed = *vs == '1';
         } else {
-            am_real v;
+            am_param v;
             if (!parse_real(vs, te, &v))
                 return perr(c, AM_ERR_PARSE, "material '%s': %s: '%.*s' is not a finite number", m->name, key_names[k],
                             show_len(vs, te), vs);
@@ -335,7 +335,7 @@ am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname,
     pctx c = {fname ? fname : "(text)", 1, err, errsz};
     if (!lat || !text) return perr(&c, AM_ERR_ARG, "no lattice or no text given");
     memset(lat, 0, sizeof *lat);
-    lat->voxel_size = AM_R(0.01);
+    lat->voxel_size = AM_P(0.01);
     int have_header = 0, have_size = 0, have_voxel = 0;
     int z = -1;   /* layer being read; -1 before the first 'layer' line */
     int y = 0;    /* rows of layer z read so far */
@@ -386,13 +386,13 @@ am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname,
             if ((st = parse_size_line(&c, lat, q, end)) != AM_OK) return st;
             have_size = 1;
         } else if (tok_is(ts, te, "voxel_size")) {
-            am_real v;
+            am_param v;
             if (have_voxel) return perr(&c, AM_ERR_PARSE, "voxel_size given twice");
             if (z >= 0) return perr(&c, AM_ERR_PARSE, "voxel_size must come before the first layer");
             if (!next_token(&q, end, &ts, &te)) return perr(&c, AM_ERR_PARSE, "voxel_size: expected a length in metres");
             if (!parse_real(ts, te, &v))
                 return perr(&c, AM_ERR_PARSE, "voxel_size: '%.*s' is not a finite number", show_len(ts, te), ts);
-            if (!(v > AM_R(0))) return perr(&c, AM_ERR_RANGE, "voxel_size %.*s must be greater than 0", show_len(ts, te), ts);
+            if (!(v > AM_P(0))) return perr(&c, AM_ERR_RANGE, "voxel_size %.*s must be greater than 0", show_len(ts, te), ts);
             if ((st = no_more(&c, "voxel_size", q, end)) != AM_OK) return st;
             lat->voxel_size = v;
             have_voxel = 1;
@@ -462,7 +462,7 @@ static void put(wbuf* w, const char* fmt, ...)
     w->len += n;
 }
 
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
 #define REAL_DIGITS 17
 #else
 #define REAL_DIGITS 9
@@ -471,15 +471,15 @@ static void put(wbuf* w, const char* fmt, ...)
 /* the shortest "%.Ng" that reads back to the same bits (N <= 9 for float, 17 for double, which
  * always round-trips), preferring a form without an exponent: 0.01 rather than 0.00999999978,
  * 1000 rather than 1e+03, but 1e-30 as is */
-static void fmt_real(char out[40], am_real v)
+static void fmt_real(char out[40], am_param v)
 {
     int first = 0;
     for (int digits = 1; digits <= REAL_DIGITS; digits++) {
         snprintf(out, 40, "%.*g", digits, (double)v);
-#if defined(AM_REAL_DOUBLE)
-        am_real back = strtod(out, NULL);
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+        am_param back = strtod(out, NULL);
 #else
-        am_real back = strtof(out, NULL);
+        am_param back = strtof(out, NULL);
 #endif
         if (memcmp(&back, &v, sizeof v) != 0) continue;
         if (!strchr(out, 'e')) return;
@@ -497,7 +497,7 @@ am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* le
     /* the same rules as the parser, so what is written reads back */
     if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_ARG, "lattice format: size %d %d %d outside 1..%d", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
-    if (!am_finite(lat->voxel_size) || !(lat->voxel_size > AM_R(0)))
+    if (!am_param_finite(lat->voxel_size) || !(lat->voxel_size > AM_P(0)))
         return am_fail(err, errsz, AM_ERR_ARG, "lattice format: voxel size must be a positive finite number");
     const am_palette* pal = &lat->palette;
     if (pal->count < 1 || pal->count > AM_MAX_MATERIALS)

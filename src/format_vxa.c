@@ -130,28 +130,28 @@ static am_status double_of(const vctx* c, int n, double* out)
     return AM_OK;
 }
 
-/* read as am_real the way the lattice format reads it (strtof in the float build) */
-static am_status real_of(const vctx* c, int n, am_real* out)
+/* read as am_param the way the lattice format reads it (strtof in the float build) */
+static am_status real_of(const vctx* c, int n, am_param* out)
 {
     char v[VXA_VALUE_MAX];
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
     char* end = NULL;
-#if defined(AM_REAL_DOUBLE)
-    am_real x = v[0] ? strtod(v, &end) : 0;
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+    am_param x = v[0] ? strtod(v, &end) : 0;
 #else
-    am_real x = v[0] ? strtof(v, &end) : 0;
+    am_param x = v[0] ? strtof(v, &end) : 0;
 #endif
-    if (!v[0] || *end || !am_finite(x))
+    if (!v[0] || *end || !am_param_finite(x))
         return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
     *out = x;
     return AM_OK;
 }
 
 /* a real with a range: lo <= x (or lo < x when open) and x <= hi */
-static am_status real_in(const vctx* c, int n, am_real* out, double lo, int open, double hi, const char* what)
+static am_status real_in(const vctx* c, int n, am_param* out, double lo, int open, double hi, const char* what)
 {
-    am_real x = AM_R(0);
+    am_param x = AM_P(0);
     am_status st = real_of(c, n, &x);
     if (st != AM_OK) return st;
     if ((open ? !((double)x > lo) : !((double)x >= lo)) || (double)x > hi)
@@ -300,7 +300,7 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     if (at[2] >= 0) {
         if ((st = children(c, at[2], disp, 4, dt, NULL)) != AM_OK) return st;
         for (int i = 0; i < 4; i++) {
-            am_real x = AM_R(0);
+            am_param x = AM_P(0);
             if (dt[i] < 0) continue;
             if ((st = real_in(c, dt[i], &x, 0, 0, 1, "must be in [0, 1]")) != AM_OK) return st;
             m->color[i] = (uint8_t)floor((double)x * 255.0 + 0.5);
@@ -319,7 +319,7 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     if (mt[1] >= 0 && (st = real_in(c, mt[1], &m->E, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
     if (mt[7] >= 0 && (st = real_in(c, mt[7], &m->density, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
     if (mt[8] >= 0 && (st = real_in(c, mt[8], &m->poisson, 0, 0, 0.5, "must be in [0, 0.5)")) != AM_OK) return st;
-    if (mt[8] >= 0 && !(m->poisson < AM_R(0.5)))
+    if (mt[8] >= 0 && !(m->poisson < AM_P(0.5)))
         return verr(c, mt[8], AM_ERR_RANGE, "<Poissons_Ratio> 0.5 must be in [0, 0.5)");
     if (mt[9] >= 0 && (st = real_of(c, mt[9], &m->cte)) != AM_OK) return st;
     if (mt[10] >= 0 && (st = real_of(c, mt[10], &m->phase)) != AM_OK) return st;
@@ -509,7 +509,7 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
         if (it[1] >= 0) {
             /* a setting of Voxelyze's integrator: amorph's is stable to about 0.4 of its dt_rec
              * (docs/physics.md), so a larger fraction keeps amorph's default */
-            am_real f = AM_R(0);
+            am_param f = AM_P(0);
             if ((st = real_in(c, it[1], &f, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
             if (f > env->dt_frac)
                 warn(c, it[1], "<DtFrac> %g is above the step amorph's integrator is stable at: %g used (amorph sim --dt-frac "
@@ -521,7 +521,7 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     if (at[1] >= 0) {
         if ((st = children(c, at[1], damp, 3, it, NULL)) != AM_OK) return st;
         for (int i = 0; i < 3; i++) {
-            am_real z = AM_R(0);
+            am_param z = AM_P(0);
             if (it[i] < 0) continue;
             if ((st = real_in(c, it[i], &z, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
             for (int k = 0; k < lat->palette.count; k++) {
@@ -579,7 +579,7 @@ static am_status read_environment(vctx* c, int n)
         if (it[2] >= 0 && (st = bool_of(c, it[2], &env->floor)) != AM_OK) return st;
         if (on && acc > 0)
             return verr(c, it[1], AM_ERR_RANGE, "<GravAcc> %.9g points up: amorph's gravity pulls along -z (GravAcc <= 0)", acc);
-        env->gravity = on ? (am_real)-acc : AM_R(0);
+        env->gravity = on ? (am_param)-acc : AM_P(0);
     }
     if (at[4] >= 0) {
         /* VoxCAD's reader: missing switches are off, TempBase 25, TempPeriod 0.1 s; an old file's
@@ -595,15 +595,15 @@ static am_status read_environment(vctx* c, int n)
         if (it[5] >= 0 && (st = double_of(c, it[5], &period)) != AM_OK) return st;
         if (it[1] < 0 && it[2] >= 0) amp = amp_old - base;
         if (!(fabs(amp) <= 1e30)) return verr(c, at[4], AM_ERR_RANGE, "<Thermal>: the temperature amplitude is too large");
-        env->temp_base = AM_R(0);
-        env->temp_amplitude = AM_R(0);
+        env->temp_base = AM_P(0);
+        env->temp_amplitude = AM_P(0);
         if (enabled && vary) {
             if (!(period > 0))
                 return verr(c, it[5] >= 0 ? it[5] : at[4], AM_ERR_RANGE, "<TempPeriod> %.9g must be greater than 0", period);
-            env->temp_amplitude = (am_real)amp;
+            env->temp_amplitude = (am_param)amp;
             c->info->temp_period = period;
         } else if (enabled) {
-            env->temp_base = (am_real)amp; /* a constant temperature TempBase + TempAmplitude */
+            env->temp_base = (am_param)amp; /* a constant temperature TempBase + TempAmplitude */
         }
     }
     return AM_OK;
@@ -666,7 +666,7 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     /* a volumetric CTE not given exactly: three times the linear one (the same small strains) */
     if (env->cte_mode == AM_CTE_VOLUMETRIC)
         for (int k = 0; k < lat->palette.count; k++)
-            if (!cte_given[k]) lat->palette.mat[k].cte = AM_MUL(AM_R(3), lat->palette.mat[k].cte);
+            if (!cte_given[k]) lat->palette.mat[k].cte = AM_P(3) * lat->palette.mat[k].cte;
     return AM_OK;
 }
 
@@ -687,10 +687,10 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     if (!lat || !info || !work || !text) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
     memset(lat, 0, sizeof *lat);
     memset(info, 0, sizeof *info);
-    lat->voxel_size = AM_R(0.001); /* VoxCAD's default Lattice_Dim */
+    lat->voxel_size = AM_P(0.001); /* VoxCAD's default Lattice_Dim */
     info->env = am_default_env();
     info->env.cte_mode = AM_CTE_LINEAR; /* VXA's CTE is linear */
-    info->env.temp_amplitude = AM_R(0); /* no <Thermal>: no actuation, as in VoxCAD */
+    info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
     am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
     if (st != AM_OK) return st;
     vctx c = {work, info, 0, err, errsz};
@@ -751,23 +751,23 @@ static void put(wbuf* w, const char* fmt, ...)
     w->len += n;
 }
 
-/* the shortest "%.Ng" that reads back (as am_real when real, else as double) to the same value,
+/* the shortest "%.Ng" that reads back (as am_param when real, else as double) to the same value,
  * preferring a form without an exponent (1000000 rather than 1e+06, but 1e-30 as is) */
 static const char* num(char out[40], double v, int real)
 {
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
     const int max = 17;
-    (void)real; /* am_real is double: one kind of number */
+    (void)real; /* am_param is double: one kind of number */
 #else
     const int max = real ? 9 : 17;
 #endif
     int first = 0;
     for (int digits = 1; digits <= max; digits++) {
         snprintf(out, 40, "%.*g", digits, v);
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
         int same = strtod(out, NULL) == v;
 #else
-        int same = real ? strtof(out, NULL) == (am_real)v : strtod(out, NULL) == v;
+        int same = real ? strtof(out, NULL) == (am_param)v : strtod(out, NULL) == v;
 #endif
         if (!same) continue;
         if (!strchr(out, 'e')) return out;
@@ -795,7 +795,7 @@ static am_status check_input(const am_lattice* lat, const am_env* env, double dt
 {
     if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_ARG, "vxa format: size %d %d %d outside 1..%d", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
-    if (!am_finite(lat->voxel_size) || !(lat->voxel_size > AM_R(0)))
+    if (!am_param_finite(lat->voxel_size) || !(lat->voxel_size > AM_P(0)))
         return am_fail(err, errsz, AM_ERR_ARG, "vxa format: the voxel size must be a positive finite number");
     const am_palette* pal = &lat->palette;
     if (pal->count < 1 || pal->count > AM_MAX_MATERIALS)
@@ -803,11 +803,11 @@ static am_status check_input(const am_lattice* lat, const am_env* env, double dt
     for (int i = 0; i < pal->count; i++) {
         const am_material* m = &pal->mat[i];
         if (!name_ok(m->name)) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: material %d has a bad name", i + 1);
-        if (!(m->E > AM_R(0)) || !am_finite(m->E) || !(m->density > AM_R(0)) || !am_finite(m->density) ||
-            !(m->poisson >= AM_R(0) && m->poisson < AM_R(0.5)) || !am_finite(m->cte) || !am_finite(m->phase) ||
-            !(m->mu_static >= AM_R(0)) || !am_finite(m->mu_static) || !(m->mu_kinetic >= AM_R(0)) || !am_finite(m->mu_kinetic) ||
-            !(m->zeta_internal >= AM_R(0)) || !am_finite(m->zeta_internal) || !(m->zeta_global >= AM_R(0)) ||
-            !am_finite(m->zeta_global) || !(m->zeta_collision >= AM_R(0)) || !am_finite(m->zeta_collision) ||
+        if (!(m->E > AM_P(0)) || !am_param_finite(m->E) || !(m->density > AM_P(0)) || !am_param_finite(m->density) ||
+            !(m->poisson >= AM_P(0) && m->poisson < AM_P(0.5)) || !am_param_finite(m->cte) || !am_param_finite(m->phase) ||
+            !(m->mu_static >= AM_P(0)) || !am_param_finite(m->mu_static) || !(m->mu_kinetic >= AM_P(0)) || !am_param_finite(m->mu_kinetic) ||
+            !(m->zeta_internal >= AM_P(0)) || !am_param_finite(m->zeta_internal) || !(m->zeta_global >= AM_P(0)) ||
+            !am_param_finite(m->zeta_global) || !(m->zeta_collision >= AM_P(0)) || !am_param_finite(m->zeta_collision) ||
             (m->fixed != 0 && m->fixed != 1))
             return am_fail(err, errsz, AM_ERR_ARG, "vxa format: material '%s' has a value outside its range", m->name);
     }
@@ -816,10 +816,10 @@ static am_status check_input(const am_lattice* lat, const am_env* env, double dt
         if (lat->cell[i] > pal->count)
             return am_fail(err, errsz, AM_ERR_ARG, "vxa format: cell %d holds material id %d, the palette has %d", i, lat->cell[i],
                            pal->count);
-    if (!(env->gravity >= AM_R(0)) || !am_finite(env->gravity) || env->period_steps < 1 || !(env->dt_frac > AM_R(0)) ||
-        !am_finite(env->dt_frac) || !am_finite(env->temp_base) || !am_finite(env->temp_amplitude) || !am_finite(env->lift) ||
-        !(env->lift >= AM_R(0)) || !(env->zeta_internal_scale >= AM_R(0)) || !am_finite(env->zeta_internal_scale) ||
-        !(env->zeta_global_scale >= AM_R(0)) || !am_finite(env->zeta_global_scale) ||
+    if (!(env->gravity >= AM_P(0)) || !am_param_finite(env->gravity) || env->period_steps < 1 || !(env->dt_frac > AM_P(0)) ||
+        !am_param_finite(env->dt_frac) || !am_param_finite(env->temp_base) || !am_param_finite(env->temp_amplitude) || !am_param_finite(env->lift) ||
+        !(env->lift >= AM_P(0)) || !(env->zeta_internal_scale >= AM_P(0)) || !am_param_finite(env->zeta_internal_scale) ||
+        !(env->zeta_global_scale >= AM_P(0)) || !am_param_finite(env->zeta_global_scale) ||
         (env->cte_mode != AM_CTE_VOLUMETRIC && env->cte_mode != AM_CTE_LINEAR))
         return am_fail(err, errsz, AM_ERR_ARG, "vxa format: an environment value is outside its range");
     if (!(dt > 0) || !(dt < 1e30)) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: the time step must be a positive number");
@@ -846,20 +846,20 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
     put(&w, "      <DtFrac>%s</DtFrac>\n    </Integration>\n", num(a, (double)env->dt_frac, 1));
     /* one damping ratio per kind in VXA: material 1's, scaled as the simulator scales it */
     put(&w, "    <Damping>\n      <BondDampingZ>%s</BondDampingZ>\n",
-        num(a, (double)AM_MUL(m0->zeta_internal, env->zeta_internal_scale), 1));
+        num(a, (double)(m0->zeta_internal * env->zeta_internal_scale), 1));
     put(&w, "      <ColDampingZ>%s</ColDampingZ>\n", num(a, (double)m0->zeta_collision, 1));
     put(&w, "      <SlowDampingZ>%s</SlowDampingZ>\n    </Damping>\n",
-        num(a, (double)AM_MUL(m0->zeta_global, env->zeta_global_scale), 1));
+        num(a, (double)(m0->zeta_global * env->zeta_global_scale), 1));
     put(&w, "    <Collisions>\n      <SelfColEnabled>%d</SelfColEnabled>\n      <ColSystem>3</ColSystem>\n"
             "      <CollisionHorizon>3</CollisionHorizon>\n    </Collisions>\n  </Simulator>\n",
         env->collisions ? 1 : 0);
 
-    put(&w, "  <Environment>\n    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_R(0) ? 1 : 0);
+    put(&w, "  <Environment>\n    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
     put(&w, "      <GravAcc>%s</GravAcc>\n      <FloorEnabled>%d</FloorEnabled>\n    </Gravity>\n",
-        env->gravity > AM_R(0) ? num(a, -(double)env->gravity, 1) : "-9.81", env->floor ? 1 : 0);
+        env->gravity > AM_P(0) ? num(a, -(double)env->gravity, 1) : "-9.81", env->floor ? 1 : 0);
     /* VoxCAD's temperature: TempBase + TempAmplitude sin(2 pi t / TempPeriod + phase); expansion
      * follows the difference to TempBase. A constant offset alone is VaryTempEnabled 0. */
-    int vary = env->temp_amplitude != AM_R(0) || env->temp_base == AM_R(0);
+    int vary = env->temp_amplitude != AM_P(0) || env->temp_base == AM_P(0);
     double amp = vary ? (double)env->temp_amplitude : (double)env->temp_base;
     put(&w, "    <Thermal>\n      <TempEnabled>1</TempEnabled>\n      <TempAmplitude>%s</TempAmplitude>\n", num(a, amp, 1));
     put(&w, "      <TempAmp>%s</TempAmp>\n      <TempBase>%s</TempBase>\n", num(a, VXA_TEMP_BASE + amp, 0),

@@ -56,7 +56,7 @@ am_express_def am_default_express(void)
 {
     am_express_def d;
     d.palette = NULL;
-    d.voxel_size = AM_R(0.01);
+    d.voxel_size = AM_P(0.01);
     d.threshold = AM_R(0);
     return d;
 }
@@ -202,15 +202,28 @@ am_real am_geno_perturb(am_rng* r, am_real v, am_real step, am_real lo, am_real 
 void am_geno_tables(am_geno_work* w)
 {
     if (w->tables) return;
+#if defined(AM_REAL_FIXED_POINT)
+    /* the same tables from integer arguments (the table index range is beyond Q7.24); the sigmoid
+     * as (1 - e^-|t|) / (1 + e^-|t|) with the sign of t, since e^16 is beyond the range */
+    for (int i = 0; i <= AM_GENO_TABLE; i++) {
+        int q = i % AM_GENO_TABLE;
+        w->tab_sin[i] = am_sin(AM_RATIO((int64_t)AM_R(6.283185307179586477) * q, (int64_t)AM_GENO_TABLE * AM_FIX_ONE));
+        w->tab_gauss[i] = am_exp(-AM_RATIO(16 * i, AM_GENO_TABLE));
+        am_real t = AM_RATIO(16 * (2 * i - AM_GENO_TABLE), AM_GENO_TABLE), e = am_exp(-am_fabs(t));
+        am_real v = AM_DIV(AM_R(1) - e, AM_R(1) + e);
+        w->tab_sig[i] = t < 0 ? -v : v;
+    }
+#else
     const am_real T = (am_real)AM_GENO_TABLE;
     for (int i = 0; i <= AM_GENO_TABLE; i++) {
         am_real fi = (am_real)i;
         int q = i % AM_GENO_TABLE; /* exact quarter turns for sin(0), sin(pi/2), ... */
-        w->tab_sin[i] = am_sin(AM_DIV(AM_MUL(AM_R(2) * AM_PI, (am_real)q), T));
+        w->tab_sin[i] = am_sin(AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), (am_real)q), T));
         w->tab_gauss[i] = am_exp(-AM_DIV(AM_MUL(AM_GENO_GAUSS_RANGE, fi), T));
         am_real t = AM_MUL(AM_GENO_SIG_RANGE, AM_DIV(AM_R(2) * fi, T) - AM_R(1));
         w->tab_sig[i] = AM_DIV(AM_R(2), AM_R(1) + am_exp(-t)) - AM_R(1);
     }
+#endif
     w->tables = 1;
 }
 
@@ -228,6 +241,8 @@ void am_geno_put_real(am_geno_sink* s, am_real v)
 {
 #if defined(AM_REAL_DOUBLE)
     am_geno_put(s, " %.17g", v);
+#elif defined(AM_REAL_FIXED_POINT)
+    am_geno_put(s, " %.17g", AM_TO_DOUBLE(v)); /* exact: a Q24 value is a short binary fraction */
 #else
     am_geno_put(s, " %.9g", (double)v);
 #endif
@@ -256,7 +271,10 @@ int am_geno_tok_real(const char* s, am_real lo, am_real hi, am_real* out)
     if (!*s) return 0;
     double d = strtod(s, &end);
     if (!end || *end) return 0;
-    am_real v = (am_real)d;
+#if defined(AM_REAL_FIXED_POINT)
+    if (!(d >= AM_TO_DOUBLE(lo) && d <= AM_TO_DOUBLE(hi))) return 0;
+#endif
+    am_real v = AM_FROM_DOUBLE(d);
     if (!am_finite(v) || !(v >= lo && v <= hi)) return 0;
     *out = v;
     return 1;

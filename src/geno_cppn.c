@@ -87,7 +87,7 @@ static am_real walk_real(walk* k, am_real v, am_real max)
 {
     if (k->init) return am_rng_range(k->r, -max, max);
     if (!am_rng_chance(k->r, k->p)) return v;
-    return am_geno_perturb(k->r, v, AM_MUL(k->step, AM_R(2) * max), -max, max);
+    return am_geno_perturb(k->r, v, AM_MUL(k->step, AM_MUL(AM_R(2), max)), -max, max);
 }
 
 static void walk_node(walk* k, am_cppn_node* nd)
@@ -137,7 +137,7 @@ static am_status cppn_init(am_genome* g, const am_geno_def* def, am_rng* r, char
 
 static void cppn_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 {
-    walk k = {r, 0, AM_DIV(def->cppn_changes, (am_real)cppn_values(g)), def->cppn_step, AM_R(0)};
+    walk k = {r, 0, AM_DIV_INT(def->cppn_changes, cppn_values(g)), def->cppn_step, AM_R(0)};
     walk_all(g, &k);
 }
 
@@ -262,7 +262,7 @@ int am_cppn_effective_xscale(const am_genome* g, am_real eff[AM_MAX_CPPN_LAYERS]
     int nmax = g->nx > g->ny ? g->nx : g->ny;
     if (g->nz > nmax) nmax = g->nz;
     /* the cell spacing is h = 2 / (nmax - 1); the limit is R h <= pi/2 */
-    const am_real rmax = nmax > 1 ? AM_DIV(AM_MUL(AM_PI, (am_real)(nmax - 1)), AM_R(4)) : AM_REAL_MAX;
+    const am_real rmax = nmax > 1 ? AM_DIV(AM_MUL(AM_PI, AM_INT(nmax - 1)), AM_R(4)) : AM_REAL_MAX;
     am_real grad[2][AM_MAX_CPPN_NODES]; /* bound on the 1-norm of each node output's gradient */
     int limited = 0;
     for (int l = 0; l < c->layers; l++) {
@@ -302,7 +302,7 @@ static void apply(const am_geno_work* w, const am_cppn_node* nd, am_real xs, am_
     case AM_FN_GAUSS:
         for (int i = 0; i < cnt; i++) {
             am_real t = AM_MUL(xs, acc[i] - off);
-            acc[i] = AM_MUL(ys, AM_R(2) * am_geno_gauss(w, AM_MUL(t, t)) - AM_R(1));
+            acc[i] = AM_MUL(ys, AM_MUL(AM_R(2), AM_GENO_GAUSS_SQ(w, t)) - AM_R(1));
         }
         break;
     case AM_FN_SINE:
@@ -330,7 +330,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
     /* cell centres: the longest side spans [-1, 1], every axis centred */
     for (int a = 0; a < 3; a++)
         for (int i = 0; i < dims[a]; i++)
-            axis[a][i] = nmax > 1 ? AM_DIV((am_real)(2 * i - (dims[a] - 1)), (am_real)(nmax - 1)) : AM_R(0);
+            axis[a][i] = nmax > 1 ? AM_DIV(AM_INT(2 * i - (dims[a] - 1)), AM_INT(nmax - 1)) : AM_R(0);
     int x = 0, y = 0, z = 0;
     for (int c0 = 0; c0 < cells; c0 += AM_CPPN_CHUNK) {
         const int cnt = cells - c0 < AM_CPPN_CHUNK ? cells - c0 : AM_CPPN_CHUNK;

@@ -42,7 +42,7 @@ static am_status dct_init(am_genome* g, const am_geno_def* def, am_rng* r, char*
 
 static void dct_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 {
-    const am_real step = AM_MUL(def->step, AM_R(2) * AM_DCT_AMP_MAX);
+    const am_real step = AM_MUL(def->step, AM_MUL(AM_R(2), AM_DCT_AMP_MAX));
     for (int m = 0; m < g->materials; m++)
         for (int i = 0; i < cube(g->dct.k); i++)
             if (am_rng_chance(r, def->rate))

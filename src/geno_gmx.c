@@ -30,7 +30,7 @@ static am_real radius_max(const am_genome* g)
 {
     int n = g->nx > g->ny ? g->nx : g->ny;
     if (g->nz > n) n = g->nz;
-    return am_max(AM_DIV((am_real)n, AM_R(2)), AM_GMX_RADIUS_MIN);
+    return am_max(AM_DIV(AM_INT(n), AM_R(2)), AM_GMX_RADIUS_MIN);
 }
 
 static int max_points(const am_geno_def* def)
@@ -43,9 +43,9 @@ static am_gmx_point random_point(const am_genome* g, am_rng* r)
 {
     am_gmx_point p;
     memset(&p, 0, sizeof p);
-    p.x = am_rng_range(r, AM_R(0), (am_real)(g->nx - 1));
-    p.y = am_rng_range(r, AM_R(0), (am_real)(g->ny - 1));
-    p.z = am_rng_range(r, AM_R(0), (am_real)(g->nz - 1));
+    p.x = am_rng_range(r, AM_R(0), AM_INT(g->nx - 1));
+    p.y = am_rng_range(r, AM_R(0), AM_INT(g->ny - 1));
+    p.z = am_rng_range(r, AM_R(0), AM_INT(g->nz - 1));
     p.weight = am_rng_range(r, -AM_GMX_WEIGHT_MAX, AM_GMX_WEIGHT_MAX);
     p.radius = am_rng_range(r, AM_GMX_RADIUS_MIN, radius_max(g));
     p.mat = (uint8_t)am_rng_below(r, (uint32_t)g->materials);
@@ -61,8 +61,8 @@ static am_status gmx_check(const am_genome* g, char* err, int errsz)
     const am_real rmax = radius_max(g);
     for (int i = 0; i < x->count; i++) {
         const am_gmx_point* p = &x->pt[i];
-        if (!(p->x >= AM_R(0) && p->x <= (am_real)(g->nx - 1)) || !(p->y >= AM_R(0) && p->y <= (am_real)(g->ny - 1)) ||
-            !(p->z >= AM_R(0) && p->z <= (am_real)(g->nz - 1)))
+        if (!(p->x >= AM_R(0) && p->x <= AM_INT(g->nx - 1)) || !(p->y >= AM_R(0) && p->y <= AM_INT(g->ny - 1)) ||
+            !(p->z >= AM_R(0) && p->z <= AM_INT(g->nz - 1)))
             return am_fail(err, errsz, AM_ERR_RANGE, "GMX point %d lies outside the workspace", i);
         if (!(am_fabs(p->weight) <= AM_GMX_WEIGHT_MAX) || !(p->radius >= AM_GMX_RADIUS_MIN && p->radius <= rmax) ||
             p->mat >= g->materials)
@@ -86,14 +86,14 @@ static void gmx_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 {
     am_gmx_genome* x = &g->gmx;
     const am_real rmax = radius_max(g), s = def->step;
-    const am_real hi[3] = {(am_real)(g->nx - 1), (am_real)(g->ny - 1), (am_real)(g->nz - 1)};
+    const am_real hi[3] = {AM_INT(g->nx - 1), AM_INT(g->ny - 1), AM_INT(g->nz - 1)};
     for (int i = 0; i < x->count; i++) {
         am_gmx_point* p = &x->pt[i];
         am_real* c[3] = {&p->x, &p->y, &p->z};
         for (int a = 0; a < 3; a++)
             if (am_rng_chance(r, def->rate)) *c[a] = am_geno_perturb(r, *c[a], AM_MUL(s, hi[a]), AM_R(0), hi[a]);
         if (am_rng_chance(r, def->rate))
-            p->weight = am_geno_perturb(r, p->weight, AM_MUL(s, AM_R(2) * AM_GMX_WEIGHT_MAX), -AM_GMX_WEIGHT_MAX, AM_GMX_WEIGHT_MAX);
+            p->weight = am_geno_perturb(r, p->weight, AM_MUL(s, AM_MUL(AM_R(2), AM_GMX_WEIGHT_MAX)), -AM_GMX_WEIGHT_MAX, AM_GMX_WEIGHT_MAX);
         if (am_rng_chance(r, def->rate))
             p->radius = am_geno_perturb(r, p->radius, AM_MUL(s, rmax - AM_GMX_RADIUS_MIN), AM_GMX_RADIUS_MIN, rmax);
         if (g->materials > 1 && am_rng_chance(r, def->gmx_material_rate))
@@ -109,9 +109,9 @@ static void gmx_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 
 void am_gmx_random_plane(const am_genome* g, am_rng* r, am_real point[3], am_real normal[3])
 {
-    point[0] = am_rng_range(r, AM_R(0), (am_real)(g->nx - 1));
-    point[1] = am_rng_range(r, AM_R(0), (am_real)(g->ny - 1));
-    point[2] = am_rng_range(r, AM_R(0), (am_real)(g->nz - 1));
+    point[0] = am_rng_range(r, AM_R(0), AM_INT(g->nx - 1));
+    point[1] = am_rng_range(r, AM_R(0), AM_INT(g->ny - 1));
+    point[2] = am_rng_range(r, AM_R(0), AM_INT(g->nz - 1));
     for (int a = 0; a < 3; a++) normal[a] = am_rng_normal(r);
     am_real len = am_sqrt(AM_MUL(normal[0], normal[0]) + AM_MUL(normal[1], normal[1]) + AM_MUL(normal[2], normal[2]));
     if (!(len > AM_R(0))) {
@@ -197,14 +197,20 @@ static int gmx_equal(const am_genome* a, const am_genome* b)
     return 1;
 }
 
-/* f[i] = e^(-((i - c) / r)^2) along one axis; returns the first and one-past-last non-zero index */
-static void factors(const am_geno_work* w, am_real* f, int n, am_real c, am_real inv_r2, int* lo, int* hi)
+/* f[i] = e^(-((i - c) / r)^2) along one axis; returns the first and one-past-last non-zero index.
+ * inv is 1 / r^2 (1 / r in the fixed-point build) */
+static void factors(const am_geno_work* w, am_real* f, int n, am_real c, am_real inv, int* lo, int* hi)
 {
     *lo = n;
     *hi = 0;
     for (int i = 0; i < n; i++) {
-        am_real d = (am_real)i - c;
-        f[i] = am_geno_gauss(w, AM_MUL(AM_MUL(d, d), inv_r2));
+        am_real d = AM_INT(i) - c;
+#if defined(AM_REAL_FIXED_POINT)
+        am_real dr = AM_MUL(d, inv);
+        f[i] = am_fabs(dr) < AM_R(4) ? am_geno_gauss(w, AM_MUL(dr, dr)) : AM_R(0); /* (d/r)^2 would leave the range */
+#else
+        f[i] = am_geno_gauss(w, AM_MUL(AM_MUL(d, d), inv));
+#endif
         if (f[i] != AM_R(0)) {
             if (*lo == n) *lo = i;
             *hi = i + 1;
@@ -215,12 +221,16 @@ static void factors(const am_geno_work* w, am_real* f, int n, am_real c, am_real
 static void gmx_express(const am_genome* g, am_geno_work* w)
 {
     const int nx = g->nx, ny = g->ny, nz = g->nz, cells = nx * ny * nz;
-    const am_real base = -AM_DIV(AM_GMX_ISO, (am_real)g->materials);
+    const am_real base = -AM_DIV(AM_GMX_ISO, AM_INT(g->materials));
     for (int m = 0; m < g->materials; m++)
         for (int c = 0; c < cells; c++) w->dens[m][c] = base;
     for (int k = 0; k < g->gmx.count; k++) {
         const am_gmx_point* p = &g->gmx.pt[k];
+        #if defined(AM_REAL_FIXED_POINT)
+        const am_real inv_r2 = AM_DIV(AM_R(1), p->radius);
+#else
         const am_real inv_r2 = AM_DIV(AM_R(1), AM_MUL(p->radius, p->radius));
+#endif
         int x0, x1, y0, y1, z0, z1;
         factors(w, w->fx, nx, p->x, inv_r2, &x0, &x1);
         factors(w, w->fy, ny, p->y, inv_r2, &y0, &y1);
@@ -272,7 +282,7 @@ static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
     if (ntok != 7) return am_fail(err, errsz, AM_ERR_PARSE, "'point' needs X Y Z WEIGHT RADIUS MATERIAL");
     if (ps->lines >= x->count) return am_fail(err, errsz, AM_ERR_PARSE, "more 'point' lines than the %d announced", x->count);
     am_gmx_point* p = &x->pt[ps->lines];
-    const am_real hi[3] = {(am_real)(g->nx - 1), (am_real)(g->ny - 1), (am_real)(g->nz - 1)};
+    const am_real hi[3] = {AM_INT(g->nx - 1), AM_INT(g->ny - 1), AM_INT(g->nz - 1)};
     am_real* c[3] = {&p->x, &p->y, &p->z};
     for (int a = 0; a < 3; a++)
         if (!am_geno_tok_real(tok[1 + a], AM_R(0), hi[a], c[a]))

@@ -163,7 +163,7 @@ am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n)
     if (n <= 0) return AM_R(0);
     int diff = 0;
     for (int i = 0; i < n; i++) diff += a[i] != b[i];
-    return AM_DIV((am_real)diff, (am_real)n);
+    return AM_RATIO(diff, n);
 }
 
 am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_work* w, am_real* out,

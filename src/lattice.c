@@ -10,22 +10,22 @@ am_material am_default_material(void)
     am_material m;
     memset(&m, 0, sizeof m);
     strcpy(m.name, "passive");
-    m.E = AM_R(1.0e6);
-    m.density = AM_R(1000.0);
-    m.poisson = AM_R(0.0);
-    m.cte = AM_R(0.0);
-    m.phase = AM_R(0.0);
-    m.mu_static = AM_R(1.0);
-    m.mu_kinetic = AM_R(0.3);
-    m.zeta_internal = AM_R(1.0);
-    m.zeta_global = AM_R(0.01);
-    m.zeta_collision = AM_R(0.8);
+    m.E = AM_P(1.0e6);
+    m.density = AM_P(1000.0);
+    m.poisson = AM_P(0.0);
+    m.cte = AM_P(0.0);
+    m.phase = AM_P(0.0);
+    m.mu_static = AM_P(1.0);
+    m.mu_kinetic = AM_P(0.3);
+    m.zeta_internal = AM_P(1.0);
+    m.zeta_global = AM_P(0.01);
+    m.zeta_collision = AM_P(0.8);
     m.color[0] = 40; m.color[1] = 90; m.color[2] = 220; m.color[3] = 255;
     m.fixed = 0;
     return m;
 }
 
-static am_material variant(const char* name, am_real E, am_real rho, am_real cte, am_real phase,
+static am_material variant(const char* name, am_param E, am_param rho, am_param cte, am_param phase,
                            uint8_t r, uint8_t g, uint8_t b, int fixed)
 {
     am_material m = am_default_material();
@@ -44,16 +44,16 @@ am_palette am_default_palette(void)
 {
     am_palette p;
     memset(&p, 0, sizeof p);
-    const am_real half_pi = AM_PI / AM_R(2);
-    p.mat[0] = variant("passive", AM_R(1e6), AM_R(1000), AM_R(0), AM_R(0), 40, 90, 220, 0);
-    p.mat[1] = variant("active", AM_R(1e6), AM_R(1000), AM_R(0.01), AM_R(0), 240, 200, 30, 0);
-    p.mat[2] = variant("active90", AM_R(1e6), AM_R(1000), AM_R(0.01), -half_pi, 220, 40, 40, 0);
-    p.mat[3] = variant("stiff", AM_R(1e7), AM_R(1000), AM_R(0), AM_R(0), 140, 140, 150, 0);
-    p.mat[4] = variant("soft", AM_R(1e5), AM_R(1000), AM_R(0), AM_R(0), 60, 190, 90, 0);
-    p.mat[5] = variant("heavy", AM_R(1e6), AM_R(3000), AM_R(0), AM_R(0), 110, 70, 40, 0);
-    p.mat[6] = variant("light", AM_R(1e6), AM_R(300), AM_R(0), AM_R(0), 200, 230, 250, 0);
-    p.mat[7] = variant("active180", AM_R(1e6), AM_R(1000), AM_R(0.01), AM_PI, 240, 130, 20, 0);
-    p.mat[8] = variant("fixed", AM_R(1e6), AM_R(1000), AM_R(0), AM_R(0), 30, 30, 30, 1);
+    const am_param half_pi = AM_P(3.14159265358979323846) / AM_P(2);
+    p.mat[0] = variant("passive", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 40, 90, 220, 0);
+    p.mat[1] = variant("active", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(0), 240, 200, 30, 0);
+    p.mat[2] = variant("active90", AM_P(1e6), AM_P(1000), AM_P(0.01), -half_pi, 220, 40, 40, 0);
+    p.mat[3] = variant("stiff", AM_P(1e7), AM_P(1000), AM_P(0), AM_P(0), 140, 140, 150, 0);
+    p.mat[4] = variant("soft", AM_P(1e5), AM_P(1000), AM_P(0), AM_P(0), 60, 190, 90, 0);
+    p.mat[5] = variant("heavy", AM_P(1e6), AM_P(3000), AM_P(0), AM_P(0), 110, 70, 40, 0);
+    p.mat[6] = variant("light", AM_P(1e6), AM_P(300), AM_P(0), AM_P(0), 200, 230, 250, 0);
+    p.mat[7] = variant("active180", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(3.14159265358979323846), 240, 130, 20, 0);
+    p.mat[8] = variant("fixed", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 30, 30, 30, 1);
     p.count = 9;
     return p;
 }
@@ -65,14 +65,14 @@ int am_palette_find(const am_palette* p, const char* name)
     return -1;
 }
 
-am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_real voxel_size, char* err, int errsz)
+am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxel_size, char* err, int errsz)
 {
     if (nx < 1 || ny < 1 || nz < 1)
         return am_fail(err, errsz, AM_ERR_RANGE, "lattice size %d x %d x %d: every side must be at least 1", nx, ny, nz);
     if (nx > AM_MAX_DIM || ny > AM_MAX_DIM || nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice size %d x %d x %d exceeds the %s profile's %d per side",
                        nx, ny, nz, AM_PROFILE_NAME, AM_MAX_DIM);
-    if (!(voxel_size > AM_R(0)) || !am_finite(voxel_size))
+    if (!(voxel_size > AM_P(0)) || !am_param_finite(voxel_size))
         return am_fail(err, errsz, AM_ERR_RANGE, "voxel size must be a positive number of metres");
     lat->nx = nx;
     lat->ny = ny;
@@ -110,7 +110,7 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
     size_t kind_len = colon ? (size_t)(colon - name) : strlen(name);
     if (!colon || !parse_size(colon + 1, &n) || n < 1)
         return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': expected NAME:N with N >= 1 (cube:N, sphere:D, cantilever:N, chain:N)", name);
-    const am_real L = AM_R(0.01);
+    const am_param L = AM_P(0.01);
     am_status st;
     if (kind_len == 4 && strncmp(name, "cube", 4) == 0) {
         if ((st = am_lattice_init(lat, n, n, n, L, err, errsz)) != AM_OK) return st;

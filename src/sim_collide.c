@@ -32,7 +32,11 @@ static uint32_t bucket_of(long cx, long cy, long cz)
     return h & (AM_COLL_BUCKETS - 1);
 }
 
+#if defined(AM_REAL_FIXED_POINT)
+static long cell_coord(am_real x, am_real inv_h) { return (long)AM_FLOOR_INT(AM_MUL(x, inv_h)); }
+#else
 static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(x, inv_h)); }
+#endif
 
 static void rebuild(const am_model* m, am_state* s)
 {
@@ -63,6 +67,9 @@ static void rebuild(const am_model* m, am_state* s)
                     for (int j = s->bucket_head[b]; j >= 0; j = s->bucket_next[j]) {
                         if (j <= i) continue;
                         am_real ex = s->x[0][j] - s->x[0][i], ey = s->x[1][j] - s->x[1][i], ez = s->x[2][j] - s->x[2][i];
+                        /* a far pair is out on one axis already (and its square might leave a
+                         * fixed-point range) */
+                        if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
                         if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) >= h2) continue;
                         if (within_two_links(m, i, j)) continue;
                         if (np >= AM_MAX_PAIRS) {
@@ -92,6 +99,9 @@ static int needs_rebuild(const am_model* m, const am_state* s)
     am_real lim = AM_MUL(slack, slack);
     for (int i = 0; i < m->nv; i++) {
         am_real ex = s->x[0][i] - s->xref[0][i], ey = s->x[1][i] - s->xref[1][i], ez = s->x[2][i] - s->xref[2][i];
+#if defined(AM_REAL_FIXED_POINT)
+        if (am_fabs(ex) > slack || am_fabs(ey) > slack || am_fabs(ez) > slack) return 1; /* before squaring */
+#endif
         if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim) return 1;
     }
     return 0;

@@ -15,7 +15,7 @@ am_eval_def am_default_eval(void)
     d.dt_search = 0;
     d.relax_max_steps = 4000;
     d.relax_min_steps = 200;
-    d.settle_speed = AM_R(1e-3);
+    d.settle_speed = AM_P(1e-3);
     d.record = 0;
     return d;
 }
@@ -27,12 +27,12 @@ double am_kinetic_energy(const am_model* m, const am_state* s)
         if (m->fixed[i]) continue;
         double p2 = 0, h2 = 0;
         for (int c = 0; c < 3; c++) {
-            p2 += (double)s->p[c][i] * (double)s->p[c][i];
-            h2 += (double)s->h[c][i] * (double)s->h[c][i];
+            p2 += AM_TO_DOUBLE(s->p[c][i]) * AM_TO_DOUBLE(s->p[c][i]);
+            h2 += AM_TO_DOUBLE(s->h[c][i]) * AM_TO_DOUBLE(s->h[c][i]);
         }
-        e += 0.5 * p2 * (double)m->inv_mass[i] + 0.5 * h2 * (double)m->inv_inertia[i];
+        e += 0.5 * p2 * AM_TO_DOUBLE(m->inv_mass[i]) + 0.5 * h2 * AM_TO_DOUBLE(m->inv_inertia[i]);
     }
-    return e;
+    return e * am_unit(m, AM_DIM_ENERGY);
 }
 
 /* the elastic energy of the frame element whose forces am_step uses */
@@ -44,52 +44,56 @@ double am_strain_energy(const am_model* m, const am_state* s)
         int axis = link_axis(m, l);
         link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
         if (s->large[l]) link_kin_large(&k);
-        double rest = (double)m->L * 0.5 * ((double)s->s[m->lneg[l]] + (double)s->s[m->lpos[l]]);
-        double u = (double)k.p.x - rest, y = (double)k.p.y, z = (double)k.p.z;
-        double t1x = (double)k.t1.x, t1y = (double)k.t1.y, t1z = (double)k.t1.z;
-        double t2x = (double)k.t2.x, t2y = (double)k.t2.y, t2z = (double)k.t2.z;
-        double b1 = (double)m->b1[l], b2 = (double)m->b2[l], b3 = (double)m->b3[l];
-        e += 0.5 * (double)m->k_ax[l] * u * u / rest;
+        double rest = AM_TO_DOUBLE(m->L) * 0.5 * (AM_TO_DOUBLE(s->s[m->lneg[l]]) + AM_TO_DOUBLE(s->s[m->lpos[l]]));
+        double u = AM_TO_DOUBLE(k.p.x) - rest, y = AM_TO_DOUBLE(k.p.y), z = AM_TO_DOUBLE(k.p.z);
+        double t1x = AM_TO_DOUBLE(k.t1.x), t1y = AM_TO_DOUBLE(k.t1.y), t1z = AM_TO_DOUBLE(k.t1.z);
+        double t2x = AM_TO_DOUBLE(k.t2.x), t2y = AM_TO_DOUBLE(k.t2.y), t2z = AM_TO_DOUBLE(k.t2.z);
+        double b1 = AM_TO_DOUBLE(m->b1[l]), b2 = AM_TO_DOUBLE(m->b2[l]), b3 = AM_TO_DOUBLE(m->b3[l]);
+        e += 0.5 * AM_TO_DOUBLE(m->k_ax[l]) * u * u / rest;
         e += 0.5 * b1 * (y * y + z * z) - b2 * y * (t1z + t2z) + b2 * z * (t1y + t2y);
         e += b3 * (t1z * t1z + t1z * t2z + t2z * t2z) + b3 * (t1y * t1y + t1y * t2y + t2y * t2y);
-        e += 0.5 * (double)m->a2[l] * (t2x - t1x) * (t2x - t1x);
+        e += 0.5 * AM_TO_DOUBLE(m->a2[l]) * (t2x - t1x) * (t2x - t1x);
     }
-    return e;
+    return e * am_unit(m, AM_DIM_ENERGY);
 }
 
 double am_potential_energy(const am_model* m, const am_state* s)
 {
     double e = 0;
     for (int i = 0; i < m->nv; i++) {
-        e += (double)m->mass[i] * (double)m->env.gravity * (double)s->x[2][i];
+        e += AM_TO_DOUBLE(m->mass[i]) * AM_TO_DOUBLE(m->gravity) * AM_TO_DOUBLE(s->x[2][i]);
         if (m->env.floor) {
-            double pen = 0.5 * (double)s->s[i] * (double)m->L - (double)s->x[2][i];
-            if (pen > 0) e += 0.5 * (double)m->k_floor[i] * pen * pen;
+            double pen = 0.5 * AM_TO_DOUBLE(s->s[i]) * AM_TO_DOUBLE(m->L) - AM_TO_DOUBLE(s->x[2][i]);
+            if (pen > 0) e += 0.5 * AM_TO_DOUBLE(m->k_floor[i]) * pen * pen;
         }
     }
-    return e;
+    return e * am_unit(m, AM_DIM_ENERGY);
 }
 
 void am_com(const am_model* m, const am_state* s, double out[3])
 {
     double mt = 0, c[3] = {0, 0, 0};
     for (int i = 0; i < m->nv; i++) {
-        mt += (double)m->mass[i];
-        for (int k = 0; k < 3; k++) c[k] += (double)m->mass[i] * (double)s->x[k][i];
+        mt += AM_TO_DOUBLE(m->mass[i]);
+        for (int k = 0; k < 3; k++) c[k] += AM_TO_DOUBLE(m->mass[i]) * AM_TO_DOUBLE(s->x[k][i]);
     }
-    for (int k = 0; k < 3; k++) out[k] = mt > 0 ? c[k] / mt : 0;
+    for (int k = 0; k < 3; k++) out[k] = (mt > 0 ? c[k] / mt : 0) * m->unit_len;
 }
 
 void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang[3])
 {
     for (int k = 0; k < 3; k++) lin[k] = ang[k] = 0;
     for (int i = 0; i < m->nv; i++) {
-        double x = (double)s->x[0][i], y = (double)s->x[1][i], z = (double)s->x[2][i];
-        double px = (double)s->p[0][i], py = (double)s->p[1][i], pz = (double)s->p[2][i];
+        double x = AM_TO_DOUBLE(s->x[0][i]), y = AM_TO_DOUBLE(s->x[1][i]), z = AM_TO_DOUBLE(s->x[2][i]);
+        double px = AM_TO_DOUBLE(s->p[0][i]), py = AM_TO_DOUBLE(s->p[1][i]), pz = AM_TO_DOUBLE(s->p[2][i]);
         lin[0] += px; lin[1] += py; lin[2] += pz;
-        ang[0] += y * pz - z * py + (double)s->h[0][i];
-        ang[1] += z * px - x * pz + (double)s->h[1][i];
-        ang[2] += x * py - y * px + (double)s->h[2][i];
+        ang[0] += y * pz - z * py + AM_TO_DOUBLE(s->h[0][i]);
+        ang[1] += z * px - x * pz + AM_TO_DOUBLE(s->h[1][i]);
+        ang[2] += x * py - y * px + AM_TO_DOUBLE(s->h[2][i]);
+    }
+    for (int k = 0; k < 3; k++) {
+        lin[k] *= am_unit(m, AM_DIM_MOMENTUM);
+        ang[k] *= am_unit(m, AM_DIM_ANGMOM);
     }
 }
 
@@ -120,10 +124,10 @@ void am_record_frame(const am_model* m, const am_state* s, am_record* rec)
     }
     float* f = rec->pose + (long)rec->frames * m->nv * 7;
     for (int i = 0; i < m->nv; i++) {
-        f[7 * i + 0] = (float)s->x[0][i];
-        f[7 * i + 1] = (float)s->x[1][i];
-        f[7 * i + 2] = (float)s->x[2][i];
-        for (int c = 0; c < 4; c++) f[7 * i + 3 + c] = (float)s->q[c][i];
+        f[7 * i + 0] = (float)am_to_si(m, s->x[0][i], AM_DIM_LENGTH);
+        f[7 * i + 1] = (float)am_to_si(m, s->x[1][i], AM_DIM_LENGTH);
+        f[7 * i + 2] = (float)am_to_si(m, s->x[2][i], AM_DIM_LENGTH);
+        for (int c = 0; c < 4; c++) f[7 * i + 3 + c] = (float)AM_TO_DOUBLE(s->q[c][i]);
     }
     if (rec->step) rec->step[rec->frames] = s->step;
     rec->frames++;
@@ -182,7 +186,7 @@ am_real am_dt_search(const am_model* m, am_state* scratch)
         /* fine pass: nine values between the last unstable and the first stable one, largest first */
         am_real inc = AM_DIV(unstable - stable, AM_R(10));
         for (int j = 1; j < 10; j++) {
-            am_real cand = unstable - AM_MUL(AM_R(j), inc);
+            am_real cand = unstable - AM_MUL(AM_INT(j), inc);
             if (stable_at(m, scratch, cand)) {
                 stable = cand;
                 break;
@@ -196,8 +200,8 @@ static double rms_speed(const am_model* m, const am_state* s)
 {
     double sum = 0;
     for (int i = 0; i < m->nv; i++)
-        for (int c = 0; c < 3; c++) sum += (double)s->v[c][i] * (double)s->v[c][i];
-    return sqrt(sum / (double)m->nv);
+        for (int c = 0; c < 3; c++) sum += AM_TO_DOUBLE(s->v[c][i]) * AM_TO_DOUBLE(s->v[c][i]);
+    return sqrt(sum / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
 }
 
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
@@ -208,7 +212,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
     if (def->dt_search) s->dt = dt;
-    out->dt = (double)s->dt;
+    out->dt = am_to_si(m, s->dt, AM_DIM_TIME);
     am_record* rec = def->record;
     if (rec) {
         rec->frames = 0;
@@ -242,7 +246,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     }
     out->move_steps = s->step - out->relax_steps;
     out->steps = s->step;
-    out->sim_seconds = (double)s->step * (double)s->dt;
+    out->sim_seconds = (double)s->step * am_to_si(m, s->dt, AM_DIM_TIME);
     out->rebuilds = s->rebuilds;
     out->max_pairs = s->max_npairs;
     am_com(m, s, c1);

@@ -135,6 +135,24 @@ static inline void link_kin_large(link_kin* k)
     k->rot = r;
 }
 
+/* v + a b: in the fixed-point build exactly, with the rounding remainder carried in *rem to the
+ * next step (so increments below the resolution, such as the gravity impulse of a stiff body,
+ * accumulate instead of rounding away); v + a b otherwise */
+#if defined(AM_REAL_FIXED_POINT)
+static inline am_real am_acc(am_real v, am_real* rem, am_real a, am_real b)
+{
+    int64_t w = (int64_t)v * AM_FIX_ONE + *rem + (int64_t)a * b;
+    am_real r = (am_real)((w + AM_FIX_HALF) >> AM_FIX_FRAC);
+    *rem = (am_real)(w - (int64_t)r * AM_FIX_ONE);
+    return r;
+}
+#define AM_ACC(v, rem, a, b) am_acc((v), &(rem), (a), (b))
+#define AM_REM_CLEAR(rem) ((rem) = 0)
+#else
+#define AM_ACC(v, rem, a, b) ((v) + AM_MUL((a), (b)))
+#define AM_REM_CLEAR(rem) ((void)0)
+#endif
+
 /* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
 am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
 /* self-collision forces into s->fc, rebuilding the candidate list when needed (sim_collide.c) */

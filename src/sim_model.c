@@ -9,52 +9,93 @@
 
 #include <string.h>
 
+#if defined(AM_REAL_FIXED_POINT)
+/* a parameter in SI converted to model units (u: the SI value of one unit of its dimension) */
+#define PV(v, u) AM_FROM_DOUBLE((double)(v) / (u))
+#else
+#define PV(v, u) (v)
+#endif
+
+double am_unit(const am_model* m, int dim)
+{
+    const double L = m->unit_len, M = m->unit_mass, T = m->unit_time;
+    switch (dim) {
+    case AM_DIM_LENGTH: return L;
+    case AM_DIM_TIME: return T;
+    case AM_DIM_MASS: return M;
+    case AM_DIM_VELOCITY: return L / T;
+    case AM_DIM_ACCEL: return L / (T * T);
+    case AM_DIM_MOMENTUM: return M * L / T;
+    case AM_DIM_ANGMOM: return M * L * L / T;
+    case AM_DIM_FORCE: return M * L / (T * T);
+    case AM_DIM_MOMENT: case AM_DIM_ENERGY: return M * L * L / (T * T);
+    case AM_DIM_ANGVEL: return 1.0 / T;
+    case AM_DIM_INERTIA: return M * L * L;
+    case AM_DIM_STIFFNESS: return M / (T * T);
+    case AM_DIM_PRESSURE: return M / (L * T * T);
+    case AM_DIM_DAMPING: return M / T;
+    default: return 1.0;
+    }
+}
+
+double am_to_si(const am_model* m, am_real v, int dim) { return AM_TO_DOUBLE(v) * am_unit(m, dim); }
+am_real am_from_si(const am_model* m, double v, int dim) { return AM_FROM_DOUBLE(v / am_unit(m, dim)); }
+
+double am_dt_si(const am_model* m, am_param dt_frac)
+{
+#if defined(AM_REAL_FIXED_POINT)
+    return dt_frac * am_to_si(m, m->dt_rec, AM_DIM_TIME);
+#else
+    return (double)(dt_frac * m->dt_rec);
+#endif
+}
+
 am_env am_default_env(void)
 {
     am_env e;
     memset(&e, 0, sizeof e);
-    e.gravity = AM_R(9.80665);
+    e.gravity = AM_P(9.80665);
     e.floor = 1;
     e.collisions = 1;
     e.cte_mode = AM_CTE_VOLUMETRIC;
-    e.temp_base = AM_R(0);
-    e.temp_amplitude = AM_R(30);
+    e.temp_base = AM_P(0);
+    e.temp_amplitude = AM_P(30);
     e.period_steps = 500;
-    e.dt_frac = AM_R(0.3);
-    e.lift = AM_R(0);
-    e.zeta_internal_scale = AM_R(1);
-    e.zeta_global_scale = AM_R(1);
+    e.dt_frac = AM_P(0.3);
+    e.lift = AM_P(0);
+    e.zeta_internal_scale = AM_P(1);
+    e.zeta_global_scale = AM_P(1);
     return e;
 }
 
 static am_status check_material(const am_material* mt, int k, char* err, int errsz)
 {
-    if (!(mt->E > AM_R(0)) || !am_finite(mt->E))
+    if (!(mt->E > AM_P(0)) || !am_param_finite(mt->E))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): E must be a positive number of Pa", k + 1, mt->name);
-    if (!(mt->density > AM_R(0)) || !am_finite(mt->density))
+    if (!(mt->density > AM_P(0)) || !am_param_finite(mt->density))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): density must be positive", k + 1, mt->name);
-    if (!(mt->poisson >= AM_R(0) && mt->poisson < AM_R(0.5)))
+    if (!(mt->poisson >= AM_P(0) && mt->poisson < AM_P(0.5)))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): Poisson ratio must be in [0, 0.5)", k + 1, mt->name);
-    if (!am_finite(mt->cte) || !am_finite(mt->phase))
+    if (!am_param_finite(mt->cte) || !am_param_finite(mt->phase))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): CTE and phase must be finite", k + 1, mt->name);
-    if (!(mt->mu_static >= AM_R(0)) || !(mt->mu_kinetic >= AM_R(0)) || !am_finite(mt->mu_static) || !am_finite(mt->mu_kinetic))
+    if (!(mt->mu_static >= AM_P(0)) || !(mt->mu_kinetic >= AM_P(0)) || !am_param_finite(mt->mu_static) || !am_param_finite(mt->mu_kinetic))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): friction coefficients must be >= 0", k + 1, mt->name);
-    if (!(mt->zeta_internal >= AM_R(0)) || !(mt->zeta_global >= AM_R(0)) || !(mt->zeta_collision >= AM_R(0)) ||
-        !am_finite(mt->zeta_internal) || !am_finite(mt->zeta_global) || !am_finite(mt->zeta_collision))
+    if (!(mt->zeta_internal >= AM_P(0)) || !(mt->zeta_global >= AM_P(0)) || !(mt->zeta_collision >= AM_P(0)) ||
+        !am_param_finite(mt->zeta_internal) || !am_param_finite(mt->zeta_global) || !am_param_finite(mt->zeta_collision))
         return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): damping ratios must be >= 0", k + 1, mt->name);
     return AM_OK;
 }
 
 static am_status check_env(const am_env* e, char* err, int errsz)
 {
-    if (!(e->gravity >= AM_R(0)) || !am_finite(e->gravity))
+    if (!(e->gravity >= AM_P(0)) || !am_param_finite(e->gravity))
         return am_fail(err, errsz, AM_ERR_RANGE, "gravity must be >= 0 m/s^2");
     if (e->period_steps < 1) return am_fail(err, errsz, AM_ERR_RANGE, "period_steps must be >= 1");
-    if (!(e->dt_frac > AM_R(0)) || !am_finite(e->dt_frac))
+    if (!(e->dt_frac > AM_P(0)) || !am_param_finite(e->dt_frac))
         return am_fail(err, errsz, AM_ERR_RANGE, "dt_frac must be positive");
-    if (!am_finite(e->temp_base) || !am_finite(e->temp_amplitude) || !am_finite(e->lift) || e->lift < AM_R(0))
+    if (!am_param_finite(e->temp_base) || !am_param_finite(e->temp_amplitude) || !am_param_finite(e->lift) || e->lift < AM_P(0))
         return am_fail(err, errsz, AM_ERR_RANGE, "temperatures and lift must be finite (lift >= 0)");
-    if (!(e->zeta_internal_scale >= AM_R(0)) || !(e->zeta_global_scale >= AM_R(0)))
+    if (!(e->zeta_internal_scale >= AM_P(0)) || !(e->zeta_global_scale >= AM_P(0)))
         return am_fail(err, errsz, AM_ERR_RANGE, "damping scales must be >= 0");
     if (e->cte_mode != AM_CTE_VOLUMETRIC && e->cte_mode != AM_CTE_LINEAR)
         return am_fail(err, errsz, AM_ERR_RANGE, "unknown CTE convention %d", e->cte_mode);
@@ -82,7 +123,41 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         if ((st = check_material(&lat->palette.mat[k], k, err, errsz)) != AM_OK) return st;
 
     const int nx = lat->nx, ny = lat->ny, nz = lat->nz, ncell = nx * ny * nz;
-    const am_real L = lat->voxel_size;
+    /* units (docs/fixed.md): SI in the float and double builds; in the fixed-point build the voxel
+     * edge, the mass of the densest voxel of the palette and the time in which the stiffest
+     * material's link moves that mass by one edge, so stiffnesses, masses and sound speeds are O(1) */
+    m->unit_len = m->unit_mass = m->unit_time = 1.0;
+#if defined(AM_REAL_FIXED_POINT)
+    {
+        double rho = 0, E = 0, L = lat->voxel_size;
+        uint8_t used[AM_MAX_MATERIALS + 1] = {0};
+        for (int c = 0; c < ncell; c++) used[lat->cell[c] <= AM_MAX_MATERIALS ? lat->cell[c] : 0] = 1;
+        for (int k = 0; k < lat->palette.count; k++) {
+            if (!used[k + 1]) continue;
+            if (lat->palette.mat[k].density > rho) rho = lat->palette.mat[k].density;
+            if (lat->palette.mat[k].E > E) E = lat->palette.mat[k].E;
+        }
+        if (!(rho > 0)) rho = lat->palette.mat[0].density, E = lat->palette.mat[0].E; /* no voxel: reported below */
+        m->unit_len = L;
+        m->unit_mass = rho * L * L * L;
+        m->unit_time = sqrt(m->unit_mass / (E * L));
+        double tmax = fabs(env->temp_base) + fabs(env->temp_amplitude);
+        if (!(tmax < 100.0) || !(env->gravity * m->unit_time * m->unit_time / L < 1.0) || !(env->lift / L < 50.0))
+            return am_fail(err, errsz, AM_ERR_RANGE, "temperatures (|base| + amplitude < 100 degrees), gravity or lift outside the fixed-point range");
+        for (int k = 0; k < lat->palette.count; k++)
+            if (used[k + 1] && (!(fabs(lat->palette.mat[k].cte) * tmax < 8.0) || !(lat->palette.mat[k].E / E > 1e-5) ||
+                                !(lat->palette.mat[k].density / rho > 1e-3)))
+                return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): CTE, modulus or density ratio outside the fixed-point range",
+                               k + 1, lat->palette.mat[k].name);
+    }
+#endif
+    const double uP = am_unit(m, AM_DIM_PRESSURE), uRho = m->unit_mass / (m->unit_len * m->unit_len * m->unit_len);
+    (void)uP;
+    (void)uRho;
+    const am_real L = PV(lat->voxel_size, m->unit_len);
+    m->gravity = PV(env->gravity, am_unit(m, AM_DIM_ACCEL));
+    m->temp_base = PV(env->temp_base, 1.0);
+    m->temp_amplitude = PV(env->temp_amplitude, 1.0);
     m->env = *env;
     m->palette = lat->palette;
     m->nx = nx;
@@ -112,23 +187,23 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     for (int i = 0; i < nv; i++) {
         const am_material* mt = &lat->palette.mat[m->mat[i]];
         int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
-        m->x0[0][i] = AM_MUL(AM_R(x) + AM_R(0.5), L);
-        m->x0[1][i] = AM_MUL(AM_R(y) + AM_R(0.5), L);
-        m->x0[2][i] = AM_MUL(AM_R(z - kmin) + AM_R(0.5), L) + env->lift;
-        am_real mass = AM_MUL(mt->density, AM_MUL(L, AM_MUL(L, L)));
+        m->x0[0][i] = AM_MUL(AM_INT(x) + AM_R(0.5), L);
+        m->x0[1][i] = AM_MUL(AM_INT(y) + AM_R(0.5), L);
+        m->x0[2][i] = AM_MUL(AM_INT(z - kmin) + AM_R(0.5), L) + PV(env->lift, m->unit_len);
+        am_real mass = AM_MUL(PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
         am_real inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
         m->mass[i] = mass;
         m->fixed[i] = (uint8_t)(mt->fixed != 0);
         m->inv_mass[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
         m->inv_inertia[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
-        am_real EL = AM_MUL(mt->E, L), EL3 = AM_MUL(EL, AM_MUL(L, L));
-        am_real zg = AM_MUL(mt->zeta_global, env->zeta_global_scale);
+        am_real EL = AM_MUL(PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
+        am_real zg = AM_MUL(PV(mt->zeta_global, 1.0), PV(env->zeta_global_scale, 1.0));
         m->c_glob_t[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
         m->c_glob_r[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
         m->k_floor[i] = AM_MUL(AM_R(2), EL);
-        m->c_col[i] = AM_MUL(AM_MUL(AM_R(2), mt->zeta_collision), am_sqrt(AM_MUL(mass, EL)));
-        m->mu_s[i] = mt->mu_static;
-        m->mu_k[i] = mt->mu_kinetic;
+        m->c_col[i] = AM_MUL(AM_MUL(AM_R(2), PV(mt->zeta_collision, 1.0)), am_sqrt(AM_MUL(mass, EL)));
+        m->mu_s[i] = PV(mt->mu_static, 1.0);
+        m->mu_k[i] = PV(mt->mu_kinetic, 1.0);
     }
 
     /* links grouped by axis */
@@ -145,8 +220,9 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             int j = vid[nc];
             const am_material* ma = &lat->palette.mat[m->mat[i]];
             const am_material* mb = &lat->palette.mat[m->mat[j]];
-            am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(ma->E, mb->E)), ma->E + mb->E); /* halves in series */
-            am_real nu = AM_MUL(AM_R(0.5), ma->poisson + mb->poisson);
+            const am_real Ea = PV(ma->E, uP), Eb = PV(mb->E, uP);
+            am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(Ea, Eb)), Ea + Eb); /* halves in series */
+            am_real nu = AM_MUL(AM_R(0.5), PV(ma->poisson, 1.0) + PV(mb->poisson, 1.0));
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
             m->lneg[nl] = i;
             m->lpos[nl] = j;
@@ -160,7 +236,8 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
              * stiffness b3 */
             am_real mu = AM_DIV(AM_MUL(m->mass[i], m->mass[j]), m->mass[i] + m->mass[j]);
             am_real mu_I = AM_DIV(AM_MUL(mu, L2), AM_R(6));
-            am_real zi = AM_MUL(AM_MUL(AM_R(0.5), ma->zeta_internal + mb->zeta_internal), env->zeta_internal_scale);
+            am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
+                                PV(env->zeta_internal_scale, 1.0));
             m->c_t[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));
             m->c_r[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu_I, m->b3[nl])));
             nl++;
@@ -189,12 +266,12 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     }
 
     /* actuation per material, and the largest scale it can reach */
-    am_real tmax = am_fabs(env->temp_base) + am_fabs(env->temp_amplitude);
+    am_real tmax = am_fabs(m->temp_base) + am_fabs(m->temp_amplitude);
     m->max_scale = AM_R(1);
     m->any_cte = 0;
     for (int k = 0; k < lat->palette.count; k++) {
-        m->mat_cte[k] = lat->palette.mat[k].cte;
-        m->mat_phase[k] = lat->palette.mat[k].phase;
+        m->mat_cte[k] = PV(lat->palette.mat[k].cte, 1.0);
+        m->mat_phase[k] = PV(lat->palette.mat[k].phase, 1.0);
         if (m->mat_cte[k] != AM_R(0)) m->any_cte = 1;
         m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], tmax));
         m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], -tmax));
@@ -203,9 +280,19 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
 
     /* divergence bound: ten times the fastest sound speed of the palette */
     am_real c2 = AM_R(0);
+#if defined(AM_REAL_FIXED_POINT)
+    /* the materials of the body only, and at most 10 model units (ten sound speeds of the stiffest
+     * material), so that the bound's square stays in the range */
+    for (int i = 0; i < nv; i++) {
+        const am_material* mt = &lat->palette.mat[m->mat[i]];
+        c2 = am_max(c2, AM_DIV(PV(mt->E, uP), PV(mt->density, uRho)));
+    }
+    m->max_speed = am_min(AM_MUL(AM_R(10), am_sqrt(c2)), AM_R(10));
+#else
     for (int k = 0; k < lat->palette.count; k++)
-        c2 = am_max(c2, AM_DIV(lat->palette.mat[k].E, lat->palette.mat[k].density));
+        c2 = am_max(c2, AM_DIV(PV(lat->palette.mat[k].E, uP), PV(lat->palette.mat[k].density, uRho)));
     m->max_speed = AM_MUL(AM_R(10), am_sqrt(c2));
+#endif
     m->dt_rec = am_dt_analytic(m);
     return AM_OK;
 }
@@ -228,7 +315,7 @@ void am_state_reset(const am_model* m, am_state* s)
     const int nv = m->nv, nl = m->nl;
     s->step = 0;
     s->t = AM_R(0);
-    s->dt = AM_MUL(m->env.dt_frac, m->dt_rec);
+    s->dt = AM_MUL(PV(m->env.dt_frac, 1.0), m->dt_rec);
     s->actuate = 0;
     s->actuation_step0 = 0;
     s->diverged = 0;
@@ -238,6 +325,11 @@ void am_state_reset(const am_model* m, am_state* s)
     s->npairs = -1; /* the first step builds the collision list */
     s->max_npairs = 0;
     s->scales_valid = 0; /* the first step sets scales and rest lengths */
+#if defined(AM_REAL_FIXED_POINT)
+    memset(s->x_rem, 0, sizeof s->x_rem);
+    memset(s->p_rem, 0, sizeof s->p_rem);
+    memset(s->h_rem, 0, sizeof s->h_rem);
+#endif
     for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale[k] = AM_R(1);
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {

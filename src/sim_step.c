@@ -18,11 +18,15 @@ static void actuation(const am_model* m, am_state* s)
     const am_env* e = &m->env;
     int changed = !s->scales_valid;
     for (int k = 0; k < m->palette.count; k++) {
-        am_real T = e->temp_base;
+        am_real T = m->temp_base;
         if (s->actuate) {
             long ph = (s->step - s->actuation_step0) % e->period_steps; /* exact phase in steps */
+#if defined(AM_REAL_FIXED_POINT)
+            am_real arg = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)e->period_steps * AM_FIX_ONE) + m->mat_phase[k];
+#else
             am_real arg = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps)) + m->mat_phase[k];
-            T += AM_MUL(e->temp_amplitude, am_sin(arg));
+#endif
+            T += AM_MUL(m->temp_amplitude, am_sin(arg));
         }
         am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
         changed |= sc != s->mat_scale[k];
@@ -35,11 +39,26 @@ static void actuation(const am_model* m, am_state* s)
     const int nv = m->nv, nl = m->nl;
     for (int i = 0; i < nv; i++) s->s[i] = s->mat_scale[m->mat[i]];
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+#if defined(AM_REAL_FIXED_POINT)
+    /* a rest length takes one value per pair of materials: one 64-bit division per change of value
+     * along the link list instead of one per link */
+    am_real last_r = 0, last_inv = 0;
+    for (int l = 0; l < nl; l++) {
+        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
+        if (r != last_r) {
+            last_r = r;
+            last_inv = AM_DIV(AM_R(1), r);
+        }
+        s->rest[l] = r;
+        s->inv_rest[l] = last_inv;
+    }
+#else
     for (int l = 0; l < nl; l++) {
         am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
         s->rest[l] = r;
         s->inv_rest[l] = AM_DIV(AM_R(1), r);
     }
+#endif
 }
 
 /* forces and moments of the links [l0, l1), all along one axis */
@@ -100,7 +119,7 @@ static am_real link_forces(const am_model* m, am_state* s, int l0, int l1, int a
         s->strain[l] = strain;
         am_real as = am_fabs(strain);
         max_strain = as > max_strain ? as : max_strain;
-        if (!(as == as)) max_strain = AM_REAL_MAX; /* NaN */
+        if (AM_ISNAN(as)) max_strain = AM_REAL_MAX; /* NaN */
     }
     return max_strain;
 }
@@ -118,13 +137,15 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     if (N < AM_R(0)) N = AM_R(0); /* the floor pushes, never pulls */
     F->z += N;
 
+    /* squared norms as wide products: in the fixed-point build these forces and speeds are small
+     * (gravity is 1e-4 of a unit) and their squares would fall below the resolution */
     const am_real vx = s->v[0][i], vy = s->v[1][i];
-    am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy);
+    am_wide v2 = AM_MULW(vx, vx) + AM_MULW(vy, vy);
     if (s->contact[i] == 0) s->contact[i] = v2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
-    am_real fh2 = AM_MUL(F->x, F->x) + AM_MUL(F->y, F->y);
+    am_wide fh2 = AM_MULW(F->x, F->x) + AM_MULW(F->y, F->y);
     if (s->contact[i] == 1) {
         am_real lim = AM_MUL(m->mu_s[i], N);
-        if (fh2 <= AM_MUL(lim, lim)) {
+        if (fh2 <= AM_MULW(lim, lim)) {
             F->x = F->y = AM_R(0);
             return 1;
         }
@@ -133,6 +154,18 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     /* sliding: kinetic friction against the velocity (against the force when not yet moving) */
     am_real fk = AM_MUL(m->mu_k[i], N);
     am_real dx, dy;
+#if defined(AM_REAL_FIXED_POINT)
+    /* the direction as quotients (1 / |v| may be beyond the range) */
+    if (v2 > 0) {
+        am_real n = AM_WIDE_SQRT(v2);
+        dx = AM_DIV(vx, n);
+        dy = AM_DIV(vy, n);
+    } else if (fh2 > 0) {
+        am_real n = AM_WIDE_SQRT(fh2);
+        dx = AM_DIV(F->x, n);
+        dy = AM_DIV(F->y, n);
+    } else {
+#else
     if (v2 > AM_R(0)) {
         am_real inv = AM_DIV(AM_R(1), am_sqrt(v2));
         dx = AM_MUL(vx, inv);
@@ -142,6 +175,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         dx = AM_MUL(F->x, inv);
         dy = AM_MUL(F->y, inv);
     } else {
+#endif
         s->contact[i] = 1;
         return 1;
     }
@@ -149,7 +183,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     /* friction may stop the voxel within the step but never reverse it: then it sticks */
     am_real px = s->p[0][i], py = s->p[1][i];
     am_real nx = px + AM_MUL(fx, s->dt), ny = py + AM_MUL(fy, s->dt);
-    if (v2 > AM_R(0) && AM_MUL(nx, px) + AM_MUL(ny, py) <= AM_R(0)) {
+    if (v2 > AM_R(0) && AM_MULW(nx, px) + AM_MULW(ny, py) <= AM_R(0)) {
         s->contact[i] = 1;
         F->x = F->y = AM_R(0);
         return 1;
@@ -164,7 +198,7 @@ static am_real integrate(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
     const am_real dt = s->dt;
-    const am_real g = m->env.gravity;
+    const am_real g = m->gravity;
     const int floor_on = m->env.floor;
     am_real max_v2 = AM_R(0);
     for (int i = 0; i < nv; i++) {
@@ -190,19 +224,25 @@ static am_real integrate(const am_model* m, am_state* s)
 
         /* p += F dt; x += p dt / m (a stuck voxel keeps no horizontal momentum) */
         const am_real im = m->inv_mass[i];
-        am_real px = s->p[0][i] + AM_MUL(F.x, dt), py = s->p[1][i] + AM_MUL(F.y, dt), pz = s->p[2][i] + AM_MUL(F.z, dt);
-        if (stuck) px = py = AM_R(0);
+        am_real px = AM_ACC(s->p[0][i], s->p_rem[0][i], F.x, dt), py = AM_ACC(s->p[1][i], s->p_rem[1][i], F.y, dt),
+                pz = AM_ACC(s->p[2][i], s->p_rem[2][i], F.z, dt);
+        if (stuck) {
+            px = py = AM_R(0);
+            AM_REM_CLEAR(s->p_rem[0][i]);
+            AM_REM_CLEAR(s->p_rem[1][i]);
+        }
         if (m->fixed[i]) px = py = pz = AM_R(0);
         am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
         s->p[0][i] = px; s->p[1][i] = py; s->p[2][i] = pz;
         s->v[0][i] = vx; s->v[1][i] = vy; s->v[2][i] = vz;
-        s->x[0][i] += AM_MUL(vx, dt);
-        s->x[1][i] += AM_MUL(vy, dt);
-        s->x[2][i] += AM_MUL(vz, dt);
+        s->x[0][i] = AM_ACC(s->x[0][i], s->x_rem[0][i], vx, dt);
+        s->x[1][i] = AM_ACC(s->x[1][i], s->x_rem[1][i], vy, dt);
+        s->x[2][i] = AM_ACC(s->x[2][i], s->x_rem[2][i], vz, dt);
 
         /* h += M dt; q = quat(w dt) q, renormalised */
         const am_real ii = m->inv_inertia[i];
-        am_real hx = s->h[0][i] + AM_MUL(M.x, dt), hy = s->h[1][i] + AM_MUL(M.y, dt), hz = s->h[2][i] + AM_MUL(M.z, dt);
+        am_real hx = AM_ACC(s->h[0][i], s->h_rem[0][i], M.x, dt), hy = AM_ACC(s->h[1][i], s->h_rem[1][i], M.y, dt),
+                hz = AM_ACC(s->h[2][i], s->h_rem[2][i], M.z, dt);
         if (m->fixed[i]) hx = hy = hz = AM_R(0);
         vec3 w = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
         s->h[0][i] = hx; s->h[1][i] = hy; s->h[2][i] = hz;
@@ -210,12 +250,19 @@ static am_real integrate(const am_model* m, am_state* s)
         quat dq = q_from_rotvec(v3_scale(w, dt));
         quat q = q_mul(dq, qt(s->q[0][i], s->q[1][i], s->q[2][i], s->q[3][i]));
         am_real n2 = AM_MUL(q.w, q.w) + AM_MUL(q.x, q.x) + AM_MUL(q.y, q.y) + AM_MUL(q.z, q.z);
+#if defined(AM_REAL_FIXED_POINT)
+        /* |q| is 1 to within a few ulp: one Newton step from 1, 1/sqrt(n2) = (3 - n2) / 2, is exact
+         * to O((n2 - 1)^2); the root and a division only when q is far from unit */
+        am_real dn = n2 - AM_R(1);
+        am_real inv = am_fabs(dn) < AM_R(0.0009765625) ? AM_R(1) - (dn >> 1) : AM_DIV(AM_R(1), am_sqrt(n2));
+#else
         am_real inv = AM_DIV(AM_R(1), am_sqrt(n2));
+#endif
         s->q[0][i] = AM_MUL(q.w, inv); s->q[1][i] = AM_MUL(q.x, inv);
         s->q[2][i] = AM_MUL(q.y, inv); s->q[3][i] = AM_MUL(q.z, inv);
 
         am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
-        if (!(v2 <= max_v2)) max_v2 = v2 == v2 ? v2 : AM_REAL_MAX; /* NaN counts as too fast */
+        if (!(v2 <= max_v2)) max_v2 = !AM_ISNAN(v2) ? v2 : AM_REAL_MAX; /* NaN counts as too fast */
     }
     return max_v2;
 }
@@ -235,7 +282,7 @@ void am_step(const am_model* m, am_state* s)
     am_sim_collide(m, s);
     am_real v2 = integrate(m, s);
     s->step++;
-    s->t = AM_MUL(AM_R(s->step), s->dt);
+    s->t = AM_MUL_INT(s->dt, s->step);
     if (!(strain <= AM_DIVERGE_STRAIN) || !(v2 <= AM_MUL(m->max_speed, m->max_speed))) {
         s->diverged = 1;
         s->diverge_step = s->step;

@@ -49,14 +49,16 @@ uint32_t am_rng_below(am_rng* r, uint32_t n)
 
 am_real am_rng_unit(am_rng* r)
 {
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+    return (am_real)(am_rng_u64(r) >> (64 - AM_FIX_FRAC)); /* the top bits are the fraction */
+#elif defined(AM_REAL_DOUBLE)
     return (am_real)(am_rng_u64(r) >> 11) * AM_R(1.0 / 9007199254740992.0);
 #else
     return (am_real)(uint32_t)(am_rng_u64(r) >> 40) * AM_R(1.0 / 16777216.0);
 #endif
 }
 
-am_real am_rng_range(am_rng* r, am_real lo, am_real hi) { return lo + (hi - lo) * am_rng_unit(r); }
+am_real am_rng_range(am_rng* r, am_real lo, am_real hi) { return lo + AM_MUL(hi - lo, am_rng_unit(r)); }
 
 int am_rng_chance(am_rng* r, am_real p) { return am_rng_unit(r) < p; }
 
@@ -64,7 +66,7 @@ am_real am_rng_normal(am_rng* r)
 {
     am_real u1 = AM_R(1) - am_rng_unit(r); /* (0, 1] */
     am_real u2 = am_rng_unit(r);
-    return am_sqrt(AM_R(-2) * am_log(u1)) * am_cos(AM_R(2) * AM_PI * u2);
+    return AM_MUL(am_sqrt(AM_MUL(AM_R(-2), am_log(u1))), am_cos(AM_MUL(AM_MUL(AM_R(2), AM_PI), u2)));
 }
 
 uint64_t am_hash_bytes(uint64_t h, const void* data, unsigned long n)

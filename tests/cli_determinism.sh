@@ -6,6 +6,8 @@
 # Golden hash of `amorph sim --scene sphere:8 --json` ("hash" field) for the default float desktop
 # build. Re-pin it deliberately when the model changes, and say why in the commit message.
 GOLDEN_SPHERE8_HASH=656da999f81c9037
+# and for the fixed-point desktop build (make REAL=fixed, docs/fixed.md)
+GOLDEN_SPHERE8_HASH_FIXED=10126070561c699d
 
 # the "hash" value of the JSON line in file $1
 hash_of() { sed -n 's/.*"hash": *"\([0-9a-fA-F]*\)".*/\1/p' "$1"; }
@@ -53,8 +55,12 @@ if "$AMORPH" --help 2>/dev/null | grep -q 'am_real=float, profile=desktop'; then
     h=$(hash_of "$TMPD/a1")
     if [ "$h" = "$GOLDEN_SPHERE8_HASH" ]; then ok
     else ko "sphere:8 hash $h, golden $GOLDEN_SPHERE8_HASH (re-pin GOLDEN_SPHERE8_HASH in tests/cli_determinism.sh only for a deliberate model change)"; fi
+elif "$AMORPH" --help 2>/dev/null | grep -q 'am_real=fixed, profile=desktop'; then
+    h=$(hash_of "$TMPD/a1")
+    if [ "$h" = "$GOLDEN_SPHERE8_HASH_FIXED" ]; then ok
+    else ko "fixed-point sphere:8 hash $h, golden $GOLDEN_SPHERE8_HASH_FIXED (re-pin GOLDEN_SPHERE8_HASH_FIXED only for a deliberate change)"; fi
 else
-    echo "cli_determinism: not the default float desktop build: golden hash skipped"
+    echo "cli_determinism: not a float or fixed-point desktop build: golden hash skipped"
 fi
 
 summary cli_determinism

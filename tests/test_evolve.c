@@ -13,6 +13,8 @@ static char g_text2[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
 /* Golden hash of the small reference run of small_def() after 4 generations (float desktop build).
  * Re-pin it deliberately when the simulator, the genotypes or the evolver change results. */
 #define GOLDEN_SMALL_RUN UINT64_C(0x98ed4930b840e682)
+/* the same run in the fixed-point build (make REAL=fixed, docs/fixed.md) */
+#define GOLDEN_SMALL_RUN_FIXED UINT64_C(0xe0ecdb3140ff2bbe)
 
 /* a run small enough for a unit test: 8^3 workspace, population 6, short simulations */
 static am_evo_def small_def(int repr)
@@ -102,7 +104,7 @@ static void test_config_text_round_trip(void)
     am_evo_def d = small_def(AM_REPR_CPPN), e = am_default_evo();
     char err[AM_ERR_MAX], a[8192], b[8192];
     long la = 0, lb = 0;
-    d.mu_kinetic = AM_R(0.1);
+    d.mu_kinetic = AM_P(0.1);
     d.env.cte_mode = AM_CTE_LINEAR;
     CHECK(am_evo_format(&d, 1, a, sizeof a, &la, err, sizeof err) == AM_OK, "%s", err);
     CHECK(am_evo_parse(&e, a, "cfg", err, sizeof err) == AM_OK, "%s", err);
@@ -177,9 +179,15 @@ static void test_workers_give_identical_runs(void)
     CHECK(h[0] == h[1] && h[1] == h[2], "run hashes for 1, 2, 3 workers: %016llx %016llx %016llx", (unsigned long long)h[0],
           (unsigned long long)h[1], (unsigned long long)h[2]);
     CHECK(g_a.evaluations == 24 && g_a.generation == 4, "%ld evaluations in %ld generations", g_a.evaluations, g_a.generation);
+#if defined(AM_REAL_FIXED_POINT)
+    if (AM_MAX_DIM == 20)
+        CHECK(h[0] == GOLDEN_SMALL_RUN_FIXED, "golden fixed-point run hash: got %016llx, pinned %016llx", (unsigned long long)h[0],
+              (unsigned long long)GOLDEN_SMALL_RUN_FIXED);
+#else
     if (GOLDEN_SMALL_RUN != 0 && sizeof(am_real) == sizeof(float) && AM_MAX_DIM == 20)
         CHECK(h[0] == GOLDEN_SMALL_RUN, "golden run hash: got %016llx, pinned %016llx", (unsigned long long)h[0],
               (unsigned long long)GOLDEN_SMALL_RUN);
+#endif
     else printf("  (golden run hash %016llx)\n", (unsigned long long)h[0]);
     /* a different seed gives a different run */
     d.seed = 8;

@@ -12,6 +12,10 @@ static char big[1L << 20];
 
 /* field by field, reals by their bits, names up to their NUL (am_default_palette leaves bytes of
  * "passive" after the NUL of shorter names); cells over the whole array */
+/* random draws as parameters (exact in the float and double builds) */
+static am_param unit_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_unit(r))); }
+static am_param normal_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_normal(r))); }
+
 static int same_lattice(const am_lattice* a, const am_lattice* b)
 {
     if (a->nx != b->nx || a->ny != b->ny || a->nz != b->nz) return 0;
@@ -20,12 +24,12 @@ static int same_lattice(const am_lattice* a, const am_lattice* b)
     for (int i = 0; i < a->palette.count; i++) {
         const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
         if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
-        const am_real* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
+        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
                                  &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
-        const am_real* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
+        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
                                  &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
         for (int k = 0; k < 10; k++)
-            if (memcmp(rx[k], ry[k], sizeof(am_real))) return 0;
+            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
     }
     return memcmp(a->cell, b->cell, sizeof a->cell) == 0;
 }
@@ -112,7 +116,7 @@ static void make_custom(am_lattice* l)
 {
     char err[AM_ERR_MAX];
     int nx = AM_MAX_DIM, ny = AM_MAX_DIM > 7 ? 7 : AM_MAX_DIM, nz = AM_MAX_DIM > 13 ? 13 : AM_MAX_DIM - 1;
-    CHECK(am_lattice_init(l, nx, ny, nz, AM_R(0.0123456789), err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_lattice_init(l, nx, ny, nz, AM_P(0.0123456789), err, sizeof err) == AM_OK, "%s", err);
     memset(&l->palette, 0, sizeof l->palette);
     l->palette.count = AM_MAX_MATERIALS;
     am_rng r;
@@ -123,16 +127,16 @@ static void make_custom(am_lattice* l)
         memset(m->name, 0, sizeof m->name);
         if (i == 0) memcpy(m->name, "a_very-long_name_23_chr", 23);
         else snprintf(m->name, sizeof m->name, "M-%d_x", i);
-        m->E = AM_R(1e6) * (AM_R(0.1) + am_rng_unit(&r));
-        m->density = AM_R(1) / AM_R(3) + (am_real)i;
-        m->poisson = AM_R(0.49999);
-        m->cte = i == 1 ? AM_R(-0.0) : AM_R(1e-30) * am_rng_normal(&r);
-        m->phase = -AM_PI / AM_R(3) * (am_real)i;
-        m->mu_static = i == 2 ? AM_R(1e-40) : am_rng_unit(&r); /* a subnormal float */
-        m->mu_kinetic = AM_R(0.0);
-        m->zeta_internal = AM_R(3.0e30);
-        m->zeta_global = AM_R(0.1) * (am_real)i;
-        m->zeta_collision = AM_R(2) / AM_R(7);
+        m->E = AM_P(1e6) * (AM_P(0.1) + unit_p(&r));
+        m->density = AM_P(1) / AM_P(3) + (am_param)i;
+        m->poisson = AM_P(0.49999);
+        m->cte = i == 1 ? AM_P(-0.0) : AM_P(1e-30) * normal_p(&r);
+        m->phase = -AM_P(3.14159265358979323846) / AM_P(3) * (am_param)i;
+        m->mu_static = i == 2 ? AM_P(1e-40) : unit_p(&r); /* a subnormal float */
+        m->mu_kinetic = AM_P(0.0);
+        m->zeta_internal = AM_P(3.0e30);
+        m->zeta_global = AM_P(0.1) * (am_param)i;
+        m->zeta_collision = AM_P(2) / AM_P(7);
         m->color[0] = (uint8_t)(i * 16);
         m->color[1] = (uint8_t)(255 - i);
         m->color[2] = (uint8_t)(i * 7);
@@ -197,12 +201,12 @@ static void test_defaults_and_layout(void)
     CHECK(lat_a.palette.count == 2, "count %d", lat_a.palette.count);
     CHECK(strcmp(lat_a.palette.mat[0].name, "soft_one") == 0, "name 0");
     CHECK(strcmp(lat_a.palette.mat[1].name, "plain") == 0, "name 1");
-    CHECK(lat_a.palette.mat[0].E == AM_R(5e4), "E");
+    CHECK(lat_a.palette.mat[0].E == AM_P(5e4), "E");
     CHECK(lat_a.palette.mat[1].E == d.E && lat_a.palette.mat[1].density == d.density && lat_a.palette.mat[1].mu_kinetic == d.mu_kinetic &&
               lat_a.palette.mat[1].zeta_global == d.zeta_global && memcmp(lat_a.palette.mat[1].color, d.color, 4) == 0 &&
               lat_a.palette.mat[1].fixed == d.fixed,
           "defaults of am_default_material");
-    CHECK(lat_a.voxel_size == AM_R(0.01), "default voxel size");
+    CHECK(lat_a.voxel_size == AM_P(0.01), "default voxel size");
     CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 2, "cells");
     /* colors: #rrggbb gives alpha 255, #rrggbbaa sets it; hex digits in either case */
     const char* c = "amorph-lattice 1\nmaterial a color=#0A0b0C\nmaterial b color=#ffeeDD80 fixed=1\nsize 1 1 1\nlayer 0\n2\n";
@@ -443,9 +447,9 @@ static void test_format_errors(void)
     lat_a.cell[5] = (uint8_t)(lat_a.palette.count + 1);
     CHECK(am_lattice_format(&lat_a, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG, "bad cell id");
     lat_a.cell[5] = 1;
-    lat_a.palette.mat[2].poisson = AM_R(0.5);
+    lat_a.palette.mat[2].poisson = AM_P(0.5);
     CHECK(am_lattice_format(&lat_a, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG, "bad poisson");
-    lat_a.palette.mat[2].poisson = AM_R(0);
+    lat_a.palette.mat[2].poisson = AM_P(0);
     strcpy(lat_a.palette.mat[3].name, "passive");
     CHECK(am_lattice_format(&lat_a, text, sizeof text, &len, err, sizeof err) == AM_ERR_ARG, "duplicate name");
     strcpy(lat_a.palette.mat[3].name, "with space");

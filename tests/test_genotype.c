@@ -36,7 +36,7 @@ static double ref_basis(int u, int x, int n)
 {
     double c = u == 0 ? sqrt(1.0 / n) : sqrt(2.0 / n);
     double ang = 3.14159265358979323846 * (double)((2 * x + 1) * u) / (double)(2 * n);
-    return c * (double)am_cos((am_real)ang);
+    return c * cos(ang); /* the reference in double (libm is fine in a test) */
 }
 
 static void test_dct_inverse_equals_direct_sum(void)
@@ -59,9 +59,9 @@ static void test_dct_inverse_equals_direct_sum(void)
                     for (int w = 0; w < k[2]; w++)
                         for (int v = 0; v < k[1]; v++)
                             for (int u = 0; u < k[0]; u++)
-                                sum += (double)coef[u + k[0] * (v + k[1] * w)] * ref_basis(u, x, n[0]) * ref_basis(v, y, n[1]) *
+                                sum += AM_TO_DOUBLE(coef[u + k[0] * (v + k[1] * w)]) * ref_basis(u, x, n[0]) * ref_basis(v, y, n[1]) *
                                        ref_basis(w, z, n[2]);
-                    double e = fabs(sum - (double)field[x + n[0] * (y + n[1] * z)]);
+                    double e = fabs(sum - AM_TO_DOUBLE(field[x + n[0] * (y + n[1] * z)]));
                     if (e > worst) worst = e;
                 }
         CHECK(worst <= 1e-5, "shape %d: separable inverse differs from the triple sum by %.3g", s, worst);
@@ -81,7 +81,7 @@ static void test_dct_forward_then_inverse_is_identity(void)
         am_dct_forward(&D, field, coef);
         am_dct_inverse(&D, coef, field2);
         double worst = 0;
-        for (int i = 0; i < cells; i++) worst = fmax(worst, fabs((double)field[i] - (double)field2[i]));
+        for (int i = 0; i < cells; i++) worst = fmax(worst, fabs(AM_TO_DOUBLE(field[i]) - AM_TO_DOUBLE(field2[i])));
         CHECK(worst <= 1e-5, "shape %d: forward then inverse differs from the identity by %.3g", s, worst);
         /* and inverse then forward, with only k < n coefficients: orthonormal projection */
         const int k[3] = {4 < n[0] ? 4 : n[0], 3, 2};
@@ -90,7 +90,7 @@ static void test_dct_forward_then_inverse_is_identity(void)
         am_dct_inverse(&D, coef, field);
         am_dct_forward(&D, field, coef2);
         worst = 0;
-        for (int i = 0; i < k[0] * k[1] * k[2]; i++) worst = fmax(worst, fabs((double)coef[i] - (double)coef2[i]));
+        for (int i = 0; i < k[0] * k[1] * k[2]; i++) worst = fmax(worst, fabs(AM_TO_DOUBLE(coef[i]) - AM_TO_DOUBLE(coef2[i])));
         CHECK(worst <= 1e-5, "shape %d: inverse then forward differs by %.3g", s, worst);
     }
 }
@@ -130,9 +130,16 @@ static void test_golden_hashes(void)
         CHECK(am_genome_hash(&ge) == got[repr - 1][0], "%s: init not reproducible", am_repr_name(repr));
     }
     /* genome hashes (init, 100 mutations, crossover) pinned per am_real: am_rng_unit draws 24 bits
-     * for float and 53 for double. The bodies agree for float and double, and for both
+     * for float and fixed point (Q24 fractions) and 53 for double. The bodies agree for float, double
+     * and fixed point, and for both
      * profiles here (their lookup tables differ, so other bodies could differ by a cell). */
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+    static const uint64_t want[3][3] = {
+        {UINT64_C(0x8583e2069c1fa9dd), UINT64_C(0xba5de46c0eee7401), UINT64_C(0x497b8149567964da)},
+        {UINT64_C(0x709c4e37e413a3ee), UINT64_C(0xa51cbb12a5d8646a), UINT64_C(0x2c878b43507c548f)},
+        {UINT64_C(0xfd83b46b1f453096), UINT64_C(0x6bda639f669f3507), UINT64_C(0x51646a05476d83fa)},
+    };
+#elif defined(AM_REAL_DOUBLE)
     static const uint64_t want[3][3] = {
         {UINT64_C(0x685bc36db97cc1c6), UINT64_C(0x28d38066fda97874), UINT64_C(0x57ed60415a86323c)},
         {UINT64_C(0x47ecc9892c225731), UINT64_C(0xf07947f3abca52a1), UINT64_C(0xbba8de6727d42352)},
@@ -167,7 +174,7 @@ static void test_dct_mutation_rate(void)
         am_genome_mutate(&ga, &d, &r);
         for (int m = 0; m < 2; m++)
             for (int i = 0; i < 64; i++) {
-                double delta = fabs((double)ga.dct.amp[m][i] - (double)gb.dct.amp[m][i]);
+                double delta = fabs(AM_TO_DOUBLE(ga.dct.amp[m][i]) - AM_TO_DOUBLE(gb.dct.amp[m][i]));
                 changed += delta != 0;
                 if (delta > biggest) biggest = delta;
             }
@@ -310,8 +317,8 @@ static void test_gmx_plane_crossover_keeps_sides(void)
         for (int pass = 0; pass < 2; pass++)
             for (int i = 0; i < par[pass]->gmx.count; i++) {
                 const am_gmx_point* p = &par[pass]->gmx.pt[i];
-                double s = ((double)p->x - (double)point[0]) * (double)normal[0] +
-                           ((double)p->y - (double)point[1]) * (double)normal[1] + ((double)p->z - (double)point[2]) * (double)normal[2];
+                double s = (AM_TO_DOUBLE(p->x) - AM_TO_DOUBLE(point[0])) * AM_TO_DOUBLE(normal[0]) +
+                           (AM_TO_DOUBLE(p->y) - AM_TO_DOUBLE(point[1])) * AM_TO_DOUBLE(normal[1]) + (AM_TO_DOUBLE(p->z) - AM_TO_DOUBLE(point[2])) * AM_TO_DOUBLE(normal[2]);
                 if (fabs(s) < 1e-4) continue; /* too close to the plane to judge in double */
                 int pos = s > 0;
                 /* child 1: a's positive side, b's negative side; child 2: the rest */
@@ -327,13 +334,13 @@ static void test_gmx_plane_crossover_keeps_sides(void)
             }
         CHECK(gc.gmx.count + gd.gmx.count == ga.gmx.count + gb.gmx.count, "points lost: %d + %d vs %d + %d",
               gc.gmx.count, gd.gmx.count, ga.gmx.count, gb.gmx.count);
-        CHECK(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2] > AM_R(0.999), "normal not unit");
-        for (int a = 0; a < 3; a++) CHECK(point[a] >= 0 && point[a] <= 7, "plane point outside the workspace");
+        CHECK(AM_MUL(normal[0], normal[0]) + AM_MUL(normal[1], normal[1]) + AM_MUL(normal[2], normal[2]) > AM_R(0.999), "normal not unit");
+        for (int a = 0; a < 3; a++) CHECK(point[a] >= 0 && point[a] <= AM_INT(7), "plane point outside the workspace");
     }
     /* a given plane x = 3.5: child 1 holds a's points with x >= 3.5 then b's with x < 3.5 */
     init_or_fail(&ga, &d, &r);
     init_or_fail(&gb, &d, &r);
-    const am_real pt[3] = {AM_R(3.5), 0, 0}, nx[3] = {1, 0, 0};
+    const am_real pt[3] = {AM_R(3.5), 0, 0}, nx[3] = {AM_R(1), 0, 0};
     am_gmx_plane_cross(&ga, &gb, pt, nx, 64, &gc, &gd);
     int k = 0;
     for (int i = 0; i < ga.gmx.count; i++)
@@ -518,7 +525,7 @@ static void test_level_set_keeps_the_largest_piece(void)
     CHECK(W.cell[0] == 0 && W.cell[1] == 0 && W.cell[12] == 0 && W.cell[17] == 0, "other pieces not dropped");
     /* blend ratios: the positive parts, normalised, in kept cells; 0 elsewhere */
     for (int c = 0; c < nx * ny; c++) {
-        double s = (double)ratio[c] + (double)ratio[nx * ny + c];
+        double s = AM_TO_DOUBLE(ratio[c]) + AM_TO_DOUBLE(ratio[nx * ny + c]);
         CHECK(W.cell[c] ? fabs(s - 1) < 1e-6 : s == 0, "ratio sum %.9g at cell %d", s, c);
     }
     CHECK(ratio[nx * ny + 3] == AM_R(1), "b cell is all material 1");
@@ -558,7 +565,7 @@ static void test_cppn_complexity_limit(void)
     am_real eff[AM_MAX_CPPN_LAYERS][AM_MAX_CPPN_NODES];
     CHECK(am_cppn_effective_xscale(&ga, eff) == 1, "one node limited");
     const int n = ga.nx;
-    const double rmax = 3.14159265358979 * (n - 1) / 4.0, rate = fabs((double)eff[1][0]) * 2 * 8;
+    const double rmax = 3.14159265358979 * (n - 1) / 4.0, rate = fabs(AM_TO_DOUBLE(eff[1][0])) * 2 * 8;
     CHECK(rate <= rmax * (1 + 1e-5) && rate >= rmax * (1 - 1e-5), "limited rate %.6g, limit %.6g", rate, rmax);
     CHECK(am_genome_express(&ga, NULL, &W, NULL, err, sizeof err) == AM_OK, "express: %s", err);
     /* along x the density is sin(pi/2 per cell): runs of one sign are at least 2 cells */
@@ -584,7 +591,7 @@ static void test_cppn_complexity_limit(void)
         limited += am_cppn_effective_xscale(&ga, eff);
         for (int l = 0; l < ga.cppn.layers; l++)
             for (int j = 0; j < ga.cppn.nodes; j++)
-                CHECK(fabs((double)eff[l][j]) <= fabs((double)ga.cppn.node[l][j].xscale), "limit raised a scaling");
+                CHECK(fabs(AM_TO_DOUBLE(eff[l][j])) <= fabs(AM_TO_DOUBLE(ga.cppn.node[l][j].xscale)), "limit raised a scaling");
     }
     CHECK(limited > 0, "deep random networks never hit the limit");
 }
@@ -598,7 +605,7 @@ static void test_distance_compares_bodies(void)
     init_or_fail(&ga, &d, &r);
     init_or_fail(&gb, &d, &r);
     am_real dist = -1, back = -1, self = -1;
-    CHECK(am_genome_distance(&ga, &ga, &W, &self, err, sizeof err) == AM_OK && self == 0, "d(a, a) = %g", (double)self);
+    CHECK(am_genome_distance(&ga, &ga, &W, &self, err, sizeof err) == AM_OK && self == 0, "d(a, a) = %g", AM_TO_DOUBLE(self));
     CHECK(am_genome_distance(&ga, &gb, &W, &dist, err, sizeof err) == AM_OK, "distance: %s", err);
     CHECK(am_genome_distance(&gb, &ga, &W, &back, err, sizeof err) == AM_OK && back == dist, "not symmetric");
     static uint8_t body_a[AM_MAX_CELLS];
@@ -606,7 +613,7 @@ static void test_distance_compares_bodies(void)
     memcpy(body_a, W.cell, 512);
     am_genome_express(&gb, NULL, &W, NULL, err, sizeof err);
     CHECK(am_body_distance(body_a, W.cell, 512) == dist, "body distance differs");
-    CHECK(dist >= 0 && dist <= 1, "distance %g", (double)dist);
+    CHECK(dist >= 0 && dist <= AM_R(1), "distance %g", AM_TO_DOUBLE(dist));
     /* two genomes with the same body are at distance 0 even when their genes differ (a point of
      * weight 0) */
     gc = ga;
@@ -629,7 +636,7 @@ static void test_lattice_palette(void)
     CHECK(!strcmp(lat.palette.mat[0].name, "passive") && !strcmp(lat.palette.mat[1].name, "active") &&
               !strcmp(lat.palette.mat[2].name, "active90"),
           "palette names");
-    CHECK(lat.palette.mat[0].cte == 0 && lat.palette.mat[1].cte == AM_R(0.01) && lat.palette.mat[2].phase < 0, "materials");
+    CHECK(lat.palette.mat[0].cte == 0 && lat.palette.mat[1].cte == AM_P(0.01) && lat.palette.mat[2].phase < 0, "materials");
     CHECK(am_lattice_count(&lat) == W.voxels, "lattice count");
     CHECK(!memcmp(lat.cell, W.cell, 512), "lattice cells");
     snprintf(ga.mat[1], AM_NAME_MAX, "unobtainium");
@@ -667,7 +674,9 @@ static void test_text_round_trip_is_exact(void)
             CHECK(am_genome_hash(&ga) == am_genome_hash(&gb), "hash");
             CHECK(am_genome_format(&gb, text2, sizeof text2, &len2, err, sizeof err) == AM_OK && !strcmp(text1, text2),
                   "second text differs");
+#if !defined(AM_REAL_FIXED_POINT) /* a fixed-point zero has no sign */
             if (repr == AM_REPR_DCT) CHECK(signbit(gb.dct.amp[0][1]), "-0 lost");
+#endif
         }
 }
 

@@ -37,8 +37,8 @@ static void test_recording(void)
     CHECK(!rec.truncated, "a recording with room to spare was truncated");
     CHECK(rec.nv == g_m.nv, "nv %d", rec.nv);
     CHECK(g_steps[0] == 0 && g_steps[1] == 100, "frame steps %ld %ld", g_steps[0], g_steps[1]);
-    NEAR(g_pose[0], (float)g_m.x0[0][0], 0); /* frames hold floats in every build */
-    NEAR(g_pose[2], (float)g_m.x0[2][0], 0);
+    NEAR(g_pose[0], (float)am_to_si(&g_m, g_m.x0[0][0], AM_DIM_LENGTH), 0); /* frames hold floats (SI) in every build */
+    NEAR(g_pose[2], (float)am_to_si(&g_m, g_m.x0[2][0], AM_DIM_LENGTH), 0);
     NEAR(g_pose[3], 1.0, 0); /* identity orientation at the start */
     /* the last frame is the final state (steps is a multiple of 100 only by chance, so compare the
      * frame with its step) */
@@ -81,10 +81,10 @@ static void test_model_errors(void)
 {
     char err[AM_ERR_MAX];
     am_env env = am_default_env();
-    CHECK(am_lattice_init(&g_lat, 3, 3, 3, AM_R(0.01), err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_lattice_init(&g_lat, 3, 3, 3, AM_P(0.01), err, sizeof err) == AM_OK, "%s", err);
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_EMPTY, "empty lattice accepted");
     g_lat.cell[0] = 1;
-    g_lat.palette.mat[0].E = AM_R(-1);
+    g_lat.palette.mat[0].E = AM_P(-1);
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "E must"), "negative E: %s", err);
     g_lat.palette = am_default_palette();
     g_lat.cell[1] = (uint8_t)(g_lat.palette.count + 1);
@@ -92,7 +92,7 @@ static void test_model_errors(void)
     g_lat.cell[1] = 1;
     env.period_steps = 0;
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "period 0 accepted");
-    CHECK(am_lattice_init(&g_lat, AM_MAX_DIM + 1, 1, 1, AM_R(0.01), err, sizeof err) == AM_ERR_CAPACITY, "over capacity");
+    CHECK(am_lattice_init(&g_lat, AM_MAX_DIM + 1, 1, 1, AM_P(0.01), err, sizeof err) == AM_ERR_CAPACITY, "over capacity");
 }
 
 /* the seed's search: deterministic, between the tried extremes, and stable for 2000 steps */
@@ -102,15 +102,15 @@ static void test_dt_search(void)
     am_real a = am_dt_search(&g_m, &g_s);
     am_real b = am_dt_search(&g_m, &g_s);
     CHECK(a == b, "search not deterministic: %g vs %g", (double)a, (double)b);
-    CHECK(a > AM_R(0.0001) * g_m.dt_rec && a <= AM_R(9.5) * g_m.dt_rec, "dt %g, dt_rec %g", (double)a, (double)g_m.dt_rec);
-    printf("    dt search: %.4g s = %.3f dt_rec\n", (double)a, (double)(a / g_m.dt_rec));
+    CHECK(a > AM_MUL(AM_R(0.0001), g_m.dt_rec) && a <= AM_MUL(AM_R(9.5), g_m.dt_rec), "dt %g, dt_rec %g", AM_TO_DOUBLE(a), AM_TO_DOUBLE(g_m.dt_rec));
+    printf("    dt search: %.4g s = %.3f dt_rec\n", am_to_si(&g_m, a, AM_DIM_TIME), AM_TO_DOUBLE(a) / AM_TO_DOUBLE(g_m.dt_rec));
     am_state_reset(&g_m, &g_s);
     g_s.dt = a;
     am_steps(&g_m, &g_s, test_quick() ? 500 : 2000);
     CHECK(!g_s.diverged, "the searched dt diverged at rest");
     /* ten times past it is unstable */
     am_state_reset(&g_m, &g_s);
-    g_s.dt = AM_R(10) * a;
+    g_s.dt = AM_MUL(AM_R(10), a);
     am_steps(&g_m, &g_s, 2000);
     CHECK(g_s.diverged, "10x the searched dt did not diverge");
 }

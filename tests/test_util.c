@@ -14,7 +14,9 @@
 #include <float.h>
 #include <stdint.h>
 
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+/* the fixed-point build (docs/fixed.md) has its own tests of the functions below */
+#elif defined(AM_REAL_DOUBLE)
 #define TOL_ULP 8.0
 #define REAL_MANT 53
 #define REAL_MIN_NORMAL DBL_MIN
@@ -24,6 +26,82 @@
 #define REAL_MIN_NORMAL ((double)FLT_MIN)
 #endif
 
+#if defined(AM_REAL_FIXED_POINT)
+/* Q7.24: errors in units of the last place (2^-24), over the range each function's result fits */
+static double fx_err(am_real got, double ref) { return fabs(AM_TO_DOUBLE(got) - ref) * (double)AM_FIX_ONE; }
+static am_real fx_sample(double lo, double hi, long i, long n) { return AM_FROM_DOUBLE(lo + (hi - lo) * (double)i / (double)n); }
+
+/* measured worst errors (ulp): sin, cos, log, cbrt, sqrt, atan2 0.6; exp 1.7 (near e^4.8 = 128);
+ * acos 2.4 (near +-1, where the root of 1 - x^2 magnifies the argument's rounding); tolerances
+ * are those plus margin */
+static void test_fixed_functions(void)
+{
+    double e[9] = {0};
+    const long n = test_quick() ? 20000 : 200000;
+    for (long i = 0; i <= n; i++) {
+        am_real x = fx_sample(-100.0, 100.0, i, n);
+        double xd = AM_TO_DOUBLE(x);
+        e[0] = fmax(e[0], fx_err(am_sin(x), sin(xd)));
+        e[1] = fmax(e[1], fx_err(am_cos(x), cos(xd)));
+        am_real xe = fx_sample(-16.0, 4.8, i, n);
+        e[2] = fmax(e[2], fx_err(am_exp(xe), exp(AM_TO_DOUBLE(xe))));
+        am_real p = fx_sample(1e-6, 127.0, i, n);
+        e[3] = fmax(e[3], fx_err(am_log(p), log(AM_TO_DOUBLE(p))));
+        e[4] = fmax(e[4], fx_err(am_cbrt(x), cbrt(xd)));
+        e[5] = fmax(e[5], fx_err(am_sqrt(p), sqrt(AM_TO_DOUBLE(p))));
+        am_real y = fx_sample(-3.0, 3.0, i % 97, 96);
+        e[6] = fmax(e[6], fx_err(am_atan2(y, x), atan2(AM_TO_DOUBLE(y), xd)));
+        am_real u = fx_sample(-1.0, 1.0, i, n);
+        e[7] = fmax(e[7], fx_err(am_acos(u), acos(AM_TO_DOUBLE(u))));
+        am_real b = fx_sample(0.05, 4.0, i, n), ex = fx_sample(-2.0, 3.0, i % 101, 100);
+        double ref = pow(AM_TO_DOUBLE(b), AM_TO_DOUBLE(ex));
+        if (ref < 100.0) e[8] = fmax(e[8], fx_err(am_pow(b, ex), ref) / fmax(1.0, ref));
+    }
+    static const char* const name[9] = {"sin", "cos", "exp", "log", "cbrt", "sqrt", "atan2", "acos", "pow (relative)"};
+    static const double tol[9] = {1.0, 1.0, 2.0, 1.0, 1.0, 0.5, 1.0, 3.0, 4.0};
+    for (int k = 0; k < 9; k++) CHECK(e[k] <= tol[k], "am_%s: %.2f ulp (tolerance %.1f)", name[k], e[k], tol[k]);
+}
+
+static void test_fixed_special_values(void)
+{
+    CHECK(am_sin(AM_R(0)) == AM_R(0) && am_cos(AM_R(0)) == AM_R(1), "sin 0, cos 0");
+    CHECK(am_exp(AM_R(0)) == AM_R(1) && am_log(AM_R(1)) == AM_R(0), "exp 0, log 1");
+    CHECK(am_cbrt(AM_R(8)) == AM_R(2) && am_cbrt(AM_R(-27)) == AM_R(-3), "cbrt 8, cbrt -27");
+    CHECK(am_sqrt(AM_R(4)) == AM_R(2) && am_sqrt(AM_R(0)) == 0 && am_sqrt(AM_R(-1)) == 0, "sqrt 4, 0, -1");
+    CHECK(am_atan2(AM_R(0), AM_R(-1)) == AM_PI && am_atan2(AM_R(1), AM_R(0)) == AM_R(1.5707963267948966), "atan2 edges");
+    CHECK(am_acos(AM_R(1)) == 0 && am_acos(AM_R(-1)) == AM_PI && am_acos(AM_R(2)) == 0, "acos edges and clamp");
+    CHECK(am_log(0) == -AM_REAL_MAX && am_exp(AM_R(10)) == AM_REAL_MAX && am_exp(AM_R(-20)) == 0, "log 0, exp saturates");
+    CHECK(am_sin(AM_R(-3)) == -am_sin(AM_R(3)) && am_cos(AM_R(-3)) == am_cos(AM_R(3)), "symmetry");
+    /* the arithmetic: rounding half up, quotients half away from zero and saturated */
+    CHECK(AM_MUL(AM_R(1.5), AM_R(-2)) == AM_R(-3) && AM_MUL(1, AM_FIX_ONE / 2) == 1 && AM_MUL(-1, AM_FIX_ONE / 2) == 0,
+          "AM_MUL rounds half up");
+    CHECK(AM_DIV(AM_R(1), AM_R(3)) == 5592405 && AM_DIV(AM_R(-1), AM_R(3)) == -5592405, "AM_DIV rounds to nearest");
+    CHECK(AM_DIV(AM_R(100), AM_R(0.01)) == INT32_MAX && AM_DIV(AM_R(1), 0) == INT32_MAX, "AM_DIV saturates");
+    CHECK(AM_FROM_DOUBLE(1e10) == INT32_MAX && AM_FROM_DOUBLE(-1e10) == -INT32_MAX && AM_FROM_DOUBLE(0.5) == AM_FIX_ONE / 2,
+          "AM_FROM_DOUBLE saturates");
+    CHECK(AM_WIDE_SQRT(AM_MULW(AM_R(3e-4), AM_R(3e-4)) + AM_MULW(AM_R(4e-4), AM_R(4e-4))) == AM_R(5e-4), "wide norm of small values");
+    CHECK(am_floor(AM_R(-0.5)) == AM_R(-1) && AM_FLOOR_INT(AM_R(2.75)) == 2 && AM_FLOOR_INT(AM_R(-2.25)) == -3, "floor");
+}
+
+static void test_math_golden_hash(void)
+{
+    uint64_t h = AM_HASH_INIT;
+    for (int i = 0; i <= 2000; i++) {
+        am_real x = fx_sample(-50.0, 50.0, i, 2000), p = fx_sample(0.001, 30.0, i, 2000), u = fx_sample(-1.0, 1.0, i, 2000);
+        h = am_hash_real(h, am_sin(x));
+        h = am_hash_real(h, am_cos(x));
+        h = am_hash_real(h, am_exp(AM_DIV_INT(x, 12)));
+        h = am_hash_real(h, am_log(p));
+        h = am_hash_real(h, am_cbrt(x));
+        h = am_hash_real(h, am_pow(p, u));
+        h = am_hash_real(h, am_atan2(x, u));
+        h = am_hash_real(h, am_acos(u));
+        h = am_hash_real(h, am_sqrt(p));
+    }
+    const uint64_t want = UINT64_C(0x0579d625aa839f9d);
+    CHECK(h == want, "math golden hash %016llx, want %016llx", (unsigned long long)h, (unsigned long long)want);
+}
+#else
 /* one ulp of am_real at the value ref (subnormal spacing below the smallest normal) */
 static double ulp_at(double ref)
 {
@@ -216,6 +294,8 @@ static void test_math_golden_hash(void)
     CHECK(h == want, "math golden hash %016llx, want %016llx", (unsigned long long)h, (unsigned long long)want);
 }
 
+#endif
+
 /* ---- the random stream ----------------------------------------------------------------- */
 
 /* xoshiro256** and splitmix64 written again from the published reference code */
@@ -263,14 +343,20 @@ static void test_rng_golden(void)
     am_rng_seed(&r, 1);
     for (int i = 0; i < 8; i++) {
         am_real u = am_rng_unit(&r);
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+        double want = (double)(golden[i] >> 40) * 0x1p-24;
+        CHECK(AM_TO_DOUBLE(u) == want, "unit draw %d = %a, want %a", i, AM_TO_DOUBLE(u), want);
+        continue;
+#elif defined(AM_REAL_DOUBLE)
         double want = (double)(golden[i] >> 11) * 0x1p-53;
 #else
         double want = (double)(golden[i] >> 40) * 0x1p-24;
 #endif
         CHECK((double)u == want, "unit draw %d = %a, want %a", i, (double)u, want);
     }
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+    static const am_real normal[3] = {-25924537, -17006182, 16077557}; /* Q24 raw values */
+#elif defined(AM_REAL_DOUBLE)
     static const am_real normal[3] = {-0x1.8b93b94e8cc62p+0, -0x1.037e69664d113p+0, 0x1.eaa5ec6ca9a27p-1};
 #else
     static const am_real normal[3] = {-0x1.8b93bap+0f, -0x1.037e68p+0f, 0x1.eaa5eap-1f};
@@ -278,7 +364,7 @@ static void test_rng_golden(void)
     am_rng_seed(&r, 1);
     for (int i = 0; i < 3; i++) {
         am_real v = am_rng_normal(&r);
-        CHECK(v == normal[i], "normal draw %d = %a, want %a", i, (double)v, (double)normal[i]);
+        CHECK(v == normal[i], "normal draw %d = %a, want %a", i, AM_TO_DOUBLE(v), AM_TO_DOUBLE(normal[i]));
     }
     /* different seeds, different streams */
     am_rng a, b;
@@ -330,7 +416,7 @@ static void test_rng_unit_normal(void)
     for (long i = 0; i < draws; i++) {
         am_real u = am_rng_unit(&r);
         if (!(u >= AM_R(0) && u < AM_R(1))) outside++;
-        sum += (double)u;
+        sum += AM_TO_DOUBLE(u);
     }
     CHECK(outside == 0, "%ld unit draws outside [0, 1)", outside);
     NEAR(sum / (double)draws, 0.5, 0.01);
@@ -340,8 +426,8 @@ static void test_rng_unit_normal(void)
     for (long i = 0; i < draws; i++) {
         am_real v = am_rng_normal(&r);
         if (!am_finite(v)) nonfinite++;
-        s1 += (double)v;
-        s2 += (double)v * (double)v;
+        s1 += AM_TO_DOUBLE(v);
+        s2 += AM_TO_DOUBLE(v) * AM_TO_DOUBLE(v);
     }
     double mean = s1 / (double)draws, sd = sqrt(s2 / (double)draws - mean * mean);
     CHECK(nonfinite == 0, "%ld normal draws not finite", nonfinite);
@@ -370,11 +456,15 @@ static void test_hash(void)
     CHECK(am_hash_u64(AM_HASH_INIT, UINT64_C(0x0102030405060708)) == am_hash_bytes(AM_HASH_INIT, le, 8), "u64 byte order");
     /* -0 and +0 hash alike; other values apart */
     am_real pz = AM_R(0.0), nz = -pz;
+#if !defined(AM_REAL_FIXED_POINT)
     CHECK(signbit(nz) && !signbit(pz), "-0 is -0");
+#endif
     CHECK(am_hash_real(AM_HASH_INIT, nz) == am_hash_real(AM_HASH_INIT, pz), "-0 and +0 fold");
     CHECK(am_hash_real(AM_HASH_INIT, AM_R(1)) != am_hash_real(AM_HASH_INIT, AM_R(-1)), "1 and -1 differ");
     CHECK(am_hash_real(AM_HASH_INIT, AM_R(1)) != am_hash_real(AM_HASH_INIT, AM_R(1) + AM_REAL_EPS), "one ulp apart differ");
-#if defined(AM_REAL_DOUBLE)
+#if defined(AM_REAL_FIXED_POINT)
+    CHECK(am_hash_real(AM_HASH_INIT, AM_R(1.5)) == am_hash_u64(AM_HASH_INIT, UINT64_C(0x01800000)), "hash of 1.5: its Q24 bits");
+#elif defined(AM_REAL_DOUBLE)
     CHECK(am_hash_real(AM_HASH_INIT, AM_R(1.5)) == UINT64_C(0xaa95e93229a27c80), "golden hash of 1.5");
 #else
     CHECK(am_hash_real(AM_HASH_INIT, AM_R(1.5)) == UINT64_C(0xe3e11d32b13106d8), "golden hash of 1.5");
@@ -384,11 +474,16 @@ static void test_hash(void)
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
+#if defined(AM_REAL_FIXED_POINT)
+    RUN(test_fixed_functions);
+    RUN(test_fixed_special_values);
+#else
     RUN(test_sin_cos);
     RUN(test_exp_log);
     RUN(test_cbrt_pow);
     RUN(test_atan2_acos);
     RUN(test_special_values);
+#endif
     RUN(test_math_golden_hash);
     RUN(test_rng_golden);
     RUN(test_rng_below_unbiased);

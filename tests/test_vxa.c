@@ -163,12 +163,12 @@ static int same_lattice(const am_lattice* a, const am_lattice* b)
     for (int i = 0; i < a->palette.count; i++) {
         const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
         if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
-        const am_real* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
+        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
                                  &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
-        const am_real* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
+        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
                                  &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
         for (int k = 0; k < 10; k++)
-            if (memcmp(rx[k], ry[k], sizeof(am_real))) return 0;
+            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
     }
     return memcmp(a->cell, b->cell, (size_t)(a->nx * a->ny * a->nz)) == 0;
 }
@@ -194,7 +194,7 @@ static void round_trip(const am_lattice* lat, const am_env* env, const char* wha
     CHECK(same_lattice(lat, &lat_b), "%s: the lattice differs after a round trip", what);
     CHECK(same_env(env, &info_b.env) && info_b.period_steps_given, "%s: the environment differs after a round trip", what);
     /* the period in seconds, unless the temperature is constant (VaryTempEnabled 0) */
-    if (env->temp_amplitude != AM_R(0) || env->temp_base == AM_R(0)) NEAR_REL(info_b.temp_period, env->period_steps * 2.5e-5, 1e-15);
+    if (env->temp_amplitude != AM_P(0) || env->temp_base == AM_P(0)) NEAR_REL(info_b.temp_period, env->period_steps * 2.5e-5, 1e-15);
     else CHECK(info_b.temp_period == 0, "%s: constant temperature has no period", what);
     st = am_vxa_format(&lat_b, &info_b.env, 2.5e-5, text2, sizeof text2, &len2, err, sizeof err);
     CHECK(st == AM_OK && len2 == len && strcmp(text, text2) == 0, "%s: second format differs", what);
@@ -218,7 +218,7 @@ static void test_vxa_round_trip_scenes(void)
 static void test_vxa_round_trip_everything(void)
 {
     char err[AM_ERR_MAX] = "";
-    CHECK(am_lattice_init(&lat_a, AM_MAX_DIM, AM_MAX_DIM > 3 ? 3 : AM_MAX_DIM, 2, AM_R(0.0123456789), err, sizeof err) == AM_OK,
+    CHECK(am_lattice_init(&lat_a, AM_MAX_DIM, AM_MAX_DIM > 3 ? 3 : AM_MAX_DIM, 2, AM_P(0.0123456789), err, sizeof err) == AM_OK,
           "%s", err);
     lat_a.palette.count = AM_MAX_MATERIALS;
     for (int k = 0; k < AM_MAX_MATERIALS; k++) {
@@ -227,39 +227,39 @@ static void test_vxa_round_trip_everything(void)
         memset(m->name, 0, sizeof m->name);
         if (k == 3) strcpy(m->name, "m-3_the_longest_name_23"); /* AM_NAME_MAX - 1 characters */
         else snprintf(m->name, sizeof m->name, "m-%d_x", k);
-        m->E = AM_R(1.2345678e6) * (am_real)(k + 1);
-        m->density = AM_R(987.654321) + (am_real)k;
-        m->poisson = AM_R(0.49) - AM_R(0.03) * (am_real)k;
-        m->cte = AM_R(0.0123456) * (am_real)(k - 5);
-        m->phase = AM_R(-3.14159265) + AM_R(0.3) * (am_real)k;
-        m->mu_static = AM_R(0.1) * (am_real)k;
-        m->mu_kinetic = AM_R(0.07) * (am_real)k;
-        m->zeta_internal = AM_R(0.11) * (am_real)k;
-        m->zeta_global = AM_R(0.013) * (am_real)k;
-        m->zeta_collision = AM_R(0.17) * (am_real)k;
+        m->E = AM_P(1.2345678e6) * (am_param)(k + 1);
+        m->density = AM_P(987.654321) + (am_param)k;
+        m->poisson = AM_P(0.49) - AM_P(0.03) * (am_param)k;
+        m->cte = AM_P(0.0123456) * (am_param)(k - 5);
+        m->phase = AM_P(-3.14159265) + AM_P(0.3) * (am_param)k;
+        m->mu_static = AM_P(0.1) * (am_param)k;
+        m->mu_kinetic = AM_P(0.07) * (am_param)k;
+        m->zeta_internal = AM_P(0.11) * (am_param)k;
+        m->zeta_global = AM_P(0.013) * (am_param)k;
+        m->zeta_collision = AM_P(0.17) * (am_param)k;
         for (int c = 0; c < 4; c++) m->color[c] = (uint8_t)(k * 16 + c * 50);
         m->fixed = k % 5 == 4;
     }
     int cells = lat_a.nx * lat_a.ny * lat_a.nz;
     for (int i = 0; i < cells; i++) lat_a.cell[i] = (uint8_t)((i * 7) % (AM_MAX_MATERIALS + 1));
     am_env env = am_default_env();
-    env.gravity = AM_R(1.625);
+    env.gravity = AM_P(1.625);
     env.floor = 0;
     env.collisions = 0;
-    env.temp_base = AM_R(-2.5);
-    env.temp_amplitude = AM_R(17.25);
+    env.temp_base = AM_P(-2.5);
+    env.temp_amplitude = AM_P(17.25);
     env.period_steps = 777;
-    env.dt_frac = AM_R(0.123);
-    env.lift = AM_R(0.002);
-    env.zeta_internal_scale = AM_R(0.5);
-    env.zeta_global_scale = AM_R(2);
+    env.dt_frac = AM_P(0.123);
+    env.lift = AM_P(0.002);
+    env.zeta_internal_scale = AM_P(0.5);
+    env.zeta_global_scale = AM_P(2);
     round_trip(&lat_a, &env, "everything-volumetric");
     env.cte_mode = AM_CTE_LINEAR;
     round_trip(&lat_a, &env, "everything-linear");
     /* a constant temperature alone is VoxCAD's VaryTempEnabled 0 */
-    env.temp_amplitude = AM_R(0);
+    env.temp_amplitude = AM_P(0);
     round_trip(&lat_a, &env, "constant-temperature");
-    env.gravity = AM_R(0);
+    env.gravity = AM_P(0);
     round_trip(&lat_a, &env, "no-gravity");
 }
 
@@ -315,26 +315,26 @@ static void test_vxa_voxcad_conventions(void)
     CHECK(lat_a.palette.count == 3 && !strcmp(m->name, "Active__") && !strcmp(lat_a.palette.mat[1].name, "Active_-") &&
               !strcmp(lat_a.palette.mat[2].name, "Active___2"),
           "names '%s' '%s' '%s'", m->name, lat_a.palette.mat[1].name, lat_a.palette.mat[2].name);
-    CHECK(m->E == AM_R(1e7) && m->density == AM_R(1e6) && m->poisson == AM_R(0.35) && m->cte == AM_R(0.01) &&
-              m->phase == AM_R(1.5) && m->mu_static == AM_R(1) && m->mu_kinetic == AM_R(0.5),
+    CHECK(m->E == AM_P(1e7) && m->density == AM_P(1e6) && m->poisson == AM_P(0.35) && m->cte == AM_P(0.01) &&
+              m->phase == AM_P(1.5) && m->mu_static == AM_P(1) && m->mu_kinetic == AM_P(0.5),
           "mechanical values");
     CHECK(m->color[0] == 255 && m->color[1] == 128 && m->color[2] == 0 && m->color[3] == 255, "colour %d %d %d %d", m->color[0],
           m->color[1], m->color[2], m->color[3]);
     /* damping from <Simulator> on every material */
     for (int k = 0; k < 3; k++)
-        CHECK(lat_a.palette.mat[k].zeta_internal == AM_R(0.5) && lat_a.palette.mat[k].zeta_collision == AM_R(0.25) &&
-                  lat_a.palette.mat[k].zeta_global == AM_R(1.7378e-5),
+        CHECK(lat_a.palette.mat[k].zeta_internal == AM_P(0.5) && lat_a.palette.mat[k].zeta_collision == AM_P(0.25) &&
+                  lat_a.palette.mat[k].zeta_global == AM_P(1.7378e-5),
               "damping of material %d", k + 1);
     /* the environment: gravity -GravAcc, linear CTE, old TempAmp is the peak (39 - 25 = 14) */
     const am_env* e = &info_a.env;
-    CHECK(e->gravity == AM_R(9.81) && e->floor == 1 && e->collisions == 0 && e->cte_mode == AM_CTE_LINEAR, "gravity, floor, cte");
-    CHECK(e->temp_amplitude == AM_R(14) && e->temp_base == AM_R(0) && e->dt_frac == AM_R(0.2), "amplitude %g", (double)e->temp_amplitude);
+    CHECK(e->gravity == AM_P(9.81) && e->floor == 1 && e->collisions == 0 && e->cte_mode == AM_CTE_LINEAR, "gravity, floor, cte");
+    CHECK(e->temp_amplitude == AM_P(14) && e->temp_base == AM_P(0) && e->dt_frac == AM_P(0.2), "amplitude %g", (double)e->temp_amplitude);
     CHECK(info_a.temp_period == 0.025 && !info_a.period_steps_given, "period %g", info_a.temp_period);
     CHECK(am_vxa_period_steps(info_a.temp_period, 5e-5) == 500 && am_vxa_period_steps(1e-9, 1e-3) == 1 &&
               am_vxa_period_steps(1, 0) == 1 && am_vxa_period_steps(1e12, 1e-3) == 1000000000,
           "period in steps");
     /* BASE64 layers: bytes 1 2 3, then 0 1 0 */
-    CHECK(lat_a.nx == 3 && lat_a.ny == 1 && lat_a.nz == 2 && lat_a.voxel_size == AM_R(0.001), "size");
+    CHECK(lat_a.nx == 3 && lat_a.ny == 1 && lat_a.nz == 2 && lat_a.voxel_size == AM_P(0.001), "size");
     CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 2 && lat_a.cell[2] == 3 && lat_a.cell[3] == 0 && lat_a.cell[4] == 1 &&
               lat_a.cell[5] == 0,
           "cells");
@@ -344,10 +344,10 @@ static void test_vxa_voxcad_conventions(void)
                      "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
                      "<Data><Layer>1</Layer></Data></Structure></VXC></VXA>";
     CHECK(am_vxa_parse(&lat_a, &info_a, &doc, c2, "c.vxa", err, sizeof err) == AM_OK, "%s", err);
-    CHECK(info_a.env.temp_base == AM_R(7) && info_a.env.temp_amplitude == AM_R(0) && info_a.temp_period == 0, "constant temperature");
+    CHECK(info_a.env.temp_base == AM_P(7) && info_a.env.temp_amplitude == AM_P(0) && info_a.temp_period == 0, "constant temperature");
     /* VoxCAD: inside <Gravity> a missing switch is off */
-    CHECK(info_a.env.gravity == AM_R(0) && info_a.env.floor == 0, "empty <Gravity>");
-    CHECK(!strcmp(lat_a.palette.mat[0].name, "material1") && lat_a.palette.mat[0].E == AM_R(1e6), "defaults of an empty material");
+    CHECK(info_a.env.gravity == AM_P(0) && info_a.env.floor == 0, "empty <Gravity>");
+    CHECK(!strcmp(lat_a.palette.mat[0].name, "material1") && lat_a.palette.mat[0].E == AM_P(1e6), "defaults of an empty material");
 }
 
 static void test_vxa_warnings(void)

@@ -87,8 +87,8 @@ int cmd_export(int argc, char** argv)
         st = am_model_build(&g_model, timed, &env, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", robot, err);
         if (tool_vxa_loaded && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-            env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(env.dt_frac * g_model.dt_rec));
-        double dt = (double)(env.dt_frac * g_model.dt_rec);
+            env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&g_model, env.dt_frac));
+        double dt = am_dt_si(&g_model, env.dt_frac);
         if (am_vxa_format(&g_lat, &env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }

@@ -79,16 +79,16 @@ int cmd_sim(int argc, char** argv)
             if (def.relax_min_steps > n) def.relax_min_steps = n;
         } else if (!strcmp(a, "--amplitude")) {
             if (!tool_parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
-            env.temp_amplitude = (am_real)r, given |= G_AMPLITUDE, i++;
+            env.temp_amplitude = AM_PARAM_FROM_DOUBLE(r), given |= G_AMPLITUDE, i++;
         } else if (!strcmp(a, "--dt")) {
             if (!tool_parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
             dt_fixed = r, i++;
         } else if (!strcmp(a, "--dt-frac")) {
             if (!tool_parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
-            env.dt_frac = (am_real)r, given |= G_DT_FRAC, i++;
+            env.dt_frac = AM_PARAM_FROM_DOUBLE(r), given |= G_DT_FRAC, i++;
         } else if (!strcmp(a, "--gravity")) {
             if (!tool_parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
-            env.gravity = (am_real)r, given |= G_GRAVITY, i++;
+            env.gravity = AM_PARAM_FROM_DOUBLE(r), given |= G_GRAVITY, i++;
         } else if (!strcmp(a, "--collisions")) {
             if (!tool_parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
             given |= G_COLLISIONS, i++;
@@ -150,10 +150,10 @@ int cmd_sim(int argc, char** argv)
         return 0;
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
-    if (dt_fixed > 0) g_model.env.dt_frac = (am_real)(dt_fixed / (double)g_model.dt_rec);
+    if (dt_fixed > 0) g_model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&g_model, g_model.dt_rec, AM_DIM_TIME));
     /* a VXA file's period is in seconds: in steps of this robot's time step */
     if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-        g_model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(g_model.env.dt_frac * g_model.dt_rec));
+        g_model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&g_model, g_model.env.dt_frac));
 
     am_result res;
     double t0 = am_port_now();

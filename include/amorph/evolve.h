@@ -30,10 +30,10 @@ typedef struct am_evo_def {
     am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3) */
     am_env env;               /* environment: gravity, floor, actuation, time step (am_default_env) */
     am_eval_def eval;         /* evaluation: cycles, fitness measure, relaxation (record is ignored) */
-    am_real cte;              /* CTE of the actuated materials, per degree (0.01, volumetric) */
-    am_real mu_static;        /* static floor friction of every material (1.0) */
-    am_real mu_kinetic;       /* kinetic floor friction of every material (0.3) */
-    am_real voxel_size;       /* m (0.01) */
+    am_param cte;              /* CTE of the actuated materials, per degree (0.01, volumetric) */
+    am_param mu_static;        /* static floor friction of every material (1.0) */
+    am_param mu_kinetic;       /* kinetic floor friction of every material (0.3) */
+    am_param voxel_size;       /* m (0.01) */
     int population;           /* individuals, even, 2..AM_MAX_POPULATION (20) */
     long evaluations;         /* the run stops after this many evaluations, >= population */
     uint64_t seed;            /* the random stream (1) */

@@ -135,7 +135,7 @@ am_geno_def am_default_geno(void);
 /* how a genome becomes a body; am_default_express() gives the seed's */
 typedef struct am_express_def {
     const am_palette* palette; /* materials are looked up by the genome's names; NULL: am_default_palette() */
-    am_real voxel_size;        /* lattice cell edge, m (0.01) */
+    am_param voxel_size;       /* lattice cell edge, m (0.01) */
     am_real threshold;         /* a cell is filled where the density sum exceeds this (0) */
 } am_express_def;
 
@@ -291,6 +291,32 @@ const am_geno_ops* am_geno_ops_of(int repr);
 
 /* fills the lookup tables of w once (with am_sin and am_exp); expressions call it themselves */
 void am_geno_tables(am_geno_work* w);
+#if defined(AM_REAL_FIXED_POINT)
+/* fixed point: the table position u is held as a table index and a Q24 fraction (the index range,
+ * up to AM_GENO_TABLE, is beyond the Q7.24 range of am_real) */
+static inline am_real am_geno_lerp_fx(const am_real* tab, int64_t pos)
+{
+    if (!(pos > 0)) return tab[0];
+    if (!(pos < ((int64_t)AM_GENO_TABLE << AM_FIX_FRAC))) return tab[AM_GENO_TABLE];
+    int i = (int)(pos >> AM_FIX_FRAC);
+    am_real f = (am_real)(pos & (AM_FIX_ONE - 1));
+    return tab[i] + AM_MUL(f, tab[i + 1] - tab[i]);
+}
+static inline am_real am_geno_sin(const am_geno_work* w, am_real t)
+{
+    const am_real turns = AM_MUL(t, AM_R(0.15915494309189533577)); /* t / (2 pi) */
+    return am_geno_lerp_fx(w->tab_sin, (int64_t)(turns - am_floor(turns)) * AM_GENO_TABLE);
+}
+static inline am_real am_geno_gauss(const am_geno_work* w, am_real q)
+{
+    if (!(q < AM_GENO_GAUSS_RANGE)) return AM_R(0);
+    return am_geno_lerp_fx(w->tab_gauss, (int64_t)q * (AM_GENO_TABLE / 16)); /* AM_GENO_GAUSS_RANGE is 16 */
+}
+static inline am_real am_geno_sigmoid(const am_geno_work* w, am_real t)
+{
+    return am_geno_lerp_fx(w->tab_sig, ((int64_t)t + AM_GENO_SIG_RANGE) * (AM_GENO_TABLE / 32)); /* 2 AM_GENO_SIG_RANGE is 32 */
+}
+#else
 /* linear interpolation in a table of AM_GENO_TABLE intervals, u in [0, AM_GENO_TABLE] (clamped) */
 static inline am_real am_geno_lerp(const am_real* tab, am_real u)
 {
@@ -319,6 +345,13 @@ static inline am_real am_geno_sigmoid(const am_geno_work* w, am_real t)
     if (t != t) return AM_R(0);
     return am_geno_lerp(w->tab_sig, AM_MUL(t + AM_GENO_SIG_RANGE, AM_DIV((am_real)AM_GENO_TABLE, AM_R(2) * AM_GENO_SIG_RANGE)));
 }
+#endif
+#if defined(AM_REAL_FIXED_POINT)
+/* e^(-t^2) from the table (t^2 would leave the fixed-point range where the table is 0 anyway) */
+#define AM_GENO_GAUSS_SQ(w, t) (am_fabs(t) < AM_R(4) ? am_geno_gauss((w), AM_MUL((t), (t))) : AM_R(0))
+#else
+#define AM_GENO_GAUSS_SQ(w, t) am_geno_gauss((w), AM_MUL((t), (t)))
+#endif
 /* a value moved by a uniform step in [-step, step] and reflected into [lo, hi] */
 am_real am_geno_perturb(am_rng* r, am_real v, am_real step, am_real lo, am_real hi);
 

@@ -14,16 +14,16 @@
 
 typedef struct am_material {
     char name[AM_NAME_MAX];  /* identifier: letters, digits, '_' and '-' */
-    am_real E;               /* Young's modulus, Pa (> 0) */
-    am_real density;         /* kg/m^3 (> 0) */
-    am_real poisson;         /* Poisson ratio, [0, 0.5) */
-    am_real cte;             /* thermal expansion per degree; volumetric or linear (see am_env) */
-    am_real phase;           /* actuation phase, radians (added to the global temperature phase) */
-    am_real mu_static;       /* static floor friction coefficient (>= 0) */
-    am_real mu_kinetic;      /* kinetic floor friction coefficient (>= 0) */
-    am_real zeta_internal;   /* internal (bond) damping ratio, fraction of critical */
-    am_real zeta_global;     /* global (ground-referenced) damping ratio */
-    am_real zeta_collision;  /* floor / self-collision damping ratio */
+    am_param E;               /* Young's modulus, Pa (> 0) */
+    am_param density;         /* kg/m^3 (> 0) */
+    am_param poisson;         /* Poisson ratio, [0, 0.5) */
+    am_param cte;             /* thermal expansion per degree; volumetric or linear (see am_env) */
+    am_param phase;           /* actuation phase, radians (added to the global temperature phase) */
+    am_param mu_static;       /* static floor friction coefficient (>= 0) */
+    am_param mu_kinetic;      /* kinetic floor friction coefficient (>= 0) */
+    am_param zeta_internal;   /* internal (bond) damping ratio, fraction of critical */
+    am_param zeta_global;     /* global (ground-referenced) damping ratio */
+    am_param zeta_collision;  /* floor / self-collision damping ratio */
     uint8_t color[4];        /* display colour, RGBA */
     int fixed;               /* 1: voxels of this material are clamped in place */
 } am_material;
@@ -35,7 +35,7 @@ typedef struct am_palette {
 
 typedef struct am_lattice {
     int nx, ny, nz;             /* cells along x, y, z; each 1..AM_MAX_DIM */
-    am_real voxel_size;         /* cell edge, m */
+    am_param voxel_size;        /* cell edge, m */
     am_palette palette;
     uint8_t cell[AM_MAX_CELLS]; /* (nx*ny*nz) material ids, 0 = empty */
 } am_lattice;
@@ -49,7 +49,7 @@ am_palette am_default_palette(void);
 int am_palette_find(const am_palette* p, const char* name);
 
 /* an empty lattice of the given size with the default palette; AM_ERR_CAPACITY past AM_MAX_DIM */
-am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_real voxel_size, char* err, int errsz);
+am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxel_size, char* err, int errsz);
 static inline int am_lattice_index(const am_lattice* lat, int x, int y, int z) { return x + lat->nx * (y + lat->ny * z); }
 int am_lattice_count(const am_lattice* lat);         /* filled cells */
 

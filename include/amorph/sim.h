@@ -24,17 +24,17 @@ enum { AM_FIT_HORIZONTAL = 0, AM_FIT_PLUS_X = 1, AM_FIT_3D = 2 };
 
 /* the environment of a simulation; am_default_env() gives the seed's */
 typedef struct am_env {
-    am_real gravity;          /* m/s^2 along -z (9.80665); 0 turns gravity off */
+    am_param gravity;          /* m/s^2 along -z (9.80665); 0 turns gravity off */
     int floor;                /* 1: the floor z = 0 is present */
     int collisions;           /* 1: self-collision on */
     int cte_mode;             /* AM_CTE_VOLUMETRIC (seed: s = cbrt(1 + cte T)) or AM_CTE_LINEAR (s = 1 + cte T) */
-    am_real temp_base;        /* temperature offset at rest, degrees (0) */
-    am_real temp_amplitude;   /* actuation amplitude A, degrees (30) */
+    am_param temp_base;        /* temperature offset at rest, degrees (0) */
+    am_param temp_amplitude;   /* actuation amplitude A, degrees (30) */
     int period_steps;         /* actuation period P in time steps (500); > 0 */
-    am_real dt_frac;          /* time step as a fraction of the analytic dt_rec */
-    am_real lift;             /* m: the body's lowest face starts this high above the floor (0) */
-    am_real zeta_internal_scale; /* multiplies every material's internal damping (1) */
-    am_real zeta_global_scale;   /* multiplies every material's global damping (1) */
+    am_param dt_frac;          /* time step as a fraction of the analytic dt_rec */
+    am_param lift;             /* m: the body's lowest face starts this high above the floor (0) */
+    am_param zeta_internal_scale; /* multiplies every material's internal damping (1) */
+    am_param zeta_global_scale;   /* multiplies every material's global damping (1) */
 } am_env;
 
 am_env am_default_env(void);
@@ -82,7 +82,29 @@ typedef struct am_model {
     am_real coll_range;            /* largest contact distance (two spheres at full scale), m */
     am_real max_scale;             /* largest linear voxel scale the actuation can reach */
     int any_cte;                   /* 1 when some material has a non-zero CTE */
+    /* units: the SI value of one model unit of length, mass and time. 1 in the float and double
+     * builds, where the model works in SI; in the fixed-point build the voxel edge, the mass of the
+     * densest voxel and sqrt(mass / (E_max * edge)), so that every quantity of a step is O(1)
+     * (docs/fixed.md). Every am_real of the model and the state is in these units. */
+    double unit_len, unit_mass, unit_time;
+    am_real gravity;               /* env.gravity in model units */
+    am_real temp_base, temp_amplitude; /* env temperatures, degrees */
 } am_model;
+
+/* dimensions for converting model values to and from SI */
+enum {
+    AM_DIM_NONE, AM_DIM_LENGTH, AM_DIM_TIME, AM_DIM_MASS, AM_DIM_VELOCITY, AM_DIM_ACCEL, AM_DIM_MOMENTUM,
+    AM_DIM_ANGMOM, AM_DIM_FORCE, AM_DIM_MOMENT, AM_DIM_ANGVEL, AM_DIM_ENERGY, AM_DIM_INERTIA, AM_DIM_STIFFNESS,
+    AM_DIM_PRESSURE, AM_DIM_DAMPING
+};
+/* the SI value of one model unit of the dimension (1 in the float and double builds) */
+double am_unit(const am_model* m, int dim);
+/* a model value in SI (exactly (double)v in the float and double builds); never in a step */
+double am_to_si(const am_model* m, am_real v, int dim);
+/* an SI value in model units (exactly (am_real)v in the float and double builds) */
+am_real am_from_si(const am_model* m, double v, int dim);
+/* the time step dt_frac * dt_rec, s (rounded to am_real first in the float and double builds) */
+double am_dt_si(const am_model* m, am_param dt_frac);
 
 /* recording of voxel poses every `every` steps into a caller's fixed buffer */
 typedef struct am_record {
@@ -135,6 +157,11 @@ typedef struct am_state {
     int32_t bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
     int32_t bucket_next[AM_MAX_VOXELS];
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
+#if defined(AM_REAL_FIXED_POINT)
+    /* the rounding remainders of x, p and h (Q48 - Q24 parts, error diffusion): a step adds
+     * F dt and v dt exactly, so no increment below the resolution is lost (docs/fixed.md) */
+    am_real x_rem[3][AM_MAX_VOXELS], p_rem[3][AM_MAX_VOXELS], h_rem[3][AM_MAX_VOXELS];
+#endif
     int scales_valid;                    /* 0 until voxel scales and rest lengths follow mat_scale */
 } am_state;
 
@@ -173,7 +200,7 @@ typedef struct am_eval_def {
     int dt_search;           /* 1: the seed's empirical time step search instead of env.dt_frac */
     long relax_max_steps;    /* relaxation ends here at the latest (4000) */
     long relax_min_steps;    /* and not before this (200) */
-    am_real settle_speed;    /* m/s: relaxed when the RMS voxel speed stays below this (1e-3) */
+    am_param settle_speed;   /* m/s: relaxed when the RMS voxel speed stays below this (1e-3) */
     am_record* record;       /* optional recording (may be NULL) */
 } am_eval_def;
 
