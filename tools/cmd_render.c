@@ -159,7 +159,7 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
     /* extents of each frame about its centre of mass in the view plane, and of all about the mean */
     double umin = 1e30, umax = -1e30, vmin = 1e30, vmax = -1e30;
     double gu0 = 1e30, gu1 = -1e30, gv0 = 1e30, gv1 = -1e30, mean[3] = {0, 0, 0}, com[FILM_MAX_PANELS][3];
-    double pad = 0.9 * (double)mo->model->L;
+    double pad = 0.9 * am_to_si(mo->model, mo->model->L, AM_DIM_LENGTH);
     for (int k = 0; k < np; k++) {
         tool_motion_com(mo, frame[k], com[k]);
         for (int j = 0; j < 3; j++) mean[j] += com[k][j] / np;

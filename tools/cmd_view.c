@@ -140,7 +140,7 @@ static void view_data(text_out* o, const tool_motion* mo, const am_eval_def* eva
             body = fmax(body, sqrt(d2)), all = fmax(all, sqrt(e2));
         }
     }
-    double L = (double)m->L;
+    double L = am_to_si(m, m->L, AM_DIM_LENGTH);
     int follow = all > 3 * body;
     double extent = 2 * (follow ? body : all) + 2 * L;
 

@@ -89,7 +89,7 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3])
     double m = 0;
     com[0] = com[1] = com[2] = 0;
     for (int i = 0; i < mo->nv; i++) {
-        double w = (double)mo->model->mass[i];
+        double w = am_to_si(mo->model, mo->model->mass[i], AM_DIM_MASS);
         for (int k = 0; k < 3; k++) com[k] += w * (double)f[7 * i + k];
         m += w;
     }
@@ -99,7 +99,7 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3])
 void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3])
 {
     const float* f = mo->pose + (long)frame * mo->nv * 7;
-    double L = (double)mo->model->L, sum = 0;
+    double L = am_to_si(mo->model, mo->model->L, AM_DIM_LENGTH), sum = 0;
     int have = 0;
     for (int a = 0; a < 3; a++) {
         double s = 0;
