@@ -46,7 +46,7 @@ ifneq ($(origin ARCH),command line)
 ARCH  :=
 endif
 ifneq ($(origin BUILD),command line)
-BUILD := build/$(TARGET)
+BUILD := build/$(TARGET)$(if $(filter-out float,$(REAL)),-$(REAL))
 endif
 TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
@@ -159,7 +159,8 @@ valgrind-run: $(TEST_BIN) $(BUILD)/amorph
 # one reference computation on every target (x86-64 compilers, Linux under qemu-user, Cortex-M
 # under qemu-system-arm) must print the same pinned hash (docs/porting.md)
 repro:
-	@sh tools/repro.sh
+	@sh tools/repro.sh float
+	@sh tools/repro.sh fixed
 
 # worst-case stack depth from GCC's frame sizes and call graph: the board build, then the desktop
 # build (tools/stack.sh states the method)

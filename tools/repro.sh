@@ -13,8 +13,14 @@
 set -u
 cd "$(dirname "$0")/.."
 
+# the number type is the first argument: float (default) or fixed, each with its pinned hash
+REAL=${1:-float}
+case "$REAL" in
+float) REPRO_EXPECT=${REPRO_EXPECT:-b9c47f68a0529b5f} ;;
+fixed) REPRO_EXPECT=${REPRO_EXPECT_FIXED:-cafd0eb2831d8585} ;;
+*) echo "repro: the number type must be float or fixed, not '$REAL'" >&2; exit 2 ;;
+esac
 REPRO_ARGS=${REPRO_ARGS:-"repro"}
-REPRO_EXPECT=${REPRO_EXPECT:-b9c47f68a0529b5f}
 JOBS=${JOBS:-2}
 MAKE=${MAKE:-make}
 TIMEOUT=${REPRO_TIMEOUT:-600}
@@ -23,15 +29,16 @@ TIMEOUT=${REPRO_TIMEOUT:-600}
 # board:<qemu-system-arm machine>)
 TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
 cortex-m4|TARGET=cortex-m4|board:mps2-an386
-x86_64-gcc-O0|BUILD=build/repro/gcc-O0 CC=gcc OPT=-O0 ARCH=|native
-x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native CC=gcc OPT=-O3 ARCH=native|native
-x86_64-clang-O2|BUILD=build/repro/clang-O2 CC=clang OPT=-O2 ARCH=|native
+x86_64-gcc-O0|BUILD=build/repro/gcc-O0-REAL CC=gcc OPT=-O0 ARCH=|native
+x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=native|native
+x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
 aarch64-linux|TARGET=aarch64-linux|qemu-aarch64
 armhf-linux|TARGET=armhf-linux|qemu-arm
 riscv64-linux|TARGET=riscv64-linux|qemu-riscv64"
 
+TARGETS=$(echo "$TARGETS" | sed "s/-REAL /-$REAL /")
 mkdir -p build/repro
-out=build/repro/results.txt
+out=build/repro/results-$REAL.txt
 : >"$out"
 
 now() { date +%s.%N; }
@@ -39,7 +46,7 @@ now() { date +%s.%N; }
 build_of() {
     case "$1" in
     *BUILD=*) echo "$1" | sed 's/.*BUILD=\([^ ]*\).*/\1/' ;;
-    *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')" ;;
+    *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')$([ "$REAL" = float ] || echo "-$REAL")" ;;
     esac
 }
 # runs one built amorph with REPRO_ARGS, output on stdout
@@ -59,9 +66,9 @@ run_one() {
 one() {
     name=$1 vars=$2 how=$3
     build=$(build_of "$vars")
-    log=build/repro/$name.log
+    log=build/repro/$name-$REAL.log
     # shellcheck disable=SC2086
-    if ! $MAKE --no-print-directory -j"$JOBS" PROFILE=board $vars "$build/amorph" >"$log" 2>&1; then
+    if ! $MAKE --no-print-directory -j"$JOBS" PROFILE=board REAL=$REAL $vars "$build/amorph" >"$log" 2>&1; then
         echo "$name (build-failed) -" >>"$out"
         return
     fi
@@ -77,7 +84,7 @@ one() {
 }
 
 start=$(now)
-echo "repro: amorph $REPRO_ARGS (expected hash $REPRO_EXPECT)"
+echo "repro ($REAL): amorph $REPRO_ARGS (expected hash $REPRO_EXPECT)"
 # the slow Cortex-M3 run goes on in the background while the others build
 echo "$TARGETS" | {
     first=1
@@ -98,13 +105,13 @@ for name in $(echo "$TARGETS" | cut -d'|' -f1); do
     hash=$(echo "$line" | cut -d' ' -f2)
     secs=$(echo "$line" | cut -d' ' -f3)
     mark=""
-    [ "$hash" = "$REPRO_EXPECT" ] || { mark="  MISMATCH (build/repro/$name.log)"; bad=$((bad + 1)); }
+    [ "$hash" = "$REPRO_EXPECT" ] || { mark="  MISMATCH (build/repro/$name-$REAL.log)"; bad=$((bad + 1)); }
     printf '%-22s %-18s %8s%s\n' "$name" "${hash:-(missing)}" "${secs:--}" "$mark"
 done
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
 if [ "$bad" -ne 0 ]; then
-    echo "repro: $bad of $n targets differ from $REPRO_EXPECT (${total}s)"
+    echo "repro ($REAL): $bad of $n targets differ from $REPRO_EXPECT (${total}s)"
     exit 1
 fi
-echo "repro: all $n targets print $REPRO_EXPECT (${total}s)"
+echo "repro ($REAL): all $n targets print $REPRO_EXPECT (${total}s)"
