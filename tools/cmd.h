@@ -90,4 +90,9 @@ int tool_write_plot(int ndirs, char** dirs, const char* path);
 #endif
 extern char tool_file_buf[TOOL_FILE_MAX];
 
+/* the workspaces every command shares (they run one at a time): the evolver's evaluation
+ * workers; [0] also serves sim, bench, export, random, express and the pictures, each job on its
+ * own members (geno to express, model and state to simulate) */
+extern am_evo_work tool_work[AM_MAX_WORKERS];
+
 #endif

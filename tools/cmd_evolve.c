@@ -9,7 +9,6 @@
 #include <string.h>
 
 static am_evo g_evo;
-static am_evo_work g_work[AM_MAX_WORKERS];
 #if defined(AM_PROFILE_BOARD)
 /* a board's checkpoints: genomes of the board profile's sizes written compactly fit easily;
  * a larger one is refused with a capacity message, never overflowed */
@@ -183,7 +182,7 @@ static int write_best(const char* dir, const am_evo* e)
     if (am_genome_format(&e->best.genome, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK ||
         write_text(dir, "best.genome", tool_file_buf, len))
         return 1;
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &g_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK ||
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK ||
         am_lattice_format(&g_best_lat, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
@@ -301,7 +300,7 @@ static int run_loop(am_evo* e, const run_io* io)
     while (!am_evo_done(e)) {
         double best_before = e->has_best ? e->best.fitness : 0.0;
         int had_best = e->has_best;
-        am_status st = am_evo_generation(e, g_work, workers, am_port_interrupted, err, sizeof err);
+        am_status st = am_evo_generation(e, tool_work, workers, am_port_interrupted, err, sizeof err);
         if (st != AM_OK) {
             if (am_port_interrupted()) break;
             fprintf(stderr, "amorph: %s\n", err);
@@ -337,7 +336,7 @@ static int finish_pictures(const am_evo* e, const char* dir)
 {
     if (!TOOL_PICTURES) return 0;
     char path[4096], err[AM_ERR_MAX], title[256];
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &g_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK) {
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
@@ -713,7 +712,7 @@ int tool_bench_evolve(long evaluations)
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
         while (!am_evo_done(&g_evo)) {
-            if (am_evo_generation(&g_evo, g_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            if (am_evo_generation(&g_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
             for (int i = 0; i < d.population; i++) {
                 steps += g_evo.child[i].steps;
                 voxel_steps += g_evo.child[i].steps * g_evo.child[i].voxels;
@@ -772,7 +771,7 @@ int cmd_repro(int argc, char** argv)
     if (am_evo_init(&g_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();
     while (!am_evo_done(&g_evo))
-        if (am_evo_generation(&g_evo, g_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+        if (am_evo_generation(&g_evo, tool_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
             fprintf(stderr, "amorph: repro: %s\n", err);
             return 1;
         }

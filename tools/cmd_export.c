@@ -10,7 +10,6 @@ am_vxa_info tool_vxa_info;
 
 static am_xml_doc g_xml;       /* the VXA reader's workspace */
 static am_lattice g_lat, g_one; /* the robot; a one-voxel stand-in to time an empty one */
-static am_model g_model;
 static char g_out[AM_VXA_TEXT_MAX > AM_LATTICE_TEXT_MAX ? AM_VXA_TEXT_MAX : AM_LATTICE_TEXT_MAX];
 
 am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz)
@@ -84,11 +83,11 @@ int cmd_export(int argc, char** argv)
             g_one.cell[0] = 1;
             timed = &g_one;
         }
-        st = am_model_build(&g_model, timed, &env, err, sizeof err);
+        st = am_model_build(&tool_work[0].model, timed, &env, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", robot, err);
         if (tool_vxa_loaded && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-            env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&g_model, env.dt_frac));
-        double dt = am_dt_si(&g_model, env.dt_frac);
+            env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, env.dt_frac));
+        double dt = am_dt_si(&tool_work[0].model, env.dt_frac);
         if (am_vxa_format(&g_lat, &env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }

@@ -6,7 +6,6 @@
 
 /* one genome, one expression workspace and the texts of the commands (they run one at a time) */
 static am_genome genome_one;
-static am_geno_work genome_work;
 static am_lattice genome_lat;
 static char genome_text[AM_GENOME_TEXT_MAX];
 static char genome_lattice_text[AM_LATTICE_TEXT_MAX];
@@ -93,7 +92,7 @@ am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_la
             return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
                            materials_line(text), genome_one.mat[m]);
     char msg[AM_ERR_MAX];
-    st = am_genome_to_lattice(&genome_one, NULL, &genome_work, lat, msg, sizeof msg);
+    st = am_genome_to_lattice(&genome_one, NULL, &tool_work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
     return AM_OK;
 }
@@ -140,7 +139,7 @@ int cmd_express(int argc, char** argv)
     }
     if (tool_write_output(out, genome_lattice_text, len) != 0) return 1;
     if (!out) return 0;
-    printf("voxels=%d\n", genome_work.voxels);
+    printf("voxels=%d\n", tool_work[0].geno.voxels);
     return 0;
 }
 
@@ -161,13 +160,13 @@ void tool_bench_express(void)
                 printf("express_%s_error=%s\n", am_repr_name(repr), err);
                 return;
             }
-        am_genome_express(&pool[0], NULL, &genome_work, NULL, err, sizeof err); /* warm-up: tables */
+        am_genome_express(&pool[0], NULL, &tool_work[0].geno, NULL, err, sizeof err); /* warm-up: tables */
         long reps = 0, voxels = 0;
         double t0 = am_port_now(), t = 0;
         do {
             for (int i = 0; i < GENOMES; i++) {
-                am_genome_express(&pool[i], NULL, &genome_work, NULL, err, sizeof err);
-                voxels += genome_work.voxels;
+                am_genome_express(&pool[i], NULL, &tool_work[0].geno, NULL, err, sizeof err);
+                voxels += tool_work[0].geno.voxels;
             }
             reps += GENOMES;
             t = am_port_now() - t0;
@@ -177,7 +176,7 @@ void tool_bench_express(void)
         double l0 = am_port_now(), lt = 0;
         do {
             for (int i = 0; i < GENOMES; i++)
-                am_levelset(&genome_work, def.materials, def.nx, def.ny, def.nz, AM_R(0), NULL);
+                am_levelset(&tool_work[0].geno, def.materials, def.nx, def.ny, def.nz, AM_R(0), NULL);
             lreps += GENOMES;
             lt = am_port_now() - l0;
         } while (lt < 0.1);

@@ -5,8 +5,6 @@
 #include <string.h>
 
 static am_lattice g_lat;
-static am_model g_model;
-static am_state g_state;
 
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
@@ -139,7 +137,7 @@ int cmd_sim(int argc, char** argv)
         if (st != AM_OK) return tool_usage_error("%s", err);
         if (tool_vxa_loaded) env = merge_env(&tool_vxa_info.env, &env, given);
     }
-    st = am_model_build(&g_model, &g_lat, &env, err, sizeof err);
+    st = am_model_build(&tool_work[0].model, &g_lat, &env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
         if (json)
@@ -150,14 +148,14 @@ int cmd_sim(int argc, char** argv)
         return 0;
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
-    if (dt_fixed > 0) g_model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&g_model, g_model.dt_rec, AM_DIM_TIME));
+    if (dt_fixed > 0) tool_work[0].model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&tool_work[0].model, tool_work[0].model.dt_rec, AM_DIM_TIME));
     /* a VXA file's period is in seconds: in steps of this robot's time step */
     if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-        g_model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&g_model, g_model.env.dt_frac));
+        tool_work[0].model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, tool_work[0].model.env.dt_frac));
 
     am_result res;
     double t0 = am_port_now();
-    am_evaluate(&g_model, &g_state, &def, &res);
+    am_evaluate(&tool_work[0].model, &tool_work[0].state, &def, &res);
     double wall = am_port_now() - t0;
     if (json) {
         printf("{\"robot\": \"%s\", \"fitness\": %.9g, \"dx\": %.9g, \"dy\": %.9g, \"dz\": %.9g, \"voxels\": %d, "
@@ -185,19 +183,19 @@ static int bench_one(const char* scene, long steps, int collisions)
     am_env env = am_default_env();
     env.collisions = collisions;
     if (am_scene_build(&g_lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-    if (am_model_build(&g_model, &g_lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-    am_state_reset(&g_model, &g_state);
-    g_state.actuate = 1;
-    am_steps(&g_model, &g_state, steps / 10 + 1); /* warm-up: caches, first collision build */
-    long r0 = g_state.rebuilds;
+    if (am_model_build(&tool_work[0].model, &g_lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    am_state_reset(&tool_work[0].model, &tool_work[0].state);
+    tool_work[0].state.actuate = 1;
+    am_steps(&tool_work[0].model, &tool_work[0].state, steps / 10 + 1); /* warm-up: caches, first collision build */
+    long r0 = tool_work[0].state.rebuilds;
     double t0 = am_port_now();
-    long done = am_steps(&g_model, &g_state, steps);
+    long done = am_steps(&tool_work[0].model, &tool_work[0].state, steps);
     double wall = am_port_now() - t0;
-    double vps = (double)done * g_model.nv / (wall > 0 ? wall : 1e-9);
+    double vps = (double)done * tool_work[0].model.nv / (wall > 0 ? wall : 1e-9);
     printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld wall_s=%.4f voxel_steps_per_s=%.4g "
            "ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
-           scene, collisions ? "on" : "off", g_model.nv, g_model.nl, done, wall, vps, 1e9 / vps,
-           g_state.rebuilds - r0, g_state.npairs, g_state.diverged);
+           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.nl, done, wall, vps, 1e9 / vps,
+           tool_work[0].state.rebuilds - r0, tool_work[0].state.npairs, tool_work[0].state.diverged);
     fflush(stdout);
     return 0;
 }

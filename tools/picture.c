@@ -8,8 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static am_model pic_model;
-static am_state pic_state;
 static float pic_pose[TOOL_REC_FLOATS];
 static long pic_step[TOOL_REC_MAX_FRAMES];
 
@@ -18,12 +16,12 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
 {
     char err[AM_ERR_MAX];
     memset(mo, 0, sizeof *mo);
-    am_status st = am_model_build(&pic_model, lat, env, err, sizeof err);
+    am_status st = am_model_build(&tool_work[0].model, lat, env, err, sizeof err);
     if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
     if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
     /* frames that fit: the float budget caps big bodies, the step list caps the count. Record as
      * many as fit over the longest the evaluation can take, then keep `want` of them */
-    long fit = TOOL_REC_FLOATS / ((long)pic_model.nv * 7);
+    long fit = TOOL_REC_FLOATS / ((long)tool_work[0].model.nv * 7);
     if (fit > TOOL_REC_MAX_FRAMES) fit = TOOL_REC_MAX_FRAMES;
     if (want > fit) want = (int)fit;
     if (want < 2) want = 2;
@@ -39,7 +37,7 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
     rec.pose_cap = TOOL_REC_FLOATS;
     am_eval_def def = *eval;
     def.record = &rec;
-    am_evaluate(&pic_model, &pic_state, &def, &mo->res);
+    am_evaluate(&tool_work[0].model, &tool_work[0].state, &def, &mo->res);
     /* keep the frames before the first non-finite value (a diverged run) */
     int good = 0;
     for (; good < rec.frames; good++) {
@@ -49,7 +47,7 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
         if (!ok) break;
     }
     if (good < 1) return tool_usage_error("%s: the simulation diverged at once, nothing to draw", what);
-    mo->model = &pic_model;
+    mo->model = &tool_work[0].model;
     mo->nv = rec.nv;
     mo->frames = good;
     mo->pose = pic_pose;
@@ -139,8 +137,8 @@ int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* e
          * of this robot's time step */
         *env = tool_vxa_info.env;
         if (!tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0 &&
-            am_model_build(&pic_model, lat, env, err, sizeof err) == AM_OK)
-            env->period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(env->dt_frac * pic_model.dt_rec));
+            am_model_build(&tool_work[0].model, lat, env, err, sizeof err) == AM_OK)
+            env->period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(env->dt_frac * tool_work[0].model.dt_rec));
     }
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 char tool_file_buf[TOOL_FILE_MAX];
+am_evo_work tool_work[AM_MAX_WORKERS];
 
 int tool_usage_error(const char* fmt, ...)
 {

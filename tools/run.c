@@ -14,7 +14,6 @@ int tool_is_run_dir(const char* path)
     return am_port_exists(p);
 }
 
-static am_geno_work g_geno;
 
 am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_def* eval, char* err, int errsz)
 {
@@ -33,7 +32,7 @@ am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_d
     st = am_genome_parse(&g, tool_file_buf, path, err, errsz);
     if (st != AM_OK) return st;
     am_palette pal = am_evo_palette(&d);
-    st = am_evo_lattice(&d, &pal, &g, &g_geno, lat, msg, sizeof msg);
+    st = am_evo_lattice(&d, &pal, &g, &tool_work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
     if (env) *env = d.env;
     if (eval) {
