@@ -19,34 +19,15 @@
  */
 #include "amorph/evolve.h"
 
-#include <stdarg.h>
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
 #define CHECKPOINT_VERSION 1
 
-typedef struct sink {
-    char* buf;
-    long cap;
-    long len;
-} sink;
-
-static void put(sink* s, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(sink* s, const char* fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    long room = s->cap - s->len;
-    int n = vsnprintf(room > 0 ? s->buf + s->len : NULL, room > 0 ? (size_t)room : 0, fmt, ap);
-    va_end(ap);
-    if (n > 0) s->len += n;
-}
+/* text goes through the genotypes' bounded sink (am_geno_put never writes past cap) */
+typedef am_geno_sink sink;
+#define put am_geno_put
 
 static unsigned long long dbits(double v)
 {

@@ -283,22 +283,6 @@ am_status am_evo_check(const am_evo_def* d, char* err, int errsz)
 
 /* ---- text ---- */
 
-static void put(char* buf, long cap, long* len, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
-
-#include <stdarg.h>
-static void put(char* buf, long cap, long* len, const char* fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    long room = cap - *len;
-    int n = vsnprintf(room > 0 ? buf + *len : NULL, room > 0 ? (size_t)room : 0, fmt, ap);
-    va_end(ap);
-    if (n > 0) *len += n;
-}
 
 /* one key's value as text */
 static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap)
@@ -341,14 +325,15 @@ static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap
 
 am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
 {
-    long n = 0;
+    am_geno_sink out = {buf, cap, 0}; /* bounded text sink of the genotypes */
     char v[64];
-    put(buf, cap, &n, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
+    am_geno_put(&out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
     for (int i = 0; i < KEY_COUNT; i++) {
         if (keys[i].runtime && !with_runtime) continue;
         value_text(d, &keys[i], v, sizeof v);
-        put(buf, cap, &n, "%s = %s\n", keys[i].name, v);
+        am_geno_put(&out, "%s = %s\n", keys[i].name, v);
     }
+    long n = out.len;
     if (len) *len = n;
     if (n >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs %ld bytes, the buffer holds %ld", n + 1, cap);
     return AM_OK;

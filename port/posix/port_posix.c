@@ -54,6 +54,22 @@ am_status am_port_read_file(const char* path, char* buf, long cap, long* len, ch
     return AM_OK;
 }
 
+/* writes all n bytes to fd (retrying on EINTR); 0, or the errno of the failure */
+static int write_all(int fd, const void* data, long n)
+{
+    const char* p = (const char*)data;
+    long done = 0;
+    while (done < n) {
+        ssize_t put = write(fd, p + done, (size_t)(n - done));
+        if (put < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        done += put;
+    }
+    return 0;
+}
+
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz)
 {
     char tmp[4096];
@@ -61,26 +77,19 @@ am_status am_port_write_file(const char* path, const void* data, long n, char* e
         return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
-    const char* p = (const char*)data;
-    long done = 0;
-    while (done < n) {
-        ssize_t put = write(fd, p + done, (size_t)(n - done));
-        if (put < 0) {
-            if (errno == EINTR) continue;
-            int e = errno;
-            close(fd);
-            unlink(tmp);
-            return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
-        }
-        done += put;
+    int e = write_all(fd, data, n);
+    if (e != 0) {
+        close(fd);
+        unlink(tmp);
+        return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
     }
     if (fsync(fd) != 0 || close(fd) != 0) {
-        int e = errno;
+        e = errno;
         unlink(tmp);
         return am_fail(err, errsz, AM_ERR_IO, "%s: cannot finish writing: %s", path, strerror(e));
     }
     if (rename(tmp, path) != 0) {
-        int e = errno;
+        e = errno;
         unlink(tmp);
         return am_fail(err, errsz, AM_ERR_IO, "%s: cannot replace: %s", path, strerror(e));
     }
@@ -157,17 +166,10 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
 {
     int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open for appending: %s", path, strerror(errno));
-    const char* p = (const char*)data;
-    long done = 0;
-    while (done < n) {
-        ssize_t put = write(fd, p + done, (size_t)(n - done));
-        if (put < 0) {
-            if (errno == EINTR) continue;
-            int e = errno;
-            close(fd);
-            return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
-        }
-        done += put;
+    int e = write_all(fd, data, n);
+    if (e != 0) {
+        close(fd);
+        return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
     }
     if (close(fd) != 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot finish writing: %s", path, strerror(errno));
     return AM_OK;
