@@ -43,7 +43,7 @@ double am_strain_energy(const am_model* m, const am_state* s)
         link_kin k;
         int axis = link_axis(m, l);
         link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
-        if (s->large[l]) link_kin_large(&k);
+        link_kin_large(&k, s->large[l]);
         double rest = (double)m->L * 0.5 * ((double)s->s[m->lneg[l]] + (double)s->s[m->lpos[l]]);
         double u = (double)k.p.x - rest, y = (double)k.p.y, z = (double)k.p.z;
         double t1x = (double)k.t1.x, t1y = (double)k.t1.y, t1z = (double)k.t1.z;
