@@ -12,6 +12,29 @@
 #include "sim_internal.h"
 #include "amorph/mathx.h"
 
+/* Arrays of the state and the model are handed to the hot loops as restrict-qualified function
+ * parameters (rows of [3][AM_MAX_VOXELS] and [3][AM_MAX_LINKS + 1] arrays as pointers to rows):
+ * only then does the compiler know that the loads (gathers through lneg/lpos and the slots)
+ * cannot see the stores, and vectorise the loops. */
+typedef am_real vox_row[AM_MAX_VOXELS];
+typedef am_real link_row[AM_MAX_LINKS + 1];
+
+static void voxel_scales(int nv, const uint8_t* restrict mat, const am_real* restrict mat_scale, am_real* restrict scale)
+{
+    for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
+}
+
+/* rest length of each link, the mean of its voxels' edges, and its inverse */
+static void rest_lengths(int nl, am_real half_L, const int32_t* restrict lneg, const int32_t* restrict lpos,
+                         const am_real* restrict scale, am_real* restrict rest, am_real* restrict inv_rest)
+{
+    for (int l = 0; l < nl; l++) {
+        am_real r = AM_MUL(half_L, scale[lneg[l]] + scale[lpos[l]]);
+        rest[l] = r;
+        inv_rest[l] = AM_DIV(AM_R(1), r);
+    }
+}
+
 /* per-material temperature and linear scale, voxel scales, link rest lengths */
 static void actuation(const am_model* m, am_state* s)
 {
@@ -32,22 +55,9 @@ static void actuation(const am_model* m, am_state* s)
      * body or during relaxation) */
     if (!changed) return;
     s->scales_valid = 1;
-    const int nv = m->nv, nl = m->nl;
-    for (int i = 0; i < nv; i++) s->s[i] = s->mat_scale[m->mat[i]];
-    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
-    for (int l = 0; l < nl; l++) {
-        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
-        s->rest[l] = r;
-        s->inv_rest[l] = AM_DIV(AM_R(1), r);
-    }
+    voxel_scales(m->nv, m->mat, s->mat_scale, s->s);
+    rest_lengths(m->nl, AM_MUL(AM_R(0.5), m->L), m->lneg, m->lpos, s->s, s->rest, s->inv_rest);
 }
-
-/* Arrays of the state and the model are handed to the hot loops as restrict-qualified function
- * parameters (rows of [3][AM_MAX_VOXELS] and [3][AM_MAX_LINKS + 1] arrays as pointers to rows):
- * only then does the compiler know that the loads (gathers through lneg/lpos and the slots)
- * cannot see the stores, and vectorise the loops. */
-typedef am_real vox_row[AM_MAX_VOXELS];
-typedef am_real link_row[AM_MAX_LINKS + 1];
 
 /* the constants of one link and its current rest length */
 typedef struct link_par { am_real k_ax, a2, b1, b2, b3, c_t, c_r, rest, inv_rest; } link_par;
@@ -250,9 +260,8 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, c
 static void floor_pass(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
-    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
     for (int i = 0; i < nv; i++) {
-        if (!(AM_MUL(half_L, s->s[i]) - s->x[2][i] > AM_R(0))) {
+        if (!(AM_MUL(AM_MUL(AM_R(0.5), s->s[i]), m->L) - s->x[2][i] > AM_R(0))) { /* as floor_contact */
             s->contact[i] = 0;
             continue;
         }
