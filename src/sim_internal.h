@@ -146,7 +146,7 @@ static inline void link_kin_large(link_kin* k, int on)
     quat r = qt(AM_MUL(wq, inv), AM_R(0), AM_MUL(u.z, inv), AM_MUL(-u.y, inv));
     /* in the new frame the negative end is turned by r and the positive one by r * qr */
     k->t1 = v3_sel(on, q_rotvec(r), k->t1);
-    k->t2 = v3_sel(on, q_rotvec(q_mul(r, k->qr)), k->t2);
+    k->t2 = q_rotvec(q_sel(on, q_mul(r, k->qr), k->qr)); /* = k->t2 when off, one series fewer */
     k->p = v3_sel(on, v3(len, 0, 0), k->p);
     k->rot = q_sel(on, r, k->rot);
 }

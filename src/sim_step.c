@@ -1,7 +1,7 @@
 /* One time step of the voxel beam lattice (docs/physics.md section 7).
  *
- * Order: actuation (per-material temperature -> voxel scales -> link rest lengths, once per
- * link), link forces from the state at the start of the step, contact forces (self-collision;
+ * Order: actuation (per-material temperature -> voxel scales -> rest lengths, once per pair
+ * of materials), link forces from the state at the start of the step, contact forces (self-collision;
  * the floor is per voxel and done during integration because its friction state machine needs
  * the voxel's total force), then semi-implicit Euler per voxel.
  *
@@ -24,18 +24,7 @@ static void voxel_scales(int nv, const uint8_t* restrict mat, const am_real* res
     for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
 }
 
-/* rest length of each link, the mean of its voxels' edges, and its inverse */
-static void rest_lengths(int nl, am_real half_L, const int32_t* restrict lneg, const int32_t* restrict lpos,
-                         const am_real* restrict scale, am_real* restrict rest, am_real* restrict inv_rest)
-{
-    for (int l = 0; l < nl; l++) {
-        am_real r = AM_MUL(half_L, scale[lneg[l]] + scale[lpos[l]]);
-        rest[l] = r;
-        inv_rest[l] = AM_DIV(AM_R(1), r);
-    }
-}
-
-/* per-material temperature and linear scale, voxel scales, link rest lengths */
+/* per-material temperature and linear scale, voxel scales, rest lengths per material pair */
 static void actuation(const am_model* m, am_state* s)
 {
     const am_env* e = &m->env;
@@ -56,7 +45,14 @@ static void actuation(const am_model* m, am_state* s)
     if (!changed) return;
     s->scales_valid = 1;
     voxel_scales(m->nv, m->mat, s->mat_scale, s->s);
-    rest_lengths(m->nl, AM_MUL(AM_R(0.5), m->L), m->lneg, m->lpos, s->s, s->rest, s->inv_rest);
+    /* a link's rest length is the mean of its voxels' edges: one per pair of materials */
+    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    for (int i = 0; i < m->palette.count; i++)
+        for (int j = 0; j < m->palette.count; j++) {
+            am_real r = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
+            s->pair_rest[i * AM_MAX_MATERIALS + j] = r;
+            s->pair_inv_rest[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), r);
+        }
 }
 
 /* the constants of one link and its current rest length */
@@ -122,8 +118,9 @@ static int link_pass(int l0, int l1, int axis, const int32_t* restrict lneg, con
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
-                     const am_real* restrict c_t, const am_real* restrict c_r, const am_real* restrict rest,
-                     const am_real* restrict inv_rest, int32_t* restrict large, link_row* restrict fn,
+                     const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                     int32_t* restrict large, link_row* restrict fn,
                      link_row* restrict mn, link_row* restrict mp, am_real* restrict strain)
 {
     int bad = 0;
@@ -132,9 +129,10 @@ static int link_pass(int l0, int l1, int axis, const int32_t* restrict lneg, con
         link_kin k;
         link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
                       v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
-        int lg = large_switch(&k, large[l], inv_rest[l]);
+        const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
+        int lg = large_switch(&k, large[l], inv_rest);
         link_kin_large(&k, lg);
-        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest[l], inv_rest[l]};
+        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
         link_out o = link_element(&k, lg, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
                                   v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
         large[l] = lg;
@@ -150,7 +148,8 @@ static int link_pass(int l0, int l1, int axis, const int32_t* restrict lneg, con
 static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 {
     return link_pass(l0, l1, axis, m->lneg, m->lpos, (const vox_row*)s->x, (const vox_row*)s->q, (const vox_row*)s->v,
-                     (const vox_row*)s->w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t, m->c_r, s->rest, s->inv_rest,
+                     (const vox_row*)s->w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t, m->c_r, m->lpair,
+                     s->pair_rest, s->pair_inv_rest,
                      s->large, s->fn, s->mn, s->mp, s->strain);
 }
 
