@@ -84,17 +84,26 @@ static void rebuild(const am_model* m, am_state* s)
     s->rebuilds++;
 }
 
+typedef am_real vox_row[AM_MAX_VOXELS];
+
+/* 1 when some voxel is farther than sqrt(lim) from where it was at the last rebuild (restrict
+ * parameters and no early exit, so that the compiler vectorises it) */
+static int moved_far(int nv, am_real lim, const vox_row* restrict x, const vox_row* restrict xref)
+{
+    int far = 0;
+    for (int i = 0; i < nv; i++) {
+        am_real ex = x[0][i] - xref[0][i], ey = x[1][i] - xref[1][i], ez = x[2][i] - xref[2][i];
+        far |= AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim;
+    }
+    return far;
+}
+
 static int needs_rebuild(const am_model* m, const am_state* s)
 {
     if (s->npairs < 0) return 1;
     am_real slack = AM_MUL(AM_R(0.5), AM_MUL(CAND_FACTOR, m->L) - m->coll_range);
     if (!(slack > AM_R(0))) return 1;
-    am_real lim = AM_MUL(slack, slack);
-    for (int i = 0; i < m->nv; i++) {
-        am_real ex = s->x[0][i] - s->xref[0][i], ey = s->x[1][i] - s->xref[1][i], ez = s->x[2][i] - s->xref[2][i];
-        if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim) return 1;
-    }
-    return 0;
+    return moved_far(m->nv, AM_MUL(slack, slack), (const vox_row*)s->x, (const vox_row*)s->xref);
 }
 
 void am_sim_collide(const am_model* m, am_state* s)

@@ -111,17 +111,56 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * length or through its neighbour */
 #define AM_DIVERGE_STRAIN AM_R(5)
 
-/* forces and moments of the links [l0, l1), all along one axis. One loop without branches that
- * the compiler vectorises: every link computes the large-angle frame too and keeps it when its
- * switch is on. Returns 1 when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
-static int link_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+/* Links are evaluated LINK_CHUNK at a time. The large-angle frame costs about as much again as
+ * the small-angle element, and large links come in clusters that last: a chunk none of whose
+ * links was large at the last step runs the small-angle loop alone, and again with the
+ * large-angle frame only if one of its links turns large now. Both loops compute a link the same
+ * way, so the results do not depend on the chunking. */
+#define LINK_CHUNK 32
+
+/* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
+ * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
+ * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
+ * wrong and the caller runs full_pass on the range). */
+static int small_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
+                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
+                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
+                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                      link_row* restrict fn, link_row* restrict mn, link_row* restrict mp, am_real* restrict strain)
+{
+    int bad = 0, any_large = 0;
+    for (int l = l0; l < l1; l++) {
+        const int a = lneg[l], b = lpos[l];
+        link_kin k;
+        link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
+                      v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
+        const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
+        any_large |= large_switch(&k, 0, inv_rest);
+        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
+        link_out o = link_element(&k, 0, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
+                                  v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
+        fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
+        mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
+        mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;
+        strain[l] = o.strain;
+        bad |= !(am_fabs(o.strain) <= AM_DIVERGE_STRAIN);
+    }
+    return bad | any_large << 1;
+}
+
+/* the links [l0, l1), all along one axis: the large-angle switch with its hysteresis, and each
+ * link with the frame its switch says (both frames are computed, one is kept: no branch, the
+ * compiler vectorises it). Returns 1 when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
+static int full_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
-                     int32_t* restrict large, link_row* restrict fn,
-                     link_row* restrict mn, link_row* restrict mp, am_real* restrict strain)
+                     int32_t* restrict large, link_row* restrict fn, link_row* restrict mn, link_row* restrict mp,
+                     am_real* restrict strain)
 {
     int bad = 0;
     for (int l = l0; l < l1; l++) {
@@ -145,12 +184,30 @@ static int link_pass(int l0, int l1, int axis, const int32_t* restrict lneg, con
     return bad;
 }
 
+/* forces and moments of the links [l0, l1), all along one axis; returns 1 when some link is
+ * strained beyond AM_DIVERGE_STRAIN (or NaN) */
 static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 {
-    return link_pass(l0, l1, axis, m->lneg, m->lpos, (const vox_row*)s->x, (const vox_row*)s->q, (const vox_row*)s->v,
-                     (const vox_row*)s->w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t, m->c_r, m->lpair,
-                     s->pair_rest, s->pair_inv_rest,
-                     s->large, s->fn, s->mn, s->mp, s->strain);
+    const vox_row *x = (const vox_row*)s->x, *q = (const vox_row*)s->q;
+    const vox_row *v = (const vox_row*)s->v, *w = (const vox_row*)s->w;
+    int bad = 0;
+    for (int c0 = l0; c0 < l1; c0 += LINK_CHUNK) {
+        const int c1 = l1 - c0 < LINK_CHUNK ? l1 : c0 + LINK_CHUNK;
+        int was_large = 0;
+        for (int l = c0; l < c1; l++) was_large |= s->large[l];
+        if (!was_large) {
+            int r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
+                               m->c_t, m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->fn, s->mn, s->mp,
+                               s->strain);
+            if (!(r & 2)) {
+                bad |= r & 1;
+                continue;
+            }
+        }
+        bad |= full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
+                         m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->large, s->fn, s->mn, s->mp, s->strain);
+    }
+    return bad;
 }
 
 /* floor contact of voxel i: normal force and the static/kinetic friction state machine. F is the
