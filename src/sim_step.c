@@ -1,9 +1,10 @@
 /* One time step of the voxel beam lattice (docs/physics.md section 7).
  *
- * Order: actuation (per-material temperature -> voxel scales -> rest lengths, once per pair
- * of materials), link forces from the state at the start of the step, contact forces (self-collision;
- * the floor is per voxel and done during integration because its friction state machine needs
- * the voxel's total force), then semi-implicit Euler per voxel.
+ * Order: actuation (per-material temperature -> voxel scales -> rest lengths, once per pair of
+ * materials), link forces from the state at the start of the step, contact forces
+ * (self-collision; the floor is per voxel and done during integration because its friction state
+ * machine needs the voxel's total force), then semi-implicit Euler per voxel in three passes
+ * (gather + rotation, floor, translation).
  *
  * Links write their forces into per-link arrays; each voxel then gathers from its six slots in a
  * fixed order (+x, -x, +y, -y, +z, -z; a missing link points at the zero link nl). No voxel sum

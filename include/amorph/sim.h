@@ -118,7 +118,7 @@ typedef struct am_state {
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
     am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
     am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
-    am_real fc[3][AM_MAX_VOXELS];   /* self-collision force (scratch) */
+    am_real fc[3][AM_MAX_VOXELS];   /* scratch: self-collision force, then the step's total force, N */
     uint8_t contact[AM_MAX_VOXELS]; /* 0 no floor contact, 1 stuck, 2 sliding */
     /* per pair of materials (i * AM_MAX_MATERIALS + j): a link's rest length follows the scales
      * of its two voxels' materials */
