@@ -5,8 +5,8 @@
  * writes the model, so one model can drive several states. Both structs are large (fixed
  * capacity): declare them static, one state per worker, never on the stack.
  *
- * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, link rest lengths
- * once per link), link forces (small- or large-angle beam), contacts (floor with static/kinetic
+ * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, rest lengths
+ * once per pair of materials), link forces (small- or large-angle beam), contacts (floor with static/kinetic
  * friction, self-collision), then semi-implicit Euler per voxel, which gathers its up-to-6 link
  * forces in a fixed order. Results do not depend on how work is split.
  */
