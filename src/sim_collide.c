@@ -91,31 +91,64 @@ static void rebuild(const am_model* m, am_state* s)
     s->rebuilds++;
 }
 
+typedef am_real vox_row[AM_MAX_VOXELS];
+
+/* 1 when some voxel is farther than sqrt(lim) = slack from where it was at the last rebuild
+ * (restrict parameters and no early exit, so that the compiler vectorises it) */
+static int moved_far(int nv, am_real slack, am_real lim, const vox_row* restrict x, const vox_row* restrict xref)
+{
+    int far = 0;
+    (void)slack; /* read by the fixed-point build only */
+    for (int i = 0; i < nv; i++) {
+        am_real ex = x[0][i] - xref[0][i], ey = x[1][i] - xref[1][i], ez = x[2][i] - xref[2][i];
+#if defined(AM_REAL_FIXED_POINT)
+        /* out on one axis already: then the square below may have left the range and is not
+         * trusted (an or over all voxels, as the early return of the scalar test was) */
+        far |= (am_fabs(ex) > slack) | (am_fabs(ey) > slack) | (am_fabs(ez) > slack);
+#endif
+        far |= AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim;
+    }
+    return far;
+}
+
 static int needs_rebuild(const am_model* m, const am_state* s)
 {
     if (s->npairs < 0) return 1;
     am_real slack = AM_MUL(AM_R(0.5), AM_MUL(CAND_FACTOR, m->L) - m->coll_range);
     if (!(slack > AM_R(0))) return 1;
-    am_real lim = AM_MUL(slack, slack);
-    for (int i = 0; i < m->nv; i++) {
-        am_real ex = s->x[0][i] - s->xref[0][i], ey = s->x[1][i] - s->xref[1][i], ez = s->x[2][i] - s->xref[2][i];
-#if defined(AM_REAL_FIXED_POINT)
-        if (am_fabs(ex) > slack || am_fabs(ey) > slack || am_fabs(ez) > slack) return 1; /* before squaring */
-#endif
-        if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim) return 1;
+    return moved_far(m->nv, slack, AM_MUL(slack, slack), (const vox_row*)s->x, (const vox_row*)s->xref);
+}
+
+/* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
+ * a chunk of the list at once (no branch: the compiler vectorises it) */
+#define PAIR_CHUNK 64
+static void overlaps(int n, am_real rad, const int32_t* restrict pa, const int32_t* restrict pb, const vox_row* restrict x,
+                     const am_real* restrict scale, int32_t* restrict touch)
+{
+    for (int j = 0; j < n; j++) {
+        const int a = pa[j], b = pb[j];
+        am_real ex = x[0][b] - x[0][a], ey = x[1][b] - x[1][a], ez = x[2][b] - x[2][a];
+        am_real reach = AM_MUL(rad, scale[a] + scale[b]);
+        am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
+        touch[j] = !(d2 >= AM_MUL(reach, reach)) & (d2 > AM_R(0));
     }
-    return 0;
 }
 
 void am_sim_collide(const am_model* m, am_state* s)
 {
-    if (!m->env.collisions) return; /* fc stays as am_state_reset left it: zero */
+    if (!m->env.collisions) return; /* without self-collision fc is not read */
     const int nv = m->nv;
     for (int c = 0; c < 3; c++)
         for (int i = 0; i < nv; i++) s->fc[c][i] = AM_R(0);
     if (needs_rebuild(m, s)) rebuild(m, s);
     const am_real rad = AM_MUL(AM_R(0.625), m->L);
+    int32_t touch[PAIR_CHUNK];
     for (int k = 0; k < s->npairs; k++) {
+        if (k % PAIR_CHUNK == 0) {
+            int n = s->npairs - k < PAIR_CHUNK ? s->npairs - k : PAIR_CHUNK;
+            overlaps(n, rad, s->pa + k, s->pb + k, (const vox_row*)s->x, s->s, touch);
+        }
+        if (!touch[k % PAIR_CHUNK]) continue;
         const int a = s->pa[k], b = s->pb[k];
         am_real ex = s->x[0][b] - s->x[0][a], ey = s->x[1][b] - s->x[1][a], ez = s->x[2][b] - s->x[2][a];
         am_real reach = AM_MUL(rad, s->s[a] + s->s[b]);

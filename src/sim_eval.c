@@ -43,7 +43,7 @@ double am_strain_energy(const am_model* m, const am_state* s)
         link_kin k;
         int axis = link_axis(m, l);
         link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
-        if (s->large[l]) link_kin_large(&k);
+        link_kin_large(&k, s->large[l]);
         double rest = AM_TO_DOUBLE(m->L) * 0.5 * (AM_TO_DOUBLE(s->s[m->lneg[l]]) + AM_TO_DOUBLE(s->s[m->lpos[l]]));
         double u = AM_TO_DOUBLE(k.p.x) - rest, y = AM_TO_DOUBLE(k.p.y), z = AM_TO_DOUBLE(k.p.z);
         double t1x = AM_TO_DOUBLE(k.t1.x), t1y = AM_TO_DOUBLE(k.t1.y), t1z = AM_TO_DOUBLE(k.t1.z);

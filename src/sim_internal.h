@@ -70,14 +70,18 @@ static inline quat q_from_rotvec(vec3 r)
     return qt(c, AM_MUL(r.x, k), AM_MUL(r.y, k), AM_MUL(r.z, k));
 }
 
-/* world <-> link-local axis permutation: the link's axis becomes +x (cyclic, a proper rotation) */
+/* world <-> link-local axis permutation: the link's axis becomes +x (cyclic, a proper rotation).
+ * Written component by component so that a loop over links with a run-time axis still
+ * vectorises (the choice is then a blend). */
 static inline vec3 to_local(vec3 v, int axis)
 {
-    return axis == 0 ? v : (axis == 1 ? v3(v.y, v.z, v.x) : v3(v.z, v.x, v.y));
+    return v3(axis == 0 ? v.x : (axis == 1 ? v.y : v.z), axis == 0 ? v.y : (axis == 1 ? v.z : v.x),
+              axis == 0 ? v.z : (axis == 1 ? v.x : v.y));
 }
 static inline vec3 from_local(vec3 v, int axis)
 {
-    return axis == 0 ? v : (axis == 1 ? v3(v.z, v.x, v.y) : v3(v.y, v.z, v.x));
+    return v3(axis == 0 ? v.x : (axis == 1 ? v.z : v.y), axis == 0 ? v.y : (axis == 1 ? v.x : v.z),
+              axis == 0 ? v.z : (axis == 1 ? v.y : v.x));
 }
 
 /* the kinematics of one link in its local frame: the positive voxel at (x, y, z) from the
@@ -100,14 +104,13 @@ static inline int link_axis(const am_model* m, int l) { return l < m->axis_end[0
 #define AM_LA_ON_AX AM_R(0.6)
 #define AM_LA_OFF_AX AM_R(0.5)
 
-/* computes the small-angle local frame; returns it in k */
-static inline void link_kin_small(const am_state* s, int a, int b, int axis, link_kin* k)
+/* the small-angle local frame of a link from its ends' orientations (qn negative, qp positive)
+ * and the world offset d = x_pos - x_neg */
+static inline void link_kin_from(quat qn, quat qp, vec3 d, int axis, link_kin* k)
 {
-    quat qn = qt(s->q[0][a], s->q[1][a], s->q[2][a], s->q[3][a]);
-    quat qp = qt(s->q[0][b], s->q[1][b], s->q[2][b], s->q[3][b]);
-    k->d = v3(s->x[0][b] - s->x[0][a], s->x[1][b] - s->x[1][a], s->x[2][b] - s->x[2][a]);
+    k->d = d;
     k->qn = qn;
-    k->p = to_local(q_rot_inv(qn, k->d), axis);
+    k->p = to_local(q_rot_inv(qn, d), axis);
     quat qr = q_mul(q_conj(qn), qp);
     vec3 rv = to_local(v3(qr.x, qr.y, qr.z), axis);
     k->qr = qt(qr.w, rv.x, rv.y, rv.z);
@@ -116,23 +119,36 @@ static inline void link_kin_small(const am_state* s, int a, int b, int axis, lin
     k->rot = qt(1, 0, 0, 0);
 }
 
-/* turns a small-angle frame into the large-angle one: rotate so the positive voxel lies on +x */
-static inline void link_kin_large(link_kin* k)
+/* the same from the state, for the link from voxel a to voxel b */
+static inline void link_kin_small(const am_state* s, int a, int b, int axis, link_kin* k)
+{
+    link_kin_from(qt(s->q[0][a], s->q[1][a], s->q[2][a], s->q[3][a]), qt(s->q[0][b], s->q[1][b], s->q[2][b], s->q[3][b]),
+                  v3(s->x[0][b] - s->x[0][a], s->x[1][b] - s->x[1][a], s->x[2][b] - s->x[2][a]), axis, k);
+}
+
+/* per-component choices (on ? a : b), written so that loops over links stay vectorisable */
+static inline vec3 v3_sel(int on, vec3 a, vec3 b) { return v3(on ? a.x : b.x, on ? a.y : b.y, on ? a.z : b.z); }
+static inline quat q_sel(int on, quat a, quat b) { return qt(on ? a.w : b.w, on ? a.x : b.x, on ? a.y : b.y, on ? a.z : b.z); }
+
+/* when on, turns a small-angle frame into the large-angle one: rotate so the positive voxel lies
+ * on +x (a link of zero or NaN length keeps its small frame). Computed whether on or not and then
+ * chosen, without a branch, so that the link loop vectorises. */
+static inline void link_kin_large(link_kin* k, int on)
 {
     am_real len = am_sqrt(v3_dot(k->p, k->p));
-    if (!(len > AM_R(0))) return;
+    on = on && len > AM_R(0);
     vec3 u = v3_scale(k->p, AM_DIV(AM_R(1), len));
     /* shortest rotation taking u onto +x: (1 + ux, u x e_x) normalised */
     am_real wq = AM_R(1) + u.x;
-    if (wq < AM_R(1e-6)) wq = AM_R(1e-6); /* a link turned inside out: any axis will do */
+    wq = wq < AM_R(1e-6) ? AM_R(1e-6) : wq; /* a link turned inside out: any axis will do */
     am_real n = am_sqrt(AM_MUL(wq, wq) + AM_MUL(u.y, u.y) + AM_MUL(u.z, u.z));
     am_real inv = AM_DIV(AM_R(1), n);
     quat r = qt(AM_MUL(wq, inv), AM_R(0), AM_MUL(u.z, inv), AM_MUL(-u.y, inv));
     /* in the new frame the negative end is turned by r and the positive one by r * qr */
-    k->t1 = q_rotvec(r);
-    k->t2 = q_rotvec(q_mul(r, k->qr));
-    k->p = v3(len, 0, 0);
-    k->rot = r;
+    k->t1 = v3_sel(on, q_rotvec(r), k->t1);
+    k->t2 = q_rotvec(q_sel(on, q_mul(r, k->qr), k->qr)); /* = k->t2 when off, one series fewer */
+    k->p = v3_sel(on, v3(len, 0, 0), k->p);
+    k->rot = q_sel(on, r, k->rot);
 }
 
 /* v + a b: in the fixed-point build exactly, with the rounding remainder carried in *rem to the

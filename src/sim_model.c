@@ -9,6 +9,8 @@
 
 #include <string.h>
 
+_Static_assert(AM_MAX_MATERIALS * AM_MAX_MATERIALS <= 256, "am_model.lpair holds a pair of materials in a uint8_t");
+
 #if defined(AM_REAL_FIXED_POINT)
 /* a parameter in SI converted to model units (u: the SI value of one unit of its dimension) */
 #define PV(v, u) AM_FROM_DOUBLE((double)(v) / (u))
@@ -226,6 +228,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
             m->lneg[nl] = i;
             m->lpos[nl] = j;
+            m->lpair[nl] = (uint8_t)(m->mat[i] * AM_MAX_MATERIALS + m->mat[j]);
             m->k_ax[nl] = AM_MUL(E, L2);
             m->a2[nl] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
             m->b1[nl] = AM_MUL(E, L);
@@ -331,6 +334,10 @@ void am_state_reset(const am_model* m, am_state* s)
     memset(s->h_rem, 0, sizeof s->h_rem);
 #endif
     for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale[k] = AM_R(1);
+    for (int k = 0; k < AM_MAX_MATERIALS * AM_MAX_MATERIALS; k++) {
+        s->pair_rest[k] = m->L;
+        s->pair_inv_rest[k] = AM_DIV(AM_R(1), m->L);
+    }
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {
             s->x[c][i] = m->x0[c][i];
@@ -345,8 +352,6 @@ void am_state_reset(const am_model* m, am_state* s)
         s->contact[i] = (uint8_t)(m->env.floor && m->x0[2][i] <= AM_MUL(AM_R(0.5), m->L) ? 1 : 0);
     }
     for (int l = 0; l <= nl; l++) {
-        s->rest[l] = m->L;
-        s->inv_rest[l] = AM_DIV(AM_R(1), m->L);
         s->large[l] = 0;
         s->strain[l] = AM_R(0);
         for (int c = 0; c < 3; c++) s->fn[c][l] = s->mn[c][l] = s->mp[c][l] = AM_R(0);

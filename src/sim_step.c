@@ -1,9 +1,10 @@
 /* One time step of the voxel beam lattice (docs/physics.md section 7).
  *
- * Order: actuation (per-material temperature -> voxel scales -> link rest lengths, once per
- * link), link forces from the state at the start of the step, contact forces (self-collision;
- * the floor is per voxel and done during integration because its friction state machine needs
- * the voxel's total force), then semi-implicit Euler per voxel.
+ * Order: actuation (per-material temperature -> voxel scales -> rest lengths, once per pair of
+ * materials), link forces from the state at the start of the step, contact forces
+ * (self-collision; the floor is per voxel and done during integration because its friction state
+ * machine needs the voxel's total force), then semi-implicit Euler per voxel in three passes
+ * (gather + rotation, floor, translation).
  *
  * Links write their forces into per-link arrays; each voxel then gathers from its six slots in a
  * fixed order (+x, -x, +y, -y, +z, -z; a missing link points at the zero link nl). No voxel sum
@@ -12,7 +13,29 @@
 #include "sim_internal.h"
 #include "amorph/mathx.h"
 
-/* per-material temperature and linear scale, voxel scales, link rest lengths */
+/* Arrays of the state and the model are handed to the hot loops as restrict-qualified function
+ * parameters (rows of [3][AM_MAX_VOXELS] and [3][AM_MAX_LINKS + 1] arrays as pointers to rows):
+ * only then does the compiler know that the loads (gathers through lneg/lpos and the slots)
+ * cannot see the stores, and vectorise the loops. */
+typedef am_real vox_row[AM_MAX_VOXELS];
+typedef am_real link_row[AM_MAX_LINKS + 1];
+
+/* the rounding remainders of the integrator (AM_ACC, error diffusion) are extra parameters of the
+ * voxel passes in the fixed-point build only; in the others AM_ACC drops its remainder argument */
+#if defined(AM_REAL_FIXED_POINT)
+#define REM_PARAM(name) , vox_row* restrict name
+#define REM_ARG(rem) , (rem)
+#else
+#define REM_PARAM(name)
+#define REM_ARG(rem)
+#endif
+
+static void voxel_scales(int nv, const uint8_t* restrict mat, const am_real* restrict mat_scale, am_real* restrict scale)
+{
+    for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
+}
+
+/* per-material temperature and linear scale, voxel scales, rest lengths per material pair */
 static void actuation(const am_model* m, am_state* s)
 {
     const am_env* e = &m->env;
@@ -36,92 +59,183 @@ static void actuation(const am_model* m, am_state* s)
      * body or during relaxation) */
     if (!changed) return;
     s->scales_valid = 1;
-    const int nv = m->nv, nl = m->nl;
-    for (int i = 0; i < nv; i++) s->s[i] = s->mat_scale[m->mat[i]];
+    voxel_scales(m->nv, m->mat, s->mat_scale, s->s);
+    /* a link's rest length is the mean of its voxels' edges: one per pair of materials */
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
-#if defined(AM_REAL_FIXED_POINT)
-    /* a rest length takes one value per pair of materials: one 64-bit division per change of value
-     * along the link list instead of one per link */
-    am_real last_r = 0, last_inv = 0;
-    for (int l = 0; l < nl; l++) {
-        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
-        if (r != last_r) {
-            last_r = r;
-            last_inv = AM_DIV(AM_R(1), r);
+    for (int i = 0; i < m->palette.count; i++)
+        for (int j = 0; j < m->palette.count; j++) {
+            am_real r = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
+            s->pair_rest[i * AM_MAX_MATERIALS + j] = r;
+            s->pair_inv_rest[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), r);
         }
-        s->rest[l] = r;
-        s->inv_rest[l] = last_inv;
-    }
-#else
-    for (int l = 0; l < nl; l++) {
-        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
-        s->rest[l] = r;
-        s->inv_rest[l] = AM_DIV(AM_R(1), r);
-    }
-#endif
 }
 
-/* forces and moments of the links [l0, l1), all along one axis */
-static am_real link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
+/* the constants of one link and its current rest length */
+typedef struct link_par { am_real k_ax, a2, b1, b2, b3, c_t, c_r, rest, inv_rest; } link_par;
+/* what a link hands to its two voxels: force on the negative end (the positive end gets -F),
+ * moments on both ends, and the axial strain */
+typedef struct link_out { vec3 F, M, Mp; am_real strain; } link_out;
+
+/* the large-angle switch with hysteresis (docs/physics.md section 2), from the small-angle frame */
+static inline int large_switch(const link_kin* k, int was_large, am_real inv_rest)
 {
-    am_real max_strain = AM_R(0);
-    for (int l = l0; l < l1; l++) {
-        const int a = m->lneg[l], b = m->lpos[l];
-        link_kin k;
-        link_kin_small(s, a, b, axis, &k);
+    am_real lateral = am_fabs(k->p.y) + am_fabs(k->p.z);
+    am_real axial = am_fabs(AM_R(1) - AM_MUL(k->p.x, inv_rest));
+    /* no branch: the small-link loop must vectorise */
+    am_real lat_lim = was_large ? AM_LA_OFF_LAT : AM_LA_ON_LAT, ax_lim = was_large ? AM_LA_OFF_AX : AM_LA_ON_AX;
+    return (lateral > AM_MUL(lat_lim, k->p.x)) | (axial > ax_lim) | !(k->p.x > AM_R(0));
+}
 
-        /* large-angle switch with hysteresis (docs/physics.md section 2) */
-        am_real lateral = am_fabs(k.p.y) + am_fabs(k.p.z);
-        am_real axial = am_fabs(AM_R(1) - AM_MUL(k.p.x, s->inv_rest[l]));
-        int large = s->large[l] ? (lateral > AM_MUL(AM_LA_OFF_LAT, k.p.x) || axial > AM_LA_OFF_AX)
-                                : (lateral > AM_MUL(AM_LA_ON_LAT, k.p.x) || axial > AM_LA_ON_AX);
-        large |= !(k.p.x > AM_R(0));
-        s->large[l] = (uint8_t)large;
-        if (large) link_kin_large(&k);
-
-        /* the Euler-Bernoulli frame element in the local frame; only the axial term goes through
-         * the material law (linear here), shear, bending and torsion are linear */
-        const am_real b1 = m->b1[l], b2 = m->b2[l], b3 = m->b3[l];
-        am_real strain = AM_MUL(k.p.x - s->rest[l], s->inv_rest[l]);
-        vec3 F = v3(AM_MUL(m->k_ax[l], strain),
-                    AM_MUL(b1, k.p.y) - AM_MUL(b2, k.t1.z + k.t2.z),
-                    AM_MUL(b1, k.p.z) + AM_MUL(b2, k.t1.y + k.t2.y));
-        vec3 M = v3(AM_MUL(m->a2[l], k.t2.x - k.t1.x),
-                    -AM_MUL(b2, k.p.z) - AM_MUL(b3, AM_MUL(AM_R(2), k.t1.y) + k.t2.y),
-                    AM_MUL(b2, k.p.y) - AM_MUL(b3, AM_MUL(AM_R(2), k.t1.z) + k.t2.z));
-        if (large) {
-            F = q_rot_inv(k.rot, F);
-            M = q_rot_inv(k.rot, M);
-        }
-        F = q_rot(k.qn, from_local(F, axis));
-        M = q_rot(k.qn, from_local(M, axis));
-
-        /* internal damping, acting at the link's midpoint against the rate of deformation: the
-         * relative velocity of the two ends there less what a rigid rotation would give, and the
-         * relative spin. Its power is -c |rate|^2, so it only ever removes energy. */
-        const am_real ct = m->c_t[l], cr = m->c_r[l];
-        vec3 wa = v3(s->w[0][a], s->w[1][a], s->w[2][a]), wb = v3(s->w[0][b], s->w[1][b], s->w[2][b]);
-        vec3 half_d = v3_scale(k.d, AM_R(0.5));
-        vec3 rate = v3_sub(v3(s->v[0][b] - s->v[0][a], s->v[1][b] - s->v[1][a], s->v[2][b] - s->v[2][a]),
-                           v3_cross(v3_add(wa, wb), half_d));
-        vec3 Fd = v3_scale(rate, ct);
-        F = v3_add(F, Fd);
-        M = v3_add(M, v3_add(v3_cross(half_d, Fd), v3_scale(v3_sub(wb, wa), cr)));
-
-        /* the positive end's moment from the balance of the element, so that the link exerts no
-         * net torque (angular momentum is conserved exactly); at rest length this is the
-         * textbook M_pos */
-        vec3 Mp = v3_sub(v3_cross(k.d, F), M);
-
-        s->fn[0][l] = F.x; s->fn[1][l] = F.y; s->fn[2][l] = F.z;
-        s->mn[0][l] = M.x; s->mn[1][l] = M.y; s->mn[2][l] = M.z;
-        s->mp[0][l] = Mp.x; s->mp[1][l] = Mp.y; s->mp[2][l] = Mp.z;
-        s->strain[l] = strain;
-        am_real as = am_fabs(strain);
-        max_strain = as > max_strain ? as : max_strain;
-        if (AM_ISNAN(as)) max_strain = AM_REAL_MAX; /* NaN */
+/* the Euler-Bernoulli frame element in the local frame plus internal damping, turned to world
+ * axes; va, vb, wa, wb are the velocities and spins of the negative and positive voxels */
+static inline link_out link_element(const link_kin* k, int large, int axis, link_par c, vec3 va, vec3 vb, vec3 wa, vec3 wb)
+{
+    /* only the axial term goes through the material law (linear here); shear, bending and
+     * torsion are linear */
+    const am_real b1 = c.b1, b2 = c.b2, b3 = c.b3;
+    link_out o;
+    o.strain = AM_MUL(k->p.x - c.rest, c.inv_rest);
+    vec3 F = v3(AM_MUL(c.k_ax, o.strain),
+                AM_MUL(b1, k->p.y) - AM_MUL(b2, k->t1.z + k->t2.z),
+                AM_MUL(b1, k->p.z) + AM_MUL(b2, k->t1.y + k->t2.y));
+    vec3 M = v3(AM_MUL(c.a2, k->t2.x - k->t1.x),
+                -AM_MUL(b2, k->p.z) - AM_MUL(b3, AM_MUL(AM_R(2), k->t1.y) + k->t2.y),
+                AM_MUL(b2, k->p.y) - AM_MUL(b3, AM_MUL(AM_R(2), k->t1.z) + k->t2.z));
+#if defined(AM_REAL_FIXED_POINT)
+    if (large) { /* nothing to vectorise in the fixed-point build: a branch, same values */
+        F = q_rot_inv(k->rot, F);
+        M = q_rot_inv(k->rot, M);
     }
-    return max_strain;
+#else
+    F = v3_sel(large, q_rot_inv(k->rot, F), F);
+    M = v3_sel(large, q_rot_inv(k->rot, M), M);
+#endif
+    F = q_rot(k->qn, from_local(F, axis));
+    M = q_rot(k->qn, from_local(M, axis));
+
+    /* internal damping, acting at the link's midpoint against the rate of deformation: the
+     * relative velocity of the two ends there less what a rigid rotation would give, and the
+     * relative spin. Its power is -c |rate|^2, so it only ever removes energy. */
+    vec3 half_d = v3_scale(k->d, AM_R(0.5));
+    vec3 rate = v3_sub(v3_sub(vb, va), v3_cross(v3_add(wa, wb), half_d));
+    vec3 Fd = v3_scale(rate, c.c_t);
+    o.F = v3_add(F, Fd);
+    o.M = v3_add(M, v3_add(v3_cross(half_d, Fd), v3_scale(v3_sub(wb, wa), c.c_r)));
+
+    /* the positive end's moment from the balance of the element, so that the link exerts no
+     * net torque (angular momentum is conserved exactly); at rest length this is the
+     * textbook M_pos */
+    o.Mp = v3_sub(v3_cross(k->d, o.F), o.M);
+    return o;
+}
+
+/* bound on the axial strain of any link: no physical run stretches a link to six times its rest
+ * length or through its neighbour */
+#define AM_DIVERGE_STRAIN AM_R(5)
+
+/* Links are evaluated LINK_CHUNK at a time. The large-angle frame costs about as much again as
+ * the small-angle element, and large links come in clusters that last: a chunk none of whose
+ * links was large at the last step runs the small-angle loop alone, and again with the
+ * large-angle frame only if one of its links turns large now. Both loops compute a link the same
+ * way, so the results do not depend on the chunking. */
+#define LINK_CHUNK 32
+
+/* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
+ * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
+ * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
+ * wrong and the caller runs full_pass on the range). */
+static int small_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
+                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
+                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
+                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                      link_row* restrict fn, link_row* restrict mn, link_row* restrict mp, am_real* restrict strain)
+{
+    int bad = 0, any_large = 0;
+    for (int l = l0; l < l1; l++) {
+        const int a = lneg[l], b = lpos[l];
+        link_kin k;
+        link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
+                      v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
+        const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
+        any_large |= large_switch(&k, 0, inv_rest);
+        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
+        link_out o = link_element(&k, 0, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
+                                  v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
+        fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
+        mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
+        mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;
+        strain[l] = o.strain;
+        bad |= !(am_fabs(o.strain) <= AM_DIVERGE_STRAIN);
+    }
+    return bad | any_large << 1;
+}
+
+/* the links [l0, l1), all along one axis: the large-angle switch with its hysteresis, and each
+ * link with the frame its switch says (both frames are computed, one is kept: no branch, the
+ * compiler vectorises it). Returns 1 when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
+static int full_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+                     const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
+                     const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
+                     const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
+                     const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                     int32_t* restrict large, link_row* restrict fn, link_row* restrict mn, link_row* restrict mp,
+                     am_real* restrict strain)
+{
+    int bad = 0;
+    for (int l = l0; l < l1; l++) {
+        const int a = lneg[l], b = lpos[l];
+        link_kin k;
+        link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
+                      v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
+        const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
+        int lg = large_switch(&k, large[l], inv_rest);
+#if defined(AM_REAL_FIXED_POINT)
+        /* integer roots and 64-bit divisions do not vectorise: the large-angle frame only where it
+         * is on (the same values as the select) */
+        if (lg) link_kin_large(&k, 1);
+#else
+        link_kin_large(&k, lg);
+#endif
+        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
+        link_out o = link_element(&k, lg, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
+                                  v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
+        large[l] = lg;
+        fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
+        mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
+        mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;
+        strain[l] = o.strain;
+        bad |= !(am_fabs(o.strain) <= AM_DIVERGE_STRAIN);
+    }
+    return bad;
+}
+
+/* forces and moments of the links [l0, l1), all along one axis; returns 1 when some link is
+ * strained beyond AM_DIVERGE_STRAIN (or NaN) */
+static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
+{
+    const vox_row *x = (const vox_row*)s->x, *q = (const vox_row*)s->q;
+    const vox_row *v = (const vox_row*)s->v, *w = (const vox_row*)s->w;
+    int bad = 0;
+    for (int c0 = l0; c0 < l1; c0 += LINK_CHUNK) {
+        const int c1 = l1 - c0 < LINK_CHUNK ? l1 : c0 + LINK_CHUNK;
+        int was_large = 0;
+        for (int l = c0; l < c1; l++) was_large |= s->large[l];
+        if (!was_large) {
+            int r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
+                               m->c_t, m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->fn, s->mn, s->mp,
+                               s->strain);
+            if (!(r & 2)) {
+                bad |= r & 1;
+                continue;
+            }
+        }
+        bad |= full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
+                         m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->large, s->fn, s->mn, s->mp, s->strain);
+    }
+    return bad;
 }
 
 /* floor contact of voxel i: normal force and the static/kinetic friction state machine. F is the
@@ -193,63 +307,48 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     return 0;
 }
 
-/* semi-implicit Euler for every voxel; returns the largest squared speed (NaN-safe) */
-static am_real integrate(const am_model* m, am_state* s)
+/* per voxel: the total force without the floor into f (which holds the collision force on
+ * entry), and the whole rotational update h += M dt, q = quat(w dt) q. Each voxel gathers its six
+ * links in a fixed order: + slots (this voxel is the negative end) add the link's force, - slots
+ * subtract it and take the positive end's moment. No branch: the compiler vectorises it. */
+static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, const int32_t (*restrict slot)[AM_MAX_VOXELS],
+                                const link_row* restrict fn, const link_row* restrict mn, const link_row* restrict mp,
+                                const vox_row* restrict fext, const vox_row* restrict mext, const am_real* restrict mass,
+                                const am_real* restrict c_glob_t, const am_real* restrict c_glob_r,
+                                const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
+                                const vox_row* restrict v, vox_row* restrict f, vox_row* restrict h,
+                                vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
 {
-    const int nv = m->nv;
-    const am_real dt = s->dt;
-    const am_real g = m->gravity;
-    const int floor_on = m->env.floor;
-    am_real max_v2 = AM_R(0);
     for (int i = 0; i < nv; i++) {
-        /* gather the six links in a fixed order: + slots (this voxel is the negative end) add the
-         * link's force, - slots subtract it and take the positive end's moment */
-        vec3 F = v3(s->fext[0][i] + s->fc[0][i], s->fext[1][i] + s->fc[1][i], s->fext[2][i] + s->fc[2][i]);
-        vec3 M = v3(s->mext[0][i], s->mext[1][i], s->mext[2][i]);
+        /* fc is zero without self-collision, and then holds the last step's total: not read */
+        vec3 F = v3(fext[0][i] + (collisions ? f[0][i] : AM_R(0)), fext[1][i] + (collisions ? f[1][i] : AM_R(0)),
+                    fext[2][i] + (collisions ? f[2][i] : AM_R(0)));
+        vec3 M = v3(mext[0][i], mext[1][i], mext[2][i]);
         for (int d = 0; d < 3; d++) {
-            int lp = m->slot[2 * d][i], ln = m->slot[2 * d + 1][i];
-            F = v3_add(F, v3(s->fn[0][lp], s->fn[1][lp], s->fn[2][lp]));
-            M = v3_add(M, v3(s->mn[0][lp], s->mn[1][lp], s->mn[2][lp]));
-            F = v3_sub(F, v3(s->fn[0][ln], s->fn[1][ln], s->fn[2][ln]));
-            M = v3_add(M, v3(s->mp[0][ln], s->mp[1][ln], s->mp[2][ln]));
+            int lp = slot[2 * d][i], ln = slot[2 * d + 1][i];
+            F = v3_add(F, v3(fn[0][lp], fn[1][lp], fn[2][lp]));
+            M = v3_add(M, v3(mn[0][lp], mn[1][lp], mn[2][lp]));
+            F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));
+            M = v3_add(M, v3(mp[0][ln], mp[1][ln], mp[2][ln]));
         }
-        const am_real mass = m->mass[i];
-        F.z -= AM_MUL(mass, g);
-        const am_real cg = m->c_glob_t[i], cgr = m->c_glob_r[i];
-        F = v3_sub(F, v3(AM_MUL(cg, s->v[0][i]), AM_MUL(cg, s->v[1][i]), AM_MUL(cg, s->v[2][i])));
-        M = v3_sub(M, v3(AM_MUL(cgr, s->w[0][i]), AM_MUL(cgr, s->w[1][i]), AM_MUL(cgr, s->w[2][i])));
+        F.z -= AM_MUL(mass[i], g);
+        const am_real cg = c_glob_t[i], cgr = c_glob_r[i];
+        vec3 wi = v3(w[0][i], w[1][i], w[2][i]);
+        F = v3_sub(F, v3(AM_MUL(cg, v[0][i]), AM_MUL(cg, v[1][i]), AM_MUL(cg, v[2][i])));
+        M = v3_sub(M, v3(AM_MUL(cgr, wi.x), AM_MUL(cgr, wi.y), AM_MUL(cgr, wi.z)));
+        f[0][i] = F.x; f[1][i] = F.y; f[2][i] = F.z;
 
-        int stuck = 0;
-        if (floor_on) stuck = floor_contact(m, s, i, &F);
-
-        /* p += F dt; x += p dt / m (a stuck voxel keeps no horizontal momentum) */
-        const am_real im = m->inv_mass[i];
-        am_real px = AM_ACC(s->p[0][i], s->p_rem[0][i], F.x, dt), py = AM_ACC(s->p[1][i], s->p_rem[1][i], F.y, dt),
-                pz = AM_ACC(s->p[2][i], s->p_rem[2][i], F.z, dt);
-        if (stuck) {
-            px = py = AM_R(0);
-            AM_REM_CLEAR(s->p_rem[0][i]);
-            AM_REM_CLEAR(s->p_rem[1][i]);
-        }
-        if (m->fixed[i]) px = py = pz = AM_R(0);
-        am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
-        s->p[0][i] = px; s->p[1][i] = py; s->p[2][i] = pz;
-        s->v[0][i] = vx; s->v[1][i] = vy; s->v[2][i] = vz;
-        s->x[0][i] = AM_ACC(s->x[0][i], s->x_rem[0][i], vx, dt);
-        s->x[1][i] = AM_ACC(s->x[1][i], s->x_rem[1][i], vy, dt);
-        s->x[2][i] = AM_ACC(s->x[2][i], s->x_rem[2][i], vz, dt);
-
-        /* h += M dt; q = quat(w dt) q, renormalised */
-        const am_real ii = m->inv_inertia[i];
-        am_real hx = AM_ACC(s->h[0][i], s->h_rem[0][i], M.x, dt), hy = AM_ACC(s->h[1][i], s->h_rem[1][i], M.y, dt),
-                hz = AM_ACC(s->h[2][i], s->h_rem[2][i], M.z, dt);
-        if (m->fixed[i]) hx = hy = hz = AM_R(0);
-        vec3 w = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
-        s->h[0][i] = hx; s->h[1][i] = hy; s->h[2][i] = hz;
-        s->w[0][i] = w.x; s->w[1][i] = w.y; s->w[2][i] = w.z;
-        quat dq = q_from_rotvec(v3_scale(w, dt));
-        quat q = q_mul(dq, qt(s->q[0][i], s->q[1][i], s->q[2][i], s->q[3][i]));
-        am_real n2 = AM_MUL(q.w, q.w) + AM_MUL(q.x, q.x) + AM_MUL(q.y, q.y) + AM_MUL(q.z, q.z);
+        /* h += M dt; q = quat(w dt) q, renormalised (a fixed voxel keeps no momentum) */
+        const am_real ii = inv_inertia[i];
+        am_real hx = AM_ACC(h[0][i], h_rem[0][i], M.x, dt), hy = AM_ACC(h[1][i], h_rem[1][i], M.y, dt),
+                hz = AM_ACC(h[2][i], h_rem[2][i], M.z, dt);
+        if (fixed[i]) hx = hy = hz = AM_R(0);
+        vec3 wn = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
+        h[0][i] = hx; h[1][i] = hy; h[2][i] = hz;
+        w[0][i] = wn.x; w[1][i] = wn.y; w[2][i] = wn.z;
+        quat dq = q_from_rotvec(v3_scale(wn, dt));
+        quat qn = q_mul(dq, qt(q[0][i], q[1][i], q[2][i], q[3][i]));
+        am_real n2 = AM_MUL(qn.w, qn.w) + AM_MUL(qn.x, qn.x) + AM_MUL(qn.y, qn.y) + AM_MUL(qn.z, qn.z);
 #if defined(AM_REAL_FIXED_POINT)
         /* |q| is 1 to within a few ulp: one Newton step from 1, 1/sqrt(n2) = (3 - n2) / 2, is exact
          * to O((n2 - 1)^2); the root and a division only when q is far from unit */
@@ -258,32 +357,75 @@ static am_real integrate(const am_model* m, am_state* s)
 #else
         am_real inv = AM_DIV(AM_R(1), am_sqrt(n2));
 #endif
-        s->q[0][i] = AM_MUL(q.w, inv); s->q[1][i] = AM_MUL(q.x, inv);
-        s->q[2][i] = AM_MUL(q.y, inv); s->q[3][i] = AM_MUL(q.z, inv);
-
-        am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
-        if (!(v2 <= max_v2)) max_v2 = !AM_ISNAN(v2) ? v2 : AM_REAL_MAX; /* NaN counts as too fast */
+        q[0][i] = AM_MUL(qn.w, inv); q[1][i] = AM_MUL(qn.x, inv);
+        q[2][i] = AM_MUL(qn.y, inv); q[3][i] = AM_MUL(qn.z, inv);
     }
-    return max_v2;
 }
 
-/* bound on the axial strain of any link: no physical run stretches a link to six times its rest
- * length or through its neighbour */
-#define AM_DIVERGE_STRAIN AM_R(5)
+/* the floor under every voxel that touches it: normal force and friction into its total force;
+ * a stuck voxel loses its horizontal momentum (and force, so the update below keeps it zero) */
+static void floor_pass(const am_model* m, am_state* s)
+{
+    const int nv = m->nv;
+    for (int i = 0; i < nv; i++) {
+        if (!(AM_MUL(AM_MUL(AM_R(0.5), s->s[i]), m->L) - s->x[2][i] > AM_R(0))) { /* as floor_contact */
+            s->contact[i] = 0;
+            continue;
+        }
+        vec3 F = v3(s->fc[0][i], s->fc[1][i], s->fc[2][i]);
+        if (floor_contact(m, s, i, &F)) {
+            F.x = F.y = AM_R(0);
+            s->p[0][i] = s->p[1][i] = AM_R(0);
+            AM_REM_CLEAR(s->p_rem[0][i]);
+            AM_REM_CLEAR(s->p_rem[1][i]);
+        }
+        s->fc[0][i] = F.x; s->fc[1][i] = F.y; s->fc[2][i] = F.z;
+    }
+}
+
+/* p += F dt; x += p dt / m for every voxel (a fixed voxel keeps no momentum); returns 1 when
+ * some voxel's squared speed is beyond v2_max (or NaN) */
+static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* restrict f, const am_real* restrict inv_mass,
+                           const uint8_t* restrict fixed, vox_row* restrict p, vox_row* restrict v, vox_row* restrict x
+                           REM_PARAM(p_rem) REM_PARAM(x_rem))
+{
+    int bad = 0;
+    for (int i = 0; i < nv; i++) {
+        const am_real im = inv_mass[i];
+        am_real px = AM_ACC(p[0][i], p_rem[0][i], f[0][i], dt), py = AM_ACC(p[1][i], p_rem[1][i], f[1][i], dt),
+                pz = AM_ACC(p[2][i], p_rem[2][i], f[2][i], dt);
+        if (fixed[i]) px = py = pz = AM_R(0);
+        am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
+        p[0][i] = px; p[1][i] = py; p[2][i] = pz;
+        v[0][i] = vx; v[1][i] = vy; v[2][i] = vz;
+        x[0][i] = AM_ACC(x[0][i], x_rem[0][i], vx, dt);
+        x[1][i] = AM_ACC(x[1][i], x_rem[1][i], vy, dt);
+        x[2][i] = AM_ACC(x[2][i], x_rem[2][i], vz, dt);
+        am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
+        bad |= !(v2 <= v2_max);
+    }
+    return bad;
+}
 
 void am_step(const am_model* m, am_state* s)
 {
     if (s->diverged) return;
     actuation(m, s);
-    am_real strain = AM_R(0);
-    strain = am_max(strain, link_forces(m, s, 0, m->axis_end[0], 0));
-    strain = am_max(strain, link_forces(m, s, m->axis_end[0], m->axis_end[1], 1));
-    strain = am_max(strain, link_forces(m, s, m->axis_end[1], m->nl, 2));
+    int bad = link_forces(m, s, 0, m->axis_end[0], 0);
+    bad |= link_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
+    bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
     am_sim_collide(m, s);
-    am_real v2 = integrate(m, s);
+    /* semi-implicit Euler: rotation and total force, floor and friction, translation */
+    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, (const int32_t(*)[AM_MAX_VOXELS])m->slot,
+                        (const link_row*)s->fn, (const link_row*)s->mn, (const link_row*)s->mp,
+                        (const vox_row*)s->fext, (const vox_row*)s->mext, m->mass, m->c_glob_t, m->c_glob_r,
+                        m->inv_inertia, m->fixed, (const vox_row*)s->v, s->fc, s->h, s->w, s->q REM_ARG(s->h_rem));
+    if (m->env.floor) floor_pass(m, s);
+    bad |= voxel_translate(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), (const vox_row*)s->fc, m->inv_mass,
+                           m->fixed, s->p, s->v, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
     s->step++;
     s->t = AM_MUL_INT(s->dt, s->step);
-    if (!(strain <= AM_DIVERGE_STRAIN) || !(v2 <= AM_MUL(m->max_speed, m->max_speed))) {
+    if (bad) {
         s->diverged = 1;
         s->diverge_step = s->step;
     }

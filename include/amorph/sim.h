@@ -5,8 +5,8 @@
  * writes the model, so one model can drive several states. Both structs are large (fixed
  * capacity): declare them static, one state per worker, never on the stack.
  *
- * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, link rest lengths
- * once per link), link forces (small- or large-angle beam), contacts (floor with static/kinetic
+ * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, rest lengths
+ * once per pair of materials), link forces (small- or large-angle beam), contacts (floor with static/kinetic
  * friction, self-collision), then semi-implicit Euler per voxel, which gathers its up-to-6 link
  * forces in a fixed order. Results do not depend on how work is split.
  */
@@ -67,6 +67,7 @@ typedef struct am_model {
     am_real mu_s[AM_MAX_VOXELS], mu_k[AM_MAX_VOXELS]; /* floor friction */
     /* per link (nl); index nl is the zero link that missing slots point at */
     int32_t lneg[AM_MAX_LINKS], lpos[AM_MAX_LINKS]; /* voxel at the -axis / +axis end */
+    uint8_t lpair[AM_MAX_LINKS];   /* materials of the ends: mat_neg * AM_MAX_MATERIALS + mat_pos */
     am_real k_ax[AM_MAX_LINKS];    /* E_link L^2, N (axial force = k_ax * strain) */
     am_real a2[AM_MAX_LINKS];      /* torsion GJ/L, N m */
     am_real b1[AM_MAX_LINKS];      /* shear 12EI/L^3, N/m */
@@ -139,11 +140,13 @@ typedef struct am_state {
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
     am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
     am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
-    am_real fc[3][AM_MAX_VOXELS];   /* self-collision force (scratch) */
+    am_real fc[3][AM_MAX_VOXELS];   /* scratch: self-collision force, then the step's total force, N */
     uint8_t contact[AM_MAX_VOXELS]; /* 0 no floor contact, 1 stuck, 2 sliding */
+    /* per pair of materials (i * AM_MAX_MATERIALS + j): a link's rest length follows the scales
+     * of its two voxels' materials */
+    am_real pair_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS];     /* current rest length, m */
+    am_real pair_inv_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS]; /* its inverse, 1/m */
     /* per link (nl + 1; index nl stays zero) */
-    am_real inv_rest[AM_MAX_LINKS + 1];  /* 1 / current rest length, 1/m */
-    am_real rest[AM_MAX_LINKS + 1];      /* current rest length, m */
     int32_t large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
     am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
     am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
