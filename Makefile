@@ -48,6 +48,12 @@ endif
 ifneq ($(origin BUILD),command line)
 BUILD := build/$(TARGET)$(if $(filter-out float,$(REAL)),-$(REAL))
 endif
+# bare-metal boards optimise for size (flash); results do not depend on the optimisation level
+ifeq ($(word 1,$(TARGET_$(TARGET))),baremetal)
+ifneq ($(origin OPT),command line)
+OPT := -Os
+endif
+endif
 TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
 LDLIBS  := -lm -lpthread
