@@ -104,7 +104,7 @@ static int moved_far(int nv, am_real slack, am_real lim, const vox_row* restrict
 #if defined(AM_REAL_FIXED_POINT)
         /* out on one axis already: then the square below may have left the range and is not
          * trusted (an or over all voxels, as the early return of the scalar test was) */
-        far |= (am_fabs(ex) > slack) | (am_fabs(ey) > slack) | (am_fabs(ez) > slack);
+        far |= (am_fabs(ex) > slack) + (am_fabs(ey) > slack) + (am_fabs(ez) > slack) > 0;
 #endif
         far |= AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim;
     }

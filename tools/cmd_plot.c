@@ -93,7 +93,7 @@ static int load_run(const char* dir, int series)
         if (nl) *nl = 0;
         if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
         if (!*line) continue;
-        double e = NAN, b = NAN;
+        double e = (double)NAN, b = (double)NAN;
         col = 0;
         for (char* p = line; p; col++) {
             char* comma = strchr(p, ',');

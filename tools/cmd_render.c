@@ -99,7 +99,7 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
     for (int i = 0; i < mo->nv; i++) {
         double h[3];
         tool_motion_half(mo, fr, i, h);
-        double r = (h[0] + h[1]) * 0.5, x = f[7 * i], y = f[7 * i + 1];
+        double r = (h[0] + h[1]) * 0.5, x = (double)f[7 * i], y = (double)f[7 * i + 1];
         double q[4][3] = {{x - r, y - r, 0}, {x + r, y - r, 0}, {x + r, y + r, 0}, {x - r, y + r, 0}};
         for (int k = 0; k < 4; k++) {
             am_camera_project(cam, q[k], s[k]);
@@ -130,7 +130,8 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
     }
     /* the voxels */
     for (int i = 0; i < mo->nv; i++) {
-        double h[3], p[3] = {f[7 * i], f[7 * i + 1], f[7 * i + 2]}, q[4] = {f[7 * i + 3], f[7 * i + 4], f[7 * i + 5], f[7 * i + 6]};
+        double h[3], p[3] = {(double)f[7 * i], (double)f[7 * i + 1], (double)f[7 * i + 2]},
+               q[4] = {(double)f[7 * i + 3], (double)f[7 * i + 4], (double)f[7 * i + 5], (double)f[7 * i + 6]};
         double qn = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         if (!(qn > 0.5)) q[0] = 1, q[1] = q[2] = q[3] = 0, qn = 1;
         for (int k = 0; k < 4; k++) q[k] /= qn;
@@ -167,7 +168,7 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
     for (int k = 0; k < np; k++) {
         const float* f = mo->pose + (long)frame[k] * mo->nv * 7;
         for (int i = 0; i < mo->nv; i++) {
-            double p[3] = {f[7 * i], f[7 * i + 1], f[7 * i + 2]};
+            double p[3] = {(double)f[7 * i], (double)f[7 * i + 1], (double)f[7 * i + 2]};
             double d[3] = {p[0] - com[k][0], p[1] - com[k][1], p[2] - com[k][2]};
             double e[3] = {p[0] - mean[0], p[1] - mean[1], p[2] - mean[2]};
             double u = dot3(d, cam.right), v = dot3(d, cam.up), gu = dot3(e, cam.right), gv = dot3(e, cam.up);
