@@ -4,6 +4,7 @@
 #include "amorph/config.h"
 #include "amorph/real.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 #include "amorph/mathx.h"
 #include "amorph/rng.h"
 #include "amorph/lattice.h"

@@ -14,6 +14,8 @@
  */
 #include "amorph/lattice.h"
 
+#include "amorph/text.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -435,32 +437,9 @@ am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname,
 
 /* ---- the writer -------------------------------------------------------------------------- */
 
-typedef struct wbuf {
-    char* buf;
-    long cap, len;
-    int full;
-} wbuf;
-
-static void put(wbuf* w, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(wbuf* w, const char* fmt, ...)
-{
-    if (w->full) return;
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(w->buf + w->len, (size_t)(w->cap - w->len), fmt, ap);
-    va_end(ap);
-    if (n < 0 || (long)n >= w->cap - w->len) {
-        w->full = 1;
-        w->buf[w->len] = 0;
-        return;
-    }
-    w->len += n;
-}
+/* the bounded text buffer of amorph/text.h */
+typedef am_text wbuf;
+#define put am_text_put
 
 #if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
 #define REAL_DIGITS 17

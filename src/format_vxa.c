@@ -16,6 +16,8 @@
  */
 #include "amorph/vxa.h"
 
+#include "amorph/text.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -724,32 +726,9 @@ int am_vxa_period_steps(double period_s, double dt)
 
 /* ---- writing ----------------------------------------------------------------------------- */
 
-typedef struct wbuf {
-    char* buf;
-    long cap, len;
-    int full;
-} wbuf;
-
-static void put(wbuf* w, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(wbuf* w, const char* fmt, ...)
-{
-    if (w->full) return;
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(w->buf + w->len, (size_t)(w->cap - w->len), fmt, ap);
-    va_end(ap);
-    if (n < 0 || (long)n >= w->cap - w->len) {
-        w->full = 1;
-        w->buf[w->len] = 0;
-        return;
-    }
-    w->len += n;
-}
+/* the bounded text buffer of amorph/text.h */
+typedef am_text wbuf;
+#define put am_text_put
 
 /* the shortest "%.Ng" that reads back (as am_param when real, else as double) to the same value,
  * preferring a form without an exponent (1000000 rather than 1e+06, but 1e-30 as is) */

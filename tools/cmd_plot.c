@@ -207,29 +207,9 @@ static void series_means(void)
     }
 }
 
-typedef struct svg_out {
-    char* buf;
-    long cap, len;
-    int full;
-} svg_out;
-
-static void put(svg_out* o, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void put(svg_out* o, const char* fmt, ...)
-{
-    if (o->full) return;
-    va_list ap;
-    va_start(ap, fmt);
-    long room = o->cap - o->len;
-    int n = vsnprintf(o->buf + o->len, (size_t)room, fmt, ap);
-    va_end(ap);
-    if (n < 0 || n >= room) o->full = 1;
-    else o->len += n;
-}
+/* the bounded text buffer of amorph/text.h */
+typedef am_text svg_out;
+#define put am_text_put
 
 /* text with &, <, > and " escaped */
 static void put_text(svg_out* o, const char* s)

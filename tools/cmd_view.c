@@ -15,29 +15,9 @@
 static char view_html[VIEW_HTML_MAX];
 static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
 
-typedef struct text_out {
-    char* buf;
-    long cap, len;
-    int full;
-} text_out;
-
-static void out_fmt(text_out* o, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void out_fmt(text_out* o, const char* fmt, ...)
-{
-    if (o->full) return;
-    va_list ap;
-    va_start(ap, fmt);
-    long room = o->cap - o->len;
-    int n = vsnprintf(o->buf + o->len, (size_t)room, fmt, ap);
-    va_end(ap);
-    if (n < 0 || n >= room) o->full = 1;
-    else o->len += n;
-}
+/* the bounded text buffer of amorph/text.h */
+typedef am_text text_out;
+#define out_fmt am_text_put
 
 static void out_str(text_out* o, const char* s)
 {
