@@ -339,6 +339,15 @@ am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long c
     return AM_OK;
 }
 
+void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)
+{
+    if (i < 0 || i >= KEY_COUNT) {
+        if (cap > 0) out[0] = 0;
+        return;
+    }
+    value_text(d, &keys[i], out, cap);
+}
+
 int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz)
 {
     char va[64], vb[64];

@@ -45,15 +45,10 @@ static am_status perr(const pctx* c, am_status code, const char* fmt, ...)
 /* "fname:line: message" into the caller's buffer */
 static am_status perr(const pctx* c, am_status code, const char* fmt, ...)
 {
-    if (c->err && c->errsz > 0) {
-        int n = snprintf(c->err, (size_t)c->errsz, "%s:%d: ", c->fname, c->line);
-        if (n >= 0 && n < c->errsz) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, (size_t)(c->errsz - n), fmt, ap);
-            va_end(ap);
-        }
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    am_vfail_at(c->err, c->errsz, code, c->fname, c->line, fmt, ap);
+    va_end(ap);
     return code;
 }
 

@@ -53,15 +53,10 @@ static void warn(vctx* c, int n, const char* fmt, ...)
 /* "fname:line: message", line of element n */
 static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...)
 {
-    if (c->err && c->errsz > 0) {
-        int k = snprintf(c->err, (size_t)c->errsz, "%s:%d: ", c->d->fname, (int)c->d->node[n].line);
-        if (k >= 0 && k < c->errsz) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + k, (size_t)(c->errsz - k), fmt, ap);
-            va_end(ap);
-        }
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    am_vfail_at(c->err, c->errsz, code, c->d->fname, (int)c->d->node[n].line, fmt, ap);
+    va_end(ap);
     return code;
 }
 

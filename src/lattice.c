@@ -90,6 +90,24 @@ int am_lattice_count(const am_lattice* lat)
     return n;
 }
 
+int am_lattice_equal(const am_lattice* a, const am_lattice* b)
+{
+    if (a->nx != b->nx || a->ny != b->ny || a->nz != b->nz) return 0;
+    if (memcmp(&a->voxel_size, &b->voxel_size, sizeof a->voxel_size)) return 0;
+    if (a->palette.count != b->palette.count) return 0;
+    for (int i = 0; i < a->palette.count; i++) {
+        const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
+        if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
+        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
+                                  &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
+        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
+                                  &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
+        for (int k = 0; k < 10; k++)
+            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
+    }
+    return memcmp(a->cell, b->cell, (size_t)(a->nx * a->ny * a->nz)) == 0;
+}
+
 static int parse_size(const char* s, int* out)
 {
     long v = 0;

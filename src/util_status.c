@@ -14,3 +14,21 @@ am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
     }
     return code;
 }
+
+am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap)
+{
+    if (err && errsz > 0) {
+        int n = snprintf(err, (size_t)errsz, "%s:%d: ", fname, line);
+        if (n >= 0 && n < errsz) vsnprintf(err + n, (size_t)(errsz - n), fmt, ap);
+    }
+    return code;
+}
+
+am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    am_vfail_at(err, errsz, code, fname, line, fmt, ap);
+    va_end(ap);
+    return code;
+}

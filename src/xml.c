@@ -56,15 +56,10 @@ static am_status xerr(xctx* c, long pos, am_status code, const char* fmt, ...)
 /* "fname:line: message" for the line of offset pos */
 static am_status xerr(xctx* c, long pos, am_status code, const char* fmt, ...)
 {
-    if (c->err && c->errsz > 0) {
-        int n = snprintf(c->err, (size_t)c->errsz, "%s:%d: ", c->d->fname, line_at(c, pos));
-        if (n >= 0 && n < c->errsz) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, (size_t)(c->errsz - n), fmt, ap);
-            va_end(ap);
-        }
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    am_vfail_at(c->err, c->errsz, code, c->d->fname, line_at(c, pos), fmt, ap);
+    va_end(ap);
     return code;
 }
 

@@ -158,8 +158,6 @@ static void test_crowding_rule(void)
             }
         }
         CHECK(g_a.last.best >= best_before, "the best fitness fell from %.9g to %.9g", best_before, g_a.last.best);
-        /* every offspring that is strictly better than both parents' best must be in the population
-         * (it beats whichever parent it meets) */
     }
     CHECK(replaced_total > 0, "no offspring ever replaced a member in 3 generations");
     CHECK(g_a.has_best && g_a.best.fitness == g_a.last.best, "best ever %.9g vs population best %.9g", g_a.best.fitness, g_a.last.best);

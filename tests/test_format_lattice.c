@@ -16,24 +16,6 @@ static char big[1L << 20];
 static am_param unit_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_unit(r))); }
 static am_param normal_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_normal(r))); }
 
-static int same_lattice(const am_lattice* a, const am_lattice* b)
-{
-    if (a->nx != b->nx || a->ny != b->ny || a->nz != b->nz) return 0;
-    if (memcmp(&a->voxel_size, &b->voxel_size, sizeof a->voxel_size)) return 0;
-    if (a->palette.count != b->palette.count) return 0;
-    for (int i = 0; i < a->palette.count; i++) {
-        const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
-        if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
-        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
-                                 &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
-        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
-                                 &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
-        for (int k = 0; k < 10; k++)
-            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
-    }
-    return memcmp(a->cell, b->cell, sizeof a->cell) == 0;
-}
-
 /* format a, parse it into b, check they agree and that formatting b gives the same text */
 static void round_trip(const am_lattice* a, const char* what)
 {
@@ -44,7 +26,7 @@ static void round_trip(const am_lattice* a, const char* what)
     CHECK(len == (long)strlen(text), "%s: len %ld vs strlen %ld", what, len, (long)strlen(text));
     st = am_lattice_parse(&lat_b, text, what, err, sizeof err);
     CHECK(st == AM_OK, "%s: parse: %s", what, err);
-    CHECK(same_lattice(a, &lat_b), "%s: round trip differs", what);
+    CHECK(am_lattice_equal(a, &lat_b), "%s: round trip differs", what);
     st = am_lattice_format(&lat_b, text2, sizeof text2, &len2, err, sizeof err);
     CHECK(st == AM_OK && len2 == len && strcmp(text, text2) == 0, "%s: second format differs", what);
 }
@@ -67,6 +49,27 @@ static void test_scenes_round_trip(void)
         CHECK(st == AM_OK, "%s: %s", scenes[i], err);
         if (st == AM_OK) round_trip(&lat_a, scenes[i]);
     }
+}
+
+/* the comparison the round trips rely on sees one changed cell, bit of a material or name */
+static void test_lattice_equal_sees_differences(void)
+{
+    static am_lattice a, b;
+    char err[AM_ERR_MAX];
+    CHECK(am_scene_build(&a, "sphere:6", err, sizeof err) == AM_OK, "%s", err);
+    b = a;
+    CHECK(am_lattice_equal(&a, &b), "a copy differs");
+    b.cell[7] = (uint8_t)(b.cell[7] ? 0 : 1);
+    CHECK(!am_lattice_equal(&a, &b), "a changed cell went unseen");
+    b = a;
+    b.palette.mat[1].E = AM_PARAM_FROM_DOUBLE(AM_PARAM_TO_DOUBLE(b.palette.mat[1].E) * 1.0000001);
+    CHECK(!am_lattice_equal(&a, &b), "a changed modulus went unseen");
+    b = a;
+    b.palette.mat[0].name[0] = 'X';
+    CHECK(!am_lattice_equal(&a, &b), "a changed name went unseen");
+    b = a;
+    b.nz = a.nz - 1;
+    CHECK(!am_lattice_equal(&a, &b), "a changed shape went unseen");
 }
 
 static void test_scene_facts(void)
@@ -465,6 +468,7 @@ int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     RUN(test_scenes_round_trip);
+    RUN(test_lattice_equal_sees_differences);
     RUN(test_scene_facts);
     RUN(test_custom_round_trip);
     RUN(test_axis_order);

@@ -154,25 +154,6 @@ static void test_xml_limits(void)
 
 /* ---- VXA: round trips --------------------------------------------------------------------- */
 
-/* field by field, reals by their bits, names up to their NUL; cells over the used part */
-static int same_lattice(const am_lattice* a, const am_lattice* b)
-{
-    if (a->nx != b->nx || a->ny != b->ny || a->nz != b->nz) return 0;
-    if (memcmp(&a->voxel_size, &b->voxel_size, sizeof a->voxel_size)) return 0;
-    if (a->palette.count != b->palette.count) return 0;
-    for (int i = 0; i < a->palette.count; i++) {
-        const am_material *x = &a->palette.mat[i], *y = &b->palette.mat[i];
-        if (strncmp(x->name, y->name, sizeof x->name) || memcmp(x->color, y->color, sizeof x->color) || x->fixed != y->fixed) return 0;
-        const am_param* rx[10] = {&x->E, &x->density, &x->poisson, &x->cte, &x->phase, &x->mu_static, &x->mu_kinetic,
-                                 &x->zeta_internal, &x->zeta_global, &x->zeta_collision};
-        const am_param* ry[10] = {&y->E, &y->density, &y->poisson, &y->cte, &y->phase, &y->mu_static, &y->mu_kinetic,
-                                 &y->zeta_internal, &y->zeta_global, &y->zeta_collision};
-        for (int k = 0; k < 10; k++)
-            if (memcmp(rx[k], ry[k], sizeof(am_param))) return 0;
-    }
-    return memcmp(a->cell, b->cell, (size_t)(a->nx * a->ny * a->nz)) == 0;
-}
-
 static int same_env(const am_env* a, const am_env* b)
 {
     return a->gravity == b->gravity && a->floor == b->floor && a->collisions == b->collisions && a->cte_mode == b->cte_mode &&
@@ -191,7 +172,7 @@ static void round_trip(const am_lattice* lat, const am_env* env, const char* wha
     st = am_vxa_parse(&lat_b, &info_b, &doc, text, what, err, sizeof err);
     CHECK(st == AM_OK, "%s: parse: %s", what, err);
     CHECK(info_b.warnings == 0, "%s: %d warnings: %s", what, info_b.warnings, info_b.warning);
-    CHECK(same_lattice(lat, &lat_b), "%s: the lattice differs after a round trip", what);
+    CHECK(am_lattice_equal(lat, &lat_b), "%s: the lattice differs after a round trip", what);
     CHECK(same_env(env, &info_b.env) && info_b.period_steps_given, "%s: the environment differs after a round trip", what);
     /* the period in seconds, unless the temperature is constant (VaryTempEnabled 0) */
     if (env->temp_amplitude != AM_P(0) || env->temp_base == AM_P(0)) NEAR_REL(info_b.temp_period, env->period_steps * 2.5e-5, 1e-15);

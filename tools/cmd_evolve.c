@@ -16,7 +16,6 @@ static char g_ckpt[48L << 10];
 #else
 static char g_ckpt[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
 #endif
-static am_lattice g_best_lat;
 
 static const char evolve_help[] =
     "usage: amorph evolve [--config FILE] [--KEY VALUE]... [--out DIR] [options]\n"
@@ -116,23 +115,11 @@ static int build_def(const evo_opts* o, am_evo_def* d, const char* cmd)
 static void help_config(void)
 {
     am_evo_def d = am_default_evo();
-    char buf[8192];
-    long len = 0;
-    char err[AM_ERR_MAX];
-    am_evo_format(&d, 1, buf, sizeof buf, &len, err, sizeof err);
+    char value[64];
     printf("configuration keys (config file 'key = value', or flag --key VALUE), with defaults:\n");
     for (int k = 0; k < am_evo_key_count(); k++) {
-        const char* name = am_evo_key_name(k);
-        const char* line = buf;
-        char value[64] = "?";
-        while ((line = strstr(line, name)) != NULL) {
-            if ((line == buf || line[-1] == '\n') && !strncmp(line + strlen(name), " = ", 3)) {
-                sscanf(line + strlen(name) + 3, "%63s", value);
-                break;
-            }
-            line++;
-        }
-        printf("  %-20s %-12s %s\n", name, value, am_evo_key_help(k));
+        am_evo_key_value(&d, k, value, sizeof value);
+        printf("  %-20s %-12s %s\n", am_evo_key_name(k), value, am_evo_key_help(k));
     }
 }
 
@@ -182,8 +169,8 @@ static int write_best(const char* dir, const am_evo* e)
     if (am_genome_format(&e->best.genome, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK ||
         write_text(dir, "best.genome", tool_file_buf, len))
         return 1;
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK ||
-        am_lattice_format(&g_best_lat, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) {
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK ||
+        am_lattice_format(&tool_work[0].lattice, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
     }
@@ -307,7 +294,7 @@ static int run_loop(am_evo* e, const run_io* io)
             return 1;
         }
         if (append_log(io->dir, &e->last)) return 1;
-        if ((!had_best || e->best.fitness != best_before || e->generation == 1) && write_best(io->dir, e)) return 1;
+        if ((!had_best || e->best.fitness != best_before) && write_best(io->dir, e)) return 1;
         dirty = 1;
         double now = am_port_now();
         if (e->def.checkpoint_seconds == 0 || now - last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
@@ -336,18 +323,18 @@ static int finish_pictures(const am_evo* e, const char* dir)
 {
     if (!TOOL_PICTURES) return 0;
     char path[4096], err[AM_ERR_MAX], title[256];
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &g_best_lat, err, sizeof err) != AM_OK) {
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
     am_eval_def ev = e->def.eval;
     ev.record = NULL;
-    if (am_lattice_count(&g_best_lat) > 0) {
+    if (am_lattice_count(&tool_work[0].lattice) > 0) {
         path_join(path, sizeof path, dir, "best.png");
-        if (tool_write_filmstrip(&g_best_lat, &e->def.env, &ev, path)) return 1;
+        if (tool_write_filmstrip(&tool_work[0].lattice, &e->def.env, &ev, path)) return 1;
         path_join(path, sizeof path, dir, "best.html");
         snprintf(title, sizeof title, "amorph: best of %s (%.4f m)", dir, e->best.fitness);
-        if (tool_write_viewer(&g_best_lat, &e->def.env, &ev, title, path)) return 1;
+        if (tool_write_viewer(&tool_work[0].lattice, &e->def.env, &ev, title, path)) return 1;
     }
     path_join(path, sizeof path, dir, "fitness.svg");
     char* dirs[1] = {(char*)(uintptr_t)dir};

@@ -56,6 +56,8 @@ int am_evo_is_key(const char* key);
 int am_evo_key_count(void);
 const char* am_evo_key_name(int i);
 const char* am_evo_key_help(int i);
+/* the value of key i in d as the configuration text writes it ("" past the end) */
+void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
 /* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
  * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
 am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
@@ -103,7 +105,7 @@ typedef struct am_evo {
     int has_best;                             /* 1 once best is set */
     uint64_t history;                         /* hash over every genome and fitness evaluated */
     am_evo_stats last;                        /* statistics of the last generation */
-    int order[AM_MAX_POPULATION];             /* scratch: pairing and evaluation order */
+    int order[AM_MAX_POPULATION];             /* scratch: evaluation order (largest body first) */
     uint8_t body[4][AM_MAX_CELLS];            /* scratch: the four bodies of one crowding pair */
 } am_evo;
 

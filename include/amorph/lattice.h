@@ -52,6 +52,9 @@ int am_palette_find(const am_palette* p, const char* name);
 am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxel_size, char* err, int errsz);
 static inline int am_lattice_index(const am_lattice* lat, int x, int y, int z) { return x + lat->nx * (y + lat->ny * z); }
 int am_lattice_count(const am_lattice* lat);         /* filled cells */
+/* 1 when a and b are the same robot: shape, voxel size and every material value bit for bit,
+ * names up to their NUL, and the cells of the nx x ny x nz box */
+int am_lattice_equal(const am_lattice* a, const am_lattice* b);
 
 /* built-in scenes shared by tests, benchmarks and the command:
  *   cube:N        a solid N^3 cube of passive material

@@ -3,6 +3,8 @@
 #ifndef AMORPH_STATUS_H
 #define AMORPH_STATUS_H
 
+#include <stdarg.h>
+
 typedef enum am_status {
     AM_OK = 0,
     AM_ERR_PARSE,      /* malformed input text */
@@ -17,6 +19,15 @@ typedef enum am_status {
 am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* "fname:line: " followed by fmt into err, like am_fail: the one form of every file message.
+ * The va_list form serves the parsers' own variadic wrappers. */
+am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap);
+am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 6, 7)))
 #endif
     ;
 
