@@ -24,7 +24,11 @@ am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
 
 /* "fname:line: " followed by fmt into err, like am_fail: the one form of every file message.
  * The va_list form serves the parsers' own variadic wrappers. */
-am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap);
+am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 6, 0)))
+#endif
+    ;
 am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
