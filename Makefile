@@ -86,7 +86,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h tools/*.h tests/*.h port/$(PORT)/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc repro stack check-fixed
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed
 all: $(BUILD)/libamorph.a $(BUILD)/amorph
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -116,10 +116,20 @@ check-alloc: $(LIB_OBJ) $(PORT_OBJ)
 	if [ -n "$$bad" ]; then echo "check-alloc: allocation found:"; echo "$$bad"; echo "check-alloc: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-alloc: no allocator referenced by $(words $(LIB_OBJ) $(PORT_OBJ)) objects of src/ and port/"
 
+# determinism: -ffp-contract=off forbids fused multiply-adds, but GCC 12's vectoriser still fuses a
+# multiply with an alternating add/subtract (vfmaddsub) in some inlining contexts, which rounds
+# differently from the -O0 build. No object of the library may hold a fused multiply-add.
+OBJDUMP ?= objdump
+check-fma: $(LIB_OBJ)
+	@bad=$$(for o in $(LIB_OBJ); do $(OBJDUMP) -d --no-show-raw-insn $$o | awk -v o=$$o -F'\t' \
+	    'NF >= 2 { split($$2, w, " "); if (w[1] ~ /^(vf(n)?m(add|sub)|vfmaddsub|vfmsubadd|f(n)?m(add|sub)(\.[sd])?|fml[as]|vf(n)?m[as])/) print o": "w[1] }' | sort -u; done); \
+	if [ -n "$$bad" ]; then echo "check-fma: fused multiply-add found:"; echo "$$bad"; echo "check-fma: 0 passed, 1 failed"; exit 1; fi; \
+	echo "check-fma: no fused multiply-add in $(words $(LIB_OBJ)) objects of src/"
+
 unit: $(TEST_BIN) $(BUILD)/amorph
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
-test: all check-alloc
+test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed
