@@ -48,7 +48,7 @@ static void rebuild(const am_model* m, am_state* s)
         if (!m->surface[i]) continue;
         uint32_t b = bucket_of(cell_coord(s->x[0][i], inv_h), cell_coord(s->x[1][i], inv_h), cell_coord(s->x[2][i], inv_h));
         s->bucket_next[i] = s->bucket_head[b];
-        s->bucket_head[b] = i;
+        s->bucket_head[b] = (am_index)i;
     }
     int np = 0;
     for (int i = 0; i < nv; i++) {
@@ -76,8 +76,8 @@ static void rebuild(const am_model* m, am_state* s)
                             s->pairs_overflow = 1;
                             continue;
                         }
-                        s->pa[np] = i;
-                        s->pb[np] = j;
+                        s->pa[np] = (am_index)i;
+                        s->pb[np] = (am_index)j;
                         np++;
                     }
                 }
@@ -122,7 +122,7 @@ static int needs_rebuild(const am_model* m, const am_state* s)
 /* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
  * a chunk of the list at once (no branch: the compiler vectorises it) */
 #define PAIR_CHUNK 64
-static void overlaps(int n, am_real rad, const int32_t* restrict pa, const int32_t* restrict pb, const vox_row* restrict x,
+static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, const vox_row* restrict x,
                      const am_real* restrict scale, int32_t* restrict touch)
 {
     for (int j = 0; j < n; j++) {
@@ -156,9 +156,9 @@ void am_sim_collide(const am_model* m, am_state* s)
         if (d2 >= AM_MUL(reach, reach) || !(d2 > AM_R(0))) continue;
         am_real d = am_sqrt(d2), inv = AM_DIV(AM_R(1), d);
         am_real nx = AM_MUL(ex, inv), ny = AM_MUL(ey, inv), nz = AM_MUL(ez, inv);
-        am_real ka = m->k_floor[a], kb = m->k_floor[b];
+        am_real ka = m->k_floor[AM_VC(m, a)], kb = m->k_floor[AM_VC(m, b)];
         am_real k_h = AM_DIV(AM_MUL(AM_R(2), AM_MUL(ka, kb)), ka + kb); /* harmonic mean */
-        am_real c = AM_MUL(AM_R(0.5), m->c_col[a] + m->c_col[b]);
+        am_real c = AM_MUL(AM_R(0.5), m->c_col[AM_VC(m, a)] + m->c_col[AM_VC(m, b)]);
         am_real approach = AM_MUL(s->v[0][a] - s->v[0][b], nx) + AM_MUL(s->v[1][a] - s->v[1][b], ny) +
                            AM_MUL(s->v[2][a] - s->v[2][b], nz);
         am_real f = AM_MUL(k_h, reach - d) + AM_MUL(c, approach);

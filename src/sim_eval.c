@@ -30,7 +30,7 @@ double am_kinetic_energy(const am_model* m, const am_state* s)
             p2 += AM_TO_DOUBLE(s->p[c][i]) * AM_TO_DOUBLE(s->p[c][i]);
             h2 += AM_TO_DOUBLE(s->h[c][i]) * AM_TO_DOUBLE(s->h[c][i]);
         }
-        e += 0.5 * p2 * AM_TO_DOUBLE(m->inv_mass[i]) + 0.5 * h2 * AM_TO_DOUBLE(m->inv_inertia[i]);
+        e += 0.5 * p2 * AM_TO_DOUBLE(m->inv_mass[AM_VC(m, i)]) + 0.5 * h2 * AM_TO_DOUBLE(m->inv_inertia[AM_VC(m, i)]);
     }
     return e * am_unit(m, AM_DIM_ENERGY);
 }
@@ -48,11 +48,11 @@ double am_strain_energy(const am_model* m, const am_state* s)
         double u = AM_TO_DOUBLE(k.p.x) - rest, y = AM_TO_DOUBLE(k.p.y), z = AM_TO_DOUBLE(k.p.z);
         double t1x = AM_TO_DOUBLE(k.t1.x), t1y = AM_TO_DOUBLE(k.t1.y), t1z = AM_TO_DOUBLE(k.t1.z);
         double t2x = AM_TO_DOUBLE(k.t2.x), t2y = AM_TO_DOUBLE(k.t2.y), t2z = AM_TO_DOUBLE(k.t2.z);
-        double b1 = AM_TO_DOUBLE(m->b1[l]), b2 = AM_TO_DOUBLE(m->b2[l]), b3 = AM_TO_DOUBLE(m->b3[l]);
-        e += 0.5 * AM_TO_DOUBLE(m->k_ax[l]) * u * u / rest;
+        double b1 = AM_TO_DOUBLE(m->b1[AM_LC(m, l)]), b2 = AM_TO_DOUBLE(m->b2[AM_LC(m, l)]), b3 = AM_TO_DOUBLE(m->b3[AM_LC(m, l)]);
+        e += 0.5 * AM_TO_DOUBLE(m->k_ax[AM_LC(m, l)]) * u * u / rest;
         e += 0.5 * b1 * (y * y + z * z) - b2 * y * (t1z + t2z) + b2 * z * (t1y + t2y);
         e += b3 * (t1z * t1z + t1z * t2z + t2z * t2z) + b3 * (t1y * t1y + t1y * t2y + t2y * t2y);
-        e += 0.5 * AM_TO_DOUBLE(m->a2[l]) * (t2x - t1x) * (t2x - t1x);
+        e += 0.5 * AM_TO_DOUBLE(m->a2[AM_LC(m, l)]) * (t2x - t1x) * (t2x - t1x);
     }
     return e * am_unit(m, AM_DIM_ENERGY);
 }
@@ -61,10 +61,10 @@ double am_potential_energy(const am_model* m, const am_state* s)
 {
     double e = 0;
     for (int i = 0; i < m->nv; i++) {
-        e += AM_TO_DOUBLE(m->mass[i]) * AM_TO_DOUBLE(m->gravity) * AM_TO_DOUBLE(s->x[2][i]);
+        e += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * AM_TO_DOUBLE(m->gravity) * AM_TO_DOUBLE(s->x[2][i]);
         if (m->env.floor) {
             double pen = 0.5 * AM_TO_DOUBLE(s->s[i]) * AM_TO_DOUBLE(m->L) - AM_TO_DOUBLE(s->x[2][i]);
-            if (pen > 0) e += 0.5 * AM_TO_DOUBLE(m->k_floor[i]) * pen * pen;
+            if (pen > 0) e += 0.5 * AM_TO_DOUBLE(m->k_floor[AM_VC(m, i)]) * pen * pen;
         }
     }
     return e * am_unit(m, AM_DIM_ENERGY);
@@ -74,8 +74,8 @@ void am_com(const am_model* m, const am_state* s, double out[3])
 {
     double mt = 0, c[3] = {0, 0, 0};
     for (int i = 0; i < m->nv; i++) {
-        mt += AM_TO_DOUBLE(m->mass[i]);
-        for (int k = 0; k < 3; k++) c[k] += AM_TO_DOUBLE(m->mass[i]) * AM_TO_DOUBLE(s->x[k][i]);
+        mt += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]);
+        for (int k = 0; k < 3; k++) c[k] += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * AM_TO_DOUBLE(s->x[k][i]);
     }
     for (int k = 0; k < 3; k++) out[k] = (mt > 0 ? c[k] / mt : 0) * m->unit_len;
 }

@@ -168,7 +168,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     m->L = L;
 
     /* voxels, in cell order; vid maps cell -> voxel */
-    int32_t* vid = m->cell_voxel;
+    am_index* vid = m->cell_voxel;
     int nv = 0, kmin = nz;
     for (int c = 0; c < ncell; c++) {
         int id = lat->cell[c];
@@ -176,8 +176,8 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         if (!id) continue;
         if (id > lat->palette.count)
             return am_fail(err, errsz, AM_ERR_RANGE, "cell %d holds material %d, the palette has %d", c, id, lat->palette.count);
-        vid[c] = nv;
-        m->cell[nv] = c;
+        vid[c] = (am_index)nv;
+        m->cell[nv] = (am_index)c;
         m->mat[nv] = (uint8_t)(id - 1);
         nv++;
         int z = c / (nx * ny);
@@ -192,20 +192,21 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         m->x0[0][i] = AM_MUL(AM_INT(x) + AM_R(0.5), L);
         m->x0[1][i] = AM_MUL(AM_INT(y) + AM_R(0.5), L);
         m->x0[2][i] = AM_MUL(AM_INT(z - kmin) + AM_R(0.5), L) + PV(env->lift, m->unit_len);
+        const int vc = AM_VC(m, i); /* the voxel's constants (once per material in the board profile) */
         am_real mass = AM_MUL(PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
         am_real inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
-        m->mass[i] = mass;
+        m->mass[vc] = mass;
         m->fixed[i] = (uint8_t)(mt->fixed != 0);
-        m->inv_mass[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
-        m->inv_inertia[i] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
+        m->inv_mass[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
+        m->inv_inertia[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
         am_real EL = AM_MUL(PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
         am_real zg = AM_MUL(PV(mt->zeta_global, 1.0), PV(env->zeta_global_scale, 1.0));
-        m->c_glob_t[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
-        m->c_glob_r[i] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
-        m->k_floor[i] = AM_MUL(AM_R(2), EL);
-        m->c_col[i] = AM_MUL(AM_MUL(AM_R(2), PV(mt->zeta_collision, 1.0)), am_sqrt(AM_MUL(mass, EL)));
-        m->mu_s[i] = PV(mt->mu_static, 1.0);
-        m->mu_k[i] = PV(mt->mu_kinetic, 1.0);
+        m->c_glob_t[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
+        m->c_glob_r[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
+        m->k_floor[vc] = AM_MUL(AM_R(2), EL);
+        m->c_col[vc] = AM_MUL(AM_MUL(AM_R(2), PV(mt->zeta_collision, 1.0)), am_sqrt(AM_MUL(mass, EL)));
+        m->mu_s[vc] = PV(mt->mu_static, 1.0);
+        m->mu_k[vc] = PV(mt->mu_kinetic, 1.0);
     }
 
     /* links grouped by axis */
@@ -226,23 +227,24 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(Ea, Eb)), Ea + Eb); /* halves in series */
             am_real nu = AM_MUL(AM_R(0.5), PV(ma->poisson, 1.0) + PV(mb->poisson, 1.0));
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
-            m->lneg[nl] = i;
-            m->lpos[nl] = j;
+            m->lneg[nl] = (am_index)i;
+            m->lpos[nl] = (am_index)j;
             m->lpair[nl] = (uint8_t)(m->mat[i] * AM_MAX_MATERIALS + m->mat[j]);
-            m->k_ax[nl] = AM_MUL(E, L2);
-            m->a2[nl] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
-            m->b1[nl] = AM_MUL(E, L);
-            m->b2[nl] = AM_MUL(AM_R(0.5), AM_MUL(E, L2));
-            m->b3[nl] = AM_DIV(AM_MUL(E, L3), AM_R(6));
+            const int lc = AM_LC(m, nl); /* the link's constants (once per pair of materials on a board) */
+            m->k_ax[lc] = AM_MUL(E, L2);
+            m->a2[lc] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
+            m->b1[lc] = AM_MUL(E, L);
+            m->b2[lc] = AM_MUL(AM_R(0.5), AM_MUL(E, L2));
+            m->b3[lc] = AM_DIV(AM_MUL(E, L3), AM_R(6));
             /* internal damping as a fraction of the critical damping of the link's own two-body
              * modes: reduced mass with the axial stiffness E L, reduced inertia with the bending
              * stiffness b3 */
-            am_real mu = AM_DIV(AM_MUL(m->mass[i], m->mass[j]), m->mass[i] + m->mass[j]);
+            am_real mu = AM_DIV(AM_MUL(m->mass[AM_VC(m, i)], m->mass[AM_VC(m, j)]), m->mass[AM_VC(m, i)] + m->mass[AM_VC(m, j)]);
             am_real mu_I = AM_DIV(AM_MUL(mu, L2), AM_R(6));
             am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
                                 PV(env->zeta_internal_scale, 1.0));
-            m->c_t[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));
-            m->c_r[nl] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu_I, m->b3[nl])));
+            m->c_t[lc] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));
+            m->c_r[lc] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu_I, m->b3[lc])));
             nl++;
         }
         m->axis_end[axis] = nl;
@@ -252,13 +254,13 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     /* slots: +x,-x,+y,-y,+z,-z; the voxel is the negative end of its + links */
     for (int d = 0; d < 6; d++)
         for (int i = 0; i < nv; i++) {
-            m->slot[d][i] = nl;
+            m->slot[d][i] = (am_index)nl;
             m->nbr[d][i] = -1;
         }
     for (int l = 0; l < nl; l++) {
         int axis = l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2);
-        m->slot[2 * axis][m->lneg[l]] = l;
-        m->slot[2 * axis + 1][m->lpos[l]] = l;
+        m->slot[2 * axis][m->lneg[l]] = (am_index)l;
+        m->slot[2 * axis + 1][m->lpos[l]] = (am_index)l;
         m->nbr[2 * axis][m->lneg[l]] = m->lpos[l];
         m->nbr[2 * axis + 1][m->lpos[l]] = m->lneg[l];
     }
@@ -304,12 +306,12 @@ am_real am_dt_analytic(const am_model* m)
 {
     am_real wmax = AM_R(0);
     for (int l = 0; l < m->nl; l++) {
-        am_real a1 = AM_DIV(m->k_ax[l], m->L); /* E L */
-        am_real mm = am_min(m->mass[m->lneg[l]], m->mass[m->lpos[l]]);
+        am_real a1 = AM_DIV(m->k_ax[AM_LC(m, l)], m->L); /* E L */
+        am_real mm = am_min(m->mass[AM_VC(m, m->lneg[l])], m->mass[AM_VC(m, m->lpos[l])]);
         wmax = am_max(wmax, AM_DIV(a1, mm));
     }
     for (int i = 0; i < m->nv; i++) /* a lone voxel on the floor: its contact spring */
-        wmax = am_max(wmax, AM_DIV(AM_MUL(AM_R(0.5), m->k_floor[i]), m->mass[i]));
+        wmax = am_max(wmax, AM_DIV(AM_MUL(AM_R(0.5), m->k_floor[AM_VC(m, i)]), m->mass[AM_VC(m, i)]));
     return AM_DIV(AM_R(1), AM_MUL(AM_MUL(AM_R(2), AM_PI), am_sqrt(wmax)));
 }
 

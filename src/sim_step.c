@@ -20,6 +20,16 @@
 typedef am_real vox_row[AM_MAX_VOXELS];
 typedef am_real link_row[AM_MAX_LINKS + 1];
 
+/* the entry of a per-link (LCI) and per-voxel (VCI) constant inside the loops below, which have
+ * lpair and mat at hand (amorph/sim.h: AM_LC, AM_VC) */
+#if defined(AM_COMPACT)
+#define LCI(l) lpair[l]
+#define VCI(i) mat[i]
+#else
+#define LCI(l) (l)
+#define VCI(i) (i)
+#endif
+
 /* the rounding remainders of the integrator (AM_ACC, error diffusion) are extra parameters of the
  * voxel passes in the fixed-point build only; in the others AM_ACC drops its remainder argument */
 #if defined(AM_REAL_FIXED_POINT)
@@ -144,7 +154,7 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
  * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
  * wrong and the caller runs full_pass on the range). */
-static int small_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, const am_index* restrict lpos,
                       const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                       const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
@@ -160,7 +170,7 @@ static int small_pass(int l0, int l1, int axis, const int32_t* restrict lneg, co
                       v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
         any_large |= large_switch(&k, 0, inv_rest);
-        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
+        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
         link_out o = link_element(&k, 0, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
                                   v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
         fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
@@ -175,7 +185,7 @@ static int small_pass(int l0, int l1, int axis, const int32_t* restrict lneg, co
 /* the links [l0, l1), all along one axis: the large-angle switch with its hysteresis, and each
  * link with the frame its switch says (both frames are computed, one is kept: no branch, the
  * compiler vectorises it). Returns 1 when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
-static int full_pass(int l0, int l1, int axis, const int32_t* restrict lneg, const int32_t* restrict lpos,
+static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, const am_index* restrict lpos,
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
@@ -199,7 +209,7 @@ static int full_pass(int l0, int l1, int axis, const int32_t* restrict lneg, con
 #else
         link_kin_large(&k, lg);
 #endif
-        link_par c = {k_ax[l], a2[l], b1[l], b2[l], b3[l], c_t[l], c_r[l], rest, inv_rest};
+        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
         link_out o = link_element(&k, lg, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
                                   v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
         large[l] = lg;
@@ -247,7 +257,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         s->contact[i] = 0;
         return 0;
     }
-    am_real N = AM_MUL(m->k_floor[i], pen) - AM_MUL(m->c_col[i], s->v[2][i]);
+    am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen) - AM_MUL(m->c_col[AM_VC(m, i)], s->v[2][i]);
     if (N < AM_R(0)) N = AM_R(0); /* the floor pushes, never pulls */
     F->z += N;
 
@@ -258,7 +268,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     if (s->contact[i] == 0) s->contact[i] = v2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
     am_wide fh2 = AM_MULW(F->x, F->x) + AM_MULW(F->y, F->y);
     if (s->contact[i] == 1) {
-        am_real lim = AM_MUL(m->mu_s[i], N);
+        am_real lim = AM_MUL(m->mu_s[AM_VC(m, i)], N);
         if (fh2 <= AM_MULW(lim, lim)) {
             F->x = F->y = AM_R(0);
             return 1;
@@ -266,7 +276,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         s->contact[i] = 2; /* breaks loose: kinetic friction from this step */
     }
     /* sliding: kinetic friction against the velocity (against the force when not yet moving) */
-    am_real fk = AM_MUL(m->mu_k[i], N);
+    am_real fk = AM_MUL(m->mu_k[AM_VC(m, i)], N);
     am_real dx, dy;
 #if defined(AM_REAL_FIXED_POINT)
     /* the direction as quotients (1 / |v| may be beyond the range) */
@@ -311,14 +321,15 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
  * entry), and the whole rotational update h += M dt, q = quat(w dt) q. Each voxel gathers its six
  * links in a fixed order: + slots (this voxel is the negative end) add the link's force, - slots
  * subtract it and take the positive end's moment. No branch: the compiler vectorises it. */
-static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, const int32_t (*restrict slot)[AM_MAX_VOXELS],
+static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, const am_index (*restrict slot)[AM_MAX_VOXELS],
                                 const link_row* restrict fn, const link_row* restrict mn, const link_row* restrict mp,
                                 const vox_row* restrict fext, const vox_row* restrict mext, const am_real* restrict mass,
                                 const am_real* restrict c_glob_t, const am_real* restrict c_glob_r,
                                 const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
-                                const vox_row* restrict v, vox_row* restrict f, vox_row* restrict h,
+                                const uint8_t* restrict mat, const vox_row* restrict v, vox_row* restrict f, vox_row* restrict h,
                                 vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
 {
+    (void)mat; /* read through VCI in the board profile only */
     for (int i = 0; i < nv; i++) {
         /* fc is zero without self-collision, and then holds the last step's total: not read */
         vec3 F = v3(fext[0][i] + (collisions ? f[0][i] : AM_R(0)), fext[1][i] + (collisions ? f[1][i] : AM_R(0)),
@@ -331,15 +342,15 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, c
             F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));
             M = v3_add(M, v3(mp[0][ln], mp[1][ln], mp[2][ln]));
         }
-        F.z -= AM_MUL(mass[i], g);
-        const am_real cg = c_glob_t[i], cgr = c_glob_r[i];
+        F.z -= AM_MUL(mass[VCI(i)], g);
+        const am_real cg = c_glob_t[VCI(i)], cgr = c_glob_r[VCI(i)];
         vec3 wi = v3(w[0][i], w[1][i], w[2][i]);
         F = v3_sub(F, v3(AM_MUL(cg, v[0][i]), AM_MUL(cg, v[1][i]), AM_MUL(cg, v[2][i])));
         M = v3_sub(M, v3(AM_MUL(cgr, wi.x), AM_MUL(cgr, wi.y), AM_MUL(cgr, wi.z)));
         f[0][i] = F.x; f[1][i] = F.y; f[2][i] = F.z;
 
         /* h += M dt; q = quat(w dt) q, renormalised (a fixed voxel keeps no momentum) */
-        const am_real ii = inv_inertia[i];
+        const am_real ii = inv_inertia[VCI(i)];
         am_real hx = AM_ACC(h[0][i], h_rem[0][i], M.x, dt), hy = AM_ACC(h[1][i], h_rem[1][i], M.y, dt),
                 hz = AM_ACC(h[2][i], h_rem[2][i], M.z, dt);
         if (fixed[i]) hx = hy = hz = AM_R(0);
@@ -386,12 +397,13 @@ static void floor_pass(const am_model* m, am_state* s)
 /* p += F dt; x += p dt / m for every voxel (a fixed voxel keeps no momentum); returns 1 when
  * some voxel's squared speed is beyond v2_max (or NaN) */
 static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* restrict f, const am_real* restrict inv_mass,
-                           const uint8_t* restrict fixed, vox_row* restrict p, vox_row* restrict v, vox_row* restrict x
+                           const uint8_t* restrict fixed, const uint8_t* restrict mat, vox_row* restrict p, vox_row* restrict v, vox_row* restrict x
                            REM_PARAM(p_rem) REM_PARAM(x_rem))
 {
+    (void)mat; /* read through VCI in the board profile only */
     int bad = 0;
     for (int i = 0; i < nv; i++) {
-        const am_real im = inv_mass[i];
+        const am_real im = inv_mass[VCI(i)];
         am_real px = AM_ACC(p[0][i], p_rem[0][i], f[0][i], dt), py = AM_ACC(p[1][i], p_rem[1][i], f[1][i], dt),
                 pz = AM_ACC(p[2][i], p_rem[2][i], f[2][i], dt);
         if (fixed[i]) px = py = pz = AM_R(0);
@@ -416,13 +428,13 @@ void am_step(const am_model* m, am_state* s)
     bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
     am_sim_collide(m, s);
     /* semi-implicit Euler: rotation and total force, floor and friction, translation */
-    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, (const int32_t(*)[AM_MAX_VOXELS])m->slot,
+    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, (const am_index(*)[AM_MAX_VOXELS])m->slot,
                         (const link_row*)s->fn, (const link_row*)s->mn, (const link_row*)s->mp,
                         (const vox_row*)s->fext, (const vox_row*)s->mext, m->mass, m->c_glob_t, m->c_glob_r,
-                        m->inv_inertia, m->fixed, (const vox_row*)s->v, s->fc, s->h, s->w, s->q REM_ARG(s->h_rem));
+                        m->inv_inertia, m->fixed, m->mat, (const vox_row*)s->v, s->fc, s->h, s->w, s->q REM_ARG(s->h_rem));
     if (m->env.floor) floor_pass(m, s);
     bad |= voxel_translate(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), (const vox_row*)s->fc, m->inv_mass,
-                           m->fixed, s->p, s->v, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
+                           m->fixed, m->mat, s->p, s->v, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
     s->step++;
     s->t = AM_MUL_INT(s->dt, s->step);
     if (bad) {

@@ -81,7 +81,7 @@ static int voxel_at(int x, int y, int z)
 /* sets voxel i's linear velocity (m/s), consistently in p and v */
 static void set_vel(am_state* s, int i, double vx, double vy, double vz)
 {
-    double m = SI(g_m.mass[i], MASS);
+    double m = SI(g_m.mass[AM_VC(&g_m, i)], MASS);
     double v[3] = {vx, vy, vz};
     for (int a = 0; a < 3; a++) {
         s->p[a][i] = MU(m * v[a], MOMENTUM);
@@ -92,7 +92,7 @@ static void set_vel(am_state* s, int i, double vx, double vy, double vz)
 /* sets voxel i's angular velocity (rad/s), consistently in h and w; I = m L^2 / 6 */
 static void set_spin(am_state* s, int i, double wx, double wy, double wz)
 {
-    double I = SI(g_m.mass[i], MASS) * SI(g_m.L, LENGTH) * SI(g_m.L, LENGTH) / 6.0;
+    double I = SI(g_m.mass[AM_VC(&g_m, i)], MASS) * SI(g_m.L, LENGTH) * SI(g_m.L, LENGTH) / 6.0;
     double w[3] = {wx, wy, wz};
     for (int a = 0; a < 3; a++) {
         s->h[a][i] = MU(I * w[a], ANGMOM);
@@ -161,7 +161,7 @@ static long qsteps(long n, long quick) { return test_quick() ? quick : n; }
 static double total_mass(void)
 {
     double M = 0;
-    for (int i = 0; i < g_m.nv; i++) M += SI(g_m.mass[i], MASS);
+    for (int i = 0; i < g_m.nv; i++) M += SI(g_m.mass[AM_VC(&g_m, i)], MASS);
     return M;
 }
 
@@ -374,7 +374,7 @@ static double measure_mode(int N, int j, double* expected)
     am_env env = env_free();
     if (!build(&env)) return 0;
     am_state_reset(&g_m, &g_s);
-    const double L = VOX_L, m = SI(g_m.mass[0], MASS), k = (double)g_lat.palette.mat[0].E * L;
+    const double L = VOX_L, m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS), k = (double)g_lat.palette.mat[0].E * L;
     double omega = N == 2 ? sqrt(2 * k / m) : 2 * sqrt(k / m) * sin(j * PI_D / (2.0 * N));
     *expected = omega;
     double u[AM_MAX_DIM];
@@ -449,7 +449,7 @@ static int block_free(int n, int internal_damping)
 static void test_energy_conservation(void)
 {
     if (!block_free(3, 0)) return;
-    const double L = VOX_L, m = SI(g_m.mass[0], MASS), k = (double)g_lat.palette.mat[0].E * L;
+    const double L = VOX_L, m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS), k = (double)g_lat.palette.mat[0].E * L;
     double v0 = 1e-3 * L * sqrt(k / m), w0 = v0 / L;
     g_rng = 12345;
     for (int i = 0; i < g_m.nv; i++) {
@@ -494,7 +494,7 @@ static double norm3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] +
 static void momentum_case(int damped)
 {
     if (!block_free(3, damped)) return;
-    const double L = VOX_L, m = SI(g_m.mass[0], MASS), k = (double)g_lat.palette.mat[0].E * L;
+    const double L = VOX_L, m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS), k = (double)g_lat.palette.mat[0].E * L;
     double v0 = 1e-3 * L * sqrt(k / m);
     const double V[3] = {0.05, -0.02, 0.03}, W[3] = {3.0, -2.0, 5.0}; /* m/s, rad/s */
     double c[3] = {1.5 * L, 1.5 * L, 1.5 * L};
@@ -632,7 +632,7 @@ static void test_friction(void)
     env.lift = AM_P(0);
     if (!build(&env)) return;
     am_state_reset(&g_m, &g_s);
-    const double m = SI(g_m.mass[0], MASS), g = (double)env.gravity;
+    const double m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS), g = (double)env.gravity;
     const double mus = (double)g_lat.palette.mat[0].mu_static, muk = (double)g_lat.palette.mat[0].mu_kinetic;
     const double dt = SI(g_s.dt, TIME);
     am_steps(&g_m, &g_s, qsteps(2000, 1000)); /* settle on the floor */
@@ -713,7 +713,7 @@ static void test_drop_settle(void)
     am_state_reset(&g_m, &g_s);
     double c0[3], c1[3], cprev[3];
     am_com(&g_m, &g_s, c0);
-    const double L = VOX_L, m = SI(g_m.mass[0], MASS), E = 1e5, g = (double)env.gravity;
+    const double L = VOX_L, m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS), E = 1e5, g = (double)env.gravity;
     NEAR(c0[2], n * L / 2 + 0.003, 1e-9);
     /* about 1.5 s: fall (25 ms) and ring down */
     long steps = qsteps((long)(1.5 / SI(g_s.dt, TIME)), (long)(0.8 / SI(g_s.dt, TIME)));
@@ -760,7 +760,7 @@ static double collide_min_distance(int collisions, long* steps_out)
         else if (cx >= 5 && nb < 8) b[nb++] = i;
     }
     CHECK(na == 8 && nb == 8, "cubes of %d and %d voxels", na, nb);
-    const double F = 0.2, m = SI(g_m.mass[0], MASS);
+    const double F = 0.2, m = SI(g_m.mass[AM_VC(&g_m, 0)], MASS);
     for (int i = 0; i < 8; i++) {
         g_s.fext[0][a[i]] = MU(F, FORCE);
         g_s.fext[0][b[i]] = MU(-F, FORCE);

@@ -87,7 +87,7 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3])
     double m = 0;
     com[0] = com[1] = com[2] = 0;
     for (int i = 0; i < mo->nv; i++) {
-        double w = am_to_si(mo->model, mo->model->mass[i], AM_DIM_MASS);
+        double w = am_to_si(mo->model, mo->model->mass[AM_VC(mo->model, i)], AM_DIM_MASS);
         for (int k = 0; k < 3; k++) com[k] += w * (double)f[7 * i + k];
         m += w;
     }

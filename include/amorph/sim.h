@@ -39,6 +39,26 @@ typedef struct am_env {
 
 am_env am_default_env(void);
 
+/* Index and constant layout. The desktop profile keeps every constant per voxel and per link and
+ * 32-bit indices, so that the step's loops read them contiguously and vectorise. The board profile
+ * (AM_COMPACT, make PROFILE=board) keeps them once per material and per pair of materials, which
+ * is what they depend on, and 16-bit indices: the same values, a fraction of the RAM. Read them
+ * through AM_VC (voxel constants) and AM_LC (link constants). */
+#if defined(AM_PROFILE_BOARD)
+#define AM_COMPACT 1
+typedef int16_t am_index;                 /* voxel, link and cell index */
+#define AM_VC_CAP AM_MAX_MATERIALS        /* entries of a per-voxel constant */
+#define AM_LC_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS) /* entries of a per-link constant */
+#define AM_VC(m, i) ((m)->mat[i])         /* the entry of voxel i */
+#define AM_LC(m, l) ((m)->lpair[l])       /* the entry of link l */
+#else
+typedef int32_t am_index;
+#define AM_VC_CAP AM_MAX_VOXELS
+#define AM_LC_CAP AM_MAX_LINKS
+#define AM_VC(m, i) (i)
+#define AM_LC(m, l) (l)
+#endif
+
 /* the immutable model. Shapes in the comments: nv = voxels, nl = links. Links are grouped by
  * axis: x-links are [0, axis_end[0]), y-links [axis_end[0], axis_end[1]), z-links the rest. */
 typedef struct am_model {
@@ -48,33 +68,34 @@ typedef struct am_model {
     am_env env;                  /* the environment the model was built for */
     am_palette palette;          /* copy of the lattice's palette */
     int nx, ny, nz;              /* lattice size */
-    int32_t cell_voxel[AM_MAX_CELLS];     /* voxel of each lattice cell, -1 if empty */
-    /* per voxel (nv) */
-    int32_t cell[AM_MAX_VOXELS];          /* lattice cell index */
+    am_index cell_voxel[AM_MAX_CELLS];    /* voxel of each lattice cell, -1 if empty */
+    /* per voxel (nv); the constants below per voxel through AM_VC */
+    am_index cell[AM_MAX_VOXELS];         /* lattice cell index */
     uint8_t mat[AM_MAX_VOXELS];           /* palette index (0-based) */
     uint8_t surface[AM_MAX_VOXELS];       /* 1 when fewer than 6 links */
     uint8_t fixed[AM_MAX_VOXELS];         /* 1 when clamped */
-    int32_t slot[6][AM_MAX_VOXELS];       /* link per direction +x,-x,+y,-y,+z,-z; nl (a zero link) if none */
-    int32_t nbr[6][AM_MAX_VOXELS];        /* neighbour voxel per direction, -1 if none */
+    am_index slot[6][AM_MAX_VOXELS];      /* link per direction +x,-x,+y,-y,+z,-z; nl (a zero link) if none */
+    am_index nbr[6][AM_MAX_VOXELS];       /* neighbour voxel per direction, -1 if none */
     am_real x0[3][AM_MAX_VOXELS];         /* initial centre, m */
-    am_real mass[AM_MAX_VOXELS];          /* kg */
-    am_real inv_mass[AM_MAX_VOXELS];      /* 1/kg, 0 for fixed voxels */
-    am_real inv_inertia[AM_MAX_VOXELS];   /* 1/(kg m^2), 0 for fixed voxels */
-    am_real c_glob_t[AM_MAX_VOXELS];      /* global damping, N s/m */
-    am_real c_glob_r[AM_MAX_VOXELS];      /* global damping, N m s */
-    am_real k_floor[AM_MAX_VOXELS];       /* floor/contact stiffness 2 E L, N/m */
-    am_real c_col[AM_MAX_VOXELS];         /* collision damping, N s/m */
-    am_real mu_s[AM_MAX_VOXELS], mu_k[AM_MAX_VOXELS]; /* floor friction */
-    /* per link (nl); index nl is the zero link that missing slots point at */
-    int32_t lneg[AM_MAX_LINKS], lpos[AM_MAX_LINKS]; /* voxel at the -axis / +axis end */
+    am_real mass[AM_VC_CAP];          /* kg */
+    am_real inv_mass[AM_VC_CAP];      /* 1/kg, 0 for fixed voxels */
+    am_real inv_inertia[AM_VC_CAP];   /* 1/(kg m^2), 0 for fixed voxels */
+    am_real c_glob_t[AM_VC_CAP];      /* global damping, N s/m */
+    am_real c_glob_r[AM_VC_CAP];      /* global damping, N m s */
+    am_real k_floor[AM_VC_CAP];       /* floor/contact stiffness 2 E L, N/m */
+    am_real c_col[AM_VC_CAP];         /* collision damping, N s/m */
+    am_real mu_s[AM_VC_CAP], mu_k[AM_VC_CAP]; /* floor friction */
+    /* per link (nl); index nl is the zero link that missing slots point at; the constants per link
+     * through AM_LC */
+    am_index lneg[AM_MAX_LINKS], lpos[AM_MAX_LINKS]; /* voxel at the -axis / +axis end */
     uint8_t lpair[AM_MAX_LINKS];   /* materials of the ends: mat_neg * AM_MAX_MATERIALS + mat_pos */
-    am_real k_ax[AM_MAX_LINKS];    /* E_link L^2, N (axial force = k_ax * strain) */
-    am_real a2[AM_MAX_LINKS];      /* torsion GJ/L, N m */
-    am_real b1[AM_MAX_LINKS];      /* shear 12EI/L^3, N/m */
-    am_real b2[AM_MAX_LINKS];      /* coupling 6EI/L^2, N */
-    am_real b3[AM_MAX_LINKS];      /* bending 2EI/L, N m */
-    am_real c_t[AM_MAX_LINKS];     /* internal translational damping, N s/m */
-    am_real c_r[AM_MAX_LINKS];     /* internal rotational damping, N m s */
+    am_real k_ax[AM_LC_CAP];    /* E_link L^2, N (axial force = k_ax * strain) */
+    am_real a2[AM_LC_CAP];      /* torsion GJ/L, N m */
+    am_real b1[AM_LC_CAP];      /* shear 12EI/L^3, N/m */
+    am_real b2[AM_LC_CAP];      /* coupling 6EI/L^2, N */
+    am_real b3[AM_LC_CAP];      /* bending 2EI/L, N m */
+    am_real c_t[AM_LC_CAP];     /* internal translational damping, N s/m */
+    am_real c_r[AM_LC_CAP];     /* internal rotational damping, N m s */
     /* per material: actuation */
     am_real mat_cte[AM_MAX_MATERIALS];
     am_real mat_phase[AM_MAX_MATERIALS];
@@ -155,10 +176,10 @@ typedef struct am_state {
     /* self-collision candidates */
     int npairs;                          /* -1 until the first build */
     int max_npairs;                      /* largest list so far */
-    int32_t pa[AM_MAX_PAIRS], pb[AM_MAX_PAIRS];
+    am_index pa[AM_MAX_PAIRS], pb[AM_MAX_PAIRS];
     am_real xref[3][AM_MAX_VOXELS];      /* positions at the last rebuild */
-    int32_t bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
-    int32_t bucket_next[AM_MAX_VOXELS];
+    am_index bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
+    am_index bucket_next[AM_MAX_VOXELS];
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
 #if defined(AM_REAL_FIXED_POINT)
     /* the rounding remainders of x, p and h (Q48 - Q24 parts, error diffusion): a step adds
