@@ -191,7 +191,7 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
-                     int32_t* restrict large, link_row* restrict fn, link_row* restrict mn, link_row* restrict mp,
+                     am_flag* restrict large, link_row* restrict fn, link_row* restrict mn, link_row* restrict mp,
                      am_real* restrict strain)
 {
     int bad = 0;
@@ -212,7 +212,7 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
         link_out o = link_element(&k, lg, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
                                   v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
-        large[l] = lg;
+        large[l] = (am_flag)lg;
         fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
         mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
         mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;

@@ -47,12 +47,14 @@ am_env am_default_env(void);
 #if defined(AM_PROFILE_BOARD)
 #define AM_COMPACT 1
 typedef int16_t am_index;                 /* voxel, link and cell index */
+typedef uint8_t am_flag;                  /* a per-link flag */
 #define AM_VC_CAP AM_MAX_MATERIALS        /* entries of a per-voxel constant */
 #define AM_LC_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS) /* entries of a per-link constant */
 #define AM_VC(m, i) ((m)->mat[i])         /* the entry of voxel i */
 #define AM_LC(m, l) ((m)->lpair[l])       /* the entry of link l */
 #else
 typedef int32_t am_index;
+typedef int32_t am_flag;                  /* as wide as the values beside it: the loops vectorise */
 #define AM_VC_CAP AM_MAX_VOXELS
 #define AM_LC_CAP AM_MAX_LINKS
 #define AM_VC(m, i) (i)
@@ -168,7 +170,7 @@ typedef struct am_state {
     am_real pair_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS];     /* current rest length, m */
     am_real pair_inv_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS]; /* its inverse, 1/m */
     /* per link (nl + 1; index nl stays zero) */
-    int32_t large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
+    am_flag large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
     am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
     am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
     am_real mp[3][AM_MAX_LINKS + 1];     /* moment on the positive voxel, world, N m */
