@@ -25,10 +25,6 @@
 
 #define CHECKPOINT_VERSION 1
 
-/* text goes through the genotypes' bounded sink (am_geno_put never writes past cap) */
-typedef am_geno_sink sink;
-#define put am_geno_put
-
 static unsigned long long dbits(double v)
 {
     uint64_t b;
@@ -43,46 +39,80 @@ static double bits_d(uint64_t b)
     return v;
 }
 
-static void put_ind(sink* s, const char* kind, int index, const am_evo_ind* it, char* err, int errsz, am_status* st)
+/* ---- writing ---- */
+
+/* the text goes through a small buffer of its own whose flush hashes every byte on its way to
+ * the caller's output, so the checksum needs no copy of the whole text */
+typedef struct ck_pass {
+    am_text* out;
+    uint64_t hash;            /* am_hash_bytes of every byte handed on */
+} ck_pass;
+
+static am_status ck_flush(void* ctx, const char* data, long n)
 {
-    put(s, "individual %s %d %016llx %d %d %d %ld %016llx\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
-        it->empty, it->steps, (unsigned long long)it->state_hash);
-    long room = s->cap - s->len, len = 0;
-    if (room <= 0) {
-        s->len += AM_GENOME_TEXT_MAX;
+    ck_pass* c = (ck_pass*)ctx;
+    c->hash = am_hash_bytes(c->hash, data, (unsigned long)n);
+    am_text_write(c->out, data, n);
+    return c->out->full ? AM_ERR_IO : AM_OK;
+}
+
+/* one individual line and its genome; a genome that fails its check is not written and its
+ * message kept in err (the first one counts) */
+static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* it, char* err, int errsz, am_status* st)
+{
+    am_text_put(s, "individual %s %d %016llx %d %d %d %ld %016llx\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
+                it->empty, it->steps, (unsigned long long)it->state_hash);
+    char msg[AM_ERR_MAX];
+    am_status c = am_genome_check(&it->genome, msg, sizeof msg);
+    if (c != AM_OK) {
+        if (*st == AM_OK) *st = am_fail(err, errsz, c, "%s", msg);
         return;
     }
-    am_status g = am_genome_format(&it->genome, s->buf + s->len, room, &len, err, errsz);
-    if (g != AM_OK && *st == AM_OK) *st = g;
-    s->len += len;
+    am_genome_write(&it->genome, s, NULL, 0); /* only the output can fail now: seen at the end */
+}
+
+am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz)
+{
+    char piece[320]; /* longer than any one piece the writers put */
+    ck_pass pass = {out, AM_HASH_INIT};
+    am_text s = {piece, sizeof piece, 0, 0, ck_flush, &pass, 0};
+    am_status st = AM_OK;
+    piece[0] = 0;
+    am_text_put(&s, "amorph-checkpoint %d\nconfig-begin\n", CHECKPOINT_VERSION);
+    am_evo_write(&e->def, 1, &s, NULL, 0);
+    am_text_put(&s, "config-end\nrng %016llx %016llx %016llx %016llx\n", (unsigned long long)e->rng.s[0],
+                (unsigned long long)e->rng.s[1], (unsigned long long)e->rng.s[2], (unsigned long long)e->rng.s[3]);
+    am_text_put(&s, "generation %ld\nevaluations %ld\nhistory %016llx\n", e->generation, e->evaluations,
+                (unsigned long long)e->history);
+    am_text_put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx\n", e->last.generation, e->last.evaluations,
+                dbits(e->last.best), dbits(e->last.mean), dbits(e->last.median), e->last.diverged, e->last.empty,
+                dbits(e->last.wall_s));
+    for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
+    if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
+    if (st != AM_OK) return st;
+    if (am_text_flush(&s) == AM_OK) am_text_put(out, "checksum %016llx\n", (unsigned long long)pass.hash);
+    if (out->full == 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint needs more than the %ld bytes given", out->cap);
+    if (out->full || s.full) return am_fail(err, errsz, AM_ERR_IO, "checkpoint: the output failed");
+    return AM_OK;
 }
 
 am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz)
 {
-    sink s = {buf, cap, 0};
-    am_status st = AM_OK;
-    long cfg = 0;
-    put(&s, "amorph-checkpoint %d\nconfig-begin\n", CHECKPOINT_VERSION);
-    if (s.len < s.cap) {
-        st = am_evo_format(&e->def, 1, s.buf + s.len, s.cap - s.len, &cfg, err, errsz);
-        s.len += cfg;
+    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint: no buffer");
+    buf[0] = 0;
+    am_status st = am_evo_checkpoint_write(e, &t, err, errsz);
+    if (len) *len = t.len;
+    if (st == AM_ERR_CAPACITY && t.full) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[64];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_evo_checkpoint_write(e, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "checkpoint needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
     }
-    put(&s, "config-end\nrng %016llx %016llx %016llx %016llx\n", (unsigned long long)e->rng.s[0], (unsigned long long)e->rng.s[1],
-        (unsigned long long)e->rng.s[2], (unsigned long long)e->rng.s[3]);
-    put(&s, "generation %ld\nevaluations %ld\nhistory %016llx\n", e->generation, e->evaluations, (unsigned long long)e->history);
-    put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx\n", e->last.generation, e->last.evaluations, dbits(e->last.best),
-        dbits(e->last.mean), dbits(e->last.median), e->last.diverged, e->last.empty, dbits(e->last.wall_s));
-    for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
-    if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
-    if (st == AM_OK && s.len < s.cap) {
-        uint64_t h = am_hash_bytes(AM_HASH_INIT, buf, (unsigned long)s.len);
-        put(&s, "checksum %016llx\n", (unsigned long long)h);
-    }
-    if (len) *len = s.len;
-    if (st != AM_OK) return st;
-    if (s.len >= s.cap)
-        return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint needs %ld bytes, the buffer holds %ld", s.len + 1, s.cap);
-    return AM_OK;
+    return st;
 }
 
 /* ---- reading ---- */

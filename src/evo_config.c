@@ -323,20 +323,37 @@ static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap
     }
 }
 
-am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz)
 {
-    am_geno_sink out = {buf, cap, 0}; /* bounded text sink of the genotypes */
     char v[64];
-    am_geno_put(&out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
+    am_text_put(out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
     for (int i = 0; i < KEY_COUNT; i++) {
         if (keys[i].runtime && !with_runtime) continue;
         value_text(d, &keys[i], v, sizeof v);
-        am_geno_put(&out, "%s = %s\n", keys[i].name, v);
+        am_text_put(out, "%s = %s\n", keys[i].name, v);
     }
-    long n = out.len;
-    if (len) *len = n;
-    if (n >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs %ld bytes, the buffer holds %ld", n + 1, cap);
+    if (out->full == 2) return am_fail(err, errsz, AM_ERR_IO, "configuration text: the output failed");
+    if (out->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs more than the %ld bytes given", out->cap);
     return AM_OK;
+}
+
+am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
+{
+    am_text out = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text: no buffer");
+    buf[0] = 0;
+    am_status st = am_evo_write(d, with_runtime, &out, err, errsz);
+    if (len) *len = out.len;
+    if (st == AM_ERR_CAPACITY) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[128];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_evo_write(d, with_runtime, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "configuration text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
+    }
+    return st;
 }
 
 void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)

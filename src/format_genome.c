@@ -35,23 +35,40 @@ int am_genome_sniff(const char* text)
     return strncmp(text, GENOME_MAGIC, n) == 0 && (is_space(text[n]) || text[n] == '\n' || text[n] == '\0');
 }
 
-am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz)
 {
     am_status st = am_genome_check(g, err, errsz);
     if (st != AM_OK) return st;
-    am_geno_sink s = {buf, cap, 0};
-    if (cap > 0) buf[0] = '\0';
-    am_geno_put(&s, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
-    am_geno_put(&s, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
-    am_geno_put(&s, "repr %s\n", am_repr_name(g->repr));
-    am_geno_put(&s, "materials");
-    for (int m = 0; m < g->materials; m++) am_geno_put(&s, " %s", g->mat[m]);
-    am_geno_put(&s, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
-    am_geno_ops_of(g->repr)->format(g, &s);
-    am_geno_put(&s, "end\n");
-    if (len) *len = s.len;
-    if (s.len >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text needs %ld bytes, the buffer holds %ld", s.len + 1, cap);
+    am_text_put(out, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
+    am_text_put(out, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
+    am_text_put(out, "repr %s\n", am_repr_name(g->repr));
+    am_text_put(out, "materials");
+    for (int m = 0; m < g->materials; m++) am_text_put(out, " %s", g->mat[m]);
+    am_text_put(out, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
+    am_geno_ops_of(g->repr)->format(g, out);
+    am_text_put(out, "end\n");
+    if (out->full == 2) return am_fail(err, errsz, AM_ERR_IO, "genome text: the output failed");
+    if (out->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text needs more than the %ld bytes given", out->cap);
     return AM_OK;
+}
+
+am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
+{
+    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text: no buffer");
+    buf[0] = '\0';
+    am_status st = am_genome_write(g, &t, err, errsz);
+    if (len) *len = t.len;
+    if (st == AM_ERR_CAPACITY) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[320];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_genome_write(g, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "genome text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
+    }
+    return st;
 }
 
 static int valid_name(const char* s)

@@ -433,7 +433,6 @@ am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname,
 /* ---- the writer -------------------------------------------------------------------------- */
 
 /* the bounded text buffer of amorph/text.h */
-typedef am_text wbuf;
 #define put am_text_put
 
 #if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
@@ -463,11 +462,9 @@ static void fmt_real(char out[40], am_param v)
     snprintf(out, 40, "%.*g", digits, (double)v);
 }
 
-am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz)
 {
-    if (len) *len = 0;
-    if (!lat || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no buffer");
-    buf[0] = 0;
+    if (!lat || !out) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no output");
     /* the same rules as the parser, so what is written reads back */
     if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_ARG, "lattice format: size %d %d %d outside 1..%d", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
@@ -497,41 +494,50 @@ am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* le
             return am_fail(err, errsz, AM_ERR_ARG, "lattice format: cell %d holds material id %d, the palette has %d", i, lat->cell[i],
                            pal->count);
 
-    wbuf w = {buf, cap, 0, 0};
-    put(&w, LAT_MAGIC " %d\n", LAT_VERSION);
-    put(&w, "# rows: y = 0..%d top to bottom; characters: x = 0..%d left to right; layers: z = 0 (floor) up\n", lat->ny - 1,
+    am_text* w = out;
+    put(w, LAT_MAGIC " %d\n", LAT_VERSION);
+    put(w, "# rows: y = 0..%d top to bottom; characters: x = 0..%d left to right; layers: z = 0 (floor) up\n", lat->ny - 1,
         lat->nx - 1);
-    put(&w, "# cells: '.' empty, 1-9 and a-g material ids (order of the material lines, from 1)\n");
-    put(&w, "size %d %d %d\n", lat->nx, lat->ny, lat->nz);
+    put(w, "# cells: '.' empty, 1-9 and a-g material ids (order of the material lines, from 1)\n");
+    put(w, "size %d %d %d\n", lat->nx, lat->ny, lat->nz);
     char num[40];
     fmt_real(num, lat->voxel_size);
-    put(&w, "voxel_size %s\n", num);
+    put(w, "voxel_size %s\n", num);
     for (int i = 0; i < pal->count; i++) {
         const am_material* m = &pal->mat[i];
-        put(&w, "material %s", m->name);
+        put(w, "material %s", m->name);
         for (int k = 0; k < K_COLOR; k++) {
             fmt_real(num, get_real(m, k));
-            put(&w, " %s=%s", key_names[k], num);
+            put(w, " %s=%s", key_names[k], num);
         }
-        put(&w, " color=#%02x%02x%02x", m->color[0], m->color[1], m->color[2]);
-        if (m->color[3] != 255) put(&w, "%02x", m->color[3]);
-        put(&w, " fixed=%d\n", m->fixed);
+        put(w, " color=#%02x%02x%02x", m->color[0], m->color[1], m->color[2]);
+        if (m->color[3] != 255) put(w, "%02x", m->color[3]);
+        put(w, " fixed=%d\n", m->fixed);
     }
-    for (int z = 0; z < lat->nz && !w.full; z++) {
-        put(&w, "layer %d\n", z);
-        for (int y = 0; y < lat->ny && !w.full; y++) {
-            if (w.cap - w.len < lat->nx + 2) {
-                w.full = 1;
-                break;
-            }
-            for (int x = 0; x < lat->nx; x++) w.buf[w.len++] = cell_chars[lat->cell[am_lattice_index(lat, x, y, z)]];
-            w.buf[w.len++] = '\n';
-            w.buf[w.len] = 0;
+    char row[AM_MAX_DIM + 1];
+    for (int z = 0; z < lat->nz && !w->full; z++) {
+        put(w, "layer %d\n", z);
+        for (int y = 0; y < lat->ny && !w->full; y++) {
+            for (int x = 0; x < lat->nx; x++) row[x] = cell_chars[lat->cell[am_lattice_index(lat, x, y, z)]];
+            row[lat->nx] = '\n';
+            am_text_write(w, row, lat->nx + 1);
         }
     }
-    if (w.full) {
+    if (w->full == 2) return am_fail(err, errsz, AM_ERR_IO, "lattice format: the output failed");
+    if (w->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice format: the text needs more than the %ld bytes given", w->cap);
+    return AM_OK;
+}
+
+am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz)
+{
+    if (len) *len = 0;
+    if (!lat || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no buffer");
+    buf[0] = 0;
+    am_text w = {buf, cap, 0, 0, NULL, NULL, 0};
+    am_status st = am_lattice_write(lat, &w, err, errsz);
+    if (st != AM_OK) {
         buf[0] = 0;
-        return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice format: the text needs more than the %ld bytes given", cap);
+        return st;
     }
     if (len) *len = w.len;
     return AM_OK;

@@ -389,44 +389,44 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
 
 /* ---- text ---- */
 
-static void put_conn(am_geno_sink* s, uint8_t on, am_real w)
+static void put_conn(am_text* s, uint8_t on, am_real w)
 {
-    am_geno_put(s, " %d", on);
+    am_text_put(s, " %d", on);
     am_geno_put_real(s, w);
 }
 
-static void cppn_format(const am_genome* g, am_geno_sink* s)
+static void cppn_format(const am_genome* g, am_text* s)
 {
     const am_cppn_genome* c = &g->cppn;
-    am_geno_put(s, "cppn %d %d\n", c->layers, c->nodes);
-    am_geno_put(s, "# node LAYER J FUNCTION OFFSET XSCALE YSCALE\n");
+    am_text_put(s, "cppn %d %d\n", c->layers, c->nodes);
+    am_text_put(s, "# node LAYER J FUNCTION OFFSET XSCALE YSCALE\n");
     for (int l = 0; l < c->layers; l++)
         for (int j = 0; j < c->nodes; j++) {
             const am_cppn_node* nd = &c->node[l][j];
-            am_geno_put(s, "node %d %d %s", l, j, fn_names[nd->fn < AM_FN_COUNT ? nd->fn : 0]);
+            am_text_put(s, "node %d %d %s", l, j, fn_names[nd->fn < AM_FN_COUNT ? nd->fn : 0]);
             am_geno_put_real(s, nd->offset);
             am_geno_put_real(s, nd->xscale);
             am_geno_put_real(s, nd->yscale);
-            am_geno_put(s, "\n");
+            am_text_put(s, "\n");
         }
-    am_geno_put(s, "# in J: ACTIVE WEIGHT pairs from x, y, z, bias into node 0 J\n"
+    am_text_put(s, "# in J: ACTIVE WEIGHT pairs from x, y, z, bias into node 0 J\n"
                    "# link LAYER J: ACTIVE WEIGHT pairs from each node of LAYER-1 into node LAYER J\n"
                    "# out MATERIAL: ACTIVE WEIGHT pairs from each node of the last layer\n");
     for (int j = 0; j < c->nodes; j++) {
-        am_geno_put(s, "in %d", j);
+        am_text_put(s, "in %d", j);
         for (int i = 0; i < 4; i++) put_conn(s, c->on_in[j][i], c->w_in[j][i]);
-        am_geno_put(s, "\n");
+        am_text_put(s, "\n");
     }
     for (int l = 0; l + 1 < c->layers; l++)
         for (int j = 0; j < c->nodes; j++) {
-            am_geno_put(s, "link %d %d", l + 1, j);
+            am_text_put(s, "link %d %d", l + 1, j);
             for (int i = 0; i < c->nodes; i++) put_conn(s, c->on[l][j][i], c->w[l][j][i]);
-            am_geno_put(s, "\n");
+            am_text_put(s, "\n");
         }
     for (int m = 0; m < g->materials; m++) {
-        am_geno_put(s, "out %d", m);
+        am_text_put(s, "out %d", m);
         for (int j = 0; j < c->nodes; j++) put_conn(s, c->on_out[m][j], c->w_out[m][j]);
-        am_geno_put(s, "\n");
+        am_text_put(s, "\n");
     }
 }
 

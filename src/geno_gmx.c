@@ -247,19 +247,19 @@ static void gmx_express(const am_genome* g, am_geno_work* w)
     }
 }
 
-static void gmx_format(const am_genome* g, am_geno_sink* s)
+static void gmx_format(const am_genome* g, am_text* s)
 {
-    am_geno_put(s, "gmx %d\n", g->gmx.count);
-    am_geno_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
+    am_text_put(s, "gmx %d\n", g->gmx.count);
+    am_text_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
     for (int i = 0; i < g->gmx.count; i++) {
         const am_gmx_point* p = &g->gmx.pt[i];
-        am_geno_put(s, "point");
+        am_text_put(s, "point");
         am_geno_put_real(s, p->x);
         am_geno_put_real(s, p->y);
         am_geno_put_real(s, p->z);
         am_geno_put_real(s, p->weight);
         am_geno_put_real(s, p->radius);
-        am_geno_put(s, " %d\n", p->mat);
+        am_text_put(s, " %d\n", p->mat);
     }
 }
 

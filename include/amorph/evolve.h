@@ -22,6 +22,7 @@
 #include "amorph/rng.h"
 #include "amorph/sim.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 /* ---- configuration ---- */
 
@@ -61,6 +62,8 @@ void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
 /* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
  * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
 am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h) */
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
 /* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
 am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
 /* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
@@ -145,6 +148,9 @@ uint64_t am_evo_hash(const am_evo* e);
 
 /* the run as text (config, stream, counters, population, best), ending with a checksum line */
 am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h): the checksum is
+ * computed on the way, so a stream needs no copy of the whole text */
+am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz);
 /* reads a checkpoint (checksum first: a damaged file is refused); messages "fname:line: problem".
  * text is used as scratch (its spaces and newlines may be overwritten) */
 am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);

@@ -23,6 +23,7 @@
 #include "amorph/real.h"
 #include "amorph/rng.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 /* ---- representations ---- */
 
@@ -220,6 +221,9 @@ int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, 
 
 /* 1 when text is a genome (its first word is "amorph-genome") */
 int am_genome_sniff(const char* text);
+/* writes g as text to out, a whole-text buffer or a stream (amorph/text.h); AM_ERR_CAPACITY or
+ * AM_ERR_IO (with a message) when out dropped text */
+am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz);
 /* writes g as text into buf (capacity cap, NUL-terminated); *len gets the length. AM_ERR_CAPACITY
  * if it does not fit (AM_GENOME_TEXT_MAX always does) */
 am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz);
@@ -228,20 +232,8 @@ am_status am_genome_parse(am_genome* g, const char* text, const char* fname, cha
 
 /* ---- for representation implementers ---- */
 
-/* a growing text buffer that never writes past cap */
-typedef struct am_geno_sink {
-    char* buf;     /* output, NUL-terminated while it fits */
-    long cap;      /* capacity of buf */
-    long len;      /* characters written (or wanted) */
-} am_geno_sink;
-/* appends printf-style text */
-void am_geno_put(am_geno_sink* s, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
 /* appends " " and a real that reads back bit for bit (%.9g for float, %.17g for double) */
-void am_geno_put_real(am_geno_sink* s, am_real v);
+void am_geno_put_real(am_text* s, am_real v);
 
 /* lines a representation may require to appear once each (the largest over all of them) */
 #define AM_GENO_SEEN_MAX (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K \
@@ -277,7 +269,7 @@ typedef struct am_geno_ops {
     /* 1 when every value is the same, bit for bit */
     int (*equal)(const am_genome* a, const am_genome* b);
     void (*express)(const am_genome* g, am_geno_work* w); /* fills w->dens (materials x cells) */
-    void (*format)(const am_genome* g, am_geno_sink* s);  /* the body lines, shape line first */
+    void (*format)(const am_genome* g, am_text* s);  /* the body lines, shape line first (am_text_put) */
     /* one line after the header, split into ntok fields; the message without "file:line: " */
     am_status (*parse_line)(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz);
     am_status (*parse_end)(am_genome* g, am_geno_parse* ps, char* err, int errsz); /* at "end" */

@@ -11,6 +11,7 @@
 #include "amorph/config.h"
 #include "amorph/real.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 typedef struct am_material {
     char name[AM_NAME_MAX];  /* identifier: letters, digits, '_' and '-' */
@@ -71,6 +72,9 @@ am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname,
 /* write lat in the lattice text format into buf (capacity cap, NUL-terminated); *len gets the
  * length. AM_ERR_CAPACITY if it does not fit. */
 am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h); AM_ERR_CAPACITY
+ * or AM_ERR_IO when out dropped text */
+am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz);
 /* the largest text am_lattice_format can produce for any lattice of this profile */
 #define AM_LATTICE_TEXT_MAX (AM_MAX_MATERIALS * 400L + AM_MAX_CELLS * 3L + 8192L)
 
