@@ -388,33 +388,41 @@ static char* trim(char* s)
     return s;
 }
 
-am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz)
 {
     char line[512];
     char msg[AM_ERR_MAX];
+    if (n >= (long)sizeof line)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: line longer than %d characters", fname, lineno, (int)sizeof line - 1);
+    memcpy(line, text, (size_t)n);
+    line[n] = 0;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* s = trim(line);
+    if (!*s) return AM_OK;
+    char* eq = strchr(s, '=');
+    if (!eq) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno, s);
+    *eq = 0;
+    char* key = trim(s);
+    char* value = trim(eq + 1);
+    if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
+    if (!*value) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno, key);
+    am_status st = am_evo_set(d, key, value, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
+    return AM_OK;
+}
+
+am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)
+{
     int lineno = 0;
     const char* p = text;
     while (*p) {
         lineno++;
         const char* nl = strchr(p, '\n');
-        size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        if (len >= sizeof line) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: line longer than %d characters", fname, lineno, (int)sizeof line - 1);
-        memcpy(line, p, len);
-        line[len] = 0;
+        long len = nl ? (long)(nl - p) : (long)strlen(p);
+        am_status st = am_evo_parse_line(d, p, len, fname, lineno, err, errsz);
+        if (st != AM_OK) return st;
         p = nl ? nl + 1 : p + len;
-        char* hash = strchr(line, '#');
-        if (hash) *hash = 0;
-        char* s = trim(line);
-        if (!*s) continue;
-        char* eq = strchr(s, '=');
-        if (!eq) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno, s);
-        *eq = 0;
-        char* key = trim(s);
-        char* value = trim(eq + 1);
-        if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
-        if (!*value) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno, key);
-        am_status st = am_evo_set(d, key, value, msg, sizeof msg);
-        if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
     }
     return AM_OK;
 }

@@ -66,6 +66,9 @@ am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long c
 am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
 /* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
 am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
+/* one line of that text (n characters without the newline; line number lineno for messages), for
+ * text that is not held whole; am_evo_parse is this over every line */
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz);
 /* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
  * else 0 and the first differing key's name in key (capacity keysz) */
 int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
@@ -152,8 +155,51 @@ am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* l
  * computed on the way, so a stream needs no copy of the whole text */
 am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz);
 /* reads a checkpoint (checksum first: a damaged file is refused); messages "fname:line: problem".
- * text is used as scratch (its spaces and newlines may be overwritten) */
+ * text is used as scratch (its spaces and newlines may be overwritten). It is the two passes
+ * below over a whole text. */
 am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);
+
+/* A checkpoint that is not held whole (a file streamed through a small buffer) is read in two
+ * passes: the scan takes its bytes in pieces of any size and checks the checksum; the reader then
+ * takes its lines one at a time. Same results and messages as am_evo_checkpoint_parse. */
+typedef struct am_evo_ckpt_scan {
+    long bytes;                 /* bytes seen */
+    int lines;                  /* newlines seen */
+    uint64_t hash;              /* hash of every byte seen */
+    uint64_t line_hash;         /* hash of the bytes before the current line */
+    uint64_t prev_hash;         /* hash of the bytes before the last whole line */
+    char cur[32], prev[32];     /* the first bytes of the current and of the last whole line */
+    long cur_len, prev_len;     /* their lengths */
+    int config_end;             /* line of the first "config-end" after the first configuration line, 0 if none */
+    int last_end;               /* line of the last "end" line, 0 if none */
+    int checksum_line;          /* set by am_evo_checkpoint_scan_end: the last line, the checksum */
+} am_evo_ckpt_scan;
+void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc);
+void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
+/* after the last byte: AM_OK when the last line is a checksum that matches the text before it */
+am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
+
+/* pass 2, after a successful scan: begin (clears e), every line in order, end */
+typedef struct am_evo_ckpt_reader {
+    am_evo* e;
+    const char* fname;          /* for messages; must stay valid while reading */
+    int line;                   /* lines read */
+    int until, config_end, last_end; /* from the scan */
+    am_status st;               /* the first failure: every later call returns it */
+    int seen_rng, seen_gen, seen_evals, seen_hist, seen_last, pop_seen;
+    int in_genome;              /* 1 while the lines of an individual's genome are read */
+    am_evo_ind* ind;            /* that individual */
+    int ind_pop;                /* 1 for a member of the population, 0 for the best */
+    long idx;                   /* its index */
+    int first;                  /* the first line of its genome */
+    char where[96];             /* "fname (genome from line N)", the genome's file name in messages */
+    am_genome_reader gr;
+} am_evo_ckpt_reader;
+void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
+/* one line of n characters, NUL-terminated at n (used as scratch: its spaces may be overwritten);
+ * lines from the checksum line on are ignored */
+am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz);
+am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz);
 /* the largest checkpoint text of a population of n */
 #define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L))
 

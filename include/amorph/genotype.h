@@ -275,6 +275,24 @@ typedef struct am_geno_ops {
     am_status (*parse_end)(am_genome* g, am_geno_parse* ps, char* err, int errsz); /* at "end" */
 } am_geno_ops;
 
+/* a genome read line by line, for text that is not held whole (a file streamed through a small
+ * buffer): begin, one call per line, end. am_genome_parse is these calls over a whole text and
+ * gives the same genome and messages. */
+typedef struct am_genome_reader {
+    am_genome* g;                  /* the genome being read */
+    const char* fname;             /* for messages; must stay valid while reading */
+    int state;                     /* the header line expected next, or the body */
+    int lineno;                    /* lines read */
+    am_status st;                  /* the first failure: every later call returns it */
+    am_geno_parse ps;
+    const am_geno_ops* ops;        /* the representation's, once its line was read */
+} am_genome_reader;
+void am_genome_read_begin(am_genome_reader* r, am_genome* g, const char* fname);
+/* one line of n characters without its newline (text[n] is '\n' or NUL); messages "fname:line: problem" */
+am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, char* err, int errsz);
+/* after the last line: AM_OK when the genome ended with its 'end' line */
+am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz);
+
 extern const am_geno_ops am_geno_dct_ops;   /* src/geno_dct.c */
 extern const am_geno_ops am_geno_cppn_ops;  /* src/geno_cppn.c */
 extern const am_geno_ops am_geno_gmx_ops;   /* src/geno_gmx.c */
