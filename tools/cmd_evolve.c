@@ -811,10 +811,8 @@ int tool_bench_evolve(long evaluations)
         long steps = 0, voxel_steps = 0;
         while (!am_evo_done(&tool_evo)) {
             if (am_evo_generation(&tool_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-            for (int i = 0; i < d.population; i++) {
-                steps += tool_evo.child[i].steps;
-                voxel_steps += tool_evo.child[i].steps * tool_evo.child[i].voxels;
-            }
+            steps += tool_evo.last_steps;
+            voxel_steps += tool_evo.last_voxel_steps;
         }
         double el = am_port_now() - t0;
         rate[t - 1] = (double)tool_evo.evaluations / el * 3600.0;

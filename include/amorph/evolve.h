@@ -98,7 +98,11 @@ typedef struct am_evo_stats {
     double wall_s;            /* wall time of this generation, s */
 } am_evo_stats;
 
-/* a run: population, offspring, the random stream and counters. Large: declare it static. */
+/* a run: population, offspring, the random stream and counters. Large: declare it static.
+ * Offspring are made, evaluated and placed AM_EVO_BATCH at a time: a whole generation on the
+ * desktop (one parallel map), one pair at a time on a one-worker board. The pairs of a generation
+ * are disjoint and nothing but making offspring draws from the stream, so the run is the same
+ * for any batch size. */
 typedef struct am_evo {
     am_evo_def def;
     am_palette palette;                       /* am_evo_palette(&def) */
@@ -106,13 +110,15 @@ typedef struct am_evo {
     long generation;                          /* generations completed (0 before the first) */
     long evaluations;                         /* evaluations completed */
     am_evo_ind pop[AM_MAX_POPULATION];        /* the population (def.population members) */
-    am_evo_ind child[AM_MAX_POPULATION];      /* offspring of the current generation */
+    am_evo_ind child[AM_EVO_BATCH];           /* offspring of the current batch */
     am_evo_ind best;                          /* best individual ever evaluated */
     int has_best;                             /* 1 once best is set */
     uint64_t history;                         /* hash over every genome and fitness evaluated */
     am_evo_stats last;                        /* statistics of the last generation */
-    int order[AM_MAX_POPULATION];             /* scratch: evaluation order (largest body first) */
-    uint8_t body[4][AM_MAX_CELLS];            /* scratch: the four bodies of one crowding pair */
+    long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
+    long last_voxel_steps;                    /* the same, each step times the body's voxels */
+    int order[AM_EVO_BATCH];                  /* scratch: evaluation order (largest body first) */
+    uint8_t body[2][AM_MAX_CELLS];            /* scratch: the two parents' bodies of one crowding pair */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */
@@ -132,9 +138,10 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
 int am_evo_done(const am_evo* e);
 /* one generation: generation 0 evaluates the initial population; later ones make offspring,
  * evaluate them on up to `workers` workspaces w[0..workers-1] through am_port_parallel_map and
- * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations, no further
- * evaluation starts, the generation is abandoned and e is left as it was before the call
- * (AM_ERR_ARG, "interrupted").
+ * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations of the first
+ * batch (every evaluation of the generation when AM_EVO_BATCH >= population, as on the desktop),
+ * no further evaluation starts, the generation is abandoned and e is left as it was before the
+ * call (AM_ERR_ARG, "interrupted"); once a batch has been placed the generation runs to its end.
  * Fills e->last. */
 am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz);
 /* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec may be NULL */
