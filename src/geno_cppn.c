@@ -335,9 +335,9 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
     for (int c0 = 0; c0 < cells; c0 += AM_CPPN_CHUNK) {
         const int cnt = cells - c0 < AM_CPPN_CHUNK ? cells - c0 : AM_CPPN_CHUNK;
         for (int i = 0; i < cnt; i++) {
-            w->coord[0][i] = axis[0][x];
-            w->coord[1][i] = axis[1][y];
-            w->coord[2][i] = axis[2][z];
+            w->scratch.cppn.coord[0][i] = axis[0][x];
+            w->scratch.cppn.coord[1][i] = axis[1][y];
+            w->scratch.cppn.coord[2][i] = axis[2][z];
             if (++x == nx) {
                 x = 0;
                 if (++y == ny) {
@@ -347,8 +347,8 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
             }
         }
         for (int l = 0; l < L; l++) {
-            am_real(*in)[AM_CPPN_CHUNK] = w->act[(l + 1) & 1];
-            am_real(*out)[AM_CPPN_CHUNK] = w->act[l & 1];
+            am_real(*in)[AM_CPPN_CHUNK] = w->scratch.cppn.act[(l + 1) & 1];
+            am_real(*out)[AM_CPPN_CHUNK] = w->scratch.cppn.act[l & 1];
             for (int j = 0; j < n; j++) {
                 am_real* acc = out[j];
                 for (int i = 0; i < cnt; i++) acc[i] = AM_R(0);
@@ -356,7 +356,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
                     for (int s = 0; s < 3; s++)
                         if (c->on_in[j][s]) {
                             const am_real wv = c->w_in[j][s];
-                            const am_real* src = w->coord[s];
+                            const am_real* src = w->scratch.cppn.coord[s];
                             for (int i = 0; i < cnt; i++) acc[i] += AM_MUL(wv, src[i]);
                         }
                     if (c->on_in[j][3]) {
@@ -374,7 +374,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
                 apply(w, &c->node[l][j], eff[l][j], acc, cnt);
             }
         }
-        am_real(*last)[AM_CPPN_CHUNK] = w->act[(L - 1) & 1];
+        am_real(*last)[AM_CPPN_CHUNK] = w->scratch.cppn.act[(L - 1) & 1];
         for (int m = 0; m < g->materials; m++) {
             am_real* d = w->dens[m] + c0;
             for (int i = 0; i < cnt; i++) d[i] = AM_R(0);

@@ -88,7 +88,7 @@ static void dct_express(const am_genome* g, am_geno_work* w)
     const int k[3] = {g->dct.k, g->dct.k, g->dct.k};
     const int n[3] = {g->nx, g->ny, g->nz};
     am_dct_plan(&w->dct, k, n, NULL, 0); /* k and n were checked with the genome */
-    for (int m = 0; m < g->materials; m++) am_dct_inverse(&w->dct, g->dct.amp[m], w->dens[m]);
+    for (int m = 0; m < g->materials; m++) am_dct_inverse(&w->dct, &w->scratch.dct, g->dct.amp[m], w->dens[m]);
 }
 
 static void dct_format(const am_genome* g, am_text* s)

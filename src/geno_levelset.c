@@ -106,7 +106,7 @@ int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real 
             w->cell[c] = (uint8_t)(sum > threshold ? best + 1 : 0);
         }
     }
-    w->voxels = am_keep_largest_piece(w->cell, nx, ny, nz, w->mark, w->queue);
+    w->voxels = am_keep_largest_piece(w->cell, nx, ny, nz, w->scratch.piece.mark, w->scratch.piece.queue);
     if (ratio) {
         for (int c = 0; c < cells; c++) {
             am_real pos = AM_R(0);

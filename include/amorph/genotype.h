@@ -152,16 +152,27 @@ typedef struct am_geno_work {
     int voxels;                      /* filled cells of cell[] */
     int nx, ny, nz;                  /* shape of dens and cell */
     uint8_t other[AM_MAX_CELLS];     /* (cells) second body of am_genome_distance */
-    uint8_t mark[AM_MAX_CELLS];      /* (cells) flood-fill marks */
-    int32_t queue[AM_MAX_CELLS];     /* (cells) flood-fill queue */
-    am_dct_work dct;                 /* DCT tables and scratch */
+    am_dct_work dct;                 /* DCT basis tables (cached) */
     int tables;                      /* 1 once the lookup tables below are filled */
     am_real tab_sin[AM_GENO_TABLE + 1];   /* sin(2 pi i / T), T = AM_GENO_TABLE */
     am_real tab_gauss[AM_GENO_TABLE + 1]; /* e^(-q) at q = AM_GENO_GAUSS_RANGE i / T */
     am_real tab_sig[AM_GENO_TABLE + 1];   /* 2 / (1 + e^-t) - 1 at t = AM_GENO_SIG_RANGE (2 i / T - 1) */
-    am_real coord[3][AM_CPPN_CHUNK];      /* CPPN inputs of one chunk of cells */
-    am_real act[2][AM_MAX_CPPN_NODES][AM_CPPN_CHUNK]; /* CPPN node values of one chunk (two layers) */
-    am_real fx[AM_MAX_DIM], fy[AM_MAX_DIM], fz[AM_MAX_DIM]; /* GMX separable falloff factors */
+    /* scratch of one step of an expression: the representation's fields, then the level set. No
+     * member outlives the step that uses it, so they share memory */
+    union {
+        am_dct_scratch dct;                   /* DCT: the passes of the inverse transform */
+        struct {
+            am_real coord[3][AM_CPPN_CHUNK];  /* CPPN inputs of one chunk of cells */
+            am_real act[2][AM_MAX_CPPN_NODES][AM_CPPN_CHUNK]; /* CPPN node values of one chunk (two layers) */
+        } cppn;
+        struct {
+            am_real fx[AM_MAX_DIM], fy[AM_MAX_DIM], fz[AM_MAX_DIM]; /* GMX separable falloff factors */
+        } gmx;
+        struct {
+            uint8_t mark[AM_MAX_CELLS];       /* (cells) flood-fill marks */
+            int32_t queue[AM_MAX_CELLS];      /* (cells) flood-fill queue */
+        } piece;                              /* the level set's largest piece */
+    } scratch;
 } am_geno_work;
 
 /* ---- operations ---- */
