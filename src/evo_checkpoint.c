@@ -321,7 +321,7 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     if (r->line == r->config_end) {
         am_status st = am_evo_check(&e->def, err, errsz);
         if (st != AM_OK) return r->st = st;
-        e->palette = am_evo_palette(&e->def);
+        am_evo_palette_into(&e->def, &e->palette);
         return AM_OK;
     }
     int ntok = split(text, tok, 12);

@@ -32,14 +32,20 @@ am_evo_def am_default_evo(void)
 
 am_palette am_evo_palette(const am_evo_def* d)
 {
-    am_palette p = am_default_palette();
-    for (int i = 0; i < p.count; i++) {
-        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
-        if (p.mat[i].cte != AM_P(0)) p.mat[i].cte = d->cte;
-        p.mat[i].mu_static = d->mu_static;
-        p.mat[i].mu_kinetic = d->mu_kinetic;
-    }
+    am_palette p;
+    am_evo_palette_into(d, &p);
     return p;
+}
+
+void am_evo_palette_into(const am_evo_def* d, am_palette* p)
+{
+    am_default_palette_into(p);
+    for (int i = 0; i < p->count; i++) {
+        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
+        if (p->mat[i].cte != AM_P(0)) p->mat[i].cte = d->cte;
+        p->mat[i].mu_static = d->mu_static;
+        p->mat[i].mu_kinetic = d->mu_kinetic;
+    }
 }
 
 /* ---- the key table ---- */

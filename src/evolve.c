@@ -28,7 +28,7 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
                      am_record* rec, am_evo_ind* out)
 {
     char err[AM_ERR_MAX];
-    out->genome = *g;
+    if (&out->genome != g) out->genome = *g;
     out->fitness = 0.0;
     out->voxels = 0;
     out->diverged = 0;
@@ -65,7 +65,7 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
     if (st != AM_OK) return st;
     memset(e, 0, sizeof *e);
     e->def = *d;
-    e->palette = am_evo_palette(d);
+    am_evo_palette_into(d, &e->palette);
     am_rng_seed(&e->rng, d->seed);
     for (int i = 0; i < d->population; i++) {
         st = am_genome_init(&e->pop[i].genome, &d->geno, &e->rng, err, errsz);
@@ -110,8 +110,7 @@ static void eval_task(void* ctx, int item, int worker)
         return;
     }
     am_evo_ind* it = &job->items[idx];
-    am_genome g = it->genome;
-    am_evo_evaluate(&job->e->def, &job->e->palette, &g, &job->work[worker], NULL, it);
+    am_evo_evaluate(&job->e->def, &job->e->palette, &it->genome, &job->work[worker], NULL, it);
 }
 
 /* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
@@ -168,15 +167,16 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
     am_evo_ind* c1 = &e->child[c];
     am_evo_ind* c2 = &e->child[c + 1];
     const int cells = p1->genome.nx * p1->genome.ny * p1->genome.nz;
-    /* the parents' bodies kept, each offspring's compared with both in w->cell */
+    /* the parents' bodies kept (the first in e->body, the second in the workspace's spare body),
+     * each offspring's compared with both in w->cell */
     express_body(e, &p1->genome, w);
-    memcpy(e->body[0], w->cell, (size_t)cells);
+    memcpy(e->body, w->cell, (size_t)cells);
     express_body(e, &p2->genome, w);
-    memcpy(e->body[1], w->cell, (size_t)cells);
+    memcpy(w->other, w->cell, (size_t)cells);
     express_body(e, &c1->genome, w);
-    am_real d1a = am_body_distance(e->body[0], w->cell, cells), d1b = am_body_distance(e->body[1], w->cell, cells);
+    am_real d1a = am_body_distance(e->body, w->cell, cells), d1b = am_body_distance(w->other, w->cell, cells);
     express_body(e, &c2->genome, w);
-    am_real d2a = am_body_distance(e->body[0], w->cell, cells), d2b = am_body_distance(e->body[1], w->cell, cells);
+    am_real d2a = am_body_distance(e->body, w->cell, cells), d2b = am_body_distance(w->other, w->cell, cells);
     am_real straight = d1a + d2b;
     am_real crossed = d2a + d1b;
     if (!(straight <= crossed)) {

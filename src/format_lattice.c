@@ -407,7 +407,7 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
             return perr(c, AM_ERR_PARSE, "layer %ld: too many layers (size says %d)", k, lat->nz);
         if (k != r->z + 1)
             return perr(c, AM_ERR_PARSE, "expected layer %d, found layer %ld (layers go 0..%d in order)", r->z + 1, k, lat->nz - 1);
-        if (r->z < 0 && lat->palette.count == 0) lat->palette = am_default_palette();
+        if (r->z < 0 && lat->palette.count == 0) am_default_palette_into(&lat->palette);
         r->z = (int)k;
         r->y = 0;
     } else if (tok_is(ts, te, LAT_MAGIC)) {

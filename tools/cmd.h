@@ -27,6 +27,14 @@ am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_d
  * (cmd_evolve.c); 0, or 1 when the two runs differ */
 int tool_bench_evolve(long evaluations);
 
+/* keeps a helper's locals out of its caller's frame, so they take stack only while it runs, not
+ * all through the long calls of the caller (the board's stack is small) */
+#if defined(__GNUC__)
+#define TOOL_NOINLINE __attribute__((noinline))
+#else
+#define TOOL_NOINLINE
+#endif
+
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)
 #if defined(__GNUC__)
@@ -178,8 +186,9 @@ extern am_evo_work tool_work[AM_MAX_WORKERS];
 /* the evolver's run (evolve, experiment, repro, bench --evolve); bench's expression timing
  * borrows the genomes of its population as its pool */
 extern am_evo tool_evo;
-/* the genome a command reads (random, express, sim of a genome file or a run folder) */
-extern am_genome tool_genome;
+/* the genome a command reads (random, express, sim of a genome file or a run folder): the
+ * evolver's best slot, idle in those commands */
+#define tool_genome (tool_evo.best.genome)
 
 /* longest path the commands build (a run folder's files); the board's port takes 512 bytes */
 #if defined(AM_PROFILE_BOARD)

@@ -98,14 +98,18 @@ static int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* 
     return 1;
 }
 
-/* defaults, then the config file, then the flags */
-static int build_def(const evo_opts* o, am_evo_def* d, const char* cmd)
+/* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
+ * `extra` more (keys and values, NULL-terminated; may be NULL) */
+static TOOL_NOINLINE int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd)
 {
     char err[AM_ERR_MAX];
     *d = am_default_evo();
-    if (o->config && tool_read_config(o->config, d, 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (o->config) config = o->config;
+    if (config && tool_read_config(config, d, 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     for (int k = 0; k < o->nflags; k++)
         if (am_evo_set(d, o->key[k], o->val[k], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
+    for (int k = 0; extra && extra[k]; k += 2)
+        if (am_evo_set(d, extra[k], extra[k + 1], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
     if (am_evo_check(d, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
     return 0;
 }
@@ -130,7 +134,7 @@ static int path_join(char* out, size_t cap, const char* dir, const char* file)
     return n >= 0 && (size_t)n < cap;
 }
 
-static int write_text(const char* dir, const char* file, const char* text, long len)
+static TOOL_NOINLINE int write_text(const char* dir, const char* file, const char* text, long len)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, file);
@@ -145,7 +149,7 @@ static int write_text(const char* dir, const char* file, const char* text, long 
  * ("amorph: what: problem" for the writer's own failures) */
 typedef am_status (*text_writer)(const void* obj, am_text* out, char* err, int errsz);
 
-static int write_stream(const char* dir, const char* file, text_writer fn, const void* obj, const char* what)
+static TOOL_NOINLINE int write_stream(const char* dir, const char* file, text_writer fn, const void* obj, const char* what)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, file);
@@ -191,7 +195,7 @@ static int write_checkpoint(const char* dir, const am_evo* e)
     return write_stream(dir, "checkpoint.txt", checkpoint_writer, e, "checkpoint");
 }
 
-static int write_best(const char* dir, const am_evo* e)
+static TOOL_NOINLINE int write_best(const char* dir, const am_evo* e)
 {
     char err[AM_ERR_MAX];
     if (write_stream(dir, "best.genome", genome_writer, &e->best.genome, "best genome")) return 1;
@@ -202,7 +206,7 @@ static int write_best(const char* dir, const am_evo* e)
     return write_stream(dir, "best.lattice", lattice_writer, &tool_work[0].lattice, "best lattice");
 }
 
-static int write_summary(const char* dir, const am_evo* e, double wall)
+static TOOL_NOINLINE int write_summary(const char* dir, const am_evo* e, double wall)
 {
     char path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, "summary.txt");
@@ -219,7 +223,7 @@ static int write_summary(const char* dir, const am_evo* e, double wall)
     return tool_out_close(&o, 1);
 }
 
-static int append_log(const char* dir, const am_evo_stats* s)
+static TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
 {
     char row[256], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     int n = am_evo_log_row(s, row, (int)sizeof row - 1);
@@ -234,7 +238,7 @@ static int append_log(const char* dir, const am_evo_stats* s)
 
 /* log.csv cut back to the header and the first `rows` rows (rows the checkpoint has seen): the
  * file is read line by line, then, when it holds more, copied that far into its replacement */
-static int trim_log(const char* dir, long rows)
+static TOOL_NOINLINE int trim_log(const char* dir, long rows)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
     long n, have = 0;
@@ -305,7 +309,7 @@ typedef struct run_io {
     const char* label;        /* prefix of progress lines (experiments), or NULL */
 } run_io;
 
-static void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
+static TOOL_NOINLINE void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
 {
     if (quiet) return;
     double now = am_port_now(), el = now - t_start;
@@ -401,8 +405,8 @@ static int finish_pictures(const am_evo* e, const char* dir)
 #endif
 }
 
-/* a new run in dir (created), or a resumed one; 0, 1, 2 or 130 */
-static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+/* a new run in dir (created): its folder, configuration, log header and first checkpoint; 0, 1 or 2 */
+static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, "checkpoint.txt");
@@ -417,15 +421,23 @@ static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictur
     if (write_text(dir, "log.csv", hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
     if (write_checkpoint(dir, &tool_evo)) return 1;
+    return 0;
+}
+
+/* a new run in dir, to its end; 0, 1, 2 or 130 */
+static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+{
+    int rc = start_prepare(d, dir);
+    if (rc) return rc;
     run_io io = {dir, quiet, pictures, label};
-    int rc = run_loop(&tool_evo, &io);
+    rc = run_loop(&tool_evo, &io);
     if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
     return rc;
 }
 
 /* reads the checkpoint at path into e, in the two passes of the library (the checksum over the
  * bytes, then the lines): 0, or 2 after a message */
-static int read_checkpoint(const char* path, am_evo* e)
+static TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
 {
     char err[AM_ERR_MAX], *line;
     long n;
@@ -462,20 +474,18 @@ static int read_checkpoint(const char* path, am_evo* e)
     return st == AM_OK ? 0 : tool_usage_error("%s", err);
 }
 
-/* loads the run in dir and checks it against the settings the user gives now */
-static int resume_run(const char* dir, const evo_opts* o, int quiet, int pictures, const char* label)
+/* loads the run in dir and checks it against the settings the user gives now (flags o, then
+ * `extra` keys and values); 0, 1 or 2 */
+static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
     path_join(path, sizeof path, dir, "checkpoint.txt");
     int rc = read_checkpoint(path, &tool_evo);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
-    evo_opts now = *o;
-    char cfg[TOOL_PATH_MAX];
-    path_join(cfg, sizeof cfg, dir, "config.txt");
-    if (!now.config) now.config = cfg;
+    path_join(path, sizeof path, dir, "config.txt");
     am_evo_def d;
-    if (build_def(&now, &d, "resume")) return 2;
+    if (build_def(o, path, extra, &d, "resume")) return 2;
     if (!am_evo_same_run(&tool_evo.def, &d, what, sizeof what))
         return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
     tool_evo.def.evaluations = d.evaluations;
@@ -485,6 +495,13 @@ static int resume_run(const char* dir, const evo_opts* o, int quiet, int picture
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, tool_evo.def.evaluations, tool_evo.evaluations);
     if (trim_log(dir, tool_evo.generation)) return 2;
     if (write_config(dir, &tool_evo.def)) return 1;
+    return 0;
+}
+
+static int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
+{
+    int rc = resume_load(dir, o, extra);
+    if (rc) return rc;
     run_io io = {dir, quiet, pictures, label};
     rc = run_loop(&tool_evo, &io);
     if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
@@ -521,7 +538,7 @@ int cmd_evolve(int argc, char** argv)
     if (o.resume && o.config) return tool_usage_error("evolve: --resume reads the run's own config.txt; --config does not apply");
     am_evo_def d;
     if (!o.resume) {
-        if (build_def(&o, &d, "evolve")) return 2;
+        if (build_def(&o, NULL, NULL, &d, "evolve")) return 2;
         if (o.print_config) {
             char err[AM_ERR_MAX];
             tool_out out;
@@ -536,7 +553,7 @@ int cmd_evolve(int argc, char** argv)
     else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
-    int rc = o.resume ? resume_run(dir, &o, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
+    int rc = o.resume ? resume_run(dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
     if (rc == 0) print_result(&tool_evo, dir);
     return rc;
 }
@@ -601,7 +618,7 @@ static int apply_settings(am_evo_def* d, const char* settings)
 
 /* reads the best-fitness column of dir/log.csv: evals[i] (when evals is not NULL), best[i] for up
  * to cap rows after the header; the rows read, -1 when the file cannot be read */
-static int read_log(const char* dir, long* evals, double* best, int cap)
+static TOOL_NOINLINE int read_log(const char* dir, long* evals, double* best, int cap)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
     long len;
@@ -627,6 +644,47 @@ static int read_log(const char* dir, long* evals, double* best, int cap)
  * row the sum over the runs of a variant, then the sum of squared deviations from the mean */
 static long g_exp_evals[EXP_ROWS];
 static double g_exp_tmp[EXP_ROWS], g_exp_sum[EXP_ROWS], g_exp_dev[EXP_ROWS];
+
+/* dir/experiment.txt */
+static TOOL_NOINLINE int write_about(const experiment* x, long runs, long evaluations, const char* dir)
+{
+    char about[512];
+    int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
+                     evaluations);
+    return write_text(dir, "experiment.txt", about, n);
+}
+
+/* 1 when the run folder holds a checkpoint */
+static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
+{
+    char ck[TOOL_PATH_MAX];
+    path_join(ck, sizeof ck, rdir, "checkpoint.txt");
+    return am_port_exists(ck);
+}
+
+/* run k of variant v in dir/<variant>-<k>: started, resumed, or (finished) left as it is;
+ * 0, 1, 2 or 130 */
+static TOOL_NOINLINE int experiment_run(const am_evo_def* base, const variant* v, long k, const char* dir, int quiet)
+{
+    char err[AM_ERR_MAX], rdir[EXP_RUN_DIR_MAX], label[96];
+    am_evo_def d = *base;
+    if (apply_settings(&d, v->settings)) return 2;
+    d.seed = base->seed + (uint64_t)(k - 1);
+    if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", v->name, err);
+    if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, v->name, k) >= (int)sizeof rdir)
+        return tool_usage_error("experiment: folder name too long");
+    snprintf(label, sizeof label, "%s-%ld", v->name, k);
+    if (!run_has_checkpoint(rdir)) return start_run(&d, rdir, quiet, 0, label);
+    /* a run begun before: resumed with this experiment's evaluations and threads */
+    static const evo_opts none;
+    char evs[32], ths[32];
+    snprintf(evs, sizeof evs, "%ld", d.evaluations);
+    snprintf(ths, sizeof ths, "%d", d.threads);
+    const char* const extra[] = {"evaluations", evs, "threads", ths, NULL};
+    return resume_run(rdir, &none, extra, quiet, 0, label);
+}
+
+static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures);
 
 int cmd_experiment(int argc, char** argv)
 {
@@ -665,7 +723,7 @@ int cmd_experiment(int argc, char** argv)
         if (!strcmp(experiments[k].name, name)) x = &experiments[k];
     if (!x) return tool_usage_error("experiment: unknown experiment '%s' (representations, three-materials, dynamic, friction)", name);
     am_evo_def base;
-    if (build_def(&o, &base, "experiment")) return 2;
+    if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
     if (evals) base.evaluations = evals;
     char dir[EXP_DIR_MAX], err[AM_ERR_MAX];
     if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");
@@ -678,47 +736,25 @@ int cmd_experiment(int argc, char** argv)
         }
     }
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    {
-        char about[512];
-        int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
-                         base.evaluations);
-        if (write_text(dir, "experiment.txt", about, n)) return 1;
-    }
+    if (write_about(x, runs, base.evaluations, dir)) return 1;
     am_port_catch_interrupt();
     int nv = 0;
     while (nv < 6 && x->v[nv].name) nv++;
-    for (int v = 0; v < nv; v++) {
+    for (int v = 0; v < nv; v++)
         for (long k = 1; k <= runs; k++) {
-            am_evo_def d = base;
-            if (apply_settings(&d, x->v[v].settings)) return 2;
-            d.seed = base.seed + (uint64_t)(k - 1);
-            if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", x->v[v].name, err);
-            char rdir[EXP_RUN_DIR_MAX], ck[TOOL_PATH_MAX], label[96];
-            if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
-                return tool_usage_error("experiment: folder name too long");
-            snprintf(label, sizeof label, "%s-%ld", x->v[v].name, k);
-            path_join(ck, sizeof ck, rdir, "checkpoint.txt");
-            int rc;
-            if (am_port_exists(ck)) {
-                evo_opts ro;
-                memset(&ro, 0, sizeof ro);
-                char evs[32], ths[32];
-                snprintf(evs, sizeof evs, "%ld", d.evaluations);
-                snprintf(ths, sizeof ths, "%d", d.threads);
-                ro.key[0] = "evaluations";
-                ro.val[0] = evs;
-                ro.key[1] = "threads";
-                ro.val[1] = ths;
-                ro.nflags = 2;
-                rc = resume_run(rdir, &ro, o.quiet, 0, label);
-            } else rc = start_run(&d, rdir, o.quiet, 0, label);
+            int rc = experiment_run(&base, &x->v[v], k, dir, o.quiet);
             if (rc == 130) {
                 fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
                 return rc;
             }
             if (rc) return rc;
         }
-    }
+    return experiment_results(x, nv, runs, dir, o.pictures);
+}
+
+/* the experiment's table: results.csv, and the printed summary; 0, 1 or 2 */
+static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures)
+{
     /* results: mean and standard error of the runs' best fitness at each logged evaluation count.
      * First the rows every run holds; then variant by variant, the logs read again for the sums
      * (in the order of the runs, the sums of one table held whole) */
@@ -776,9 +812,9 @@ int cmd_experiment(int argc, char** argv)
         }
         if (tool_out_close(&out, 1)) return 1;
     }
-    if (TOOL_PICTURES && o.pictures) {
+    if (TOOL_PICTURES && pictures) {
         char svg[2048];
-        char* dirs[1] = {dir};
+        char* dirs[1] = {(char*)(uintptr_t)dir};
         if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
     printf("experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
@@ -862,7 +898,7 @@ int cmd_repro(int argc, char** argv)
             return tool_usage_error("repro: unknown option '%s' (amorph repro --help)", a);
     }
     am_evo_def d;
-    if (build_def(&o, &d, "repro")) return 2;
+    if (build_def(&o, NULL, NULL, &d, "repro")) return 2;
     char err[AM_ERR_MAX];
     if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();

@@ -85,9 +85,10 @@ am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int 
     am_status st = tool_src_each(src, genome_line, &g, err, errsz);
     if (st == AM_OK) st = am_genome_read_end(&g.r, err, errsz);
     if (st != AM_OK) return st;
-    am_palette pal = am_default_palette();
+    /* the built-in palette, in the lattice about to be filled (none is built on the stack) */
+    am_default_palette_into(&lat->palette);
     for (int m = 0; m < tool_genome.materials; m++)
-        if (am_palette_find(&pal, tool_genome.mat[m]) < 0)
+        if (am_palette_find(&lat->palette, tool_genome.mat[m]) < 0)
             return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
                            g.materials_line ? g.materials_line : 1, tool_genome.mat[m]);
     char msg[AM_ERR_MAX];

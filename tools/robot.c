@@ -8,7 +8,6 @@
 
 am_evo_work tool_work[AM_MAX_WORKERS];
 am_evo tool_evo;
-am_genome tool_genome;
 
 int tool_usage_error(const char* fmt, ...)
 {

@@ -67,8 +67,9 @@ am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_d
     if (st == AM_OK) st = tool_read_genome(&src, &tool_genome, err, errsz);
     tool_src_close(&src);
     if (st != AM_OK) return st;
-    am_palette pal = am_evo_palette(&d);
-    st = am_evo_lattice(&d, &pal, &tool_genome, &tool_work[0].geno, lat, msg, sizeof msg);
+    /* the run's palette, in the evolver's slot (idle: no run is going on) */
+    am_evo_palette_into(&d, &tool_evo.palette);
+    st = am_evo_lattice(&d, &tool_evo.palette, &tool_genome, &tool_work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
     if (env) *env = d.env;
     if (eval) {

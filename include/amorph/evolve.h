@@ -74,6 +74,8 @@ am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char*
 int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
 /* the palette and expression settings a run's genomes are expressed and simulated with */
 am_palette am_evo_palette(const am_evo_def* d);
+/* the same palette written into *out */
+void am_evo_palette_into(const am_evo_def* d, am_palette* out);
 
 /* ---- state ---- */
 
@@ -118,7 +120,8 @@ typedef struct am_evo {
     long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
     long last_voxel_steps;                    /* the same, each step times the body's voxels */
     int order[AM_EVO_BATCH];                  /* scratch: evaluation order (largest body first) */
-    uint8_t body[2][AM_MAX_CELLS];            /* scratch: the two parents' bodies of one crowding pair */
+    uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
+                                                 (the second's is in w[0].geno.other) */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */

@@ -151,7 +151,7 @@ typedef struct am_geno_work {
     uint8_t cell[AM_MAX_CELLS];      /* (cells) the body: 0 empty, 1 + material index */
     int voxels;                      /* filled cells of cell[] */
     int nx, ny, nz;                  /* shape of dens and cell */
-    uint8_t other[AM_MAX_CELLS];     /* (cells) second body of am_genome_distance */
+    uint8_t other[AM_MAX_CELLS];     /* (cells) a second body: am_genome_distance's, the evolver's crowding's */
     am_dct_work dct;                 /* DCT basis tables (cached) */
     int tables;                      /* 1 once the lookup tables below are filled */
     am_real tab_sin[AM_GENO_TABLE + 1];   /* sin(2 pi i / T), T = AM_GENO_TABLE */

@@ -46,6 +46,8 @@ am_material am_default_material(void);
 /* the built-in palette of 9 materials: passive, active, active90 (90 degrees behind), stiff,
  * soft, heavy, light, active180, fixed. Active CTE is 0.01 (volumetric, as the seed). */
 am_palette am_default_palette(void);
+/* the same palette written into *out (no copy of the large struct on the stack) */
+void am_default_palette_into(am_palette* out);
 /* index (0-based) of the material named name in p, or -1 */
 int am_palette_find(const am_palette* p, const char* name);
 
