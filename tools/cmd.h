@@ -124,11 +124,14 @@ am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);
  * (cmd_genome.c); "file:line: problem" messages */
 am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int errsz);
 
-/* VXA files (docs/vxa.md) are read and written in the desktop profile only */
+/* VXA files (docs/vxa.md) are read and written in the desktop profile only; TOOL_DESKTOP_ONLY
+ * marks what a help text names that the board build answers with "not in this build" */
 #if defined(AM_PROFILE_BOARD)
 #define TOOL_VXA 0
+#define TOOL_DESKTOP_ONLY " (not in this build: desktop profile)"
 #else
 #define TOOL_VXA 1
+#define TOOL_DESKTOP_ONLY ""
 #endif
 /* VXA text -> lattice (cmd_export.c); prints the reader's warnings on stderr. Returns AM_ERR_ARG
  * without a message when text is not XML. On success tool_vxa_loaded is 1 and tool_vxa_info holds

@@ -31,7 +31,7 @@ am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_latti
 static const char export_help[] =
     "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice\n"
     "Writes a robot (a lattice, genome or VXA file, or a built-in scene) in another format:\n"
-    "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout\n"
+    "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
     "  --lattice FILE   the amorph lattice text format (docs/formats.md); '-' for stdout\n"
     "The environment in a VXA file is the robot's own when it was read from a VXA file, else the\n"
     "seed's (the defaults of amorph sim). Files are replaced atomically.\n";

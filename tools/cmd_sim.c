@@ -7,7 +7,7 @@
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
     "Simulates one robot in the seed's environment (relaxation, then actuation cycles) and prints\n"
-    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file (.vxa, whose\n"
+    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, whose\n"
     "environment is used; the options below override it) or a run folder of amorph evolve (its best\n"
     "robot, in the run's environment and evaluation); NAME a built-in scene (cube:N, sphere:D,\n"
     "cantilever:N, chain:N).\n"
