@@ -42,7 +42,9 @@ static double bits_d(uint64_t b)
 /* ---- writing ---- */
 
 /* the text goes through a small buffer of its own whose flush hashes every byte on its way to
- * the caller's output, so the checksum needs no copy of the whole text */
+ * the caller's output, so the checksum needs no copy of the whole text. A streaming output gets
+ * the pieces straight at its far end (its own buffer is emptied first), a whole-text output in
+ * its buffer. */
 typedef struct ck_pass {
     am_text* out;
     uint64_t hash;            /* am_hash_bytes of every byte handed on */
@@ -51,9 +53,25 @@ typedef struct ck_pass {
 static am_status ck_flush(void* ctx, const char* data, long n)
 {
     ck_pass* c = (ck_pass*)ctx;
+    am_text* out = c->out;
     c->hash = am_hash_bytes(c->hash, data, (unsigned long)n);
-    am_text_write(c->out, data, n);
-    return c->out->full ? AM_ERR_IO : AM_OK;
+    if (out->full) return AM_ERR_IO;
+    if (out->flush) {
+        if (out->flush(out->ctx, data, n) != AM_OK) {
+            out->full = 2;
+            return AM_ERR_IO;
+        }
+        out->done += n;
+        return AM_OK;
+    }
+    if (n > out->cap - 1 - out->len) {
+        out->full = 1; /* a whole-text buffer takes a piece whole or not at all */
+        return AM_ERR_IO;
+    }
+    memcpy(out->buf + out->len, data, (size_t)n);
+    out->len += n;
+    out->buf[out->len] = 0;
+    return AM_OK;
 }
 
 /* one individual line and its genome; a genome that fails its check is not written and its
@@ -78,6 +96,7 @@ am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int 
     am_text s = {piece, sizeof piece, 0, 0, ck_flush, &pass, 0};
     am_status st = AM_OK;
     piece[0] = 0;
+    if (out->flush) am_text_flush(out); /* what out holds goes first */
     am_text_put(&s, "amorph-checkpoint %d\nconfig-begin\n", CHECKPOINT_VERSION);
     am_evo_write(&e->def, 1, &s, NULL, 0);
     am_text_put(&s, "config-end\nrng %016llx %016llx %016llx %016llx\n", (unsigned long long)e->rng.s[0],
