@@ -35,7 +35,8 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
 # the kind of callback a function is, or of callback an indirect call site takes: a genotype
 # operation (the tables of src/geno_dct.c, geno_cppn.c, geno_gmx.c, called by the am_genome_
 # functions), the task of the parallel map, an am_text flush function (called by
-# util_text.c:drain), a line function of tool_src_each, a writer of cmd_evolve.c:write_stream;
+# util_text.c:drain, or the am_text functions it is inlined into), a line function of
+# tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream;
 # any other indirect call may reach any function of kind "other"
 function kind_of(c) {
     if (c ~ /^src\/geno_(dct|cppn|gmx)\.c:/) return "geno"
@@ -46,10 +47,10 @@ function kind_of(c) {
     return "other"
 }
 function site_of(f) {
-    if (f ~ /^(am_genome_|src\/format_genome\.c:|src\/geno_common\.c:)/) return "geno"
+    if (f ~ /^(am_genome_|src\/(format_genome|geno_common|geno_levelset)\.c:)/) return "geno"
     if (f ~ /(am_port_parallel_map|map_loop)$/) return "task"
-    if (f ~ /(util_text\.c:drain|:ck_flush)$/) return "flush"
-    if (f ~ /(^|:)tool_src_each$/) return "line"
+    if (f ~ /(util_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
+    if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
     if (f ~ /:write_stream$/) return "writer"
     return "other"
 }
