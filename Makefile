@@ -1,6 +1,7 @@
 # amorph: one Makefile, several side-by-side builds.
 #   make                      build/libamorph.a and build/amorph
-#   make test                 every test (the README's test command)
+#   make test                 every test (the README's test command; also builds the -O0, fixed-point
+#                             and board-profile variants the shell tests compare against)
 #   make bench                benchmarks that print figures
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
@@ -132,7 +133,8 @@ unit: $(TEST_BIN) $(BUILD)/amorph
 test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
-	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 

@@ -44,15 +44,15 @@ am_status am_dct_plan(am_dct_work* w, const int k[3], const int n[3], char* err,
     return AM_OK;
 }
 
-void am_dct_inverse(am_dct_work* w, const am_real* coef, am_real* out)
+void am_dct_inverse(const am_dct_work* w, am_dct_scratch* sc, const am_real* coef, am_real* out)
 {
     const int k0 = w->k[0], k1 = w->k[1], k2 = w->k[2];
     const int n0 = w->n[0], n1 = w->n[1], n2 = w->n[2];
     const am_real* b0 = w->basis[0];
     const am_real* b1 = w->basis[1];
     const am_real* b2 = w->basis[2];
-    am_real* t1 = w->t1;
-    am_real* t2 = w->t2;
+    am_real* t1 = sc->t1;
+    am_real* t2 = sc->t2;
     /* pass 1, along x: t1[x + n0 (v + k1 w)] = sum_u coef[u, v, w] B0[u][x] */
     for (int r = 0; r < k1 * k2; r++) {
         am_real* row = t1 + (long)r * n0;
@@ -91,15 +91,15 @@ void am_dct_inverse(am_dct_work* w, const am_real* coef, am_real* out)
     }
 }
 
-void am_dct_forward(am_dct_work* w, const am_real* in, am_real* coef)
+void am_dct_forward(const am_dct_work* w, am_dct_scratch* sc, const am_real* in, am_real* coef)
 {
     const int k0 = w->k[0], k1 = w->k[1], k2 = w->k[2];
     const int n0 = w->n[0], n1 = w->n[1], n2 = w->n[2];
     const am_real* b0 = w->basis[0];
     const am_real* b1 = w->basis[1];
     const am_real* b2 = w->basis[2];
-    am_real* f1 = w->t2; /* n0 x n1 x k2 */
-    am_real* f2 = w->t1; /* n0 x k1 x k2 */
+    am_real* f1 = sc->t2; /* n0 x n1 x k2 */
+    am_real* f2 = sc->t1; /* n0 x k1 x k2 */
     const long plane = (long)n0 * n1;
     /* along z: f1[x + n0 (y + n1 w)] = sum_z in[x + n0 (y + n1 z)] B2[w][z] */
     for (int ww = 0; ww < k2; ww++) {

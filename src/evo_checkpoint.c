@@ -25,10 +25,6 @@
 
 #define CHECKPOINT_VERSION 1
 
-/* text goes through the genotypes' bounded sink (am_geno_put never writes past cap) */
-typedef am_geno_sink sink;
-#define put am_geno_put
-
 static unsigned long long dbits(double v)
 {
     uint64_t b;
@@ -43,73 +39,108 @@ static double bits_d(uint64_t b)
     return v;
 }
 
-static void put_ind(sink* s, const char* kind, int index, const am_evo_ind* it, char* err, int errsz, am_status* st)
+/* ---- writing ---- */
+
+/* the text goes through a small buffer of its own whose flush hashes every byte on its way to
+ * the caller's output, so the checksum needs no copy of the whole text. A streaming output gets
+ * the pieces straight at its far end (its own buffer is emptied first), a whole-text output in
+ * its buffer. */
+typedef struct ck_pass {
+    am_text* out;
+    uint64_t hash;            /* am_hash_bytes of every byte handed on */
+} ck_pass;
+
+static am_status ck_flush(void* ctx, const char* data, long n)
 {
-    put(s, "individual %s %d %016llx %d %d %d %ld %016llx\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
-        it->empty, it->steps, (unsigned long long)it->state_hash);
-    long room = s->cap - s->len, len = 0;
-    if (room <= 0) {
-        s->len += AM_GENOME_TEXT_MAX;
+    ck_pass* c = (ck_pass*)ctx;
+    am_text* out = c->out;
+    c->hash = am_hash_bytes(c->hash, data, (unsigned long)n);
+    if (out->full) return AM_ERR_IO;
+    if (out->flush) {
+        if (out->flush(out->ctx, data, n) != AM_OK) {
+            out->full = 2;
+            return AM_ERR_IO;
+        }
+        out->done += n;
+        return AM_OK;
+    }
+    if (n > out->cap - 1 - out->len) {
+        out->full = 1; /* a whole-text buffer takes a piece whole or not at all */
+        return AM_ERR_IO;
+    }
+    memcpy(out->buf + out->len, data, (size_t)n);
+    out->len += n;
+    out->buf[out->len] = 0;
+    return AM_OK;
+}
+
+/* one individual line and its genome; a genome that fails its check is not written and its
+ * message kept in err (the first one counts) */
+static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* it, char* err, int errsz, am_status* st)
+{
+    am_text_put(s, "individual %s %d %016llx %d %d %d %ld %016llx\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
+                it->empty, it->steps, (unsigned long long)it->state_hash);
+    char msg[AM_ERR_MAX];
+    am_status c = am_genome_check(&it->genome, msg, sizeof msg);
+    if (c != AM_OK) {
+        if (*st == AM_OK) *st = am_fail(err, errsz, c, "%s", msg);
         return;
     }
-    am_status g = am_genome_format(&it->genome, s->buf + s->len, room, &len, err, errsz);
-    if (g != AM_OK && *st == AM_OK) *st = g;
-    s->len += len;
+    am_genome_write(&it->genome, s, NULL, 0); /* only the output can fail now: seen at the end */
+}
+
+am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz)
+{
+    char piece[320]; /* longer than any one piece the writers put */
+    ck_pass pass = {out, AM_HASH_INIT};
+    am_text s = {piece, sizeof piece, 0, 0, ck_flush, &pass, 0};
+    am_status st = AM_OK;
+    piece[0] = 0;
+    if (out->flush) am_text_flush(out); /* what out holds goes first */
+    am_text_put(&s, "amorph-checkpoint %d\nconfig-begin\n", CHECKPOINT_VERSION);
+    am_evo_write(&e->def, 1, &s, NULL, 0);
+    am_text_put(&s, "config-end\nrng %016llx %016llx %016llx %016llx\n", (unsigned long long)e->rng.s[0],
+                (unsigned long long)e->rng.s[1], (unsigned long long)e->rng.s[2], (unsigned long long)e->rng.s[3]);
+    am_text_put(&s, "generation %ld\nevaluations %ld\nhistory %016llx\n", e->generation, e->evaluations,
+                (unsigned long long)e->history);
+    am_text_put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx\n", e->last.generation, e->last.evaluations,
+                dbits(e->last.best), dbits(e->last.mean), dbits(e->last.median), e->last.diverged, e->last.empty,
+                dbits(e->last.wall_s));
+    for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
+    if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
+    if (st != AM_OK) return st;
+    if (am_text_flush(&s) == AM_OK) am_text_put(out, "checksum %016llx\n", (unsigned long long)pass.hash);
+    if (out->full == 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint needs more than the %ld bytes given", out->cap);
+    if (out->full || s.full) return am_fail(err, errsz, AM_ERR_IO, "checkpoint: the output failed");
+    return AM_OK;
 }
 
 am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz)
 {
-    sink s = {buf, cap, 0};
-    am_status st = AM_OK;
-    long cfg = 0;
-    put(&s, "amorph-checkpoint %d\nconfig-begin\n", CHECKPOINT_VERSION);
-    if (s.len < s.cap) {
-        st = am_evo_format(&e->def, 1, s.buf + s.len, s.cap - s.len, &cfg, err, errsz);
-        s.len += cfg;
+    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint: no buffer");
+    buf[0] = 0;
+    am_status st = am_evo_checkpoint_write(e, &t, err, errsz);
+    if (len) *len = t.len;
+    if (st == AM_ERR_CAPACITY && t.full) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[64];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_evo_checkpoint_write(e, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "checkpoint needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
     }
-    put(&s, "config-end\nrng %016llx %016llx %016llx %016llx\n", (unsigned long long)e->rng.s[0], (unsigned long long)e->rng.s[1],
-        (unsigned long long)e->rng.s[2], (unsigned long long)e->rng.s[3]);
-    put(&s, "generation %ld\nevaluations %ld\nhistory %016llx\n", e->generation, e->evaluations, (unsigned long long)e->history);
-    put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx\n", e->last.generation, e->last.evaluations, dbits(e->last.best),
-        dbits(e->last.mean), dbits(e->last.median), e->last.diverged, e->last.empty, dbits(e->last.wall_s));
-    for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
-    if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
-    if (st == AM_OK && s.len < s.cap) {
-        uint64_t h = am_hash_bytes(AM_HASH_INIT, buf, (unsigned long)s.len);
-        put(&s, "checksum %016llx\n", (unsigned long long)h);
-    }
-    if (len) *len = s.len;
-    if (st != AM_OK) return st;
-    if (s.len >= s.cap)
-        return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint needs %ld bytes, the buffer holds %ld", s.len + 1, s.cap);
-    return AM_OK;
+    return st;
 }
 
-/* ---- reading ---- */
-
-typedef struct reader {
-    char* p;            /* next line */
-    int line;           /* line number of the last line returned */
-    const char* fname;
-} reader;
-
-/* the next line, NUL-terminated in place (the newline is overwritten); NULL at the end */
-static char* next_line(reader* r, char** restore)
-{
-    if (!*r->p) return NULL;
-    char* s = r->p;
-    char* nl = strchr(s, '\n');
-    r->line++;
-    if (nl) {
-        *nl = 0;
-        *restore = nl;
-        r->p = nl + 1;
-    } else {
-        *restore = NULL;
-        r->p = s + strlen(s);
-    }
-    return s;
-}
+/* ---- reading, in two passes ----
+ *
+ * Pass 1 (the scan) takes the bytes in pieces of any size: it finds the last line, checks that it
+ * is "checksum HEX" over every byte before it, and notes the line of the first "config-end" and of
+ * the last "end", so that pass 2 knows where the configuration and the genomes end without looking
+ * ahead. Pass 2 (the reader) takes the lines before the checksum line one at a time. A text held
+ * whole (am_evo_checkpoint_parse) and one streamed from a file take the same path. */
 
 static int hex64(const char* s, uint64_t* out)
 {
@@ -160,10 +191,75 @@ static int to_long(const char* s, long lo, long hi, long* out)
     return 1;
 }
 
-#define BAD(...) return am_fail(err, errsz, AM_ERR_PARSE, __VA_ARGS__)
-
-static am_status read_ind(reader* r, am_evo* e, char** tok, int ntok, char* err, int errsz)
+void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc)
 {
+    memset(sc, 0, sizeof *sc);
+    sc->hash = sc->line_hash = sc->prev_hash = AM_HASH_INIT;
+}
+
+void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n)
+{
+    const unsigned char* p = (const unsigned char*)data;
+    for (long i = 0; i < n; i++) {
+        unsigned char c = p[i];
+        sc->hash = am_hash_bytes(sc->hash, &c, 1);
+        sc->bytes++;
+        if (c != '\n') {
+            if (sc->cur_len < (long)sizeof sc->cur) sc->cur[sc->cur_len] = (char)c;
+            sc->cur_len++;
+            continue;
+        }
+        /* a whole line: number lines + 1, its first bytes in cur */
+        int line = ++sc->lines;
+        if (sc->cur_len == 10 && !memcmp(sc->cur, "config-end", 10) && line >= 4 && !sc->config_end) sc->config_end = line;
+        if (sc->cur_len == 3 && !memcmp(sc->cur, "end", 3)) sc->last_end = line;
+        memcpy(sc->prev, sc->cur, sizeof sc->cur);
+        sc->prev_len = sc->cur_len;
+        sc->prev_hash = sc->line_hash;
+        sc->line_hash = sc->hash;
+        sc->cur_len = 0;
+    }
+}
+
+am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz)
+{
+    if (sc->bytes == 0) return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: empty checkpoint", fname);
+    /* the last line: the unfinished one, or the last whole one when the text ends with a newline */
+    int ends_nl = sc->cur_len == 0;
+    const char* last = ends_nl ? sc->prev : sc->cur;
+    long last_len = ends_nl ? sc->prev_len : sc->cur_len;
+    uint64_t before = ends_nl ? sc->prev_hash : sc->line_hash;
+    int line = ends_nl ? sc->lines : sc->lines + 1;
+    uint64_t want;
+    if (last_len != 25 || strncmp(last, "checksum ", 9) != 0)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing checksum line (truncated checkpoint?)", fname, line);
+    char hex[17];
+    memcpy(hex, last + 9, 16);
+    hex[16] = 0;
+    if (!hex64(hex, &want)) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: malformed checksum", fname, line);
+    if (before != want) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: checksum mismatch: the checkpoint is damaged", fname, line);
+    sc->checksum_line = line;
+    return AM_OK;
+}
+
+#define BAD(...) return r->st = am_fail(err, errsz, AM_ERR_PARSE, __VA_ARGS__)
+
+void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname)
+{
+    memset(r, 0, sizeof *r);
+    r->e = e;
+    r->fname = fname;
+    r->until = sc->checksum_line;
+    r->config_end = sc->config_end;
+    r->last_end = sc->last_end;
+    memset(e, 0, sizeof *e);
+    e->def = am_default_evo();
+}
+
+/* an "individual" line (tokens tok): its numbers, then its genome from the next line */
+static am_status read_ind(am_evo_ckpt_reader* r, char** tok, int ntok, char* err, int errsz)
+{
+    am_evo* e = r->e;
     long idx, vox, div, emp, steps;
     uint64_t fit, hash;
     if (ntok != 9 || (strcmp(tok[1], "pop") && strcmp(tok[1], "best")) || !to_long(tok[2], 0, AM_MAX_POPULATION - 1, &idx) ||
@@ -171,7 +267,8 @@ static am_status read_ind(reader* r, am_evo* e, char** tok, int ntok, char* err,
         !to_long(tok[6], 0, 1, &emp) || !to_long(tok[7], 0, 2000000000L, &steps) || !hex64(tok[8], &hash))
         BAD("%s:%d: malformed individual line", r->fname, r->line);
     int is_best = strcmp(tok[1], "best") == 0;
-    if (!is_best && idx >= e->def.population) BAD("%s:%d: individual %ld beyond the population of %d", r->fname, r->line, idx, e->def.population);
+    if (!is_best && idx >= e->def.population)
+        BAD("%s:%d: individual %ld beyond the population of %d", r->fname, r->line, idx, e->def.population);
     am_evo_ind* it = is_best ? &e->best : &e->pop[idx];
     it->fitness = bits_d(fit);
     it->voxels = (int)vox;
@@ -180,153 +277,138 @@ static am_status read_ind(reader* r, am_evo* e, char** tok, int ntok, char* err,
     it->steps = steps;
     it->state_hash = hash;
     if (is_best) e->has_best = 1;
-    /* the genome: lines up to "end", parsed in place */
-    char* start = r->p;
-    int first = r->line + 1;
-    char* end = NULL;
-    for (;;) {
-        char* restore = NULL;
-        char* s = next_line(r, &restore);
-        if (!s) BAD("%s:%d: genome of individual %ld not closed by 'end'", r->fname, r->line, idx);
-        int is_end = strcmp(s, "end") == 0;
-        if (restore) *restore = '\n';
-        if (is_end) {
-            end = r->p;
-            break;
-        }
+    /* the genome: the lines up to the next "end" line */
+    if (r->last_end <= r->line) BAD("%s:%d: genome of individual %ld not closed by 'end'", r->fname, r->until - 1, idx);
+    r->ind = it;
+    r->ind_pop = !is_best;
+    r->idx = idx;
+    r->first = r->line + 1;
+    snprintf(r->where, sizeof r->where, "%s (genome from line %d)", r->fname, r->first);
+    am_genome_read_begin(&r->gr, &it->genome, r->where);
+    r->in_genome = 1;
+    return AM_OK;
+}
+
+/* a line of the genome being read; at its "end" line the genome is checked against the run */
+static am_status read_genome_line(am_evo_ckpt_reader* r, const char* text, long n, char* err, int errsz)
+{
+    char msg[AM_ERR_MAX], cerr[AM_ERR_MAX];
+    am_evo* e = r->e;
+    if (am_genome_read_line(&r->gr, text, n, msg, sizeof msg) != AM_OK) return r->st = am_fail(err, errsz, AM_ERR_PARSE, "%s", msg);
+    if (n != 3 || memcmp(text, "end", 3) != 0) return AM_OK;
+    r->in_genome = 0;
+    if (am_genome_read_end(&r->gr, msg, sizeof msg) != AM_OK) return r->st = am_fail(err, errsz, AM_ERR_PARSE, "%s", msg);
+    const am_genome* g = &r->ind->genome;
+    if (g->repr != e->def.geno.repr || g->nx != e->def.geno.nx || g->ny != e->def.geno.ny || g->nz != e->def.geno.nz ||
+        g->materials != e->def.geno.materials)
+        BAD("%s:%d: genome of individual %ld does not match the run's representation, workspace or materials", r->fname, r->first,
+            r->idx);
+    if (am_genome_check(g, cerr, sizeof cerr) != AM_OK) BAD("%s:%d: %s", r->fname, r->first, cerr);
+    if (r->ind_pop) r->pop_seen++;
+    return AM_OK;
+}
+
+am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz)
+{
+    am_evo* e = r->e;
+    char* tok[12];
+    if (r->st != AM_OK) return r->st;
+    r->line++;
+    if (r->line >= r->until) return AM_OK; /* the checksum line */
+    if (r->in_genome) return read_genome_line(r, text, n, err, errsz);
+    const char* fname = r->fname;
+    if (r->line == 1) {
+        long v;
+        int ntok = split(text, tok, 12);
+        if (ntok != 2 || strcmp(tok[0], "amorph-checkpoint") != 0) BAD("%s:1: not an amorph checkpoint", fname);
+        if (!to_long(tok[1], 0, 1000, &v) || v != CHECKPOINT_VERSION)
+            BAD("%s:1: checkpoint version '%s': this build reads version %d", fname, tok[1], CHECKPOINT_VERSION);
+        return AM_OK;
     }
-    char saved = *end;
-    *end = 0;
-    char msg[AM_ERR_MAX], where[96];
-    snprintf(where, sizeof where, "%s (genome from line %d)", r->fname, first);
-    am_status st = am_genome_parse(&it->genome, start, where, msg, sizeof msg);
-    *end = saved;
-    if (st != AM_OK) return am_fail(err, errsz, AM_ERR_PARSE, "%s", msg);
-    char cerr[AM_ERR_MAX];
-    if (it->genome.repr != e->def.geno.repr || it->genome.nx != e->def.geno.nx || it->genome.ny != e->def.geno.ny ||
-        it->genome.nz != e->def.geno.nz || it->genome.materials != e->def.geno.materials)
-        BAD("%s:%d: genome of individual %ld does not match the run's representation, workspace or materials", r->fname, first, idx);
-    if (am_genome_check(&it->genome, cerr, sizeof cerr) != AM_OK) BAD("%s:%d: %s", r->fname, first, cerr);
+    if (r->line == 2) {
+        if (strcmp(text, "config-begin") != 0) BAD("%s:%d: expected config-begin", fname, r->line);
+        if (!r->config_end) BAD("%s:%d: configuration not closed by config-end", fname, r->line);
+        return AM_OK;
+    }
+    if (r->line < r->config_end) {
+        /* the configuration: its own line numbers, counted from the line after config-begin */
+        char msg[AM_ERR_MAX];
+        if (am_evo_parse_line(&e->def, text, n, fname, r->line - 2, msg, sizeof msg) != AM_OK)
+            BAD("%s (checkpoint configuration, after line %d)", msg, 2);
+        return AM_OK;
+    }
+    if (r->line == r->config_end) {
+        am_status st = am_evo_check(&e->def, err, errsz);
+        if (st != AM_OK) return r->st = st;
+        am_evo_palette_into(&e->def, &e->palette);
+        return AM_OK;
+    }
+    int ntok = split(text, tok, 12);
+    if (ntok == 0) return AM_OK;
+    if (strcmp(tok[0], "rng") == 0 && ntok == 5) {
+        for (int i = 0; i < 4; i++)
+            if (!hex64(tok[1 + i], &e->rng.s[i])) BAD("%s:%d: malformed rng state", fname, r->line);
+        r->seen_rng = 1;
+    } else if (strcmp(tok[0], "generation") == 0 && ntok == 2 && to_long(tok[1], 0, 2000000000L, &e->generation)) {
+        r->seen_gen = 1;
+    } else if (strcmp(tok[0], "evaluations") == 0 && ntok == 2 && to_long(tok[1], 0, 2000000000L, &e->evaluations)) {
+        r->seen_evals = 1;
+    } else if (strcmp(tok[0], "history") == 0 && ntok == 2 && hex64(tok[1], &e->history)) {
+        r->seen_hist = 1;
+    } else if (strcmp(tok[0], "last") == 0 && ntok == 9) {
+        uint64_t b[4];
+        long dv, em;
+        if (!to_long(tok[1], 0, 2000000000L, &e->last.generation) || !to_long(tok[2], 0, 2000000000L, &e->last.evaluations) ||
+            !hex64(tok[3], &b[0]) || !hex64(tok[4], &b[1]) || !hex64(tok[5], &b[2]) || !to_long(tok[6], 0, AM_MAX_POPULATION, &dv) ||
+            !to_long(tok[7], 0, AM_MAX_POPULATION, &em) || !hex64(tok[8], &b[3]))
+            BAD("%s:%d: malformed 'last' line", fname, r->line);
+        e->last.best = bits_d(b[0]);
+        e->last.mean = bits_d(b[1]);
+        e->last.median = bits_d(b[2]);
+        e->last.diverged = (int)dv;
+        e->last.empty = (int)em;
+        e->last.wall_s = bits_d(b[3]);
+        r->seen_last = 1;
+    } else if (strcmp(tok[0], "individual") == 0) {
+        return read_ind(r, tok, ntok, err, errsz);
+    } else {
+        BAD("%s:%d: unexpected line '%s'", fname, r->line, tok[0]);
+    }
+    return AM_OK;
+}
+
+am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz)
+{
+    if (r->st != AM_OK) return r->st;
+    const char* fname = r->fname;
+    int read = r->line < r->until ? r->line : r->until - 1; /* lines before the checksum line */
+    if (read < 1) BAD("%s:1: not an amorph checkpoint", fname);
+    if (read < 2) BAD("%s:%d: expected config-begin", fname, read);
+    if (r->in_genome) BAD("%s:%d: genome of individual %ld not closed by 'end'", fname, read, r->idx);
+    if (!r->seen_rng || !r->seen_gen || !r->seen_evals || !r->seen_hist || !r->seen_last)
+        BAD("%s: checkpoint misses its rng, generation, evaluations, history or last line", fname);
+    if (r->pop_seen != r->e->def.population)
+        BAD("%s: checkpoint holds %d individuals, the population is %d", fname, r->pop_seen, r->e->def.population);
     return AM_OK;
 }
 
 am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz)
 {
-    /* the checksum first: the last line must be "checksum HEX" over every byte before it */
-    size_t n = strlen(text);
-    if (n == 0) BAD("%s:1: empty checkpoint", fname);
-    size_t body = n;
-    if (text[body - 1] == '\n') body--;
-    size_t ls = body;
-    while (ls > 0 && text[ls - 1] != '\n') ls--;
-    int lines = 1;
-    for (size_t i = 0; i < ls; i++) lines += text[i] == '\n';
-    uint64_t want;
-    if (body - ls != 25 || strncmp(text + ls, "checksum ", 9) != 0) BAD("%s:%d: missing checksum line (truncated checkpoint?)", fname, lines);
-    char hex[17];
-    memcpy(hex, text + ls + 9, 16);
-    hex[16] = 0;
-    if (!hex64(hex, &want)) BAD("%s:%d: malformed checksum", fname, lines);
-    if (am_hash_bytes(AM_HASH_INIT, text, (unsigned long)ls) != want)
-        BAD("%s:%d: checksum mismatch: the checkpoint is damaged", fname, lines);
-    char saved_end = text[ls];
-    text[ls] = 0;
-
-    am_status st = AM_OK;
-    reader r = {text, 0, fname};
-    char* restore = NULL;
-    char* tok[12];
-    memset(e, 0, sizeof *e);
-    e->def = am_default_evo();
-    char* s = next_line(&r, &restore);
-    int ntok = s ? split(s, tok, 12) : 0;
-    long v;
-    if (ntok != 2 || strcmp(tok[0], "amorph-checkpoint") != 0) {
-        st = am_fail(err, errsz, AM_ERR_PARSE, "%s:1: not an amorph checkpoint", fname);
-        goto done;
+    am_evo_ckpt_scan sc;
+    am_evo_checkpoint_scan_begin(&sc);
+    am_evo_checkpoint_scan(&sc, text, (long)strlen(text));
+    am_status st = am_evo_checkpoint_scan_end(&sc, fname, err, errsz);
+    if (st != AM_OK) return st;
+    am_evo_ckpt_reader r;
+    am_evo_checkpoint_read_begin(&r, e, &sc, fname);
+    for (char* p = text; *p && r.line + 1 < r.until;) {
+        char* nl = strchr(p, '\n');
+        long n = nl ? (long)(nl - p) : (long)strlen(p);
+        if (nl) *nl = 0;
+        st = am_evo_checkpoint_read_line(&r, p, n, err, errsz);
+        if (nl) *nl = '\n';
+        if (st != AM_OK) return st;
+        p = nl ? nl + 1 : p + n;
     }
-    if (!to_long(tok[1], 0, 1000, &v) || v != CHECKPOINT_VERSION) {
-        st = am_fail(err, errsz, AM_ERR_PARSE, "%s:1: checkpoint version '%s': this build reads version %d", fname, tok[1], CHECKPOINT_VERSION);
-        goto done;
-    }
-    s = next_line(&r, &restore);
-    if (!s || strcmp(s, "config-begin") != 0) {
-        st = am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected config-begin", fname, r.line);
-        goto done;
-    }
-    {
-        char* cfg = r.p;
-        int cfg_line = r.line;
-        char* cfg_end = strstr(cfg, "\nconfig-end\n");
-        if (!cfg_end) {
-            st = am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: configuration not closed by config-end", fname, r.line);
-            goto done;
-        }
-        cfg_end[1] = 0;
-        char msg[AM_ERR_MAX];
-        st = am_evo_parse(&e->def, cfg, fname, msg, sizeof msg);
-        cfg_end[1] = 'c';
-        if (st != AM_OK) {
-            (void)cfg_line;
-            st = am_fail(err, errsz, AM_ERR_PARSE, "%s (checkpoint configuration, after line %d)", msg, cfg_line);
-            goto done;
-        }
-        for (char* q = cfg; q <= cfg_end; q++) r.line += *q == '\n';
-        r.p = cfg_end + 1;
-        s = next_line(&r, &restore); /* config-end */
-        st = am_evo_check(&e->def, err, errsz);
-        if (st != AM_OK) goto done;
-        e->palette = am_evo_palette(&e->def);
-    }
-    int seen_last = 0, seen_rng = 0, seen_gen = 0, seen_evals = 0, seen_hist = 0, pop_seen = 0;
-    while ((s = next_line(&r, &restore)) != NULL) {
-        ntok = split(s, tok, 12);
-        if (ntok == 0) continue;
-        if (strcmp(tok[0], "rng") == 0 && ntok == 5) {
-            for (int i = 0; i < 4; i++)
-                if (!hex64(tok[1 + i], &e->rng.s[i])) {
-                    st = am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: malformed rng state", fname, r.line);
-                    goto done;
-                }
-            seen_rng = 1;
-        } else if (strcmp(tok[0], "generation") == 0 && ntok == 2 && to_long(tok[1], 0, 2000000000L, &e->generation)) {
-            seen_gen = 1;
-        } else if (strcmp(tok[0], "evaluations") == 0 && ntok == 2 && to_long(tok[1], 0, 2000000000L, &e->evaluations)) {
-            seen_evals = 1;
-        } else if (strcmp(tok[0], "history") == 0 && ntok == 2 && hex64(tok[1], &e->history)) {
-            seen_hist = 1;
-        } else if (strcmp(tok[0], "last") == 0 && ntok == 9) {
-            uint64_t b[4];
-            long dv, em;
-            if (!to_long(tok[1], 0, 2000000000L, &e->last.generation) || !to_long(tok[2], 0, 2000000000L, &e->last.evaluations) ||
-                !hex64(tok[3], &b[0]) || !hex64(tok[4], &b[1]) || !hex64(tok[5], &b[2]) || !to_long(tok[6], 0, AM_MAX_POPULATION, &dv) ||
-                !to_long(tok[7], 0, AM_MAX_POPULATION, &em) || !hex64(tok[8], &b[3])) {
-                st = am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: malformed 'last' line", fname, r.line);
-                goto done;
-            }
-            e->last.best = bits_d(b[0]);
-            e->last.mean = bits_d(b[1]);
-            e->last.median = bits_d(b[2]);
-            e->last.diverged = (int)dv;
-            e->last.empty = (int)em;
-            e->last.wall_s = bits_d(b[3]);
-            seen_last = 1;
-        } else if (strcmp(tok[0], "individual") == 0) {
-            st = read_ind(&r, e, tok, ntok, err, errsz);
-            if (st != AM_OK) goto done;
-            if (strcmp(tok[1], "pop") == 0) pop_seen++;
-            continue;
-        } else {
-            st = am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: unexpected line '%s'", fname, r.line, tok[0]);
-            goto done;
-        }
-        if (restore) *restore = '\n';
-    }
-    if (!seen_rng || !seen_gen || !seen_evals || !seen_hist || !seen_last)
-        st = am_fail(err, errsz, AM_ERR_PARSE, "%s: checkpoint misses its rng, generation, evaluations, history or last line", fname);
-    else if (pop_seen != e->def.population)
-        st = am_fail(err, errsz, AM_ERR_PARSE, "%s: checkpoint holds %d individuals, the population is %d", fname, pop_seen, e->def.population);
-done:
-    text[ls] = saved_end;
-    return st;
+    return am_evo_checkpoint_read_end(&r, err, errsz);
 }

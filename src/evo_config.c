@@ -32,14 +32,20 @@ am_evo_def am_default_evo(void)
 
 am_palette am_evo_palette(const am_evo_def* d)
 {
-    am_palette p = am_default_palette();
-    for (int i = 0; i < p.count; i++) {
-        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
-        if (p.mat[i].cte != AM_P(0)) p.mat[i].cte = d->cte;
-        p.mat[i].mu_static = d->mu_static;
-        p.mat[i].mu_kinetic = d->mu_kinetic;
-    }
+    am_palette p;
+    am_evo_palette_into(d, &p);
     return p;
+}
+
+void am_evo_palette_into(const am_evo_def* d, am_palette* p)
+{
+    am_default_palette_into(p);
+    for (int i = 0; i < p->count; i++) {
+        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
+        if (p->mat[i].cte != AM_P(0)) p->mat[i].cte = d->cte;
+        p->mat[i].mu_static = d->mu_static;
+        p->mat[i].mu_kinetic = d->mu_kinetic;
+    }
 }
 
 /* ---- the key table ---- */
@@ -323,20 +329,37 @@ static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap
     }
 }
 
-am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz)
 {
-    am_geno_sink out = {buf, cap, 0}; /* bounded text sink of the genotypes */
     char v[64];
-    am_geno_put(&out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
+    am_text_put(out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
     for (int i = 0; i < KEY_COUNT; i++) {
         if (keys[i].runtime && !with_runtime) continue;
         value_text(d, &keys[i], v, sizeof v);
-        am_geno_put(&out, "%s = %s\n", keys[i].name, v);
+        am_text_put(out, "%s = %s\n", keys[i].name, v);
     }
-    long n = out.len;
-    if (len) *len = n;
-    if (n >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs %ld bytes, the buffer holds %ld", n + 1, cap);
+    if (out->full == 2) return am_fail(err, errsz, AM_ERR_IO, "configuration text: the output failed");
+    if (out->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs more than the %ld bytes given", out->cap);
     return AM_OK;
+}
+
+am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
+{
+    am_text out = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text: no buffer");
+    buf[0] = 0;
+    am_status st = am_evo_write(d, with_runtime, &out, err, errsz);
+    if (len) *len = out.len;
+    if (st == AM_ERR_CAPACITY) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[128];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_evo_write(d, with_runtime, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "configuration text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
+    }
+    return st;
 }
 
 void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)
@@ -371,33 +394,41 @@ static char* trim(char* s)
     return s;
 }
 
-am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz)
 {
     char line[512];
     char msg[AM_ERR_MAX];
+    if (n >= (long)sizeof line)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: line longer than %d characters", fname, lineno, (int)sizeof line - 1);
+    memcpy(line, text, (size_t)n);
+    line[n] = 0;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* s = trim(line);
+    if (!*s) return AM_OK;
+    char* eq = strchr(s, '=');
+    if (!eq) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno, s);
+    *eq = 0;
+    char* key = trim(s);
+    char* value = trim(eq + 1);
+    if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
+    if (!*value) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno, key);
+    am_status st = am_evo_set(d, key, value, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
+    return AM_OK;
+}
+
+am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)
+{
     int lineno = 0;
     const char* p = text;
     while (*p) {
         lineno++;
         const char* nl = strchr(p, '\n');
-        size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        if (len >= sizeof line) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: line longer than %d characters", fname, lineno, (int)sizeof line - 1);
-        memcpy(line, p, len);
-        line[len] = 0;
+        long len = nl ? (long)(nl - p) : (long)strlen(p);
+        am_status st = am_evo_parse_line(d, p, len, fname, lineno, err, errsz);
+        if (st != AM_OK) return st;
         p = nl ? nl + 1 : p + len;
-        char* hash = strchr(line, '#');
-        if (hash) *hash = 0;
-        char* s = trim(line);
-        if (!*s) continue;
-        char* eq = strchr(s, '=');
-        if (!eq) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno, s);
-        *eq = 0;
-        char* key = trim(s);
-        char* value = trim(eq + 1);
-        if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
-        if (!*value) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno, key);
-        am_status st = am_evo_set(d, key, value, msg, sizeof msg);
-        if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
     }
     return AM_OK;
 }

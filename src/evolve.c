@@ -28,7 +28,7 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
                      am_record* rec, am_evo_ind* out)
 {
     char err[AM_ERR_MAX];
-    out->genome = *g;
+    if (&out->genome != g) out->genome = *g;
     out->fitness = 0.0;
     out->voxels = 0;
     out->diverged = 0;
@@ -65,7 +65,7 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
     if (st != AM_OK) return st;
     memset(e, 0, sizeof *e);
     e->def = *d;
-    e->palette = am_evo_palette(d);
+    am_evo_palette_into(d, &e->palette);
     am_rng_seed(&e->rng, d->seed);
     for (int i = 0; i < d->population; i++) {
         st = am_genome_init(&e->pop[i].genome, &d->geno, &e->rng, err, errsz);
@@ -88,6 +88,8 @@ static int better(const am_evo_ind* a, const am_evo_ind* b)
     return a->fitness > b->fitness;
 }
 
+_Static_assert(AM_EVO_BATCH >= 2 && AM_EVO_BATCH % 2 == 0, "offspring come in pairs");
+
 /* ---- parallel evaluation ---- */
 
 typedef struct eval_job {
@@ -96,7 +98,7 @@ typedef struct eval_job {
     const int* order;        /* item i of the map evaluates items[order[i]] */
     am_evo_work* work;
     int (*cancel)(void);
-    int skipped[AM_MAX_POPULATION];
+    int skipped[AM_EVO_BATCH];
 } eval_job;
 
 static void eval_task(void* ctx, int item, int worker)
@@ -108,8 +110,7 @@ static void eval_task(void* ctx, int item, int worker)
         return;
     }
     am_evo_ind* it = &job->items[idx];
-    am_genome g = it->genome;
-    am_evo_evaluate(&job->e->def, &job->e->palette, &g, &job->work[worker], NULL, it);
+    am_evo_evaluate(&job->e->def, &job->e->palette, &it->genome, &job->work[worker], NULL, it);
 }
 
 /* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
@@ -119,7 +120,7 @@ static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int
 {
     eval_job job;
     int* order = e->order;
-    int voxels[AM_MAX_POPULATION];
+    int voxels[AM_EVO_BATCH];
     am_express_def ex = express_def(&e->def, &e->palette);
     char msg[AM_ERR_MAX];
     for (int i = 0; i < n; i++) {
@@ -150,13 +151,13 @@ static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int
 
 /* ---- crowding ---- */
 
-static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w, uint8_t* body)
+/* the body of g into w->cell (all empty when it cannot be expressed) */
+static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w)
 {
     am_express_def ex = express_def(&e->def, &e->palette);
     char msg[AM_ERR_MAX];
     int cells = g->nx * g->ny * g->nz;
-    if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) == AM_OK) memcpy(body, w->cell, (size_t)cells);
-    else memset(body, 0, (size_t)cells);
+    if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) memset(w->cell, 0, (size_t)cells);
 }
 
 static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
@@ -166,12 +167,18 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
     am_evo_ind* c1 = &e->child[c];
     am_evo_ind* c2 = &e->child[c + 1];
     const int cells = p1->genome.nx * p1->genome.ny * p1->genome.nz;
-    express_body(e, &p1->genome, w, e->body[0]);
-    express_body(e, &p2->genome, w, e->body[1]);
-    express_body(e, &c1->genome, w, e->body[2]);
-    express_body(e, &c2->genome, w, e->body[3]);
-    am_real straight = am_body_distance(e->body[0], e->body[2], cells) + am_body_distance(e->body[1], e->body[3], cells);
-    am_real crossed = am_body_distance(e->body[0], e->body[3], cells) + am_body_distance(e->body[1], e->body[2], cells);
+    /* the parents' bodies kept (the first in e->body, the second in the workspace's spare body),
+     * each offspring's compared with both in w->cell */
+    express_body(e, &p1->genome, w);
+    memcpy(e->body, w->cell, (size_t)cells);
+    express_body(e, &p2->genome, w);
+    memcpy(w->other, w->cell, (size_t)cells);
+    express_body(e, &c1->genome, w);
+    am_real d1a = am_body_distance(e->body, w->cell, cells), d1b = am_body_distance(w->other, w->cell, cells);
+    express_body(e, &c2->genome, w);
+    am_real d2a = am_body_distance(e->body, w->cell, cells), d2b = am_body_distance(w->other, w->cell, cells);
+    am_real straight = d1a + d2b;
+    am_real crossed = d2a + d1b;
     if (!(straight <= crossed)) {
         am_evo_ind* t = c1;
         c1 = c2;
@@ -239,54 +246,61 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel
     if (workers < 1) workers = 1;
     if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
     int parent[AM_MAX_POPULATION]; /* offspring 2k and 2k + 1 come from parent[2k] and parent[2k + 1] */
-    if (e->generation == 0) {
-        /* the initial population: evaluated as it is */
-        for (int i = 0; i < n; i++) {
-            e->child[i] = e->pop[i];
-            parent[i] = i;
-        }
-    } else {
+    for (int i = 0; i < n; i++) parent[i] = i;
+    if (e->generation > 0) {
         /* random pairs: a Fisher-Yates shuffle of the population */
-        for (int i = 0; i < n; i++) parent[i] = i;
         for (int i = n - 1; i > 0; i--) {
             int j = (int)am_rng_below(&e->rng, (uint32_t)(i + 1));
             int t = parent[i];
             parent[i] = parent[j];
             parent[j] = t;
         }
-        for (int k = 0; k + 1 < n; k += 2) {
-            am_evo_ind* c1 = &e->child[k];
-            am_evo_ind* c2 = &e->child[k + 1];
-            st = am_genome_crossover(&e->pop[parent[k]].genome, &e->pop[parent[k + 1]].genome, &c1->genome, &c2->genome,
-                                     &e->def.geno, &e->rng, err, errsz);
-            if (st != AM_OK) {
-                e->rng = saved;
-                return st;
-            }
-            am_genome_mutate(&c1->genome, &e->def.geno, &e->rng);
-            am_genome_mutate(&c2->genome, &e->def.geno, &e->rng);
-        }
-    }
-    if (!evaluate_all(e, e->child, n, w, workers, cancel, err, errsz, &st)) {
-        e->rng = saved;
-        if (st != AM_OK) return st;
-        return am_fail(err, errsz, AM_ERR_ARG, "interrupted");
     }
     am_evo_stats s;
     memset(&s, 0, sizeof s);
-    for (int i = 0; i < n; i++) {
-        e->history = ind_hash(e->history, &e->child[i]);
-        s.diverged += e->child[i].diverged;
-        s.empty += e->child[i].empty;
-        if (!e->has_best || better(&e->child[i], &e->best)) {
-            e->best = e->child[i];
-            e->has_best = 1;
+    long steps = 0, voxel_steps = 0;
+    for (int b = 0; b < n; b += AM_EVO_BATCH) {
+        const int m = n - b < AM_EVO_BATCH ? n - b : AM_EVO_BATCH;
+        if (e->generation == 0) {
+            /* the initial population: evaluated as it is */
+            for (int j = 0; j < m; j++) e->child[j] = e->pop[b + j];
+        } else {
+            for (int k = 0; k + 1 < m; k += 2) {
+                am_evo_ind* c1 = &e->child[k];
+                am_evo_ind* c2 = &e->child[k + 1];
+                st = am_genome_crossover(&e->pop[parent[b + k]].genome, &e->pop[parent[b + k + 1]].genome, &c1->genome, &c2->genome,
+                                         &e->def.geno, &e->rng, err, errsz);
+                if (st != AM_OK) {
+                    e->rng = saved; /* the shapes of a run's genomes never differ: not after a placed batch */
+                    return st;
+                }
+                am_genome_mutate(&c1->genome, &e->def.geno, &e->rng);
+                am_genome_mutate(&c2->genome, &e->def.geno, &e->rng);
+            }
         }
-    }
-    if (e->generation == 0) {
-        for (int i = 0; i < n; i++) e->pop[i] = e->child[i];
-    } else {
-        for (int k = 0; k + 1 < n; k += 2) crowd_pair(e, parent[k], parent[k + 1], k, &w[0].geno);
+        /* cancelling is possible while nothing of the run has changed: in the first batch */
+        if (!evaluate_all(e, e->child, m, w, workers, b == 0 ? cancel : NULL, err, errsz, &st)) {
+            e->rng = saved;
+            if (st != AM_OK) return st;
+            return am_fail(err, errsz, AM_ERR_ARG, "interrupted");
+        }
+        for (int j = 0; j < m; j++) {
+            const am_evo_ind* c = &e->child[j];
+            e->history = ind_hash(e->history, c);
+            s.diverged += c->diverged;
+            s.empty += c->empty;
+            steps += c->steps;
+            voxel_steps += c->steps * c->voxels;
+            if (!e->has_best || better(c, &e->best)) {
+                e->best = *c;
+                e->has_best = 1;
+            }
+        }
+        if (e->generation == 0) {
+            for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];
+        } else {
+            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno);
+        }
     }
     e->evaluations += n;
     s.generation = e->generation;
@@ -294,6 +308,8 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel
     population_stats(e, &s);
     s.wall_s = am_port_now() - t0;
     e->last = s;
+    e->last_steps = steps;
+    e->last_voxel_steps = voxel_steps;
     e->generation++;
     return AM_OK;
 }

@@ -35,23 +35,40 @@ int am_genome_sniff(const char* text)
     return strncmp(text, GENOME_MAGIC, n) == 0 && (is_space(text[n]) || text[n] == '\n' || text[n] == '\0');
 }
 
-am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz)
 {
     am_status st = am_genome_check(g, err, errsz);
     if (st != AM_OK) return st;
-    am_geno_sink s = {buf, cap, 0};
-    if (cap > 0) buf[0] = '\0';
-    am_geno_put(&s, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
-    am_geno_put(&s, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
-    am_geno_put(&s, "repr %s\n", am_repr_name(g->repr));
-    am_geno_put(&s, "materials");
-    for (int m = 0; m < g->materials; m++) am_geno_put(&s, " %s", g->mat[m]);
-    am_geno_put(&s, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
-    am_geno_ops_of(g->repr)->format(g, &s);
-    am_geno_put(&s, "end\n");
-    if (len) *len = s.len;
-    if (s.len >= cap) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text needs %ld bytes, the buffer holds %ld", s.len + 1, cap);
+    am_text_put(out, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
+    am_text_put(out, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
+    am_text_put(out, "repr %s\n", am_repr_name(g->repr));
+    am_text_put(out, "materials");
+    for (int m = 0; m < g->materials; m++) am_text_put(out, " %s", g->mat[m]);
+    am_text_put(out, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
+    am_geno_ops_of(g->repr)->format(g, out);
+    am_text_put(out, "end\n");
+    if (out->full == 2) return am_fail(err, errsz, AM_ERR_IO, "genome text: the output failed");
+    if (out->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text needs more than the %ld bytes given", out->cap);
     return AM_OK;
+}
+
+am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
+{
+    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text: no buffer");
+    buf[0] = '\0';
+    am_status st = am_genome_write(g, &t, err, errsz);
+    if (len) *len = t.len;
+    if (st == AM_ERR_CAPACITY) {
+        /* the length it needs: the text again through a counting stream */
+        char piece[320];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        am_genome_write(g, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "genome text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
+    }
+    return st;
 }
 
 static int valid_name(const char* s)
@@ -119,71 +136,97 @@ static am_status header_line(am_genome* g, int state, int ntok, char** tok, char
     }
 }
 
-am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz)
+void am_genome_read_begin(am_genome_reader* r, am_genome* g, const char* fname)
+{
+    memset(r, 0, sizeof *r);
+    memset(g, 0, sizeof *g);
+    r->g = g;
+    r->fname = fname ? fname : "genome";
+    r->state = S_MAGIC;
+}
+
+/* the reader's failure as "fname:line: problem" */
+static am_status read_fail(am_genome_reader* r, am_status st, const char* msg, char* err, int errsz)
+{
+    r->st = st;
+    return am_fail(err, errsz, st, "%s:%d: %s", r->fname, r->lineno, msg);
+}
+
+am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, char* err, int errsz)
 {
     char line[LINE_MAX_CHARS];
     char* tok[TOKENS_MAX];
     char msg[AM_ERR_MAX];
-    am_geno_parse ps;
-    const am_geno_ops* ops = NULL;
-    int state = S_MAGIC, lineno = 0;
+    am_genome* g = r->g;
     am_status st = AM_OK;
-    memset(g, 0, sizeof *g);
-    memset(&ps, 0, sizeof ps);
+    if (r->st != AM_OK) return r->st;
     msg[0] = '\0';
+    r->lineno++;
+    if (n >= (long)sizeof line) {
+        am_fail(msg, sizeof msg, AM_ERR_PARSE, "line longer than %d characters", LINE_MAX_CHARS - 1);
+        return read_fail(r, AM_ERR_PARSE, msg, err, errsz);
+    }
+    memcpy(line, text, (size_t)n);
+    line[n] = '\0';
+    char* hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+    int ntok = 0;
+    for (char* q = line; *q;) {
+        while (is_space(*q)) *q++ = '\0';
+        if (!*q) break;
+        if (ntok == TOKENS_MAX) {
+            am_fail(msg, sizeof msg, AM_ERR_PARSE, "more than %d fields on a line", TOKENS_MAX);
+            return read_fail(r, AM_ERR_PARSE, msg, err, errsz);
+        }
+        tok[ntok++] = q;
+        while (*q && !is_space(*q)) q++;
+    }
+    if (ntok == 0) return AM_OK;
+    if (r->state == S_DONE) {
+        am_fail(msg, sizeof msg, AM_ERR_PARSE, "text after 'end'");
+        return read_fail(r, AM_ERR_PARSE, msg, err, errsz);
+    }
+    if (r->state < S_BODY) {
+        st = header_line(g, r->state, ntok, tok, msg, sizeof msg);
+        if (st != AM_OK) return read_fail(r, st, msg, err, errsz);
+        r->state++;
+        if (r->state == S_BODY) r->ops = am_geno_ops_of(g->repr);
+        return AM_OK;
+    }
+    if (strcmp(tok[0], "end") == 0 && ntok == 1) {
+        st = r->ops->parse_end(g, &r->ps, msg, sizeof msg);
+        if (st == AM_OK) st = am_genome_check(g, msg, sizeof msg);
+        if (st != AM_OK) return read_fail(r, st, msg, err, errsz);
+        r->state = S_DONE;
+        return AM_OK;
+    }
+    st = r->ops->parse_line(g, &r->ps, ntok, tok, msg, sizeof msg);
+    if (st != AM_OK) return read_fail(r, st, msg, err, errsz);
+    return AM_OK;
+}
+
+am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz)
+{
+    char msg[AM_ERR_MAX];
+    if (r->st != AM_OK) return r->st;
+    if (r->state == S_DONE) return AM_OK;
+    if (r->lineno == 0) r->lineno = 1;
+    if (r->state < S_BODY) am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: expected %s", expected[r->state]);
+    else am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: missing 'end' line");
+    return read_fail(r, AM_ERR_PARSE, msg, err, errsz);
+}
+
+am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz)
+{
+    am_genome_reader r;
+    am_genome_read_begin(&r, g, fname);
     const char* p = text;
     while (*p) {
         const char* eol = strchr(p, '\n');
-        size_t n = eol ? (size_t)(eol - p) : strlen(p);
-        lineno++;
-        if (n >= sizeof line) {
-            st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "line longer than %d characters", LINE_MAX_CHARS - 1);
-            break;
-        }
-        memcpy(line, p, n);
-        line[n] = '\0';
+        long n = eol ? (long)(eol - p) : (long)strlen(p);
+        am_status st = am_genome_read_line(&r, p, n, err, errsz);
+        if (st != AM_OK) return st;
         p = eol ? eol + 1 : p + n;
-        char* hash = strchr(line, '#');
-        if (hash) *hash = '\0';
-        int ntok = 0;
-        for (char* q = line; *q;) {
-            while (is_space(*q)) *q++ = '\0';
-            if (!*q) break;
-            if (ntok == TOKENS_MAX) {
-                st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "more than %d fields on a line", TOKENS_MAX);
-                break;
-            }
-            tok[ntok++] = q;
-            while (*q && !is_space(*q)) q++;
-        }
-        if (st != AM_OK) break;
-        if (ntok == 0) continue;
-        if (state == S_DONE) {
-            st = am_fail(msg, sizeof msg, AM_ERR_PARSE, "text after 'end'");
-            break;
-        }
-        if (state < S_BODY) {
-            st = header_line(g, state, ntok, tok, msg, sizeof msg);
-            if (st != AM_OK) break;
-            state++;
-            if (state == S_BODY) ops = am_geno_ops_of(g->repr);
-            continue;
-        }
-        if (strcmp(tok[0], "end") == 0 && ntok == 1) {
-            st = ops->parse_end(g, &ps, msg, sizeof msg);
-            if (st == AM_OK) st = am_genome_check(g, msg, sizeof msg);
-            if (st != AM_OK) break;
-            state = S_DONE;
-            continue;
-        }
-        st = ops->parse_line(g, &ps, ntok, tok, msg, sizeof msg);
-        if (st != AM_OK) break;
     }
-    if (st == AM_OK && state != S_DONE) {
-        if (lineno == 0) lineno = 1;
-        st = state < S_BODY ? am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: expected %s", expected[state])
-                            : am_fail(msg, sizeof msg, AM_ERR_PARSE, "unexpected end of text: missing 'end' line");
-    }
-    if (st != AM_OK) return am_fail(err, errsz, st, "%s:%d: %s", fname ? fname : "genome", lineno, msg);
-    return AM_OK;
+    return am_genome_read_end(&r, err, errsz);
 }

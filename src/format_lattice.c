@@ -1,8 +1,9 @@
 /* The lattice text format ("amorph-lattice 1"; grammar and errors in docs/formats.md).
  *
- * The parser walks the caller's NUL-terminated text in place with pointers: a line is the span
- * up to '\n' or the terminating NUL, a token a run of non-blank bytes in it, so lines of any
- * length need no buffer and nothing is copied. Numbers go through strtod/strtof/strtol, which
+ * The parser takes one line at a time (am_lattice_read_line; am_lattice_parse splits a whole
+ * NUL-terminated text at '\n' and feeds its lines) and walks it in place with pointers: a token
+ * is a run of non-blank bytes in the line, so a line of any length needs no buffer and nothing is
+ * copied. Numbers go through strtod/strtof/strtol, which
  * stop at the blank, '#', newline or NUL after the token; a number is accepted only when the
  * whole token was consumed and the value is finite. The lattice is filled as the text is read,
  * so on an error *lat holds a partial result and only the status and message count.
@@ -10,7 +11,7 @@
  * The writer prints every real in the shortest "%g" form that reads back to the same bits (at
  * most "%.9g" for float, "%.17g" for double) and always writes the whole palette, so format-then-parse gives the same lattice bit
  * for bit. It checks the lattice first with the same rules the parser applies, so whatever it
- * writes reads back.
+ * writes reads back. It writes to an am_text, a whole-text buffer or a stream.
  */
 #include "amorph/lattice.h"
 
@@ -327,113 +328,150 @@ static am_status parse_size_line(const pctx* c, am_lattice* lat, const char* p, 
     return AM_OK;
 }
 
-am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname, char* err, int errsz)
+void am_lattice_read_begin(am_lattice_reader* r, am_lattice* lat, const char* fname)
 {
-    pctx c = {fname ? fname : "(text)", 1, err, errsz};
-    if (!lat || !text) return perr(&c, AM_ERR_ARG, "no lattice or no text given");
-    memset(lat, 0, sizeof *lat);
-    lat->voxel_size = AM_P(0.01);
-    int have_header = 0, have_size = 0, have_voxel = 0;
-    int z = -1;   /* layer being read; -1 before the first 'layer' line */
-    int y = 0;    /* rows of layer z read so far */
-    int last = 1; /* number of the last line that exists */
+    memset(r, 0, sizeof *r);
+    r->lat = lat;
+    r->fname = fname ? fname : "(text)";
+    r->z = -1;
+    r->last = 1;
+    if (lat) {
+        memset(lat, 0, sizeof *lat);
+        lat->voxel_size = AM_P(0.01);
+    }
+}
+
+/* one line [ls, le); c->line is its number */
+static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* ls, const char* le)
+{
+    am_lattice* lat = r->lat;
     am_status st;
-    const char* p = text;
-    for (c.line = 1; *p; c.line++) {
-        const char* ls = p;
-        const char* le = ls;
-        while (*le && *le != '\n') le++;
-        p = *le ? le + 1 : le;
-        last = c.line;
-        /* a '#' at the start of the line or after a blank starts a comment */
-        const char* end = ls;
-        while (end < le && !(*end == '#' && (end == ls || is_blank(end[-1])))) end++;
-        const char* q = ls;
-        const char *ts = NULL, *te = NULL;
-        if (!next_token(&q, end, &ts, &te)) continue;
+    /* a '#' at the start of the line or after a blank starts a comment */
+    const char* end = ls;
+    while (end < le && !(*end == '#' && (end == ls || is_blank(end[-1])))) end++;
+    const char* q = ls;
+    const char *ts = NULL, *te = NULL;
+    if (!next_token(&q, end, &ts, &te)) return AM_OK;
 
-        if (!have_header) {
-            const char *vs = NULL, *ve = NULL;
-            long version = 0;
-            if (!tok_is(ts, te, LAT_MAGIC))
-                return perr(&c, AM_ERR_PARSE, "not a lattice file: expected the header '" LAT_MAGIC " %d', found '%.*s'", LAT_VERSION,
-                            show_len(ts, te), ts);
-            if (!next_token(&q, end, &vs, &ve) || !parse_int(vs, ve, &version))
-                return perr(&c, AM_ERR_PARSE, "header: expected '" LAT_MAGIC " %d' (a version number after the name)", LAT_VERSION);
-            if (version != LAT_VERSION)
-                return perr(&c, AM_ERR_PARSE, "unsupported lattice format version %ld (this build reads version %d)", version,
-                            LAT_VERSION);
-            if ((st = no_more(&c, "header", q, end)) != AM_OK) return st;
-            have_header = 1;
-            continue;
-        }
-
-        /* inside a layer: the next ny meaningful lines are its rows */
-        if (z >= 0 && y < lat->ny) {
-            if (is_keyword(ts, te))
-                return perr(&c, AM_ERR_PARSE, "layer %d has %d rows, expected %d (size %d %d %d)", z, y, lat->ny, lat->nx, lat->ny,
-                            lat->nz);
-            if ((st = parse_row(&c, lat, z, y, ts, end)) != AM_OK) return st;
-            y++;
-            continue;
-        }
-
-        if (tok_is(ts, te, "size")) {
-            if (have_size) return perr(&c, AM_ERR_PARSE, "size given twice");
-            if ((st = parse_size_line(&c, lat, q, end)) != AM_OK) return st;
-            have_size = 1;
-        } else if (tok_is(ts, te, "voxel_size")) {
-            am_param v;
-            if (have_voxel) return perr(&c, AM_ERR_PARSE, "voxel_size given twice");
-            if (z >= 0) return perr(&c, AM_ERR_PARSE, "voxel_size must come before the first layer");
-            if (!next_token(&q, end, &ts, &te)) return perr(&c, AM_ERR_PARSE, "voxel_size: expected a length in metres");
-            if (!parse_real(ts, te, &v))
-                return perr(&c, AM_ERR_PARSE, "voxel_size: '%.*s' is not a finite number", show_len(ts, te), ts);
-            if (!(v > AM_P(0))) return perr(&c, AM_ERR_RANGE, "voxel_size %.*s must be greater than 0", show_len(ts, te), ts);
-            if ((st = no_more(&c, "voxel_size", q, end)) != AM_OK) return st;
-            lat->voxel_size = v;
-            have_voxel = 1;
-        } else if (tok_is(ts, te, "material")) {
-            if (z >= 0) return perr(&c, AM_ERR_PARSE, "materials must come before the first layer");
-            if ((st = parse_material(&c, &lat->palette, q, end)) != AM_OK) return st;
-        } else if (tok_is(ts, te, "layer")) {
-            long k = 0;
-            if (!have_size) return perr(&c, AM_ERR_PARSE, "layer before size: a 'size NX NY NZ' line must come first");
-            if (!next_token(&q, end, &ts, &te) || !parse_int(ts, te, &k))
-                return perr(&c, AM_ERR_PARSE, "layer: expected a layer number 0..%d", lat->nz - 1);
-            if ((st = no_more(&c, "layer", q, end)) != AM_OK) return st;
-            if (z == lat->nz - 1 && y == lat->ny)
-                return perr(&c, AM_ERR_PARSE, "layer %ld: too many layers (size says %d)", k, lat->nz);
-            if (k != z + 1) return perr(&c, AM_ERR_PARSE, "expected layer %d, found layer %ld (layers go 0..%d in order)", z + 1, k, lat->nz - 1);
-            if (z < 0 && lat->palette.count == 0) lat->palette = am_default_palette();
-            z = (int)k;
-            y = 0;
-        } else if (tok_is(ts, te, LAT_MAGIC)) {
-            return perr(&c, AM_ERR_PARSE, "header given twice");
-        } else if (is_row(ts, te)) {
-            if (z < 0) return perr(&c, AM_ERR_PARSE, "row before any 'layer' line");
-            return perr(&c, AM_ERR_PARSE, "layer %d has more than %d rows (size %d %d %d)", z, lat->ny, lat->nx, lat->ny, lat->nz);
-        } else {
-            return perr(&c, AM_ERR_PARSE, "unknown keyword '%.*s' (expected size, voxel_size, material or layer)", show_len(ts, te), ts);
-        }
+    if (!r->have_header) {
+        const char *vs = NULL, *ve = NULL;
+        long version = 0;
+        if (!tok_is(ts, te, LAT_MAGIC))
+            return perr(c, AM_ERR_PARSE, "not a lattice file: expected the header '" LAT_MAGIC " %d', found '%.*s'", LAT_VERSION,
+                        show_len(ts, te), ts);
+        if (!next_token(&q, end, &vs, &ve) || !parse_int(vs, ve, &version))
+            return perr(c, AM_ERR_PARSE, "header: expected '" LAT_MAGIC " %d' (a version number after the name)", LAT_VERSION);
+        if (version != LAT_VERSION)
+            return perr(c, AM_ERR_PARSE, "unsupported lattice format version %ld (this build reads version %d)", version,
+                        LAT_VERSION);
+        if ((st = no_more(c, "header", q, end)) != AM_OK) return st;
+        r->have_header = 1;
+        return AM_OK;
     }
 
-    /* the end: everything the size promised must be there */
-    c.line = last;
-    if (!have_header)
-        return perr(&c, AM_ERR_PARSE, "not a lattice file: no header '" LAT_MAGIC " %d' (the file is empty or only comments)",
-                    LAT_VERSION);
-    if (!have_size) return perr(&c, AM_ERR_PARSE, "missing size: no 'size NX NY NZ' line");
-    if (z >= 0 && y < lat->ny)
-        return perr(&c, AM_ERR_PARSE, "layer %d has %d rows, expected %d (the file ends)", z, y, lat->ny);
-    if (z < lat->nz - 1) return perr(&c, AM_ERR_PARSE, "missing layer %d: the file ends, size says %d layers", z + 1, lat->nz);
+    /* inside a layer: the next ny meaningful lines are its rows */
+    if (r->z >= 0 && r->y < lat->ny) {
+        if (is_keyword(ts, te))
+            return perr(c, AM_ERR_PARSE, "layer %d has %d rows, expected %d (size %d %d %d)", r->z, r->y, lat->ny, lat->nx, lat->ny,
+                        lat->nz);
+        if ((st = parse_row(c, lat, r->z, r->y, ts, end)) != AM_OK) return st;
+        r->y++;
+        return AM_OK;
+    }
+
+    if (tok_is(ts, te, "size")) {
+        if (r->have_size) return perr(c, AM_ERR_PARSE, "size given twice");
+        if ((st = parse_size_line(c, lat, q, end)) != AM_OK) return st;
+        r->have_size = 1;
+    } else if (tok_is(ts, te, "voxel_size")) {
+        am_param v;
+        if (r->have_voxel) return perr(c, AM_ERR_PARSE, "voxel_size given twice");
+        if (r->z >= 0) return perr(c, AM_ERR_PARSE, "voxel_size must come before the first layer");
+        if (!next_token(&q, end, &ts, &te)) return perr(c, AM_ERR_PARSE, "voxel_size: expected a length in metres");
+        if (!parse_real(ts, te, &v))
+            return perr(c, AM_ERR_PARSE, "voxel_size: '%.*s' is not a finite number", show_len(ts, te), ts);
+        if (!(v > AM_P(0))) return perr(c, AM_ERR_RANGE, "voxel_size %.*s must be greater than 0", show_len(ts, te), ts);
+        if ((st = no_more(c, "voxel_size", q, end)) != AM_OK) return st;
+        lat->voxel_size = v;
+        r->have_voxel = 1;
+    } else if (tok_is(ts, te, "material")) {
+        if (r->z >= 0) return perr(c, AM_ERR_PARSE, "materials must come before the first layer");
+        if ((st = parse_material(c, &lat->palette, q, end)) != AM_OK) return st;
+    } else if (tok_is(ts, te, "layer")) {
+        long k = 0;
+        if (!r->have_size) return perr(c, AM_ERR_PARSE, "layer before size: a 'size NX NY NZ' line must come first");
+        if (!next_token(&q, end, &ts, &te) || !parse_int(ts, te, &k))
+            return perr(c, AM_ERR_PARSE, "layer: expected a layer number 0..%d", lat->nz - 1);
+        if ((st = no_more(c, "layer", q, end)) != AM_OK) return st;
+        if (r->z == lat->nz - 1 && r->y == lat->ny)
+            return perr(c, AM_ERR_PARSE, "layer %ld: too many layers (size says %d)", k, lat->nz);
+        if (k != r->z + 1)
+            return perr(c, AM_ERR_PARSE, "expected layer %d, found layer %ld (layers go 0..%d in order)", r->z + 1, k, lat->nz - 1);
+        if (r->z < 0 && lat->palette.count == 0) am_default_palette_into(&lat->palette);
+        r->z = (int)k;
+        r->y = 0;
+    } else if (tok_is(ts, te, LAT_MAGIC)) {
+        return perr(c, AM_ERR_PARSE, "header given twice");
+    } else if (is_row(ts, te)) {
+        if (r->z < 0) return perr(c, AM_ERR_PARSE, "row before any 'layer' line");
+        return perr(c, AM_ERR_PARSE, "layer %d has more than %d rows (size %d %d %d)", r->z, lat->ny, lat->nx, lat->ny, lat->nz);
+    } else {
+        return perr(c, AM_ERR_PARSE, "unknown keyword '%.*s' (expected size, voxel_size, material or layer)", show_len(ts, te), ts);
+    }
     return AM_OK;
+}
+
+am_status am_lattice_read_line(am_lattice_reader* r, const char* text, long n, char* err, int errsz)
+{
+    if (r->st != AM_OK) return r->st;
+    r->line++;
+    r->last = r->line;
+    pctx c = {r->fname, r->line, err, errsz};
+    if (!r->lat || !text) return r->st = perr(&c, AM_ERR_ARG, "no lattice or no text given");
+    r->st = lattice_line(r, &c, text, text + n);
+    return r->st;
+}
+
+am_status am_lattice_read_end(am_lattice_reader* r, char* err, int errsz)
+{
+    if (r->st != AM_OK) return r->st;
+    /* the end: everything the size promised must be there */
+    pctx c = {r->fname, r->last, err, errsz};
+    const am_lattice* lat = r->lat;
+    if (!lat) return r->st = perr(&c, AM_ERR_ARG, "no lattice or no text given");
+    if (!r->have_header)
+        return r->st = perr(&c, AM_ERR_PARSE, "not a lattice file: no header '" LAT_MAGIC " %d' (the file is empty or only comments)",
+                            LAT_VERSION);
+    if (!r->have_size) return r->st = perr(&c, AM_ERR_PARSE, "missing size: no 'size NX NY NZ' line");
+    if (r->z >= 0 && r->y < lat->ny)
+        return r->st = perr(&c, AM_ERR_PARSE, "layer %d has %d rows, expected %d (the file ends)", r->z, r->y, lat->ny);
+    if (r->z < lat->nz - 1)
+        return r->st = perr(&c, AM_ERR_PARSE, "missing layer %d: the file ends, size says %d layers", r->z + 1, lat->nz);
+    return AM_OK;
+}
+
+am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname, char* err, int errsz)
+{
+    am_lattice_reader r;
+    if (!lat || !text) {
+        pctx c = {fname ? fname : "(text)", 1, err, errsz};
+        return perr(&c, AM_ERR_ARG, "no lattice or no text given");
+    }
+    am_lattice_read_begin(&r, lat, fname);
+    const char* p = text;
+    while (*p) {
+        const char* le = p;
+        while (*le && *le != '\n') le++;
+        am_status st = am_lattice_read_line(&r, p, (long)(le - p), err, errsz);
+        if (st != AM_OK) return st;
+        p = *le ? le + 1 : le;
+    }
+    return am_lattice_read_end(&r, err, errsz);
 }
 
 /* ---- the writer -------------------------------------------------------------------------- */
 
 /* the bounded text buffer of amorph/text.h */
-typedef am_text wbuf;
 #define put am_text_put
 
 #if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
@@ -463,11 +501,9 @@ static void fmt_real(char out[40], am_param v)
     snprintf(out, 40, "%.*g", digits, (double)v);
 }
 
-am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz)
+am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz)
 {
-    if (len) *len = 0;
-    if (!lat || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no buffer");
-    buf[0] = 0;
+    if (!lat || !out) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no output");
     /* the same rules as the parser, so what is written reads back */
     if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_ARG, "lattice format: size %d %d %d outside 1..%d", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
@@ -497,41 +533,50 @@ am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* le
             return am_fail(err, errsz, AM_ERR_ARG, "lattice format: cell %d holds material id %d, the palette has %d", i, lat->cell[i],
                            pal->count);
 
-    wbuf w = {buf, cap, 0, 0};
-    put(&w, LAT_MAGIC " %d\n", LAT_VERSION);
-    put(&w, "# rows: y = 0..%d top to bottom; characters: x = 0..%d left to right; layers: z = 0 (floor) up\n", lat->ny - 1,
+    am_text* w = out;
+    put(w, LAT_MAGIC " %d\n", LAT_VERSION);
+    put(w, "# rows: y = 0..%d top to bottom; characters: x = 0..%d left to right; layers: z = 0 (floor) up\n", lat->ny - 1,
         lat->nx - 1);
-    put(&w, "# cells: '.' empty, 1-9 and a-g material ids (order of the material lines, from 1)\n");
-    put(&w, "size %d %d %d\n", lat->nx, lat->ny, lat->nz);
+    put(w, "# cells: '.' empty, 1-9 and a-g material ids (order of the material lines, from 1)\n");
+    put(w, "size %d %d %d\n", lat->nx, lat->ny, lat->nz);
     char num[40];
     fmt_real(num, lat->voxel_size);
-    put(&w, "voxel_size %s\n", num);
+    put(w, "voxel_size %s\n", num);
     for (int i = 0; i < pal->count; i++) {
         const am_material* m = &pal->mat[i];
-        put(&w, "material %s", m->name);
+        put(w, "material %s", m->name);
         for (int k = 0; k < K_COLOR; k++) {
             fmt_real(num, get_real(m, k));
-            put(&w, " %s=%s", key_names[k], num);
+            put(w, " %s=%s", key_names[k], num);
         }
-        put(&w, " color=#%02x%02x%02x", m->color[0], m->color[1], m->color[2]);
-        if (m->color[3] != 255) put(&w, "%02x", m->color[3]);
-        put(&w, " fixed=%d\n", m->fixed);
+        put(w, " color=#%02x%02x%02x", m->color[0], m->color[1], m->color[2]);
+        if (m->color[3] != 255) put(w, "%02x", m->color[3]);
+        put(w, " fixed=%d\n", m->fixed);
     }
-    for (int z = 0; z < lat->nz && !w.full; z++) {
-        put(&w, "layer %d\n", z);
-        for (int y = 0; y < lat->ny && !w.full; y++) {
-            if (w.cap - w.len < lat->nx + 2) {
-                w.full = 1;
-                break;
-            }
-            for (int x = 0; x < lat->nx; x++) w.buf[w.len++] = cell_chars[lat->cell[am_lattice_index(lat, x, y, z)]];
-            w.buf[w.len++] = '\n';
-            w.buf[w.len] = 0;
+    char row[AM_MAX_DIM + 1];
+    for (int z = 0; z < lat->nz && !w->full; z++) {
+        put(w, "layer %d\n", z);
+        for (int y = 0; y < lat->ny && !w->full; y++) {
+            for (int x = 0; x < lat->nx; x++) row[x] = cell_chars[lat->cell[am_lattice_index(lat, x, y, z)]];
+            row[lat->nx] = '\n';
+            am_text_write(w, row, lat->nx + 1);
         }
     }
-    if (w.full) {
+    if (w->full == 2) return am_fail(err, errsz, AM_ERR_IO, "lattice format: the output failed");
+    if (w->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice format: the text needs more than the %ld bytes given", w->cap);
+    return AM_OK;
+}
+
+am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz)
+{
+    if (len) *len = 0;
+    if (!lat || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "lattice format: no lattice or no buffer");
+    buf[0] = 0;
+    am_text w = {buf, cap, 0, 0, NULL, NULL, 0};
+    am_status st = am_lattice_write(lat, &w, err, errsz);
+    if (st != AM_OK) {
         buf[0] = 0;
-        return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice format: the text needs more than the %ld bytes given", cap);
+        return st;
     }
     if (len) *len = w.len;
     return AM_OK;

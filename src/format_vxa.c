@@ -812,7 +812,7 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
     const am_material* m0 = &pal->mat[0];
     int vol = env->cte_mode == AM_CTE_VOLUMETRIC;
     char a[40], b[40];
-    wbuf w = {buf, cap, 0, 0};
+    wbuf w = {buf, cap, 0, 0, NULL, NULL, 0};
 
     put(&w, "<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>\n<VXA Version=\"1.1\">\n");
     put(&w, "  <!-- written by amorph (docs/vxa.md); VoxCAD ignores the <Amorph> element at the end -->\n");

@@ -15,7 +15,6 @@
  */
 #include "amorph/genotype.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -227,24 +226,14 @@ void am_geno_tables(am_geno_work* w)
     w->tables = 1;
 }
 
-void am_geno_put(am_geno_sink* s, const char* fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    long room = s->cap - s->len;
-    int n = vsnprintf(room > 0 ? s->buf + s->len : NULL, room > 0 ? (size_t)room : 0, fmt, ap);
-    va_end(ap);
-    if (n > 0) s->len += n;
-}
-
-void am_geno_put_real(am_geno_sink* s, am_real v)
+void am_geno_put_real(am_text* s, am_real v)
 {
 #if defined(AM_REAL_DOUBLE)
-    am_geno_put(s, " %.17g", v);
+    am_text_put(s, " %.17g", v);
 #elif defined(AM_REAL_FIXED_POINT)
-    am_geno_put(s, " %.17g", AM_TO_DOUBLE(v)); /* exact: a Q24 value is a short binary fraction */
+    am_text_put(s, " %.17g", AM_TO_DOUBLE(v)); /* exact: a Q24 value is a short binary fraction */
 #else
-    am_geno_put(s, " %.9g", (double)v);
+    am_text_put(s, " %.9g", (double)v);
 #endif
 }
 

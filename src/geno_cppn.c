@@ -335,9 +335,9 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
     for (int c0 = 0; c0 < cells; c0 += AM_CPPN_CHUNK) {
         const int cnt = cells - c0 < AM_CPPN_CHUNK ? cells - c0 : AM_CPPN_CHUNK;
         for (int i = 0; i < cnt; i++) {
-            w->coord[0][i] = axis[0][x];
-            w->coord[1][i] = axis[1][y];
-            w->coord[2][i] = axis[2][z];
+            w->scratch.cppn.coord[0][i] = axis[0][x];
+            w->scratch.cppn.coord[1][i] = axis[1][y];
+            w->scratch.cppn.coord[2][i] = axis[2][z];
             if (++x == nx) {
                 x = 0;
                 if (++y == ny) {
@@ -347,8 +347,8 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
             }
         }
         for (int l = 0; l < L; l++) {
-            am_real(*in)[AM_CPPN_CHUNK] = w->act[(l + 1) & 1];
-            am_real(*out)[AM_CPPN_CHUNK] = w->act[l & 1];
+            am_real(*in)[AM_CPPN_CHUNK] = w->scratch.cppn.act[(l + 1) & 1];
+            am_real(*out)[AM_CPPN_CHUNK] = w->scratch.cppn.act[l & 1];
             for (int j = 0; j < n; j++) {
                 am_real* acc = out[j];
                 for (int i = 0; i < cnt; i++) acc[i] = AM_R(0);
@@ -356,7 +356,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
                     for (int s = 0; s < 3; s++)
                         if (c->on_in[j][s]) {
                             const am_real wv = c->w_in[j][s];
-                            const am_real* src = w->coord[s];
+                            const am_real* src = w->scratch.cppn.coord[s];
                             for (int i = 0; i < cnt; i++) acc[i] += AM_MUL(wv, src[i]);
                         }
                     if (c->on_in[j][3]) {
@@ -374,7 +374,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
                 apply(w, &c->node[l][j], eff[l][j], acc, cnt);
             }
         }
-        am_real(*last)[AM_CPPN_CHUNK] = w->act[(L - 1) & 1];
+        am_real(*last)[AM_CPPN_CHUNK] = w->scratch.cppn.act[(L - 1) & 1];
         for (int m = 0; m < g->materials; m++) {
             am_real* d = w->dens[m] + c0;
             for (int i = 0; i < cnt; i++) d[i] = AM_R(0);
@@ -389,44 +389,44 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
 
 /* ---- text ---- */
 
-static void put_conn(am_geno_sink* s, uint8_t on, am_real w)
+static void put_conn(am_text* s, uint8_t on, am_real w)
 {
-    am_geno_put(s, " %d", on);
+    am_text_put(s, " %d", on);
     am_geno_put_real(s, w);
 }
 
-static void cppn_format(const am_genome* g, am_geno_sink* s)
+static void cppn_format(const am_genome* g, am_text* s)
 {
     const am_cppn_genome* c = &g->cppn;
-    am_geno_put(s, "cppn %d %d\n", c->layers, c->nodes);
-    am_geno_put(s, "# node LAYER J FUNCTION OFFSET XSCALE YSCALE\n");
+    am_text_put(s, "cppn %d %d\n", c->layers, c->nodes);
+    am_text_put(s, "# node LAYER J FUNCTION OFFSET XSCALE YSCALE\n");
     for (int l = 0; l < c->layers; l++)
         for (int j = 0; j < c->nodes; j++) {
             const am_cppn_node* nd = &c->node[l][j];
-            am_geno_put(s, "node %d %d %s", l, j, fn_names[nd->fn < AM_FN_COUNT ? nd->fn : 0]);
+            am_text_put(s, "node %d %d %s", l, j, fn_names[nd->fn < AM_FN_COUNT ? nd->fn : 0]);
             am_geno_put_real(s, nd->offset);
             am_geno_put_real(s, nd->xscale);
             am_geno_put_real(s, nd->yscale);
-            am_geno_put(s, "\n");
+            am_text_put(s, "\n");
         }
-    am_geno_put(s, "# in J: ACTIVE WEIGHT pairs from x, y, z, bias into node 0 J\n"
+    am_text_put(s, "# in J: ACTIVE WEIGHT pairs from x, y, z, bias into node 0 J\n"
                    "# link LAYER J: ACTIVE WEIGHT pairs from each node of LAYER-1 into node LAYER J\n"
                    "# out MATERIAL: ACTIVE WEIGHT pairs from each node of the last layer\n");
     for (int j = 0; j < c->nodes; j++) {
-        am_geno_put(s, "in %d", j);
+        am_text_put(s, "in %d", j);
         for (int i = 0; i < 4; i++) put_conn(s, c->on_in[j][i], c->w_in[j][i]);
-        am_geno_put(s, "\n");
+        am_text_put(s, "\n");
     }
     for (int l = 0; l + 1 < c->layers; l++)
         for (int j = 0; j < c->nodes; j++) {
-            am_geno_put(s, "link %d %d", l + 1, j);
+            am_text_put(s, "link %d %d", l + 1, j);
             for (int i = 0; i < c->nodes; i++) put_conn(s, c->on[l][j][i], c->w[l][j][i]);
-            am_geno_put(s, "\n");
+            am_text_put(s, "\n");
         }
     for (int m = 0; m < g->materials; m++) {
-        am_geno_put(s, "out %d", m);
+        am_text_put(s, "out %d", m);
         for (int j = 0; j < c->nodes; j++) put_conn(s, c->on_out[m][j], c->w_out[m][j]);
-        am_geno_put(s, "\n");
+        am_text_put(s, "\n");
     }
 }
 

@@ -88,20 +88,20 @@ static void dct_express(const am_genome* g, am_geno_work* w)
     const int k[3] = {g->dct.k, g->dct.k, g->dct.k};
     const int n[3] = {g->nx, g->ny, g->nz};
     am_dct_plan(&w->dct, k, n, NULL, 0); /* k and n were checked with the genome */
-    for (int m = 0; m < g->materials; m++) am_dct_inverse(&w->dct, g->dct.amp[m], w->dens[m]);
+    for (int m = 0; m < g->materials; m++) am_dct_inverse(&w->dct, &w->scratch.dct, g->dct.amp[m], w->dens[m]);
 }
 
-static void dct_format(const am_genome* g, am_geno_sink* s)
+static void dct_format(const am_genome* g, am_text* s)
 {
     const int k = g->dct.k;
-    am_geno_put(s, "dct %d\n", k);
-    am_geno_put(s, "# amp MATERIAL V W, then the amplitudes of u = 0..%d\n", k - 1);
+    am_text_put(s, "dct %d\n", k);
+    am_text_put(s, "# amp MATERIAL V W, then the amplitudes of u = 0..%d\n", k - 1);
     for (int m = 0; m < g->materials; m++)
         for (int w = 0; w < k; w++)
             for (int v = 0; v < k; v++) {
-                am_geno_put(s, "amp %d %d %d", m, v, w);
+                am_text_put(s, "amp %d %d %d", m, v, w);
                 for (int u = 0; u < k; u++) am_geno_put_real(s, g->dct.amp[m][u + k * (v + k * w)]);
-                am_geno_put(s, "\n");
+                am_text_put(s, "\n");
             }
 }
 

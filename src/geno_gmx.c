@@ -232,34 +232,34 @@ static void gmx_express(const am_genome* g, am_geno_work* w)
         const am_real inv_r2 = AM_DIV(AM_R(1), AM_MUL(p->radius, p->radius));
 #endif
         int x0, x1, y0, y1, z0, z1;
-        factors(w, w->fx, nx, p->x, inv_r2, &x0, &x1);
-        factors(w, w->fy, ny, p->y, inv_r2, &y0, &y1);
-        factors(w, w->fz, nz, p->z, inv_r2, &z0, &z1);
+        factors(w, w->scratch.gmx.fx, nx, p->x, inv_r2, &x0, &x1);
+        factors(w, w->scratch.gmx.fy, ny, p->y, inv_r2, &y0, &y1);
+        factors(w, w->scratch.gmx.fz, nz, p->z, inv_r2, &z0, &z1);
         am_real* d = w->dens[p->mat];
         for (int z = z0; z < z1; z++) {
-            const am_real wz = AM_MUL(p->weight, w->fz[z]);
+            const am_real wz = AM_MUL(p->weight, w->scratch.gmx.fz[z]);
             for (int y = y0; y < y1; y++) {
-                const am_real wyz = AM_MUL(wz, w->fy[y]);
+                const am_real wyz = AM_MUL(wz, w->scratch.gmx.fy[y]);
                 am_real* row = d + (long)nx * (y + (long)ny * z);
-                for (int x = x0; x < x1; x++) row[x] += AM_MUL(wyz, w->fx[x]);
+                for (int x = x0; x < x1; x++) row[x] += AM_MUL(wyz, w->scratch.gmx.fx[x]);
             }
         }
     }
 }
 
-static void gmx_format(const am_genome* g, am_geno_sink* s)
+static void gmx_format(const am_genome* g, am_text* s)
 {
-    am_geno_put(s, "gmx %d\n", g->gmx.count);
-    am_geno_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
+    am_text_put(s, "gmx %d\n", g->gmx.count);
+    am_text_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
     for (int i = 0; i < g->gmx.count; i++) {
         const am_gmx_point* p = &g->gmx.pt[i];
-        am_geno_put(s, "point");
+        am_text_put(s, "point");
         am_geno_put_real(s, p->x);
         am_geno_put_real(s, p->y);
         am_geno_put_real(s, p->z);
         am_geno_put_real(s, p->weight);
         am_geno_put_real(s, p->radius);
-        am_geno_put(s, " %d\n", p->mat);
+        am_text_put(s, " %d\n", p->mat);
     }
 }
 

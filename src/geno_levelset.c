@@ -106,7 +106,7 @@ int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real 
             w->cell[c] = (uint8_t)(sum > threshold ? best + 1 : 0);
         }
     }
-    w->voxels = am_keep_largest_piece(w->cell, nx, ny, nz, w->mark, w->queue);
+    w->voxels = am_keep_largest_piece(w->cell, nx, ny, nz, w->scratch.piece.mark, w->scratch.piece.queue);
     if (ratio) {
         for (int c = 0; c < cells; c++) {
             am_real pos = AM_R(0);
@@ -137,23 +137,26 @@ am_status am_genome_to_lattice(const am_genome* g, const am_express_def* def, am
                                char* err, int errsz)
 {
     am_express_def d = def ? *def : am_default_express();
-    am_palette builtin;
-    const am_palette* pal = d.palette;
-    if (!pal) {
-        builtin = am_default_palette();
-        pal = &builtin;
-    }
     am_status st = am_genome_express(g, &d, w, NULL, err, errsz);
     if (st != AM_OK) return st;
-    int idx[AM_MAX_GENO_MATERIALS];
-    for (int m = 0; m < g->materials; m++) {
-        idx[m] = am_palette_find(pal, g->mat[m]);
-        if (idx[m] < 0) return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' of the genome is not in the palette", g->mat[m]);
+    /* without a palette the genome's names are looked up in the built-in one, which
+     * am_lattice_init puts into lat (none is built on the stack) */
+    if (d.palette) {
+        for (int m = 0; m < g->materials; m++)
+            if (am_palette_find(d.palette, g->mat[m]) < 0)
+                return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' of the genome is not in the palette", g->mat[m]);
     }
     st = am_lattice_init(lat, g->nx, g->ny, g->nz, d.voxel_size, err, errsz);
     if (st != AM_OK) return st;
+    const am_palette* pal = d.palette ? d.palette : &lat->palette;
+    am_material mat[AM_MAX_GENO_MATERIALS];
+    for (int m = 0; m < g->materials; m++) {
+        int idx = am_palette_find(pal, g->mat[m]);
+        if (idx < 0) return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' of the genome is not in the palette", g->mat[m]);
+        mat[m] = pal->mat[idx];
+    }
     lat->palette.count = g->materials;
-    for (int m = 0; m < g->materials; m++) lat->palette.mat[m] = pal->mat[idx[m]];
+    for (int m = 0; m < g->materials; m++) lat->palette.mat[m] = mat[m];
     memcpy(lat->cell, w->cell, (size_t)(g->nx * g->ny * g->nz));
     return AM_OK;
 }

@@ -43,19 +43,25 @@ static am_material variant(const char* name, am_param E, am_param rho, am_param 
 am_palette am_default_palette(void)
 {
     am_palette p;
-    memset(&p, 0, sizeof p);
-    const am_param half_pi = AM_P(3.14159265358979323846) / AM_P(2);
-    p.mat[0] = variant("passive", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 40, 90, 220, 0);
-    p.mat[1] = variant("active", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(0), 240, 200, 30, 0);
-    p.mat[2] = variant("active90", AM_P(1e6), AM_P(1000), AM_P(0.01), -half_pi, 220, 40, 40, 0);
-    p.mat[3] = variant("stiff", AM_P(1e7), AM_P(1000), AM_P(0), AM_P(0), 140, 140, 150, 0);
-    p.mat[4] = variant("soft", AM_P(1e5), AM_P(1000), AM_P(0), AM_P(0), 60, 190, 90, 0);
-    p.mat[5] = variant("heavy", AM_P(1e6), AM_P(3000), AM_P(0), AM_P(0), 110, 70, 40, 0);
-    p.mat[6] = variant("light", AM_P(1e6), AM_P(300), AM_P(0), AM_P(0), 200, 230, 250, 0);
-    p.mat[7] = variant("active180", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(3.14159265358979323846), 240, 130, 20, 0);
-    p.mat[8] = variant("fixed", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 30, 30, 30, 1);
-    p.count = 9;
+    am_default_palette_into(&p);
     return p;
+}
+
+void am_default_palette_into(am_palette* out)
+{
+    am_palette* p = out;
+    memset(p, 0, sizeof *p);
+    const am_param half_pi = AM_P(3.14159265358979323846) / AM_P(2);
+    p->mat[0] = variant("passive", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 40, 90, 220, 0);
+    p->mat[1] = variant("active", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(0), 240, 200, 30, 0);
+    p->mat[2] = variant("active90", AM_P(1e6), AM_P(1000), AM_P(0.01), -half_pi, 220, 40, 40, 0);
+    p->mat[3] = variant("stiff", AM_P(1e7), AM_P(1000), AM_P(0), AM_P(0), 140, 140, 150, 0);
+    p->mat[4] = variant("soft", AM_P(1e5), AM_P(1000), AM_P(0), AM_P(0), 60, 190, 90, 0);
+    p->mat[5] = variant("heavy", AM_P(1e6), AM_P(3000), AM_P(0), AM_P(0), 110, 70, 40, 0);
+    p->mat[6] = variant("light", AM_P(1e6), AM_P(300), AM_P(0), AM_P(0), 200, 230, 250, 0);
+    p->mat[7] = variant("active180", AM_P(1e6), AM_P(1000), AM_P(0.01), AM_P(3.14159265358979323846), 240, 130, 20, 0);
+    p->mat[8] = variant("fixed", AM_P(1e6), AM_P(1000), AM_P(0), AM_P(0), 30, 30, 30, 1);
+    p->count = 9;
 }
 
 int am_palette_find(const am_palette* p, const char* name)
@@ -78,7 +84,7 @@ am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxe
     lat->ny = ny;
     lat->nz = nz;
     lat->voxel_size = voxel_size;
-    lat->palette = am_default_palette();
+    am_default_palette_into(&lat->palette);
     memset(lat->cell, 0, sizeof lat->cell);
     return AM_OK;
 }

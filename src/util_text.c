@@ -3,8 +3,26 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
 
-void am_text_put(am_text* t, const char* fmt, ...)
+/* hands the buffer to flush and empties it; 0, or -1 (full 2) when flush failed */
+static int drain(am_text* t)
+{
+    if (t->len > 0) {
+        if (t->flush(t->ctx, t->buf, t->len) != AM_OK) {
+            t->full = 2;
+            t->buf[0] = 0;
+            t->len = 0;
+            return -1;
+        }
+        t->done += t->len;
+        t->len = 0;
+        t->buf[0] = 0;
+    }
+    return 0;
+}
+
+void am_text_vput(am_text* t, const char* fmt, va_list ap)
 {
     if (t->full) return;
     long room = t->cap - t->len;
@@ -12,14 +30,66 @@ void am_text_put(am_text* t, const char* fmt, ...)
         t->full = 1;
         return;
     }
+    va_list again;
+    va_copy(again, ap);
+    int n = vsnprintf(t->buf + t->len, (size_t)room, fmt, ap);
+    if (n >= 0 && (long)n < room) {
+        t->len += n;
+    } else {
+        t->buf[t->len] = 0;
+        /* streaming: empty the buffer into the stream and format the piece again at its start */
+        if (n >= 0 && t->flush && (long)n < t->cap && drain(t) == 0) {
+            vsnprintf(t->buf, (size_t)t->cap, fmt, again);
+            t->len = n;
+        } else if (!t->full) {
+            t->full = 1;
+        }
+    }
+    va_end(again);
+}
+
+void am_text_put(am_text* t, const char* fmt, ...)
+{
     va_list ap;
     va_start(ap, fmt);
-    int n = vsnprintf(t->buf + t->len, (size_t)room, fmt, ap);
+    am_text_vput(t, fmt, ap);
     va_end(ap);
-    if (n < 0 || (long)n >= room) {
-        t->full = 1;
+}
+
+void am_text_write(am_text* t, const char* data, long n)
+{
+    while (!t->full && n > 0) {
+        long room = t->cap - 1 - t->len;
+        if (room <= 0) {
+            if (!t->flush || t->cap < 2) {
+                t->full = 1;
+                return;
+            }
+            if (drain(t) != 0) return;
+            continue;
+        }
+        if (!t->flush && n > room) {
+            t->full = 1; /* a whole-text buffer takes a piece whole or not at all */
+            return;
+        }
+        long k = n < room ? n : room;
+        memcpy(t->buf + t->len, data, (size_t)k);
+        t->len += k;
         t->buf[t->len] = 0;
-        return;
+        data += k;
+        n -= k;
     }
-    t->len += n;
+}
+
+am_status am_text_flush(am_text* t)
+{
+    if (!t->full && t->flush) drain(t);
+    if (t->full == 2) return AM_ERR_IO;
+    return t->full ? AM_ERR_CAPACITY : AM_OK;
+}
+
+am_status am_text_drop(void* ctx, const char* data, long n)
+{
+    (void)ctx, (void)data, (void)n;
+    return AM_OK;
 }

@@ -147,6 +147,61 @@ static void test_files(void)
     CHECK(am_port_write_file(q, "x", 1, err, sizeof err) == AM_ERR_IO && err[0], "write into a missing directory");
 }
 
+/* streams: an atomic replace written piece by piece, a drop that leaves the old file, reading
+ * piece by piece, AM_PORT_STREAMS open at once, and bad handles refused */
+static void test_streams(void)
+{
+    char err[AM_ERR_MAX], p[600], q[700], buf[64];
+    long len = -1, got = -1;
+    if (!scratch[0]) return;
+    path_of(p, sizeof p, "streamed.txt");
+    CHECK(am_port_write_file(p, "old\n", 4, err, sizeof err) == AM_OK, "write: %s", err);
+    am_port_stream w = -1, r = -1;
+    CHECK(am_port_open_write(p, &w, err, sizeof err) == AM_OK && w >= 0, "open_write: %s", err);
+    CHECK(am_port_write(w, "new ", 4, err, sizeof err) == AM_OK && am_port_write(w, "text\n", 5, err, sizeof err) == AM_OK,
+          "write pieces: %s", err);
+    /* nothing is visible at the path before the commit; reading and writing at once */
+    CHECK(am_port_open_read(p, &r, err, sizeof err) == AM_OK && r >= 0 && r != w, "open_read beside a write: %s", err);
+    CHECK(am_port_read(r, buf, sizeof buf, &got, err, sizeof err) == AM_OK && got == 4 && !memcmp(buf, "old\n", 4),
+          "the old file during the write: %ld bytes", got);
+    CHECK(am_port_close(r, 0, err, sizeof err) == AM_OK, "close read: %s", err);
+    CHECK(am_port_close(w, 1, err, sizeof err) == AM_OK, "commit: %s", err);
+    CHECK(am_port_read_file(p, buf, sizeof buf, &len, err, sizeof err) == AM_OK && !strcmp(buf, "new text\n"), "committed '%s'", buf);
+    snprintf(q, sizeof q, "%s.tmp.%ld", p, (long)getpid());
+    CHECK(am_port_exists(q) == 0, "temporary %s left after a commit", q);
+    /* a dropped stream leaves the old file and no temporary */
+    CHECK(am_port_open_write(p, &w, err, sizeof err) == AM_OK && am_port_write(w, "lost", 4, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_port_close(w, 0, err, sizeof err) == AM_OK, "drop: %s", err);
+    CHECK(am_port_read_file(p, buf, sizeof buf, &len, err, sizeof err) == AM_OK && !strcmp(buf, "new text\n"), "after a drop '%s'", buf);
+    CHECK(am_port_exists(q) == 0, "temporary %s left after a drop", q);
+    /* reading in pieces of 3 bytes gives the file back, then 0 at the end */
+    char all[32];
+    long n = 0;
+    CHECK(am_port_open_read(p, &r, err, sizeof err) == AM_OK, "%s", err);
+    for (int k = 0; k < 10; k++) {
+        CHECK(am_port_read(r, all + n, 3, &got, err, sizeof err) == AM_OK, "%s", err);
+        if (got <= 0) break;
+        n += got;
+    }
+    CHECK(n == 9 && !memcmp(all, "new text\n", 9) && got == 0, "read in pieces: %ld bytes", n);
+    CHECK(am_port_close(r, 1, err, sizeof err) == AM_OK, "close: %s", err);
+    /* the table: AM_PORT_STREAMS at once, and a closed handle is refused */
+    am_port_stream many[AM_PORT_STREAMS];
+    for (int k = 0; k < AM_PORT_STREAMS; k++)
+        CHECK(am_port_open_read(p, &many[k], err, sizeof err) == AM_OK, "stream %d of %d: %s", k + 1, AM_PORT_STREAMS, err);
+    for (int k = 0; k < AM_PORT_STREAMS; k++) am_port_close(many[k], 0, NULL, 0);
+    CHECK(am_port_read(many[0], buf, sizeof buf, &got, err, sizeof err) == AM_ERR_ARG, "read on a closed stream");
+    CHECK(am_port_close(many[0], 0, err, sizeof err) == AM_ERR_ARG, "close of a closed stream");
+    /* failures: a missing file, a missing directory */
+    path_of(q, sizeof q, "missing.txt");
+    unlink(q);
+    err[0] = 0;
+    CHECK(am_port_open_read(q, &r, err, sizeof err) == AM_ERR_IO && strstr(err, "missing.txt"), "open a missing file: %s", err);
+    path_of(q, sizeof q, "no/such/dir/file");
+    err[0] = 0;
+    CHECK(am_port_open_write(q, &w, err, sizeof err) == AM_ERR_IO && err[0], "open_write into a missing directory");
+}
+
 static void test_progress_is_silent_off_a_terminal(void)
 {
     char err[AM_ERR_MAX], p[600];
@@ -180,6 +235,7 @@ int main(int argc, char** argv)
     RUN(test_parallel_map_covers_each_item_once);
     RUN(test_parallel_map_rejects_bad_arguments);
     RUN(test_files);
+    RUN(test_streams);
     RUN(test_progress_is_silent_off_a_terminal);
     return SUMMARY();
 }

@@ -446,6 +446,66 @@ static void test_rng_unit_normal(void)
     CHECK(hits > 2300 && hits < 2700, "chance(0.25) hit %ld of 10000", hits);
 }
 
+/* a stream's far end for the am_text tests: collects what is flushed, fails when told */
+typedef struct collected {
+    char text[256];
+    long len;
+    int flushes;
+    int fail;          /* 1: the next flush fails */
+} collected;
+
+static am_status collect(void* ctx, const char* data, long n)
+{
+    collected* c = (collected*)ctx;
+    if (c->fail || c->len + n >= (long)sizeof c->text) return AM_ERR_IO;
+    memcpy(c->text + c->len, data, (size_t)n);
+    c->len += n;
+    c->text[c->len] = 0;
+    c->flushes++;
+    return AM_OK;
+}
+
+static void test_text_buffer_and_stream(void)
+{
+    /* a whole-text buffer: a piece fits whole or sets full, never a byte past cap */
+    char b[16];
+    memset(b, '#', sizeof b);
+    am_text t = {b, 12, 0, 0, NULL, NULL, 0};
+    am_text_put(&t, "%s", "hello ");
+    am_text_write(&t, "world", 5);
+    CHECK(!t.full && t.len == 11 && !strcmp(b, "hello world"), "'%s' %ld", b, t.len);
+    am_text_write(&t, "!", 1);
+    CHECK(t.full == 1 && !strcmp(b, "hello world") && b[12] == '#', "full: '%s'", b);
+    CHECK(am_text_flush(&t) == AM_ERR_CAPACITY, "a full buffer is a capacity status");
+    /* a stream through 8 bytes: any length, the same text at the far end */
+    collected c;
+    memset(&c, 0, sizeof c);
+    am_text s = {b, 8, 0, 0, collect, &c, 0};
+    for (int i = 0; i < 10; i++) am_text_put(&s, "%d,", i * 7);
+    am_text_write(&s, "0123456789abcdef", 16);
+    CHECK(am_text_flush(&s) == AM_OK && !s.full, "stream: full %d", s.full);
+    CHECK(!strcmp(c.text, "0,7,14,21,28,35,42,49,56,63,0123456789abcdef") && s.done == c.len && s.len == 0, "streamed '%s'", c.text);
+    CHECK(c.flushes > 3, "%d flushes", c.flushes);
+    /* a printf piece longer than the buffer cannot stream: full 1 */
+    memset(&c, 0, sizeof c);
+    am_text s2 = {b, 8, 0, 0, collect, &c, 0};
+    am_text_put(&s2, "%s", "much too long");
+    CHECK(s2.full == 1 && am_text_flush(&s2) == AM_ERR_CAPACITY, "long piece: full %d", s2.full);
+    /* a failing flush: full 2, an I/O status, nothing more appended */
+    memset(&c, 0, sizeof c);
+    am_text s3 = {b, 8, 0, 0, collect, &c, 0};
+    c.fail = 1;
+    am_text_put(&s3, "%s", "abcde");
+    am_text_put(&s3, "%s", "fghij");
+    CHECK(s3.full == 2 && am_text_flush(&s3) == AM_ERR_IO, "failed flush: full %d", s3.full);
+    /* the counting stream */
+    am_text n = {b, 4, 0, 0, am_text_drop, NULL, 0};
+    am_text_put(&n, "%s", "abc");
+    am_text_put(&n, "%s", "def");
+    am_text_write(&n, "ghijklm", 7);
+    CHECK(n.done + n.len == 13 && !n.full, "counted %ld", n.done + n.len);
+}
+
 static void test_hash(void)
 {
     /* FNV-1a 64 of "a" (the published test vector) */
@@ -489,5 +549,6 @@ int main(int argc, char** argv)
     RUN(test_rng_below_unbiased);
     RUN(test_rng_unit_normal);
     RUN(test_hash);
+    RUN(test_text_buffer_and_stream);
     return SUMMARY();
 }

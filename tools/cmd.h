@@ -27,6 +27,14 @@ am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_d
  * (cmd_evolve.c); 0, or 1 when the two runs differ */
 int tool_bench_evolve(long evaluations);
 
+/* keeps a helper's locals out of its caller's frame, so they take stack only while it runs, not
+ * all through the long calls of the caller (the board's stack is small) */
+#if defined(__GNUC__)
+#define TOOL_NOINLINE __attribute__((noinline))
+#else
+#define TOOL_NOINLINE
+#endif
+
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)
 #if defined(__GNUC__)
@@ -34,14 +42,97 @@ int tool_usage_error(const char* fmt, ...)
 #endif
     ;
 
+/* ---- text files (tools/files.c) ---- */
+
+/* an output: text formatted into `text` goes through a small buffer into the file path (an
+ * atomic replace: nothing changes at path before tool_out_close commits) or onto the standard
+ * output (path NULL). One output is open at a time. */
+#define TOOL_OUT_BUF 512        /* longer than any one piece the writers put */
+typedef struct tool_out {
+    am_text text;               /* format into this (am_text_put, am_genome_write, ...) */
+    const char* path;           /* the file, or NULL for the standard output */
+    am_port_stream stream;
+    char err[AM_ERR_MAX];       /* the message of a failed write */
+} tool_out;
+/* 0, or 1 after a one-line message on stderr */
+int tool_out_open(tool_out* o, const char* path);
+/* commit 1: the rest of the text goes out and the file replaces path; commit 0 drops the file
+ * (path stays as it was). 0, or 1 after a one-line message on stderr (the file is dropped then) */
+int tool_out_close(tool_out* o, int commit);
+/* writes text (len bytes) to the file out atomically, or to the standard output when out is NULL;
+ * returns 0, or 1 after a one-line message on stderr */
+int tool_write_output(const char* out, const char* text, long len);
+
+/* a text file read line by line. The desktop profile reads the file whole into tool_file_buf (at
+ * most cap - 1 bytes, else AM_ERR_CAPACITY) and hands out its lines in place; the board profile
+ * streams it through one buffer, so a line may hold at most TOOL_LINE_MAX characters (a longer
+ * one is an error "file:line: line longer than ..."). Either way lines are cut at '\n' and a
+ * last line without one counts. */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_WHOLE_FILES 0
+#define TOOL_LINE_MAX 1023
+#else
+#define TOOL_WHOLE_FILES 1
+#endif
+typedef struct tool_src {
+    const char* path;           /* the file (for messages); valid until closed */
+    int line;                   /* lines handed out */
+    int newline;                /* 1 when the last line handed out ended with '\n' */
+    int binary;                 /* 1 when the file holds a NUL byte (status AM_ERR_PARSE, no message) */
+    int nul_ends;               /* 1: a NUL byte ends the text instead (what a whole-text parser saw) */
+    am_status st;               /* board: the failure that ended reading */
+    long pos, end;              /* the next line and the end of the text (desktop) or of the buffer (board) */
+    long restore;               /* desktop: where the last line's newline was cut, or -1 */
+    int eof;                    /* board: the stream is at its end */
+    am_port_stream stream;      /* board: the open file */
+} tool_src;
+/* opens path: AM_OK; the port's AM_ERR_IO or AM_ERR_CAPACITY with a message; AM_ERR_PARSE with
+ * binary set (no message: tool_src_binary gives the usual one) for a NUL byte */
+am_status tool_src_open(tool_src* s, const char* path, long cap, int nul_ends, char* err, int errsz);
+/* the next line, NUL-terminated without its newline (*line, *n, valid until the next call; the
+ * caller may change its bytes): 1; 0 at the end; -1 on a failure (message in err, or binary set) */
+int tool_src_next(tool_src* s, char** line, long* n, char* err, int errsz);
+/* back to the first line */
+am_status tool_src_rewind(tool_src* s, char* err, int errsz);
+void tool_src_close(tool_src* s);
+/* "path:1: binary data (a NUL byte) in a text file" */
+am_status tool_src_binary(const tool_src* s, char* err, int errsz);
+
+/* "amorph: WHAT: not in this build: FEATURE belong to the desktop profile ..." on stderr; returns 2.
+ * The board profile leaves out what a microcontroller has no use for (pictures, VXA files). */
+int tool_not_in_build(const char* what, const char* feature);
+
 /* loads a robot: "scene:NAME" style names (cube:N ...) when is_scene, else a file in any format
- * amorph reads (lattice text; genome text, expressed; VXA). Messages are "file:line: problem". */
+ * amorph reads (lattice text; genome text, expressed; VXA on the desktop). Messages are
+ * "file:line: problem". */
 am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz);
 
-/* genome text (any representation) -> lattice; implemented with the genotypes (cmd_genome.c).
- * Returns AM_ERR_ARG without a message when text is not a genome, so the caller tries others. */
-am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
+/* what a text file holds, judged from its first meaningful lines as am_vxa_sniff and
+ * am_genome_sniff judge a whole text: TOOL_TEXT_VXA, _GENOME or _LATTICE (anything else), or -1
+ * when reading failed (message in err, or s->binary). The source is left at its start. */
+enum { TOOL_TEXT_VXA = 1, TOOL_TEXT_GENOME = 2, TOOL_TEXT_LATTICE = 3 };
+int tool_src_sniff(tool_src* s, char* err, int errsz);
+/* calls fn for every remaining line of s (lineno counts from 1); the first failure: fn's status,
+ * or the source's with its message */
+typedef am_status (*tool_line_fn)(void* ctx, int lineno, char* line, long n, char* err, int errsz);
+am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz);
+/* a configuration file over d (am_evo_parse_line per line); nul_ends as tool_src_open */
+am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz);
+/* a genome from the lines of src (its start) */
+am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);
+/* the genome of src (at its start) into tool_genome, expressed into lat with the built-in palette
+ * (cmd_genome.c); "file:line: problem" messages */
+am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int errsz);
 
+/* VXA files (docs/vxa.md) are read and written in the desktop profile only; TOOL_DESKTOP_ONLY
+ * marks what a help text names that the board build answers with "not in this build" */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_VXA 0
+#define TOOL_DESKTOP_ONLY " (not in this build: desktop profile)"
+#else
+#define TOOL_VXA 1
+#define TOOL_DESKTOP_ONLY ""
+#endif
 /* VXA text -> lattice (cmd_export.c); prints the reader's warnings on stderr. Returns AM_ERR_ARG
  * without a message when text is not XML. On success tool_vxa_loaded is 1 and tool_vxa_info holds
  * the file's environment (tool_load_robot sets tool_vxa_loaded to 0 before each load). */
@@ -56,9 +147,6 @@ int tool_parse_int(const char* s, int lo, int hi, int* out);
 int tool_parse_real(const char* s, double lo, double hi, double* out);
 int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 
-/* writes text (len bytes) to the file out atomically, or to the standard output when out is NULL;
- * returns 0, or 1 after a one-line message on stderr */
-int tool_write_output(const char* out, const char* text, long len);
 
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
 void tool_bench_express(void);
@@ -81,18 +169,35 @@ int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_de
  * standard-error band per variant) as SVG */
 int tool_write_plot(int ndirs, char** dirs, const char* path);
 
-/* one shared file buffer for the commands (they run one at a time): 4 MiB on the desktop; in the
- * board profile the largest text amorph writes itself (a genome or a lattice), plus its NUL */
-#if defined(AM_PROFILE_BOARD)
-#define TOOL_FILE_MAX ((AM_GENOME_TEXT_MAX > AM_LATTICE_TEXT_MAX ? AM_GENOME_TEXT_MAX : AM_LATTICE_TEXT_MAX) + 1L)
-#else
+/* the desktop's whole-file buffer, shared by the commands (they run one at a time): files up to
+ * TOOL_FILE_MAX - 1 bytes, checkpoints up to TOOL_CKPT_MAX - 1 (a population of
+ * AM_MAX_POPULATION of the largest genomes). The board profile has none: its files stream. */
 #define TOOL_FILE_MAX (4L << 20)
+#define TOOL_CKPT_MAX AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)
+#if TOOL_WHOLE_FILES
+#define TOOL_FILE_BUF (TOOL_FILE_MAX > TOOL_CKPT_MAX ? TOOL_FILE_MAX : TOOL_CKPT_MAX)
+extern char tool_file_buf[TOOL_FILE_BUF];
+/* the whole text of an open source */
+const char* tool_src_text(const tool_src* s);
 #endif
-extern char tool_file_buf[TOOL_FILE_MAX];
 
 /* the workspaces every command shares (they run one at a time): the evolver's evaluation
  * workers; [0] also serves sim, bench, export, random, express and the pictures, each job on its
- * own members (geno to express, model and state to simulate) */
+ * own members (geno to express, lattice for the robot a command loads, model and state to
+ * simulate) */
 extern am_evo_work tool_work[AM_MAX_WORKERS];
+/* the evolver's run (evolve, experiment, repro, bench --evolve); bench's expression timing
+ * borrows the genomes of its population as its pool */
+extern am_evo tool_evo;
+/* the genome a command reads (random, express, sim of a genome file or a run folder): the
+ * evolver's best slot, idle in those commands */
+#define tool_genome (tool_evo.best.genome)
+
+/* longest path the commands build (a run folder's files); the board's port takes 512 bytes */
+#if defined(AM_PROFILE_BOARD)
+#define TOOL_PATH_MAX 512
+#else
+#define TOOL_PATH_MAX 4096
+#endif
 
 #endif

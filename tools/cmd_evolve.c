@@ -8,13 +8,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-static am_evo g_evo;
 #if defined(AM_PROFILE_BOARD)
-/* a board's checkpoints: genomes of the board profile's sizes written compactly fit easily;
- * a larger one is refused with a capacity message, never overflowed */
-static char g_ckpt[48L << 10];
+#define EXP_ROWS 64             /* generations an experiment's table reads per run */
+#define EXP_MAX_RUNS 4          /* runs per variant */
+#define EXP_DIR_MAX 256         /* an experiment folder's name */
+#define EXP_RUN_DIR_MAX 384     /* a run folder's name */
 #else
-static char g_ckpt[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+#define EXP_ROWS 4096
+#define EXP_MAX_RUNS 16
+#define EXP_DIR_MAX 1024
+#define EXP_RUN_DIR_MAX 2048
 #endif
 
 static const char evolve_help[] =
@@ -95,19 +98,18 @@ static int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* 
     return 1;
 }
 
-/* defaults, then the config file, then the flags */
-static int build_def(const evo_opts* o, am_evo_def* d, const char* cmd)
+/* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
+ * `extra` more (keys and values, NULL-terminated; may be NULL) */
+static TOOL_NOINLINE int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd)
 {
     char err[AM_ERR_MAX];
     *d = am_default_evo();
-    if (o->config) {
-        long len = 0;
-        if (am_port_read_file(o->config, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-        if (strlen(tool_file_buf) != (size_t)len) return tool_usage_error("%s:1: binary data (a NUL byte) in a text file", o->config);
-        if (am_evo_parse(d, tool_file_buf, o->config, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    }
+    if (o->config) config = o->config;
+    if (config && tool_read_config(config, d, 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     for (int k = 0; k < o->nflags; k++)
         if (am_evo_set(d, o->key[k], o->val[k], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
+    for (int k = 0; extra && extra[k]; k += 2)
+        if (am_evo_set(d, extra[k], extra[k + 1], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
     if (am_evo_check(d, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
     return 0;
 }
@@ -132,9 +134,9 @@ static int path_join(char* out, size_t cap, const char* dir, const char* file)
     return n >= 0 && (size_t)n < cap;
 }
 
-static int write_text(const char* dir, const char* file, const char* text, long len)
+static TOOL_NOINLINE int write_text(const char* dir, const char* file, const char* text, long len)
 {
-    char path[4096], err[AM_ERR_MAX];
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, file);
     if (am_port_write_file(path, text, len, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s\n", err);
@@ -143,56 +145,87 @@ static int write_text(const char* dir, const char* file, const char* text, long 
     return 0;
 }
 
+/* dir/file written through a stream by a writer of the library: 0, or 1 after a message
+ * ("amorph: what: problem" for the writer's own failures) */
+typedef am_status (*text_writer)(const void* obj, am_text* out, char* err, int errsz);
+
+static TOOL_NOINLINE int write_stream(const char* dir, const char* file, text_writer fn, const void* obj, const char* what)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, file);
+    tool_out o;
+    if (tool_out_open(&o, path)) return 1;
+    am_status st = fn(obj, &o.text, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_IO) {
+        if (what) fprintf(stderr, "amorph: %s: %s\n", what, err);
+        else fprintf(stderr, "amorph: %s\n", err);
+        tool_out_close(&o, 0);
+        return 1;
+    }
+    return tool_out_close(&o, 1);
+}
+
+static am_status config_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)obj, 1, out, err, errsz);
+}
+
+static am_status checkpoint_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_evo_checkpoint_write((const am_evo*)obj, out, err, errsz);
+}
+
+static am_status genome_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_genome_write((const am_genome*)obj, out, err, errsz);
+}
+
+static am_status lattice_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_lattice_write((const am_lattice*)obj, out, err, errsz);
+}
+
 static int write_config(const char* dir, const am_evo_def* d)
 {
-    char buf[8192], err[AM_ERR_MAX];
-    long len = 0;
-    if (am_evo_format(d, 1, buf, sizeof buf, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err) != 0;
-    return write_text(dir, "config.txt", buf, len);
+    return write_stream(dir, "config.txt", config_writer, d, NULL);
 }
 
 static int write_checkpoint(const char* dir, const am_evo* e)
 {
-    char err[AM_ERR_MAX];
-    long len = 0;
-    if (am_evo_checkpoint_format(e, g_ckpt, sizeof g_ckpt, &len, err, sizeof err) != AM_OK) {
-        fprintf(stderr, "amorph: checkpoint: %s\n", err);
-        return 1;
-    }
-    return write_text(dir, "checkpoint.txt", g_ckpt, len);
+    return write_stream(dir, "checkpoint.txt", checkpoint_writer, e, "checkpoint");
 }
 
-static int write_best(const char* dir, const am_evo* e)
+static TOOL_NOINLINE int write_best(const char* dir, const am_evo* e)
 {
     char err[AM_ERR_MAX];
-    long len = 0;
-    if (am_genome_format(&e->best.genome, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK ||
-        write_text(dir, "best.genome", tool_file_buf, len))
-        return 1;
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK ||
-        am_lattice_format(&tool_work[0].lattice, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) {
+    if (write_stream(dir, "best.genome", genome_writer, &e->best.genome, "best genome")) return 1;
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
     }
-    return write_text(dir, "best.lattice", tool_file_buf, len);
+    return write_stream(dir, "best.lattice", lattice_writer, &tool_work[0].lattice, "best lattice");
 }
 
-static int write_summary(const char* dir, const am_evo* e, double wall)
+static TOOL_NOINLINE int write_summary(const char* dir, const am_evo* e, double wall)
 {
-    char buf[2048];
-    int n = snprintf(buf, sizeof buf,
-                     "# amorph evolve summary\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\nbest_fitness = %.9g\n"
-                     "best_voxels = %d\nbest_steps = %ld\nbest_state_hash = %016llx\nfinal_best = %.9g\nfinal_mean = %.9g\n"
-                     "final_median = %.9g\nrun_hash = %016llx\nwall_s = %.3f\nbuild = %s %s\n",
-                     am_repr_name(e->def.geno.repr), e->evaluations, e->generation, e->best.fitness, e->best.voxels,
-                     e->best.steps, (unsigned long long)e->best.state_hash, e->last.best, e->last.mean, e->last.median,
-                     (unsigned long long)am_evo_hash(e), wall, AM_REAL_NAME, AM_PROFILE_NAME);
-    return write_text(dir, "summary.txt", buf, n);
+    char path[TOOL_PATH_MAX];
+    path_join(path, sizeof path, dir, "summary.txt");
+    tool_out o;
+    if (tool_out_open(&o, path)) return 1;
+    am_text* t = &o.text;
+    am_text_put(t, "# amorph evolve summary\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\n", am_repr_name(e->def.geno.repr),
+                e->evaluations, e->generation);
+    am_text_put(t, "best_fitness = %.9g\nbest_voxels = %d\nbest_steps = %ld\nbest_state_hash = %016llx\n", e->best.fitness,
+                e->best.voxels, e->best.steps, (unsigned long long)e->best.state_hash);
+    am_text_put(t, "final_best = %.9g\nfinal_mean = %.9g\nfinal_median = %.9g\n", e->last.best, e->last.mean, e->last.median);
+    am_text_put(t, "run_hash = %016llx\nwall_s = %.3f\nbuild = %s %s\n", (unsigned long long)am_evo_hash(e), wall, AM_REAL_NAME,
+                AM_PROFILE_NAME);
+    return tool_out_close(&o, 1);
 }
 
-static int append_log(const char* dir, const am_evo_stats* s)
+static TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
 {
-    char row[256], path[4096], err[AM_ERR_MAX];
+    char row[256], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     int n = am_evo_log_row(s, row, (int)sizeof row - 1);
     row[n++] = '\n';
     path_join(path, sizeof path, dir, "log.csv");
@@ -203,29 +236,56 @@ static int append_log(const char* dir, const am_evo_stats* s)
     return 0;
 }
 
-/* log.csv cut back to the header and the first `rows` rows (rows the checkpoint has seen) */
-static int trim_log(const char* dir, long rows)
+/* log.csv cut back to the header and the first `rows` rows (rows the checkpoint has seen): the
+ * file is read line by line, then, when it holds more, copied that far into its replacement */
+static TOOL_NOINLINE int trim_log(const char* dir, long rows)
 {
-    char path[4096], err[AM_ERR_MAX];
-    long len = 0;
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
+    long n, have = 0;
+    int r;
     path_join(path, sizeof path, dir, "log.csv");
-    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     const char* hdr = am_evo_log_header();
-    size_t hl = strlen(hdr);
-    if (strncmp(tool_file_buf, hdr, hl) != 0 || tool_file_buf[hl] != '\n')
+    r = tool_src_next(&src, &line, &n, err, sizeof err);
+    if (r == 1 && (strcmp(line, hdr) != 0 || !src.newline)) r = 2;
+    if (r != 1) {
+        tool_src_close(&src);
+        if (r < 0) return tool_usage_error("%s", err);
         return tool_usage_error("%s:1: not an amorph log (expected the header '%s')", path, hdr);
-    long pos = (long)hl + 1, have = 0;
-    while (have < rows) {
-        char* nl = strchr(tool_file_buf + pos, '\n');
-        if (!nl) break;
-        pos = (long)(nl - tool_file_buf) + 1;
+    }
+    /* rows the log holds (whole lines), and whether anything follows the last one kept */
+    int more = 0;
+    while ((r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) {
+        if (have == rows || !src.newline) {
+            more = 1;
+            break;
+        }
         have++;
     }
-    if (have < rows)
+    if (r < 0) {
+        tool_src_close(&src);
+        return tool_usage_error("%s", err);
+    }
+    if (have < rows) {
+        tool_src_close(&src);
         return tool_usage_error("%s: %ld rows, but the checkpoint is at generation %ld (the log is damaged)", path, have, rows);
-    if (pos == len) return 0;
-    if (am_port_write_file(path, tool_file_buf, pos, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    return 0;
+    }
+    if (!more) {
+        tool_src_close(&src);
+        return 0;
+    }
+    tool_out o;
+    if (tool_src_rewind(&src, err, sizeof err) != AM_OK || tool_out_open(&o, path)) {
+        tool_src_close(&src);
+        return tool_usage_error("%s", err);
+    }
+    for (long k = 0; k <= rows && tool_src_next(&src, &line, &n, err, sizeof err) == 1; k++) {
+        am_text_write(&o.text, line, n);
+        am_text_write(&o.text, "\n", 1);
+    }
+    tool_src_close(&src);
+    return tool_out_close(&o, 1) ? 2 : 0;
 }
 
 /* a fresh folder name under runs/ */
@@ -249,7 +309,7 @@ typedef struct run_io {
     const char* label;        /* prefix of progress lines (experiments), or NULL */
 } run_io;
 
-static void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
+static TOOL_NOINLINE void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
 {
     if (quiet) return;
     double now = am_port_now(), el = now - t_start;
@@ -321,8 +381,11 @@ static int run_loop(am_evo* e, const run_io* io)
  * fitness plot (fitness.svg); builds without pictures (the board profile) skip them */
 static int finish_pictures(const am_evo* e, const char* dir)
 {
-    if (!TOOL_PICTURES) return 0;
-    char path[4096], err[AM_ERR_MAX], title[256];
+#if !TOOL_PICTURES
+    (void)e, (void)dir;
+    return 0;
+#else
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], title[256];
     if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
@@ -339,59 +402,109 @@ static int finish_pictures(const am_evo* e, const char* dir)
     path_join(path, sizeof path, dir, "fitness.svg");
     char* dirs[1] = {(char*)(uintptr_t)dir};
     return tool_write_plot(1, dirs, path);
+#endif
 }
 
-/* a new run in dir (created), or a resumed one; 0, 1, 2 or 130 */
-static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+/* a new run in dir (created): its folder, configuration, log header and first checkpoint; 0, 1 or 2 */
+static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
 {
-    char err[AM_ERR_MAX], path[4096];
+    char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, "checkpoint.txt");
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
     path_join(path, sizeof path, dir, "config.txt");
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already (config.txt): choose another --out", dir);
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    if (am_evo_init(&g_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (am_evo_init(&tool_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
     char hdr[128];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
     if (write_text(dir, "log.csv", hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
-    if (write_checkpoint(dir, &g_evo)) return 1;
+    if (write_checkpoint(dir, &tool_evo)) return 1;
+    return 0;
+}
+
+/* a new run in dir, to its end; 0, 1, 2 or 130 */
+static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+{
+    int rc = start_prepare(d, dir);
+    if (rc) return rc;
     run_io io = {dir, quiet, pictures, label};
-    int rc = run_loop(&g_evo, &io);
-    if (rc == 0 && pictures) rc = finish_pictures(&g_evo, dir);
+    rc = run_loop(&tool_evo, &io);
+    if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
     return rc;
 }
 
-/* loads the run in dir and checks it against the settings the user gives now */
-static int resume_run(const char* dir, const evo_opts* o, int quiet, int pictures, const char* label)
+/* reads the checkpoint at path into e, in the two passes of the library (the checksum over the
+ * bytes, then the lines): 0, or 2 after a message */
+static TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
 {
-    char err[AM_ERR_MAX], path[4096], what[160];
-    long len = 0;
+    char err[AM_ERR_MAX], *line;
+    long n;
+    int r;
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_CKPT_MAX, 0, err, sizeof err);
+    if (st != AM_OK && !src.binary) return tool_usage_error("--resume: %s", err);
+    am_evo_ckpt_scan sc;
+    am_evo_checkpoint_scan_begin(&sc);
+    if (st == AM_OK) {
+        while ((r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) {
+            am_evo_checkpoint_scan(&sc, line, n);
+            if (src.newline) am_evo_checkpoint_scan(&sc, "\n", 1);
+        }
+        if (r < 0) st = src.binary ? AM_ERR_PARSE : src.st;
+    }
+    if (st != AM_OK) {
+        tool_src_close(&src);
+        if (src.binary) return tool_usage_error("%s:1: binary data in a checkpoint (damaged)", path);
+        return tool_usage_error("%s", err);
+    }
+    st = am_evo_checkpoint_scan_end(&sc, path, err, sizeof err);
+    if (st == AM_OK) st = tool_src_rewind(&src, err, sizeof err);
+    if (st == AM_OK) {
+        am_evo_ckpt_reader rd;
+        am_evo_checkpoint_read_begin(&rd, e, &sc, path);
+        r = 1;
+        while (st == AM_OK && src.line + 1 < sc.checksum_line && (r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1)
+            st = am_evo_checkpoint_read_line(&rd, line, n, err, sizeof err);
+        if (st == AM_OK && r < 0) st = src.st;
+        if (st == AM_OK) st = am_evo_checkpoint_read_end(&rd, err, sizeof err);
+    }
+    tool_src_close(&src);
+    return st == AM_OK ? 0 : tool_usage_error("%s", err);
+}
+
+/* loads the run in dir and checks it against the settings the user gives now (flags o, then
+ * `extra` keys and values); 0, 1 or 2 */
+static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const char* const* extra)
+{
+    char path[TOOL_PATH_MAX], what[160];
     path_join(path, sizeof path, dir, "checkpoint.txt");
-    if (am_port_read_file(path, g_ckpt, sizeof g_ckpt, &len, err, sizeof err) != AM_OK)
-        return tool_usage_error("--resume: %s", err);
-    if (strlen(g_ckpt) != (size_t)len) return tool_usage_error("%s:1: binary data in a checkpoint (damaged)", path);
-    if (am_evo_checkpoint_parse(&g_evo, g_ckpt, path, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    int rc = read_checkpoint(path, &tool_evo);
+    if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
-    evo_opts now = *o;
-    char cfg[4096];
-    path_join(cfg, sizeof cfg, dir, "config.txt");
-    if (!now.config) now.config = cfg;
+    path_join(path, sizeof path, dir, "config.txt");
     am_evo_def d;
-    if (build_def(&now, &d, "resume")) return 2;
-    if (!am_evo_same_run(&g_evo.def, &d, what, sizeof what))
+    if (build_def(o, path, extra, &d, "resume")) return 2;
+    if (!am_evo_same_run(&tool_evo.def, &d, what, sizeof what))
         return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
-    g_evo.def.evaluations = d.evaluations;
-    g_evo.def.threads = d.threads;
-    g_evo.def.checkpoint_seconds = d.checkpoint_seconds;
-    if (g_evo.def.evaluations < g_evo.evaluations)
-        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, g_evo.def.evaluations, g_evo.evaluations);
-    if (trim_log(dir, g_evo.generation)) return 2;
-    if (write_config(dir, &g_evo.def)) return 1;
+    tool_evo.def.evaluations = d.evaluations;
+    tool_evo.def.threads = d.threads;
+    tool_evo.def.checkpoint_seconds = d.checkpoint_seconds;
+    if (tool_evo.def.evaluations < tool_evo.evaluations)
+        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, tool_evo.def.evaluations, tool_evo.evaluations);
+    if (trim_log(dir, tool_evo.generation)) return 2;
+    if (write_config(dir, &tool_evo.def)) return 1;
+    return 0;
+}
+
+static int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
+{
+    int rc = resume_load(dir, o, extra);
+    if (rc) return rc;
     run_io io = {dir, quiet, pictures, label};
-    int rc = run_loop(&g_evo, &io);
-    if (rc == 0 && pictures) rc = finish_pictures(&g_evo, dir);
+    rc = run_loop(&tool_evo, &io);
+    if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
     return rc;
 }
 
@@ -425,23 +538,23 @@ int cmd_evolve(int argc, char** argv)
     if (o.resume && o.config) return tool_usage_error("evolve: --resume reads the run's own config.txt; --config does not apply");
     am_evo_def d;
     if (!o.resume) {
-        if (build_def(&o, &d, "evolve")) return 2;
+        if (build_def(&o, NULL, NULL, &d, "evolve")) return 2;
         if (o.print_config) {
-            char buf[8192], err[AM_ERR_MAX];
-            long len = 0;
-            am_evo_format(&d, 1, buf, sizeof buf, &len, err, sizeof err);
-            fputs(buf, stdout);
-            return 0;
+            char err[AM_ERR_MAX];
+            tool_out out;
+            if (tool_out_open(&out, NULL)) return 1;
+            am_evo_write(&d, 1, &out.text, err, sizeof err);
+            return tool_out_close(&out, 1);
         }
     } else if (o.print_config) return tool_usage_error("evolve: --print-config and --resume: print a run's settings with cat DIR/config.txt");
-    char dir[1024];
+    char dir[EXP_DIR_MAX];
     if (strlen(o.resume ? o.resume : o.out ? o.out : "") >= sizeof dir) return tool_usage_error("evolve: folder name too long");
     if (o.resume) snprintf(dir, sizeof dir, "%s", o.resume);
     else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
-    int rc = o.resume ? resume_run(dir, &o, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
-    if (rc == 0) print_result(&g_evo, dir);
+    int rc = o.resume ? resume_run(dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
+    if (rc == 0) print_result(&tool_evo, dir);
     return rc;
 }
 
@@ -503,37 +616,75 @@ static int apply_settings(am_evo_def* d, const char* settings)
     return 0;
 }
 
-/* reads the best-fitness column of dir/log.csv: evals[i], best[i] for up to cap rows */
-static int read_log(const char* dir, long* evals, double* best, int cap)
+/* reads the best-fitness column of dir/log.csv: evals[i] (when evals is not NULL), best[i] for up
+ * to cap rows after the header; the rows read, -1 when the file cannot be read */
+static TOOL_NOINLINE int read_log(const char* dir, long* evals, double* best, int cap)
 {
-    char path[4096], err[AM_ERR_MAX];
-    long len = 0;
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
+    long len;
     path_join(path, sizeof path, dir, "log.csv");
-    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK) return -1;
-    char* p = strchr(tool_file_buf, '\n');
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return -1;
     int n = 0;
-    while (p && p[1] && n < cap) {
-        long g, e;
-        double b;
-        if (sscanf(p + 1, "%ld,%ld,%lf", &g, &e, &b) != 3) break;
-        evals[n] = e;
-        best[n] = b;
-        n++;
-        p = strchr(p + 1, '\n');
-    }
+    /* the header must end with a newline; every row after it until one does not read */
+    if (tool_src_next(&src, &line, &len, err, sizeof err) == 1 && src.newline)
+        while (n < cap && tool_src_next(&src, &line, &len, err, sizeof err) == 1) {
+            long g, e;
+            double b;
+            if (sscanf(line, "%ld,%ld,%lf", &g, &e, &b) != 3) break;
+            if (evals) evals[n] = e;
+            best[n] = b;
+            n++;
+        }
+    tool_src_close(&src);
     return n;
 }
 
-#if defined(AM_PROFILE_BOARD)
-#define EXP_ROWS 64             /* generations an experiment's table reads per run */
-#define EXP_MAX_RUNS 4          /* runs per variant */
-#else
-#define EXP_ROWS 4096
-#define EXP_MAX_RUNS 16
-#endif
+/* the table: evaluations of each row (from the last run read), one run's best fitness, and per
+ * row the sum over the runs of a variant, then the sum of squared deviations from the mean */
 static long g_exp_evals[EXP_ROWS];
-static double g_exp_best[6][EXP_ROWS][EXP_MAX_RUNS];
-static double g_exp_tmp[EXP_ROWS];
+static double g_exp_tmp[EXP_ROWS], g_exp_sum[EXP_ROWS], g_exp_dev[EXP_ROWS];
+
+/* dir/experiment.txt */
+static TOOL_NOINLINE int write_about(const experiment* x, long runs, long evaluations, const char* dir)
+{
+    char about[512];
+    int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
+                     evaluations);
+    return write_text(dir, "experiment.txt", about, n);
+}
+
+/* 1 when the run folder holds a checkpoint */
+static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
+{
+    char ck[TOOL_PATH_MAX];
+    path_join(ck, sizeof ck, rdir, "checkpoint.txt");
+    return am_port_exists(ck);
+}
+
+/* run k of variant v in dir/<variant>-<k>: started, resumed, or (finished) left as it is;
+ * 0, 1, 2 or 130 */
+static TOOL_NOINLINE int experiment_run(const am_evo_def* base, const variant* v, long k, const char* dir, int quiet)
+{
+    char err[AM_ERR_MAX], rdir[EXP_RUN_DIR_MAX], label[96];
+    am_evo_def d = *base;
+    if (apply_settings(&d, v->settings)) return 2;
+    d.seed = base->seed + (uint64_t)(k - 1);
+    if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", v->name, err);
+    if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, v->name, k) >= (int)sizeof rdir)
+        return tool_usage_error("experiment: folder name too long");
+    snprintf(label, sizeof label, "%s-%ld", v->name, k);
+    if (!run_has_checkpoint(rdir)) return start_run(&d, rdir, quiet, 0, label);
+    /* a run begun before: resumed with this experiment's evaluations and threads */
+    static const evo_opts none;
+    char evs[32], ths[32];
+    snprintf(evs, sizeof evs, "%ld", d.evaluations);
+    snprintf(ths, sizeof ths, "%d", d.threads);
+    const char* const extra[] = {"evaluations", evs, "threads", ths, NULL};
+    return resume_run(rdir, &none, extra, quiet, 0, label);
+}
+
+static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures);
 
 int cmd_experiment(int argc, char** argv)
 {
@@ -572,9 +723,9 @@ int cmd_experiment(int argc, char** argv)
         if (!strcmp(experiments[k].name, name)) x = &experiments[k];
     if (!x) return tool_usage_error("experiment: unknown experiment '%s' (representations, three-materials, dynamic, friction)", name);
     am_evo_def base;
-    if (build_def(&o, &base, "experiment")) return 2;
+    if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
     if (evals) base.evaluations = evals;
-    char dir[1024], err[AM_ERR_MAX];
+    char dir[EXP_DIR_MAX], err[AM_ERR_MAX];
     if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");
     if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else {
@@ -585,62 +736,38 @@ int cmd_experiment(int argc, char** argv)
         }
     }
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    {
-        char about[512];
-        int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
-                         base.evaluations);
-        if (write_text(dir, "experiment.txt", about, n)) return 1;
-    }
+    if (write_about(x, runs, base.evaluations, dir)) return 1;
     am_port_catch_interrupt();
     int nv = 0;
     while (nv < 6 && x->v[nv].name) nv++;
-    for (int v = 0; v < nv; v++) {
+    for (int v = 0; v < nv; v++)
         for (long k = 1; k <= runs; k++) {
-            am_evo_def d = base;
-            if (apply_settings(&d, x->v[v].settings)) return 2;
-            d.seed = base.seed + (uint64_t)(k - 1);
-            if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", x->v[v].name, err);
-            char rdir[2048], ck[4096], label[96];
-            if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
-                return tool_usage_error("experiment: folder name too long");
-            snprintf(label, sizeof label, "%s-%ld", x->v[v].name, k);
-            path_join(ck, sizeof ck, rdir, "checkpoint.txt");
-            int rc;
-            if (am_port_exists(ck)) {
-                evo_opts ro;
-                memset(&ro, 0, sizeof ro);
-                char evs[32], ths[32];
-                snprintf(evs, sizeof evs, "%ld", d.evaluations);
-                snprintf(ths, sizeof ths, "%d", d.threads);
-                ro.key[0] = "evaluations";
-                ro.val[0] = evs;
-                ro.key[1] = "threads";
-                ro.val[1] = ths;
-                ro.nflags = 2;
-                rc = resume_run(rdir, &ro, o.quiet, 0, label);
-            } else rc = start_run(&d, rdir, o.quiet, 0, label);
+            int rc = experiment_run(&base, &x->v[v], k, dir, o.quiet);
             if (rc == 130) {
                 fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
                 return rc;
             }
             if (rc) return rc;
         }
-    }
-    /* results: mean and standard error of the runs' best fitness at each logged evaluation count */
+    return experiment_results(x, nv, runs, dir, o.pictures);
+}
+
+/* the experiment's table: results.csv, and the printed summary; 0, 1 or 2 */
+static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures)
+{
+    /* results: mean and standard error of the runs' best fitness at each logged evaluation count.
+     * First the rows every run holds; then variant by variant, the logs read again for the sums
+     * (in the order of the runs, the sums of one table held whole) */
     int rows = EXP_ROWS;
     for (int v = 0; v < nv; v++)
         for (long k = 1; k <= runs; k++) {
-            char rdir[2048];
+            char rdir[EXP_RUN_DIR_MAX];
             if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
                 return tool_usage_error("experiment: folder name too long");
-            double* tmp = g_exp_tmp;
-            int n = read_log(rdir, g_exp_evals, tmp, EXP_ROWS);
+            int n = read_log(rdir, g_exp_evals, g_exp_tmp, EXP_ROWS);
             if (n <= 0) return tool_usage_error("%s/log.csv: no rows", rdir);
             if (n < rows) rows = n;
-            for (int r = 0; r < n; r++) g_exp_best[v][r][k - 1] = tmp[r];
         }
-    long len = 0;
-    len += snprintf(tool_file_buf + len, (size_t)(TOOL_FILE_MAX - len), "variant,evaluations,mean_best,stderr_best,runs\n");
     double mean_at[6][8], se_at[6][8];
     int marks[8], nm = 0;
     for (int q = 1; q <= 5; q++) {
@@ -648,26 +775,46 @@ int cmd_experiment(int argc, char** argv)
         if (r < 0) r = 0;
         if (nm == 0 || marks[nm - 1] != r) marks[nm++] = r;
     }
-    for (int v = 0; v < nv; v++)
-        for (int r = 0; r < rows; r++) {
-            double s = 0, s2 = 0;
-            for (long k = 0; k < runs; k++) s += g_exp_best[v][r][k];
-            double m = s / (double)runs;
-            for (long k = 0; k < runs; k++) s2 += (g_exp_best[v][r][k] - m) * (g_exp_best[v][r][k] - m);
-            double se = runs > 1 ? sqrt(s2 / (double)(runs - 1)) / sqrt((double)runs) : 0.0;
-            if (len < TOOL_FILE_MAX - 256)
-                len += snprintf(tool_file_buf + len, (size_t)(TOOL_FILE_MAX - len), "%s,%ld,%.9g,%.9g,%ld\n", x->v[v].name, g_exp_evals[r],
-                                m, se, runs);
-            for (int q = 0; q < nm; q++)
-                if (marks[q] == r) {
-                    mean_at[v][q] = m;
-                    se_at[v][q] = se;
+    {
+        char path[TOOL_PATH_MAX];
+        path_join(path, sizeof path, dir, "results.csv");
+        tool_out out;
+        if (tool_out_open(&out, path)) return 1;
+        am_text_put(&out.text, "variant,evaluations,mean_best,stderr_best,runs\n");
+        for (int v = 0; v < nv; v++) {
+            for (int pass = 0; pass < 2; pass++) {
+                for (int r = 0; r < rows; r++) (pass ? g_exp_dev : g_exp_sum)[r] = 0;
+                for (long k = 1; k <= runs; k++) {
+                    char rdir[EXP_RUN_DIR_MAX];
+                    snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k);
+                    if (read_log(rdir, NULL, g_exp_tmp, rows) < rows) {
+                        tool_out_close(&out, 0);
+                        return tool_usage_error("%s/log.csv: changed while the table was made", rdir);
+                    }
+                    for (int r = 0; r < rows; r++) {
+                        if (!pass) g_exp_sum[r] += g_exp_tmp[r];
+                        else g_exp_dev[r] += (g_exp_tmp[r] - g_exp_sum[r]) * (g_exp_tmp[r] - g_exp_sum[r]);
+                    }
                 }
+                if (!pass)
+                    for (int r = 0; r < rows; r++) g_exp_sum[r] = g_exp_sum[r] / (double)runs; /* the mean */
+            }
+            for (int r = 0; r < rows; r++) {
+                double m = g_exp_sum[r];
+                double se = runs > 1 ? sqrt(g_exp_dev[r] / (double)(runs - 1)) / sqrt((double)runs) : 0.0;
+                am_text_put(&out.text, "%s,%ld,%.9g,%.9g,%ld\n", x->v[v].name, g_exp_evals[r], m, se, runs);
+                for (int q = 0; q < nm; q++)
+                    if (marks[q] == r) {
+                        mean_at[v][q] = m;
+                        se_at[v][q] = se;
+                    }
+            }
         }
-    if (write_text(dir, "results.csv", tool_file_buf, len)) return 1;
-    if (TOOL_PICTURES && o.pictures) {
+        if (tool_out_close(&out, 1)) return 1;
+    }
+    if (TOOL_PICTURES && pictures) {
         char svg[2048];
-        char* dirs[1] = {dir};
+        char* dirs[1] = {(char*)(uintptr_t)dir};
         if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
     printf("experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
@@ -695,22 +842,20 @@ int tool_bench_evolve(long evaluations)
     printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
            d.population, evaluations, cores);
     for (int t = 1; t <= 2; t++) {
-        if (am_evo_init(&g_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+        if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
-        while (!am_evo_done(&g_evo)) {
-            if (am_evo_generation(&g_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-            for (int i = 0; i < d.population; i++) {
-                steps += g_evo.child[i].steps;
-                voxel_steps += g_evo.child[i].steps * g_evo.child[i].voxels;
-            }
+        while (!am_evo_done(&tool_evo)) {
+            if (am_evo_generation(&tool_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            steps += tool_evo.last_steps;
+            voxel_steps += tool_evo.last_voxel_steps;
         }
         double el = am_port_now() - t0;
-        rate[t - 1] = (double)g_evo.evaluations / el * 3600.0;
-        hash[t - 1] = am_evo_hash(&g_evo);
+        rate[t - 1] = (double)tool_evo.evaluations / el * 3600.0;
+        hash[t - 1] = am_evo_hash(&tool_evo);
         printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
                "voxel_steps_per_s=%.0f run_hash=%016llx\n",
-               t, g_evo.evaluations, el, rate[t - 1], (double)steps / (double)g_evo.evaluations,
+               t, tool_evo.evaluations, el, rate[t - 1], (double)steps / (double)tool_evo.evaluations,
                steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
     }
     printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
@@ -753,19 +898,19 @@ int cmd_repro(int argc, char** argv)
             return tool_usage_error("repro: unknown option '%s' (amorph repro --help)", a);
     }
     am_evo_def d;
-    if (build_def(&o, &d, "repro")) return 2;
+    if (build_def(&o, NULL, NULL, &d, "repro")) return 2;
     char err[AM_ERR_MAX];
-    if (am_evo_init(&g_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
+    if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();
-    while (!am_evo_done(&g_evo))
-        if (am_evo_generation(&g_evo, tool_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+    while (!am_evo_done(&tool_evo))
+        if (am_evo_generation(&tool_evo, tool_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
             fprintf(stderr, "amorph: repro: %s\n", err);
             return 1;
         }
     long voxel_steps = 0;
-    for (int i = 0; i < d.population; i++) voxel_steps += (long)g_evo.pop[i].voxels * g_evo.pop[i].steps;
-    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", g_evo.evaluations,
-           g_evo.generation, g_evo.best.fitness, voxel_steps, am_port_now() - t0);
-    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&g_evo));
+    for (int i = 0; i < d.population; i++) voxel_steps += (long)tool_evo.pop[i].voxels * tool_evo.pop[i].steps;
+    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", tool_evo.evaluations,
+           tool_evo.generation, tool_evo.best.fitness, voxel_steps, am_port_now() - t0);
+    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&tool_evo));
     return 0;
 }

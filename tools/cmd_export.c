@@ -6,11 +6,12 @@
 #include <string.h>
 
 int tool_vxa_loaded;
+#if TOOL_VXA
 am_vxa_info tool_vxa_info;
 
 static am_xml_doc g_xml;       /* the VXA reader's workspace */
-static am_lattice g_lat, g_one; /* the robot; a one-voxel stand-in to time an empty one */
-static char g_out[AM_VXA_TEXT_MAX > AM_LATTICE_TEXT_MAX ? AM_VXA_TEXT_MAX : AM_LATTICE_TEXT_MAX];
+static am_lattice g_one;       /* a one-voxel stand-in to time an empty robot */
+static char g_out[AM_VXA_TEXT_MAX]; /* the VXA text */
 
 am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz)
 {
@@ -25,11 +26,12 @@ am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_latti
         fprintf(stderr, "%s: warning: %d more warnings not shown\n", fname, tool_vxa_info.warnings - kept);
     return AM_OK;
 }
+#endif
 
 static const char export_help[] =
     "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice\n"
     "Writes a robot (a lattice, genome or VXA file, or a built-in scene) in another format:\n"
-    "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout\n"
+    "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
     "  --lattice FILE   the amorph lattice text format (docs/formats.md); '-' for stdout\n"
     "The environment in a VXA file is the robot's own when it was read from a VXA file, else the\n"
     "seed's (the defaults of amorph sim). Files are replaced atomically.\n";
@@ -64,22 +66,31 @@ int cmd_export(int argc, char** argv)
     if (!robot) return tool_usage_error("export: name a robot file or --scene NAME (amorph export --help)");
     if (!vxa && !lattice) return tool_usage_error("export: say what to write: --vxa FILE or --lattice FILE");
     if (vxa && lattice && !strcmp(vxa, lattice)) return tool_usage_error("export: --vxa and --lattice name the same file");
+    if (vxa && !TOOL_VXA) return tool_not_in_build("export --vxa", "VXA files");
 
     char err[AM_ERR_MAX];
-    am_status st = tool_load_robot(robot, is_scene, &g_lat, err, sizeof err);
+    am_lattice* lat = &tool_work[0].lattice; /* the robot */
+    am_status st = tool_load_robot(robot, is_scene, lat, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s", err);
-    long len = 0;
     if (lattice) {
-        if (am_lattice_format(&g_lat, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-        if (tool_write_output(strcmp(lattice, "-") ? lattice : NULL, g_out, len)) return 1;
+        tool_out o;
+        if (tool_out_open(&o, strcmp(lattice, "-") ? lattice : NULL)) return 1;
+        st = am_lattice_write(lat, &o.text, err, sizeof err);
+        if (st != AM_OK && st != AM_ERR_IO) {
+            tool_out_close(&o, 0);
+            return tool_usage_error("%s", err);
+        }
+        if (tool_out_close(&o, 1)) return 1;
     }
+#if TOOL_VXA
+    long len = 0;
     if (vxa) {
         am_env env = tool_vxa_loaded ? tool_vxa_info.env : am_default_env();
         /* the time step turns the period in steps into seconds; an empty robot is timed as one
          * voxel of material 1 */
-        const am_lattice* timed = &g_lat;
-        if (am_lattice_count(&g_lat) == 0) {
-            g_one = g_lat;
+        const am_lattice* timed = lat;
+        if (am_lattice_count(lat) == 0) {
+            g_one = *lat;
             g_one.cell[0] = 1;
             timed = &g_one;
         }
@@ -88,8 +99,9 @@ int cmd_export(int argc, char** argv)
         if (tool_vxa_loaded && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
             env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, env.dt_frac));
         double dt = am_dt_si(&tool_work[0].model, env.dt_frac);
-        if (am_vxa_format(&g_lat, &env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+        if (am_vxa_format(lat, &env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }
+#endif
     return 0;
 }

@@ -4,12 +4,6 @@
 #include <stdio.h>
 #include <string.h>
 
-/* one genome, one expression workspace and the texts of the commands (they run one at a time) */
-static am_genome genome_one;
-static am_lattice genome_lat;
-static char genome_text[AM_GENOME_TEXT_MAX];
-static char genome_lattice_text[AM_LATTICE_TEXT_MAX];
-
 static const char random_help[] =
     "usage: amorph random --repr dct|cppn|gmx [--materials 2|3] [--seed S] [--size N] [--out FILE]\n"
     "Writes a random genome (docs/formats.md) to FILE, or to the standard output.\n"
@@ -55,44 +49,50 @@ int cmd_random(int argc, char** argv)
     char err[AM_ERR_MAX];
     am_rng rng;
     am_rng_seed(&rng, seed);
-    if (am_genome_init(&genome_one, &def, &rng, err, sizeof err) != AM_OK) return tool_usage_error("random: %s", err);
-    long len = 0;
-    if (am_genome_format(&genome_one, genome_text, sizeof genome_text, &len, err, sizeof err) != AM_OK) {
+    if (am_genome_init(&tool_genome, &def, &rng, err, sizeof err) != AM_OK) return tool_usage_error("random: %s", err);
+    tool_out o;
+    if (tool_out_open(&o, out)) return 1;
+    am_status st = am_genome_write(&tool_genome, &o.text, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_IO) {
         fprintf(stderr, "amorph: random: %s\n", err);
+        tool_out_close(&o, 0);
         return 1;
     }
-    return tool_write_output(out, genome_text, len);
+    return tool_out_close(&o, 1);
 }
 
-/* line number of the "materials" line of a genome text (for messages), 1 if none */
-static int materials_line(const char* text)
+/* a genome's lines to the reader, noting the line of "materials" (for messages) */
+typedef struct genome_read {
+    am_genome_reader r;
+    int materials_line;       /* the first line that starts with "materials", 0 until seen */
+} genome_read;
+
+static am_status genome_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
 {
-    int line = 1;
-    for (const char* p = text; *p; line++) {
-        while (*p == ' ' || *p == '\t') p++;
-        if (!strncmp(p, "materials", 9)) return line;
-        p = strchr(p, '\n');
-        if (!p) break;
-        p++;
-    }
-    return 1;
+    genome_read* g = (genome_read*)ctx;
+    const char* p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    if (!g->materials_line && !strncmp(p, "materials", 9)) g->materials_line = lineno;
+    return am_genome_read_line(&g->r, line, n, err, errsz);
 }
 
-am_status tool_genome_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz)
+am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int errsz)
 {
-    if (!am_genome_sniff(text)) {
-        if (err && errsz > 0) err[0] = '\0';
-        return AM_ERR_ARG;
-    }
-    am_status st = am_genome_parse(&genome_one, text, fname, err, errsz);
+    const char* fname = src->path;
+    genome_read g;
+    g.materials_line = 0;
+    am_genome_read_begin(&g.r, &tool_genome, fname);
+    am_status st = tool_src_each(src, genome_line, &g, err, errsz);
+    if (st == AM_OK) st = am_genome_read_end(&g.r, err, errsz);
     if (st != AM_OK) return st;
-    am_palette pal = am_default_palette();
-    for (int m = 0; m < genome_one.materials; m++)
-        if (am_palette_find(&pal, genome_one.mat[m]) < 0)
+    /* the built-in palette, in the lattice about to be filled (none is built on the stack) */
+    am_default_palette_into(&lat->palette);
+    for (int m = 0; m < tool_genome.materials; m++)
+        if (am_palette_find(&lat->palette, tool_genome.mat[m]) < 0)
             return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
-                           materials_line(text), genome_one.mat[m]);
+                           g.materials_line ? g.materials_line : 1, tool_genome.mat[m]);
     char msg[AM_ERR_MAX];
-    st = am_genome_to_lattice(&genome_one, NULL, &tool_work[0].geno, lat, msg, sizeof msg);
+    st = am_genome_to_lattice(&tool_genome, NULL, &tool_work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
     return AM_OK;
 }
@@ -125,19 +125,29 @@ int cmd_express(int argc, char** argv)
     }
     if (!in) return tool_usage_error("express: name a genome file (amorph express --help)");
     char err[AM_ERR_MAX];
-    long len = 0;
-    am_status st = am_port_read_file(in, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err);
-    if (st != AM_OK) return tool_usage_error("%s", err);
-    if (strlen(tool_file_buf) != (size_t)len) return tool_usage_error("%s:1: binary data (a NUL byte) in a text file", in);
-    st = tool_genome_text_to_lattice(tool_file_buf, in, &genome_lat, err, sizeof err);
-    if (st == AM_ERR_ARG && !err[0]) return tool_usage_error("%s:1: not a genome (expected 'amorph-genome 1')", in);
-    if (st != AM_OK) return tool_usage_error("%s", err);
-    st = am_lattice_format(&genome_lat, genome_lattice_text, sizeof genome_lattice_text, &len, err, sizeof err);
+    tool_src src;
+    am_lattice* lat = &tool_work[0].lattice;
+    am_status st = tool_src_open(&src, in, TOOL_FILE_MAX, 0, err, sizeof err);
     if (st != AM_OK) {
+        if (src.binary) tool_src_binary(&src, err, sizeof err);
+        return tool_usage_error("%s", err);
+    }
+    int kind = tool_src_sniff(&src, err, sizeof err);
+    if (kind == TOOL_TEXT_GENOME) st = tool_genome_to_lattice(&src, lat, err, sizeof err);
+    else if (kind < 0 && src.binary) st = tool_src_binary(&src, err, sizeof err);
+    else if (kind < 0) st = AM_ERR_IO;
+    tool_src_close(&src);
+    if (kind > 0 && kind != TOOL_TEXT_GENOME) return tool_usage_error("%s:1: not a genome (expected 'amorph-genome 1')", in);
+    if (st != AM_OK) return tool_usage_error("%s", err);
+    tool_out o;
+    if (tool_out_open(&o, out)) return 1;
+    st = am_lattice_write(lat, &o.text, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_IO) {
         fprintf(stderr, "amorph: express: %s\n", err);
+        tool_out_close(&o, 0);
         return 1;
     }
-    if (tool_write_output(out, genome_lattice_text, len) != 0) return 1;
+    if (tool_out_close(&o, 1) != 0) return 1;
     if (!out) return 0;
     printf("voxels=%d\n", tool_work[0].geno.voxels);
     return 0;
@@ -146,7 +156,10 @@ int cmd_express(int argc, char** argv)
 void tool_bench_express(void)
 {
     enum { GENOMES = 8 };
-    static am_genome pool[GENOMES];
+    /* the pool: the genomes of the evolver's population, idle while bench runs */
+    _Static_assert(GENOMES <= AM_MAX_POPULATION, "the expression pool borrows the evolver's population");
+    am_genome* pool[GENOMES];
+    for (int i = 0; i < GENOMES; i++) pool[i] = &tool_evo.pop[i].genome;
     char err[AM_ERR_MAX];
     am_geno_def def = am_default_geno();
     printf("express_workspace=%dx%dx%d\n", def.nx, def.ny, def.nz);
@@ -156,16 +169,16 @@ void tool_bench_express(void)
         am_rng rng;
         am_rng_seed(&rng, 2024);
         for (int i = 0; i < GENOMES; i++)
-            if (am_genome_init(&pool[i], &def, &rng, err, sizeof err) != AM_OK) {
+            if (am_genome_init(pool[i], &def, &rng, err, sizeof err) != AM_OK) {
                 printf("express_%s_error=%s\n", am_repr_name(repr), err);
                 return;
             }
-        am_genome_express(&pool[0], NULL, &tool_work[0].geno, NULL, err, sizeof err); /* warm-up: tables */
+        am_genome_express(pool[0], NULL, &tool_work[0].geno, NULL, err, sizeof err); /* warm-up: tables */
         long reps = 0, voxels = 0;
         double t0 = am_port_now(), t = 0;
         do {
             for (int i = 0; i < GENOMES; i++) {
-                am_genome_express(&pool[i], NULL, &tool_work[0].geno, NULL, err, sizeof err);
+                am_genome_express(pool[i], NULL, &tool_work[0].geno, NULL, err, sizeof err);
                 voxels += tool_work[0].geno.voxels;
             }
             reps += GENOMES;

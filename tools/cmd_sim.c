@@ -4,12 +4,10 @@
 #include <stdio.h>
 #include <string.h>
 
-static am_lattice g_lat;
-
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
     "Simulates one robot in the seed's environment (relaxation, then actuation cycles) and prints\n"
-    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file (.vxa, whose\n"
+    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, whose\n"
     "environment is used; the options below override it) or a run folder of amorph evolve (its best\n"
     "robot, in the run's environment and evaluation); NAME a built-in scene (cube:N, sphere:D,\n"
     "cantilever:N, chain:N).\n"
@@ -116,11 +114,12 @@ int cmd_sim(int argc, char** argv)
 
     char err[AM_ERR_MAX];
     am_status st;
+    am_lattice* lat = &tool_work[0].lattice; /* the robot */
     if (!is_scene && tool_is_run_dir(file)) {
         /* a run folder: its best robot, in the environment and evaluation it evolved in */
         am_env renv;
         am_eval_def rdef;
-        st = tool_load_run(file, &g_lat, &renv, &rdef, err, sizeof err);
+        st = tool_load_run(file, lat, &renv, &rdef, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s", err);
         env = merge_env(&renv, &env, given);
         if (given & G_CYCLES) rdef.cycles = def.cycles;
@@ -133,11 +132,13 @@ int cmd_sim(int argc, char** argv)
         rdef.record = def.record;
         def = rdef;
     } else {
-        st = tool_load_robot(file, is_scene, &g_lat, err, sizeof err);
+        st = tool_load_robot(file, is_scene, lat, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s", err);
+#if TOOL_VXA
         if (tool_vxa_loaded) env = merge_env(&tool_vxa_info.env, &env, given);
+#endif
     }
-    st = am_model_build(&tool_work[0].model, &g_lat, &env, err, sizeof err);
+    st = am_model_build(&tool_work[0].model, lat, &env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
         if (json)
@@ -149,9 +150,11 @@ int cmd_sim(int argc, char** argv)
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
     if (dt_fixed > 0) tool_work[0].model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&tool_work[0].model, tool_work[0].model.dt_rec, AM_DIM_TIME));
+#if TOOL_VXA
     /* a VXA file's period is in seconds: in steps of this robot's time step */
     if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
         tool_work[0].model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, tool_work[0].model.env.dt_frac));
+#endif
 
     am_result res;
     double t0 = am_port_now();
@@ -182,8 +185,9 @@ static int bench_one(const char* scene, long steps, int collisions)
     char err[AM_ERR_MAX];
     am_env env = am_default_env();
     env.collisions = collisions;
-    if (am_scene_build(&g_lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-    if (am_model_build(&tool_work[0].model, &g_lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    am_lattice* lat = &tool_work[0].lattice;
+    if (am_scene_build(lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    if (am_model_build(&tool_work[0].model, lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
     am_state_reset(&tool_work[0].model, &tool_work[0].state);
     tool_work[0].state.actuate = 1;
     am_steps(&tool_work[0].model, &tool_work[0].state, steps / 10 + 1); /* warm-up: caches, first collision build */

@@ -165,7 +165,7 @@ static int view_write(const am_lattice* lat, const am_env* env, const am_eval_de
     static tool_motion mo;
     int rc = tool_record_motion(lat, env, eval, frames, &mo, what);
     if (rc) return rc;
-    text_out o = {view_html, VIEW_HTML_MAX, 0, 0};
+    text_out o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
     view_html[0] = 0;
     for (size_t k = 0; k < sizeof view_page_pre / sizeof view_page_pre[0]; k++) out_str(&o, view_page_pre[k]);
     view_data(&o, &mo, eval, title);

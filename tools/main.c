@@ -16,10 +16,14 @@ static const struct {
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
     {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
     {"express", cmd_express, "express a genome into a lattice file"},
+#if TOOL_VXA
     {"export", cmd_export, "write a robot as a VXA file for VoxCAD (--vxa) or a lattice file"},
-    {"render", cmd_render, "draw a filmstrip PNG of a robot's motion (initial, settled, snapshots)"},
-    {"plot", cmd_plot, "plot best fitness against evaluations of runs or experiments (SVG)"},
-    {"view", cmd_view, "write a self-contained HTML viewer of a robot's recorded motion"},
+#else
+    {"export", cmd_export, "write a robot as a lattice file (--lattice; VXA files: not in this build)"},
+#endif
+    {"render", cmd_render, "draw a filmstrip PNG of a robot's motion (initial, settled, snapshots)" TOOL_DESKTOP_ONLY},
+    {"plot", cmd_plot, "plot best fitness against evaluations of runs or experiments (SVG)" TOOL_DESKTOP_ONLY},
+    {"view", cmd_view, "write a self-contained HTML viewer of a robot's recorded motion" TOOL_DESKTOP_ONLY},
 };
 
 static void usage(FILE* f)

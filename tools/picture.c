@@ -156,7 +156,7 @@ int tool_check_output(const char* path, const char* cmd, const char* ext)
 /* the board profile: the commands and functions exist and say they are not built in */
 static int not_built(const char* what)
 {
-    return tool_usage_error("%s: pictures are not built into the board profile (build the desktop profile)", what);
+    return tool_not_in_build(what, "pictures");
 }
 int cmd_render(int argc, char** argv)
 {

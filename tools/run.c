@@ -7,32 +7,69 @@
 
 int tool_is_run_dir(const char* path)
 {
-    char p[4096];
+    char p[TOOL_PATH_MAX];
     if (snprintf(p, sizeof p, "%s/config.txt", path) >= (int)sizeof p) return 0;
     if (!am_port_exists(p)) return 0;
     if (snprintf(p, sizeof p, "%s/best.genome", path) >= (int)sizeof p) return 0;
     return am_port_exists(p);
 }
 
+typedef struct config_ctx {
+    am_evo_def* d;
+    const char* fname;
+} config_ctx;
+
+static am_status config_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    config_ctx* c = (config_ctx*)ctx;
+    return am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
+}
+
+am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz)
+{
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, nul_ends, err, errsz);
+    if (st == AM_OK) {
+        config_ctx c = {d, path};
+        st = tool_src_each(&src, config_line, &c, err, errsz);
+    } else if (src.binary) {
+        st = tool_src_binary(&src, err, errsz);
+    }
+    tool_src_close(&src);
+    return st;
+}
+
+static am_status genome_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    (void)lineno;
+    return am_genome_read_line((am_genome_reader*)ctx, line, n, err, errsz);
+}
+
+am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz)
+{
+    am_genome_reader r;
+    am_genome_read_begin(&r, g, src->path);
+    am_status st = tool_src_each(src, genome_line, &r, err, errsz);
+    return st != AM_OK ? st : am_genome_read_end(&r, err, errsz);
+}
 
 am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_def* eval, char* err, int errsz)
 {
-    char path[4096], msg[AM_ERR_MAX];
-    long len = 0;
+    char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
     am_evo_def d = am_default_evo();
+    /* a NUL byte ends these texts, as it ended them when they were parsed whole */
     snprintf(path, sizeof path, "%s/config.txt", dir);
-    am_status st = am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, errsz);
-    if (st != AM_OK) return st;
-    st = am_evo_parse(&d, tool_file_buf, path, err, errsz);
+    am_status st = tool_read_config(path, &d, 1, err, errsz);
     if (st != AM_OK) return st;
     snprintf(path, sizeof path, "%s/best.genome", dir);
-    st = am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, errsz);
+    tool_src src;
+    st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
+    if (st == AM_OK) st = tool_read_genome(&src, &tool_genome, err, errsz);
+    tool_src_close(&src);
     if (st != AM_OK) return st;
-    static am_genome g;
-    st = am_genome_parse(&g, tool_file_buf, path, err, errsz);
-    if (st != AM_OK) return st;
-    am_palette pal = am_evo_palette(&d);
-    st = am_evo_lattice(&d, &pal, &g, &tool_work[0].geno, lat, msg, sizeof msg);
+    /* the run's palette, in the evolver's slot (idle: no run is going on) */
+    am_evo_palette_into(&d, &tool_evo.palette);
+    st = am_evo_lattice(&d, &tool_evo.palette, &tool_genome, &tool_work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
     if (env) *env = d.env;
     if (eval) {

@@ -5,8 +5,10 @@
 # Method: frame(f) is GCC's static frame size; depth(f) = frame(f) + the deepest depth among f's
 # callees. An indirect call (through a function pointer: the command table, the parallel map's
 # task, the genotype operation tables) may reach any function nobody calls directly, so it costs
-# the deepest of those. Library functions (libc, libgcc) have no frame figure here and count 0:
-# the figure is amorph's own stack, the C library's frames (printf) come on top.
+# the deepest of those. Callbacks are told apart by name and an indirect call reaches only its
+# own kind (genotype operations, the parallel map task, am_text flush functions, the line
+# functions of tool_src_each, the writers of write_stream). Library functions (libc, libgcc) have no frame figure here and count 0: the
+# figure is amorph's own stack, the C library's frames (printf) come on top.
 # Prints the largest frames, then the deepest chain from ROOT (default main) with its sum.
 BUILD=${1:?usage: tools/stack.sh BUILD [ROOT]}
 ROOT=${2:-main}
@@ -30,12 +32,36 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
     if (!((s, d) in seen)) { seen[s, d] = 1; ne[s]++; to[s, ne[s]] = d; if (d != "__indirect_call") called[d] = 1 }
     next
 }
+# the kind of callback a function is, or of callback an indirect call site takes: a genotype
+# operation (the tables of src/geno_dct.c, geno_cppn.c, geno_gmx.c, called by the am_genome_
+# functions), the task of the parallel map, an am_text flush function (called by
+# util_text.c:drain, or the am_text functions it is inlined into), a line function of
+# tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream;
+# any other indirect call may reach any function of kind "other"
+function kind_of(c) {
+    if (c ~ /^src\/geno_(dct|cppn|gmx)\.c:/) return "geno"
+    if (c ~ /_task$/) return "task"
+    if (c ~ /(_flush|am_text_drop)$/) return "flush"
+    if (c ~ /^tools\/.*_line$/) return "line"
+    if (c ~ /_writer$/) return "writer"
+    return "other"
+}
+function site_of(f) {
+    if (f ~ /^(am_genome_|src\/(format_genome|geno_common|geno_levelset)\.c:)/) return "geno"
+    if (f ~ /(am_port_parallel_map|map_loop)$/) return "task"
+    if (f ~ /(util_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
+    if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
+    if (f ~ /:write_stream$/) return "writer"
+    return "other"
+}
 # the deepest callee of an indirect call made by f: a command (cmd_*) when f is the root, else
-# any other function nobody calls directly; a function already on the chain is never re-entered
-function indirect(f,   c, d, best) {
-    best = 0; ibest[f] = ""
+# any other function nobody calls directly of the kind the call site takes; a function already
+# on the chain is never re-entered
+function indirect(f,   c, d, best, site) {
+    best = 0; ibest[f] = ""; site = site_of(f)
     for (c in cand) {
         if (onpath[c] || ((f == root) != (c ~ /^cmd_/))) continue
+        if (f != root && kind_of(c) != site) continue
         d = depth(c); if (d > best) { best = d; ibest[f] = c }
     }
     return best

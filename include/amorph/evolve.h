@@ -22,6 +22,7 @@
 #include "amorph/rng.h"
 #include "amorph/sim.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 /* ---- configuration ---- */
 
@@ -61,13 +62,20 @@ void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
 /* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
  * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
 am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h) */
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
 /* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
 am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
+/* one line of that text (n characters without the newline; line number lineno for messages), for
+ * text that is not held whole; am_evo_parse is this over every line */
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz);
 /* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
  * else 0 and the first differing key's name in key (capacity keysz) */
 int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
 /* the palette and expression settings a run's genomes are expressed and simulated with */
 am_palette am_evo_palette(const am_evo_def* d);
+/* the same palette written into *out */
+void am_evo_palette_into(const am_evo_def* d, am_palette* out);
 
 /* ---- state ---- */
 
@@ -92,7 +100,11 @@ typedef struct am_evo_stats {
     double wall_s;            /* wall time of this generation, s */
 } am_evo_stats;
 
-/* a run: population, offspring, the random stream and counters. Large: declare it static. */
+/* a run: population, offspring, the random stream and counters. Large: declare it static.
+ * Offspring are made, evaluated and placed AM_EVO_BATCH at a time: a whole generation on the
+ * desktop (one parallel map), one pair at a time on a one-worker board. The pairs of a generation
+ * are disjoint and nothing but making offspring draws from the stream, so the run is the same
+ * for any batch size. */
 typedef struct am_evo {
     am_evo_def def;
     am_palette palette;                       /* am_evo_palette(&def) */
@@ -100,13 +112,16 @@ typedef struct am_evo {
     long generation;                          /* generations completed (0 before the first) */
     long evaluations;                         /* evaluations completed */
     am_evo_ind pop[AM_MAX_POPULATION];        /* the population (def.population members) */
-    am_evo_ind child[AM_MAX_POPULATION];      /* offspring of the current generation */
+    am_evo_ind child[AM_EVO_BATCH];           /* offspring of the current batch */
     am_evo_ind best;                          /* best individual ever evaluated */
     int has_best;                             /* 1 once best is set */
     uint64_t history;                         /* hash over every genome and fitness evaluated */
     am_evo_stats last;                        /* statistics of the last generation */
-    int order[AM_MAX_POPULATION];             /* scratch: evaluation order (largest body first) */
-    uint8_t body[4][AM_MAX_CELLS];            /* scratch: the four bodies of one crowding pair */
+    long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
+    long last_voxel_steps;                    /* the same, each step times the body's voxels */
+    int order[AM_EVO_BATCH];                  /* scratch: evaluation order (largest body first) */
+    uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
+                                                 (the second's is in w[0].geno.other) */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */
@@ -126,9 +141,10 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
 int am_evo_done(const am_evo* e);
 /* one generation: generation 0 evaluates the initial population; later ones make offspring,
  * evaluate them on up to `workers` workspaces w[0..workers-1] through am_port_parallel_map and
- * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations, no further
- * evaluation starts, the generation is abandoned and e is left as it was before the call
- * (AM_ERR_ARG, "interrupted").
+ * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations of the first
+ * batch (every evaluation of the generation when AM_EVO_BATCH >= population, as on the desktop),
+ * no further evaluation starts, the generation is abandoned and e is left as it was before the
+ * call (AM_ERR_ARG, "interrupted"); once a batch has been placed the generation runs to its end.
  * Fills e->last. */
 am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz);
 /* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec may be NULL */
@@ -145,9 +161,55 @@ uint64_t am_evo_hash(const am_evo* e);
 
 /* the run as text (config, stream, counters, population, best), ending with a checksum line */
 am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h): the checksum is
+ * computed on the way, so a stream needs no copy of the whole text */
+am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz);
 /* reads a checkpoint (checksum first: a damaged file is refused); messages "fname:line: problem".
- * text is used as scratch (its spaces and newlines may be overwritten) */
+ * text is used as scratch (its spaces and newlines may be overwritten). It is the two passes
+ * below over a whole text. */
 am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);
+
+/* A checkpoint that is not held whole (a file streamed through a small buffer) is read in two
+ * passes: the scan takes its bytes in pieces of any size and checks the checksum; the reader then
+ * takes its lines one at a time. Same results and messages as am_evo_checkpoint_parse. */
+typedef struct am_evo_ckpt_scan {
+    long bytes;                 /* bytes seen */
+    int lines;                  /* newlines seen */
+    uint64_t hash;              /* hash of every byte seen */
+    uint64_t line_hash;         /* hash of the bytes before the current line */
+    uint64_t prev_hash;         /* hash of the bytes before the last whole line */
+    char cur[32], prev[32];     /* the first bytes of the current and of the last whole line */
+    long cur_len, prev_len;     /* their lengths */
+    int config_end;             /* line of the first "config-end" after the first configuration line, 0 if none */
+    int last_end;               /* line of the last "end" line, 0 if none */
+    int checksum_line;          /* set by am_evo_checkpoint_scan_end: the last line, the checksum */
+} am_evo_ckpt_scan;
+void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc);
+void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
+/* after the last byte: AM_OK when the last line is a checksum that matches the text before it */
+am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
+
+/* pass 2, after a successful scan: begin (clears e), every line in order, end */
+typedef struct am_evo_ckpt_reader {
+    am_evo* e;
+    const char* fname;          /* for messages; must stay valid while reading */
+    int line;                   /* lines read */
+    int until, config_end, last_end; /* from the scan */
+    am_status st;               /* the first failure: every later call returns it */
+    int seen_rng, seen_gen, seen_evals, seen_hist, seen_last, pop_seen;
+    int in_genome;              /* 1 while the lines of an individual's genome are read */
+    am_evo_ind* ind;            /* that individual */
+    int ind_pop;                /* 1 for a member of the population, 0 for the best */
+    long idx;                   /* its index */
+    int first;                  /* the first line of its genome */
+    char where[96];             /* "fname (genome from line N)", the genome's file name in messages */
+    am_genome_reader gr;
+} am_evo_ckpt_reader;
+void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
+/* one line of n characters, NUL-terminated at n (used as scratch: its spaces may be overwritten);
+ * lines from the checksum line on are ignored */
+am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz);
+am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz);
 /* the largest checkpoint text of a population of n */
 #define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L))
 

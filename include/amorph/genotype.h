@@ -23,6 +23,7 @@
 #include "amorph/real.h"
 #include "amorph/rng.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 /* ---- representations ---- */
 
@@ -150,17 +151,28 @@ typedef struct am_geno_work {
     uint8_t cell[AM_MAX_CELLS];      /* (cells) the body: 0 empty, 1 + material index */
     int voxels;                      /* filled cells of cell[] */
     int nx, ny, nz;                  /* shape of dens and cell */
-    uint8_t other[AM_MAX_CELLS];     /* (cells) second body of am_genome_distance */
-    uint8_t mark[AM_MAX_CELLS];      /* (cells) flood-fill marks */
-    int32_t queue[AM_MAX_CELLS];     /* (cells) flood-fill queue */
-    am_dct_work dct;                 /* DCT tables and scratch */
+    uint8_t other[AM_MAX_CELLS];     /* (cells) a second body: am_genome_distance's, the evolver's crowding's */
+    am_dct_work dct;                 /* DCT basis tables (cached) */
     int tables;                      /* 1 once the lookup tables below are filled */
     am_real tab_sin[AM_GENO_TABLE + 1];   /* sin(2 pi i / T), T = AM_GENO_TABLE */
     am_real tab_gauss[AM_GENO_TABLE + 1]; /* e^(-q) at q = AM_GENO_GAUSS_RANGE i / T */
     am_real tab_sig[AM_GENO_TABLE + 1];   /* 2 / (1 + e^-t) - 1 at t = AM_GENO_SIG_RANGE (2 i / T - 1) */
-    am_real coord[3][AM_CPPN_CHUNK];      /* CPPN inputs of one chunk of cells */
-    am_real act[2][AM_MAX_CPPN_NODES][AM_CPPN_CHUNK]; /* CPPN node values of one chunk (two layers) */
-    am_real fx[AM_MAX_DIM], fy[AM_MAX_DIM], fz[AM_MAX_DIM]; /* GMX separable falloff factors */
+    /* scratch of one step of an expression: the representation's fields, then the level set. No
+     * member outlives the step that uses it, so they share memory */
+    union {
+        am_dct_scratch dct;                   /* DCT: the passes of the inverse transform */
+        struct {
+            am_real coord[3][AM_CPPN_CHUNK];  /* CPPN inputs of one chunk of cells */
+            am_real act[2][AM_MAX_CPPN_NODES][AM_CPPN_CHUNK]; /* CPPN node values of one chunk (two layers) */
+        } cppn;
+        struct {
+            am_real fx[AM_MAX_DIM], fy[AM_MAX_DIM], fz[AM_MAX_DIM]; /* GMX separable falloff factors */
+        } gmx;
+        struct {
+            uint8_t mark[AM_MAX_CELLS];       /* (cells) flood-fill marks */
+            int32_t queue[AM_MAX_CELLS];      /* (cells) flood-fill queue */
+        } piece;                              /* the level set's largest piece */
+    } scratch;
 } am_geno_work;
 
 /* ---- operations ---- */
@@ -220,6 +232,9 @@ int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, 
 
 /* 1 when text is a genome (its first word is "amorph-genome") */
 int am_genome_sniff(const char* text);
+/* writes g as text to out, a whole-text buffer or a stream (amorph/text.h); AM_ERR_CAPACITY or
+ * AM_ERR_IO (with a message) when out dropped text */
+am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz);
 /* writes g as text into buf (capacity cap, NUL-terminated); *len gets the length. AM_ERR_CAPACITY
  * if it does not fit (AM_GENOME_TEXT_MAX always does) */
 am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz);
@@ -228,20 +243,8 @@ am_status am_genome_parse(am_genome* g, const char* text, const char* fname, cha
 
 /* ---- for representation implementers ---- */
 
-/* a growing text buffer that never writes past cap */
-typedef struct am_geno_sink {
-    char* buf;     /* output, NUL-terminated while it fits */
-    long cap;      /* capacity of buf */
-    long len;      /* characters written (or wanted) */
-} am_geno_sink;
-/* appends printf-style text */
-void am_geno_put(am_geno_sink* s, const char* fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
 /* appends " " and a real that reads back bit for bit (%.9g for float, %.17g for double) */
-void am_geno_put_real(am_geno_sink* s, am_real v);
+void am_geno_put_real(am_text* s, am_real v);
 
 /* lines a representation may require to appear once each (the largest over all of them) */
 #define AM_GENO_SEEN_MAX (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K \
@@ -277,11 +280,29 @@ typedef struct am_geno_ops {
     /* 1 when every value is the same, bit for bit */
     int (*equal)(const am_genome* a, const am_genome* b);
     void (*express)(const am_genome* g, am_geno_work* w); /* fills w->dens (materials x cells) */
-    void (*format)(const am_genome* g, am_geno_sink* s);  /* the body lines, shape line first */
+    void (*format)(const am_genome* g, am_text* s);  /* the body lines, shape line first (am_text_put) */
     /* one line after the header, split into ntok fields; the message without "file:line: " */
     am_status (*parse_line)(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz);
     am_status (*parse_end)(am_genome* g, am_geno_parse* ps, char* err, int errsz); /* at "end" */
 } am_geno_ops;
+
+/* a genome read line by line, for text that is not held whole (a file streamed through a small
+ * buffer): begin, one call per line, end. am_genome_parse is these calls over a whole text and
+ * gives the same genome and messages. */
+typedef struct am_genome_reader {
+    am_genome* g;                  /* the genome being read */
+    const char* fname;             /* for messages; must stay valid while reading */
+    int state;                     /* the header line expected next, or the body */
+    int lineno;                    /* lines read */
+    am_status st;                  /* the first failure: every later call returns it */
+    am_geno_parse ps;
+    const am_geno_ops* ops;        /* the representation's, once its line was read */
+} am_genome_reader;
+void am_genome_read_begin(am_genome_reader* r, am_genome* g, const char* fname);
+/* one line of n characters without its newline (text[n] is '\n' or NUL); messages "fname:line: problem" */
+am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, char* err, int errsz);
+/* after the last line: AM_OK when the genome ended with its 'end' line */
+am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz);
 
 extern const am_geno_ops am_geno_dct_ops;   /* src/geno_dct.c */
 extern const am_geno_ops am_geno_cppn_ops;  /* src/geno_cppn.c */

@@ -11,6 +11,7 @@
 #include "amorph/config.h"
 #include "amorph/real.h"
 #include "amorph/status.h"
+#include "amorph/text.h"
 
 typedef struct am_material {
     char name[AM_NAME_MAX];  /* identifier: letters, digits, '_' and '-' */
@@ -45,6 +46,8 @@ am_material am_default_material(void);
 /* the built-in palette of 9 materials: passive, active, active90 (90 degrees behind), stiff,
  * soft, heavy, light, active180, fixed. Active CTE is 0.01 (volumetric, as the seed). */
 am_palette am_default_palette(void);
+/* the same palette written into *out (no copy of the large struct on the stack) */
+void am_default_palette_into(am_palette* out);
 /* index (0-based) of the material named name in p, or -1 */
 int am_palette_find(const am_palette* p, const char* name);
 
@@ -68,9 +71,28 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
 /* the lattice text format (docs/formats.md). Parse from a NUL-terminated buffer; fname is used
  * only in messages ("fname:line: problem"). */
 am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname, char* err, int errsz);
+/* a lattice read line by line, for text that is not held whole (a file streamed through a small
+ * buffer): begin, one call per line, end. am_lattice_parse is these calls over a whole text and
+ * gives the same lattice and messages. */
+typedef struct am_lattice_reader {
+    am_lattice* lat;            /* the lattice being filled (partial after an error) */
+    const char* fname;          /* for messages; must stay valid while reading */
+    int line, last;             /* lines read; the last one */
+    int have_header, have_size, have_voxel;
+    int z, y;                   /* the layer being read (-1 before the first) and its rows so far */
+    am_status st;               /* the first failure: every later call returns it */
+} am_lattice_reader;
+void am_lattice_read_begin(am_lattice_reader* r, am_lattice* lat, const char* fname);
+/* one line of n characters without its newline (text[n] is '\n' or NUL) */
+am_status am_lattice_read_line(am_lattice_reader* r, const char* text, long n, char* err, int errsz);
+/* after the last line: AM_OK when the lattice is complete */
+am_status am_lattice_read_end(am_lattice_reader* r, char* err, int errsz);
 /* write lat in the lattice text format into buf (capacity cap, NUL-terminated); *len gets the
  * length. AM_ERR_CAPACITY if it does not fit. */
 am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/text.h); AM_ERR_CAPACITY
+ * or AM_ERR_IO when out dropped text */
+am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz);
 /* the largest text am_lattice_format can produce for any lattice of this profile */
 #define AM_LATTICE_TEXT_MAX (AM_MAX_MATERIALS * 400L + AM_MAX_CELLS * 3L + 8192L)
 

@@ -41,10 +41,32 @@ void am_port_progress(const char* line);
  * AM_ERR_IO if unreadable, AM_ERR_CAPACITY if larger than cap - 1. */
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz);
 /* writes n bytes to path atomically: a temporary file beside it, flushed, then renamed over
- * path, so a reader (or a crash) sees either the old file or the whole new one */
+ * path, so a reader (or a crash) sees either the old file or the whole new one (one write of a
+ * stream, below) */
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz);
 /* appends n bytes to path (created if missing); not atomic (logs) */
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz);
+/* streams: a file written or read piece by piece, so a text of any length needs only a small
+ * buffer. A written stream is an atomic replace like am_port_write_file: its pieces go to a
+ * temporary file beside path, which a committing am_port_close flushes and renames over path; a
+ * reader (or a crash) sees the old file or the whole new one, never a part. Streams live in a
+ * fixed table of the port (at least AM_PORT_STREAMS open at once; no allocation); the handle
+ * names a slot. The path string must stay valid and unchanged until am_port_close. */
+#define AM_PORT_STREAMS 2
+typedef int am_port_stream;
+/* starts an atomic replace of path (nothing is visible at path until the commit) */
+am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz);
+/* appends n bytes; after a failure the stream only waits for am_port_close, which drops it */
+am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz);
+/* opens path for reading from its start */
+am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz);
+/* reads up to cap bytes into buf (no NUL added); *got gets the count, 0 at the end of the file */
+am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz);
+/* ends a stream and frees its slot. A written stream with commit 1 (and no failed write) is
+ * finished: flushed, closed and renamed over its path; with commit 0, or after a failed write,
+ * it is dropped: the temporary is removed and path stays as it was. AM_OK, or AM_ERR_IO when
+ * finishing fails (the temporary is removed then too); always AM_OK for a read stream. */
+am_status am_port_close(am_port_stream s, int commit, char* err, int errsz);
 /* creates the directory path (one level); AM_OK if it already exists as a directory */
 am_status am_port_make_dir(const char* path, char* err, int errsz);
 /* 1 when path exists (file or directory), 0 otherwise */

@@ -1,14 +1,27 @@
-/* amorph/text.h: a bounded text buffer for the writers of every format (lattice, VXA, SVG, HTML).
- * Appending never writes past cap: text that does not fit sets `full`, keeps what was written
- * NUL-terminated, and every later append is dropped, so a writer checks once at the end. */
+/* amorph/text.h: the bounded text buffer every writer formats into (genome, lattice, configuration,
+ * checkpoint, VXA, SVG, HTML).
+ *
+ * Appending never writes past cap. Without a flush function the buffer holds the whole text: text
+ * that does not fit sets `full`, keeps what was written NUL-terminated, and every later append is
+ * dropped, so a writer checks once at the end. With a flush function the buffer is a window of a
+ * stream: when a piece does not fit, the buffered bytes are handed to flush (which writes them to
+ * a file, say) and the buffer starts again, so a text of any length goes through a small buffer;
+ * `full` is then set only when flush fails or one piece is longer than the buffer. */
 #ifndef AMORPH_TEXT_H
 #define AMORPH_TEXT_H
+
+#include "amorph/status.h"
 
 typedef struct am_text {
     char* buf;   /* output (cap bytes) */
     long cap;    /* capacity, including the NUL */
-    long len;    /* characters written */
-    int full;    /* 1 once something did not fit */
+    long len;    /* characters in buf */
+    int full;    /* 0; 1 once something did not fit; 2 once a flush failed */
+    /* streaming (optional, NULL for a whole-text buffer): receives the n buffered bytes at data;
+     * AM_OK, or a failure that sets full (the flush function keeps its own message) */
+    am_status (*flush)(void* ctx, const char* data, long n);
+    void* ctx;   /* the flush function's context */
+    long done;   /* bytes handed to flush so far (the text's length is done + len) */
 } am_text;
 
 /* appends printf-style text */
@@ -17,5 +30,18 @@ void am_text_put(am_text* t, const char* fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* the va_list form, for the writers' own variadic helpers */
+void am_text_vput(am_text* t, const char* fmt, va_list ap)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 0)))
+#endif
+    ;
+/* appends n bytes of data (no NUL inside) */
+void am_text_write(am_text* t, const char* data, long n);
+/* a flush function that drops the text: a stream through it only counts (done + len is the length) */
+am_status am_text_drop(void* ctx, const char* data, long n);
+/* hands the buffered bytes to flush (a whole-text buffer keeps them). AM_OK while nothing was
+ * dropped, else AM_ERR_CAPACITY (full 1) or AM_ERR_IO (full 2: the flush function's message) */
+am_status am_text_flush(am_text* t);
 
 #endif

@@ -190,8 +190,12 @@ _Noreturn void _exit(int status)
 
 /* ---- the heap arena ---- */
 
-#define HEAP_ARENA 8192 /* bytes newlib's malloc may take, in all */
-static _Alignas(8) unsigned char heap[HEAP_ARENA];
+/* newlib's malloc grows its pool to the next 4 KiB boundary (its page size) at its first call and
+ * asks for whole pages after that. The arena is one page and starts on a page boundary (section
+ * .heap, which mps2.ld places there), so the first growth takes exactly the arena and newlib's
+ * printf and strtod (the only users) never ask for more (docs/porting.md, Heap). */
+#define HEAP_ARENA 4096 /* bytes newlib's malloc may take, in all */
+static _Alignas(8) unsigned char heap[HEAP_ARENA] __attribute__((section(".heap")));
 static size_t heap_top;
 
 void* _sbrk(ptrdiff_t incr)

@@ -1,0 +1,130 @@
+#!/bin/sh
+# tests/cli_board.sh: what the board profile does its own way, on a build of it for this machine
+# ($BOARD_BUILD/amorph, PROFILE=board on the POSIX port, exported by `make test`; skipped when
+# unset). The desktop-only commands answer "not in this build"; files stream through one line
+# buffer and a 512-byte output buffer, so a checkpoint many times their size is written and read
+# back exactly (a resumed run equals an uninterrupted one), long lines and damaged files are
+# refused in one line; the evolver places offspring two at a time. With AMORPH_QEMU_BOARD set to a
+# bare-metal build (build/cortex-m4/amorph) the file round trip also runs on QEMU's semihosting.
+# Run from the repository root.
+. tests/shlib.sh
+
+if [ -z "${BOARD_BUILD:-}" ] || ! [ -x "$BOARD_BUILD/amorph" ]; then
+    echo "cli_board: BOARD_BUILD not set or not built: board profile tests skipped"
+    summary cli_board
+    exit $?
+fi
+B="$BOARD_BUILD/amorph"
+if ! "$B" --help 2>/dev/null | grep -q 'profile=board'; then
+    ko "$B is not a board profile build"
+    summary cli_board
+    exit $?
+fi
+
+# --- left out of the board build: one line, exit 2, no file written ---
+expect_fail 2 "render: not in this build" "$B" render --scene cube:2 --out "$TMPD/x.png"
+expect_fail 2 "plot: not in this build" "$B" plot "$TMPD" --out "$TMPD/x.svg"
+expect_fail 2 "view: not in this build" "$B" view --scene cube:2 --out "$TMPD/x.html"
+expect_fail 2 "export --vxa: not in this build" "$B" export --scene cube:2 --vxa "$TMPD/x.vxa"
+expect_fail 2 "voxcad_quadruped.vxa: a VXA file: not in this build" "$B" sim tests/data/voxcad_quadruped.vxa
+if [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.vxa" ]; then ok; else ko "a refused command wrote a file"; fi
+# the lattice export works and reads back
+expect_ok "$B" export --scene sphere:6 --lattice "$TMPD/s.lattice"
+f1=$("$B" sim --scene sphere:6 --cycles 1 | sed -n 's/^hash = //p'); f2=$("$B" sim "$TMPD/s.lattice" --cycles 1 | sed -n 's/^hash = //p')
+if [ -n "$f1" ] && [ "$f1" = "$f2" ]; then ok; else ko "sphere:6 and its exported lattice simulate differently: $f1 $f2"; fi
+
+# --- genomes and lattices through the line buffer ---
+for r in dct cppn gmx; do
+    expect_ok "$B" random --repr "$r" --materials 3 --seed 4 --out "$TMPD/$r.genome"
+    expect_ok "$B" express "$TMPD/$r.genome" --out "$TMPD/$r.lattice"
+    "$B" export "$TMPD/$r.genome" --lattice - >"$TMPD/$r.exported" 2>"$TMPD/err"
+    if cmp -s "$TMPD/$r.lattice" "$TMPD/$r.exported"; then ok; else ko "$r: express and export --lattice differ"; fi
+    a=$("$B" sim "$TMPD/$r.genome" --cycles 1 | grep -v '^robot\|^wall'); b=$("$B" sim "$TMPD/$r.lattice" --cycles 1 | grep -v '^robot\|^wall')
+    if [ -n "$a" ] && [ "$a" = "$b" ]; then ok; else ko "$r: the genome and its lattice simulate differently: $a / $b"; fi
+done
+# a comment of 1023 characters is a line; one of 1024 is too long, said in one line
+long=$(awk 'BEGIN { for (i = 0; i < 1021; i++) printf "x" }')
+{ echo "amorph-lattice 1"; echo "# $long"; echo "size 1 1 1"; echo "layer 0"; echo "1"; } >"$TMPD/ok.lattice"
+expect_ok "$B" sim "$TMPD/ok.lattice" --cycles 0
+{ echo "amorph-lattice 1"; echo "# x$long"; echo "size 1 1 1"; echo "layer 0"; echo "1"; } >"$TMPD/long.lattice"
+expect_fail 2 "long.lattice:2: line longer than 1023 characters" "$B" sim "$TMPD/long.lattice"
+{ head -n 3 "$TMPD/gmx.genome"; echo "# x$long"; tail -n +4 "$TMPD/gmx.genome"; } >"$TMPD/long.genome"
+expect_fail 2 "long.genome:4: line longer than 1023 characters" "$B" express "$TMPD/long.genome"
+printf 'amorph-lattice 1\nsize 1 1 1\n\000layer 0\n1\n' >"$TMPD/nul.lattice"
+expect_fail 2 "nul.lattice:1: binary data" "$B" sim "$TMPD/nul.lattice"
+
+# --- evolution: a checkpoint of about 60 KB through the small buffers, resumed exactly ---
+cat >"$TMPD/big.cfg" <<'CFG'
+representation = dct
+materials = 3
+workspace = 8
+population = 20
+cycles = 1
+period_steps = 100
+relax_max_steps = 150
+relax_min_steps = 50
+seed = 5
+CFG
+E="$B evolve --config $TMPD/big.cfg --quiet"
+nowall() { cut -d, -f1-7 "$1"; }
+sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }
+expect_ok $E --out "$TMPD/full" --evaluations 60
+expect_ok $E --out "$TMPD/part" --evaluations 40
+size=$(wc -c <"$TMPD/part/checkpoint.txt")
+if [ "$size" -gt 20000 ]; then ok; else ko "the checkpoint is only $size bytes: not a stress of the buffers"; fi
+cp -r "$TMPD/part" "$TMPD/bad"
+expect_ok "$B" evolve --resume "$TMPD/part" --evaluations 60 --quiet
+if [ "$(sumval "$TMPD/part" run_hash)" = "$(sumval "$TMPD/full" run_hash)" ] && [ "$(nowall "$TMPD/part/log.csv")" = "$(nowall "$TMPD/full/log.csv")" ] &&
+   cmp -s "$TMPD/part/best.genome" "$TMPD/full/best.genome" && cmp -s "$TMPD/part/best.lattice" "$TMPD/full/best.lattice"; then ok
+else ko "resumed run differs from the uninterrupted one: $(sumval "$TMPD/part" run_hash) vs $(sumval "$TMPD/full" run_hash)"; fi
+# an interrupted log (rows past the checkpoint) is cut back on resume
+cp -r "$TMPD/bad" "$TMPD/extra"
+tail -n 1 "$TMPD/extra/log.csv" >>"$TMPD/extra/log.csv"
+expect_ok "$B" evolve --resume "$TMPD/extra" --evaluations 60 --quiet
+if [ "$(nowall "$TMPD/extra/log.csv")" = "$(nowall "$TMPD/full/log.csv")" ]; then ok; else ko "the extra log row was not cut"; fi
+# damaged checkpoints: refused in one line, the run folder untouched
+snap() { (cd "$1" && cat config.txt log.csv best.genome checkpoint.txt | cksum); }
+before=$(snap "$TMPD/bad")
+sed -i 's/^evaluations 40$/evaluations 41/' "$TMPD/bad/checkpoint.txt"
+expect_fail 2 "checkpoint.txt:[0-9]+: checksum mismatch" "$B" evolve --resume "$TMPD/bad" --quiet
+cp "$TMPD/full/checkpoint.txt" "$TMPD/bad/checkpoint.txt"
+head -c 30000 "$TMPD/part/checkpoint.txt" >"$TMPD/bad/checkpoint.txt"
+expect_fail 2 "missing checksum" "$B" evolve --resume "$TMPD/bad" --quiet
+printf 'amorph-checkpoint 1\n\000\n' >"$TMPD/bad/checkpoint.txt"
+expect_fail 2 "binary data in a checkpoint" "$B" evolve --resume "$TMPD/bad" --quiet
+# the reference evolution (offspring two at a time) prints make repro's pinned hash
+h1=$("$B" repro | sed -n 's/^repro_hash=//p')
+if [ "$h1" = b9c47f68a0529b5f ] || [ "$h1" = cafd0eb2831d8585 ]; then ok; else ko "repro hash $h1 differs from make repro's"; fi
+
+# --- an experiment's table ---
+cat >"$TMPD/small.cfg" <<'CFG'
+workspace = 6
+population = 6
+cycles = 1
+period_steps = 100
+relax_max_steps = 150
+relax_min_steps = 50
+gmx_points = 12
+CFG
+expect_ok "$B" experiment three-materials --evals 12 --runs 2 --config "$TMPD/small.cfg" --out "$TMPD/exp" --quiet
+if [ "$(head -n 1 "$TMPD/exp/results.csv")" = "variant,evaluations,mean_best,stderr_best,runs" ] &&
+   [ "$(wc -l <"$TMPD/exp/results.csv")" -eq 5 ]; then ok
+else ko "results.csv: $(head -c 300 "$TMPD/exp/results.csv")"; fi
+
+# --- on the bare-metal port (QEMU, semihosting), when a build is named ---
+if [ -n "${AMORPH_QEMU_BOARD:-}" ] && command -v qemu-system-arm >/dev/null 2>&1; then
+    q() {
+        a="arg=amorph"; for x in "$@"; do a="$a,arg=$x"; done
+        timeout 600 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+            -semihosting-config "enable=on,target=native,$a" -kernel "$AMORPH_QEMU_BOARD" </dev/null
+    }
+    mkdir -p "$TMPD/qfull" "$TMPD/qpart"
+    q evolve --config "$TMPD/small.cfg" --evaluations 24 --out "$TMPD/qfull" --quiet >/dev/null 2>&1
+    q evolve --config "$TMPD/small.cfg" --evaluations 12 --out "$TMPD/qpart" --quiet >/dev/null 2>&1
+    q evolve --resume "$TMPD/qpart" --evaluations 24 --quiet >/dev/null 2>&1
+    if [ -n "$(sumval "$TMPD/qfull" run_hash)" ] && [ "$(sumval "$TMPD/qpart" run_hash)" = "$(sumval "$TMPD/qfull" run_hash)" ] &&
+       [ "$(nowall "$TMPD/qpart/log.csv")" = "$(nowall "$TMPD/qfull/log.csv")" ] && cmp -s "$TMPD/qpart/best.genome" "$TMPD/qfull/best.genome"; then ok
+    else ko "QEMU: resumed run differs: $(sumval "$TMPD/qpart" run_hash) vs $(sumval "$TMPD/qfull" run_hash)"; fi
+    echo "cli_board: bare-metal round trip on QEMU with $AMORPH_QEMU_BOARD"
+fi
+summary cli_board
