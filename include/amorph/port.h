@@ -42,7 +42,7 @@ void am_port_progress(const char* line);
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz);
 /* writes n bytes to path atomically: a temporary file beside it, flushed, then renamed over
  * path, so a reader (or a crash) sees either the old file or the whole new one (one write of a
- * stream, below) */
+ * stream, below; the library provides it over the streams, src/port_file.c: a port does not) */
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz);
 /* appends n bytes to path (created if missing); not atomic (logs) */
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz);

@@ -325,19 +325,6 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     return AM_OK;
 }
 
-am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz)
-{
-    am_port_stream s;
-    am_status st = am_port_open_write(path, &s, err, errsz);
-    if (st != AM_OK) return st;
-    st = am_port_write(s, data, n, err, errsz);
-    if (st != AM_OK) {
-        am_port_close(s, 0, NULL, 0);
-        return st;
-    }
-    return am_port_close(s, 1, err, errsz);
-}
-
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
 {
     int32_t h = sh_open(path, SH_MODE_AB);
