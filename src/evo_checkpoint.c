@@ -115,23 +115,14 @@ am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int 
     return AM_OK;
 }
 
+static am_status write_checkpoint(const void* e, am_text* out, char* err, int errsz)
+{
+    return am_evo_checkpoint_write((const am_evo*)e, out, err, errsz);
+}
+
 am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz)
 {
-    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
-    if (len) *len = 0;
-    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint: no buffer");
-    buf[0] = 0;
-    am_status st = am_evo_checkpoint_write(e, &t, err, errsz);
-    if (len) *len = t.len;
-    if (st == AM_ERR_CAPACITY && t.full) {
-        /* the length it needs: the text again through a counting stream */
-        char piece[64];
-        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
-        am_evo_checkpoint_write(e, &c, NULL, 0);
-        if (len) *len = c.done + c.len;
-        return am_fail(err, errsz, st, "checkpoint needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
-    }
-    return st;
+    return am_text_format(write_checkpoint, e, "checkpoint", buf, cap, len, err, errsz);
 }
 
 /* ---- reading, in two passes ----

@@ -343,23 +343,19 @@ am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char
     return AM_OK;
 }
 
+static am_status write_config(const void* d, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)d, 0, out, err, errsz);
+}
+static am_status write_config_runtime(const void* d, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)d, 1, out, err, errsz);
+}
+
 am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
 {
-    am_text out = {buf, cap, 0, 0, NULL, NULL, 0};
-    if (len) *len = 0;
-    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text: no buffer");
-    buf[0] = 0;
-    am_status st = am_evo_write(d, with_runtime, &out, err, errsz);
-    if (len) *len = out.len;
-    if (st == AM_ERR_CAPACITY) {
-        /* the length it needs: the text again through a counting stream */
-        char piece[128];
-        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
-        am_evo_write(d, with_runtime, &c, NULL, 0);
-        if (len) *len = c.done + c.len;
-        return am_fail(err, errsz, st, "configuration text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
-    }
-    return st;
+    return am_text_format(with_runtime ? write_config_runtime : write_config, d, "configuration text", buf, cap, len,
+                          err, errsz);
 }
 
 void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)

@@ -52,23 +52,14 @@ am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz
     return AM_OK;
 }
 
+static am_status write_genome(const void* g, am_text* out, char* err, int errsz)
+{
+    return am_genome_write((const am_genome*)g, out, err, errsz);
+}
+
 am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz)
 {
-    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
-    if (len) *len = 0;
-    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "genome text: no buffer");
-    buf[0] = '\0';
-    am_status st = am_genome_write(g, &t, err, errsz);
-    if (len) *len = t.len;
-    if (st == AM_ERR_CAPACITY) {
-        /* the length it needs: the text again through a counting stream */
-        char piece[320];
-        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
-        am_genome_write(g, &c, NULL, 0);
-        if (len) *len = c.done + c.len;
-        return am_fail(err, errsz, st, "genome text needs %ld bytes, the buffer holds %ld", c.done + c.len + 1, cap);
-    }
-    return st;
+    return am_text_format(write_genome, g, "genome text", buf, cap, len, err, errsz);
 }
 
 static int valid_name(const char* s)

@@ -93,3 +93,23 @@ am_status am_text_drop(void* ctx, const char* data, long n)
     (void)ctx, (void)data, (void)n;
     return AM_OK;
 }
+
+am_status am_text_format(am_text_writer write, const void* ctx, const char* what, char* buf, long cap, long* len,
+                         char* err, int errsz)
+{
+    am_text t = {buf, cap, 0, 0, NULL, NULL, 0};
+    if (len) *len = 0;
+    if (!buf || cap < 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: no buffer", what);
+    buf[0] = 0;
+    am_status st = write(ctx, &t, err, errsz);
+    if (len) *len = t.len;
+    if (st == AM_ERR_CAPACITY && t.full) {
+        /* the length it needs: the text again through a counting stream (a piece must fit) */
+        char piece[320];
+        am_text c = {piece, sizeof piece, 0, 0, am_text_drop, NULL, 0};
+        write(ctx, &c, NULL, 0);
+        if (len) *len = c.done + c.len;
+        return am_fail(err, errsz, st, "%s needs %ld bytes, the buffer holds %ld", what, c.done + c.len + 1, cap);
+    }
+    return st;
+}

@@ -36,7 +36,9 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
 # operation (the tables of src/geno_dct.c, geno_cppn.c, geno_gmx.c, called by the am_genome_
 # functions), the task of the parallel map, an am_text flush function (called by
 # util_text.c:drain, or the am_text functions it is inlined into), a line function of
-# tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream;
+# tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream, a
+# whole-text writer of am_text_format (the write_ adapters of the genome, configuration and
+# checkpoint formats);
 # any other indirect call may reach any function of kind "other"
 function kind_of(c) {
     if (c ~ /^src\/geno_(dct|cppn|gmx)\.c:/) return "geno"
@@ -44,6 +46,7 @@ function kind_of(c) {
     if (c ~ /(_flush|am_text_drop)$/) return "flush"
     if (c ~ /^tools\/.*_line$/) return "line"
     if (c ~ /_writer$/) return "writer"
+    if (c ~ /^src\/(evo_checkpoint|evo_config|format_genome)\.c:write_/) return "textwriter"
     return "other"
 }
 function site_of(f) {
@@ -52,6 +55,7 @@ function site_of(f) {
     if (f ~ /(util_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
     if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
     if (f ~ /:write_stream$/) return "writer"
+    if (f ~ /(^|:)am_text_format$/) return "textwriter"
     return "other"
 }
 # the deepest callee of an indirect call made by f: a command (cmd_*) when f is the root, else

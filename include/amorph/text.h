@@ -40,6 +40,14 @@ void am_text_vput(am_text* t, const char* fmt, va_list ap)
 void am_text_write(am_text* t, const char* data, long n);
 /* a flush function that drops the text: a stream through it only counts (done + len is the length) */
 am_status am_text_drop(void* ctx, const char* data, long n);
+/* a writer of a whole text: formats ctx into out (the genome, configuration and checkpoint
+ * writers behind one of these) */
+typedef am_status (*am_text_writer)(const void* ctx, am_text* out, char* err, int errsz);
+/* writes ctx into buf (capacity cap, NUL-terminated) as one whole text; *len (may be NULL) gets
+ * its length. When it does not fit, writes it again through a counting stream and fails with
+ * "WHAT needs N bytes, the buffer holds CAP" (AM_ERR_CAPACITY), *len then the length needed. */
+am_status am_text_format(am_text_writer write, const void* ctx, const char* what, char* buf, long cap, long* len,
+                         char* err, int errsz);
 /* hands the buffered bytes to flush (a whole-text buffer keeps them). AM_OK while nothing was
  * dropped, else AM_ERR_CAPACITY (full 1) or AM_ERR_IO (full 2: the flush function's message) */
 am_status am_text_flush(am_text* t);
