@@ -17,11 +17,11 @@
 static int within_two_links(const am_model* m, int i, int j)
 {
     for (int d = 0; d < 6; d++) {
-        int n = m->nbr[d][i];
+        int n = am_neighbour(m, d, i);
         if (n < 0) continue;
         if (n == j) return 1;
         for (int e = 0; e < 6; e++)
-            if (m->nbr[e][n] == j) return 1;
+            if (am_neighbour(m, e, n) == j) return 1;
     }
     return 0;
 }
@@ -159,8 +159,9 @@ void am_sim_collide(const am_model* m, am_state* s)
         am_real ka = m->k_floor[AM_VC(m, a)], kb = m->k_floor[AM_VC(m, b)];
         am_real k_h = AM_DIV(AM_MUL(AM_R(2), AM_MUL(ka, kb)), ka + kb); /* harmonic mean */
         am_real c = AM_MUL(AM_R(0.5), m->c_col[AM_VC(m, a)] + m->c_col[AM_VC(m, b)]);
-        am_real approach = AM_MUL(s->v[0][a] - s->v[0][b], nx) + AM_MUL(s->v[1][a] - s->v[1][b], ny) +
-                           AM_MUL(s->v[2][a] - s->v[2][b], nz);
+        am_real approach = AM_MUL(am_sim_vel(m, s, 0, a) - am_sim_vel(m, s, 0, b), nx) +
+                           AM_MUL(am_sim_vel(m, s, 1, a) - am_sim_vel(m, s, 1, b), ny) +
+                           AM_MUL(am_sim_vel(m, s, 2, a) - am_sim_vel(m, s, 2, b), nz);
         am_real f = AM_MUL(k_h, reach - d) + AM_MUL(c, approach);
         if (f <= AM_R(0)) continue; /* contacts push, never pull */
         s->fc[0][a] -= AM_MUL(f, nx); s->fc[1][a] -= AM_MUL(f, ny); s->fc[2][a] -= AM_MUL(f, nz);

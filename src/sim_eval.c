@@ -200,7 +200,10 @@ static double rms_speed(const am_model* m, const am_state* s)
 {
     double sum = 0;
     for (int i = 0; i < m->nv; i++)
-        for (int c = 0; c < 3; c++) sum += AM_TO_DOUBLE(s->v[c][i]) * AM_TO_DOUBLE(s->v[c][i]);
+        for (int c = 0; c < 3; c++) {
+            const double vc = AM_TO_DOUBLE(am_sim_vel(m, s, c, i));
+            sum += vc * vc;
+        }
     return sqrt(sum / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
 }
 

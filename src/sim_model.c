@@ -253,16 +253,11 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
 
     /* slots: +x,-x,+y,-y,+z,-z; the voxel is the negative end of its + links */
     for (int d = 0; d < 6; d++)
-        for (int i = 0; i < nv; i++) {
-            m->slot[d][i] = (am_index)nl;
-            m->nbr[d][i] = -1;
-        }
+        for (int i = 0; i < nv; i++) m->slot[d][i] = (am_index)nl;
     for (int l = 0; l < nl; l++) {
         int axis = l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2);
         m->slot[2 * axis][m->lneg[l]] = (am_index)l;
         m->slot[2 * axis + 1][m->lpos[l]] = (am_index)l;
-        m->nbr[2 * axis][m->lneg[l]] = m->lpos[l];
-        m->nbr[2 * axis + 1][m->lpos[l]] = m->lneg[l];
     }
     for (int i = 0; i < nv; i++) {
         int links = 0;
@@ -343,7 +338,12 @@ void am_state_reset(const am_model* m, am_state* s)
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {
             s->x[c][i] = m->x0[c][i];
-            s->p[c][i] = s->h[c][i] = s->v[c][i] = s->w[c][i] = AM_R(0);
+            s->p[c][i] = s->h[c][i] = AM_R(0);
+#if defined(AM_COMPACT)
+            s->mc[c][i] = AM_R(0);
+#else
+            s->v[c][i] = s->w[c][i] = AM_R(0);
+#endif
             s->fext[c][i] = s->mext[c][i] = s->fc[c][i] = AM_R(0);
             s->xref[c][i] = m->x0[c][i];
         }
@@ -355,7 +355,9 @@ void am_state_reset(const am_model* m, am_state* s)
     }
     for (int l = 0; l <= nl; l++) {
         s->large[l] = 0;
+#if !defined(AM_COMPACT)
         s->strain[l] = AM_R(0);
         for (int c = 0; c < 3; c++) s->fn[c][l] = s->mn[c][l] = s->mp[c][l] = AM_R(0);
+#endif
     }
 }

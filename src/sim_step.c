@@ -9,9 +9,13 @@
  * Links write their forces into per-link arrays; each voxel then gathers from its six slots in a
  * fixed order (+x, -x, +y, -y, +z, -z; a missing link points at the zero link nl). No voxel sum
  * depends on how links are ordered or how work is split, and the floating-point sums are the same
- * on every platform. */
+ * on every platform. The board profile (AM_COMPACT) has no room for per-link results: there each
+ * chunk of links adds its results to its voxels' totals straight away, in an order that makes
+ * every sum the desktop's gather, operation for operation (add_links). */
 #include "sim_internal.h"
 #include "amorph/mathx.h"
+
+#include <stddef.h>
 
 /* Arrays of the state and the model are handed to the hot loops as restrict-qualified function
  * parameters (rows of [3][AM_MAX_VOXELS] and [3][AM_MAX_LINKS + 1] arrays as pointers to rows):
@@ -38,6 +42,26 @@ typedef am_real link_row[AM_MAX_LINKS + 1];
 #else
 #define REM_PARAM(name)
 #define REM_ARG(rem)
+#endif
+
+/* The link passes read the velocities and spins of the voxels (rows v and w) and write their
+ * results (rows fn, mn, mp and strain, at index l - o). On the desktop v and w are the state's and
+ * the results go to the per-link arrays (o = 0); on a board v and w are the momenta p and h, scaled
+ * where read by the voxel's 1/m and 1/I (the values the desktop keeps), and the results go to a
+ * chunk's buffer (o = the chunk's first link). */
+#if defined(AM_COMPACT)
+#define LINK_CHUNK 32
+typedef am_real out_row[LINK_CHUNK];
+#define KIN_PARAM , const am_real* restrict vim, const am_real* restrict wim, const uint8_t* restrict vmat
+#define KIN_ARG(m) , (m)->inv_mass, (m)->inv_inertia, (m)->mat
+#define VEL3(r, i) v3(AM_MUL(r[0][i], vim[vmat[i]]), AM_MUL(r[1][i], vim[vmat[i]]), AM_MUL(r[2][i], vim[vmat[i]]))
+#define SPIN3(r, i) v3(AM_MUL(r[0][i], wim[vmat[i]]), AM_MUL(r[1][i], wim[vmat[i]]), AM_MUL(r[2][i], wim[vmat[i]]))
+#else
+typedef link_row out_row;
+#define KIN_PARAM
+#define KIN_ARG(m)
+#define VEL3(r, i) v3(r[0][i], r[1][i], r[2][i])
+#define SPIN3(r, i) v3(r[0][i], r[1][i], r[2][i])
 #endif
 
 static void voxel_scales(int nv, const uint8_t* restrict mat, const am_real* restrict mat_scale, am_real* restrict scale)
@@ -148,7 +172,9 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * links was large at the last step runs the small-angle loop alone, and again with the
  * large-angle frame only if one of its links turns large now. Both loops compute a link the same
  * way, so the results do not depend on the chunking. */
+#if !defined(AM_COMPACT)
 #define LINK_CHUNK 32
+#endif
 
 /* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
@@ -159,8 +185,8 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
                       const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                       const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
-                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
-                      link_row* restrict fn, link_row* restrict mn, link_row* restrict mp, am_real* restrict strain)
+                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
+                      out_row* restrict fn, out_row* restrict mn, out_row* restrict mp, am_real* restrict strain, int o)
 {
     int bad = 0, any_large = 0;
     for (int l = l0; l < l1; l++) {
@@ -171,13 +197,13 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
         any_large |= large_switch(&k, 0, inv_rest);
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
-        link_out o = link_element(&k, 0, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
-                                  v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
-        fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
-        mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
-        mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;
-        strain[l] = o.strain;
-        bad |= !(am_fabs(o.strain) <= AM_DIVERGE_STRAIN);
+        link_out r = link_element(&k, 0, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
+        const int j = l - o;
+        fn[0][j] = r.F.x; fn[1][j] = r.F.y; fn[2][j] = r.F.z;
+        mn[0][j] = r.M.x; mn[1][j] = r.M.y; mn[2][j] = r.M.z;
+        mp[0][j] = r.Mp.x; mp[1][j] = r.Mp.y; mp[2][j] = r.Mp.z;
+        strain[j] = r.strain;
+        bad |= !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN);
     }
     return bad | any_large << 1;
 }
@@ -190,9 +216,9 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
-                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
-                     am_flag* restrict large, link_row* restrict fn, link_row* restrict mn, link_row* restrict mp,
-                     am_real* restrict strain)
+                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
+                     am_flag* restrict large, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp,
+                     am_real* restrict strain, int o)
 {
     int bad = 0;
     for (int l = l0; l < l1; l++) {
@@ -210,40 +236,78 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
         link_kin_large(&k, lg);
 #endif
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
-        link_out o = link_element(&k, lg, axis, c, v3(v[0][a], v[1][a], v[2][a]), v3(v[0][b], v[1][b], v[2][b]),
-                                  v3(w[0][a], w[1][a], w[2][a]), v3(w[0][b], w[1][b], w[2][b]));
+        link_out r = link_element(&k, lg, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
         large[l] = (am_flag)lg;
-        fn[0][l] = o.F.x; fn[1][l] = o.F.y; fn[2][l] = o.F.z;
-        mn[0][l] = o.M.x; mn[1][l] = o.M.y; mn[2][l] = o.M.z;
-        mp[0][l] = o.Mp.x; mp[1][l] = o.Mp.y; mp[2][l] = o.Mp.z;
-        strain[l] = o.strain;
-        bad |= !(am_fabs(o.strain) <= AM_DIVERGE_STRAIN);
+        const int j = l - o;
+        fn[0][j] = r.F.x; fn[1][j] = r.F.y; fn[2][j] = r.F.z;
+        mn[0][j] = r.M.x; mn[1][j] = r.M.y; mn[2][j] = r.M.z;
+        mp[0][j] = r.Mp.x; mp[1][j] = r.Mp.y; mp[2][j] = r.Mp.z;
+        strain[j] = r.strain;
+        bad |= !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN);
     }
     return bad;
 }
 
-/* forces and moments of the links [l0, l1), all along one axis; returns 1 when some link is
- * strained beyond AM_DIVERGE_STRAIN (or NaN) */
+#if defined(AM_COMPACT)
+/* The links [c0, c1) of one axis into their voxels' totals f and mt, last link first. Along an
+ * axis links are numbered by their negative voxel, and voxels by cell, so voxel i's + link
+ * (i, i + axis) comes after its - link (i - axis, i): taken from the last, each voxel receives its
+ * + link before its - link, and the axes come in order x, y, z. That is the order of the desktop's
+ * gather (voxel_forces_rotate), so every total is the same sum; the zeros the gather adds for
+ * missing links are added there too. */
+static void add_links(int c0, int c1, const am_index* restrict lneg, const am_index* restrict lpos,
+                      const out_row* restrict fn, const out_row* restrict mn, const out_row* restrict mp,
+                      vox_row* restrict f, vox_row* restrict mt)
+{
+    for (int l = c1 - 1; l >= c0; l--) {
+        const int a = lneg[l], b = lpos[l], j = l - c0;
+        for (int c = 0; c < 3; c++) {
+            f[c][a] += fn[c][j];
+            mt[c][a] += mn[c][j];
+            f[c][b] -= fn[c][j];
+            mt[c][b] += mp[c][j];
+        }
+    }
+}
+#endif
+
+/* forces and moments of the links [l0, l1), all along one axis, chunk by chunk: the small-angle
+ * loop for a chunk none of whose links was large at the last step and none turns large now, else
+ * the full one. On the desktop into the per-link arrays; on a board into a chunk's buffer, added
+ * to the voxels' totals (s->fc, s->mc) straight away, the last chunk first (add_links). Returns 1
+ * when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
 static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 {
     const vox_row *x = (const vox_row*)s->x, *q = (const vox_row*)s->q;
+#if defined(AM_COMPACT)
+    const vox_row *v = (const vox_row*)s->p, *w = (const vox_row*)s->h;
+    out_row fn[3], mn[3], mp[3];
+    am_real strain[LINK_CHUNK];
+    const int backward = 1;
+#else
     const vox_row *v = (const vox_row*)s->v, *w = (const vox_row*)s->w;
+    link_row *fn = s->fn, *mn = s->mn, *mp = s->mp;
+    am_real* strain = s->strain;
+    const int backward = 0;
+#endif
+    const int chunks = (l1 - l0 + LINK_CHUNK - 1) / LINK_CHUNK;
     int bad = 0;
-    for (int c0 = l0; c0 < l1; c0 += LINK_CHUNK) {
+    for (int k = 0; k < chunks; k++) {
+        const int c0 = l0 + LINK_CHUNK * (backward ? chunks - 1 - k : k);
         const int c1 = l1 - c0 < LINK_CHUNK ? l1 : c0 + LINK_CHUNK;
-        int was_large = 0;
+        const int o = backward ? c0 : 0; /* results of link l at l - o */
+        int was_large = 0, r = 2;
         for (int l = c0; l < c1; l++) was_large |= s->large[l];
-        if (!was_large) {
-            int r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
-                               m->c_t, m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->fn, s->mn, s->mp,
-                               s->strain);
-            if (!(r & 2)) {
-                bad |= r & 1;
-                continue;
-            }
-        }
-        bad |= full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
-                         m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest, s->large, s->fn, s->mn, s->mp, s->strain);
+        if (!was_large)
+            r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
+                           m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), fn, mn, mp, strain, o);
+        if (r & 2)
+            r = full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
+                          m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), s->large, fn, mn, mp, strain, o);
+        bad |= r & 1;
+#if defined(AM_COMPACT)
+        add_links(c0, c1, m->lneg, m->lpos, (const out_row*)fn, (const out_row*)mn, (const out_row*)mp, s->fc, s->mc);
+#endif
     }
     return bad;
 }
@@ -257,13 +321,13 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         s->contact[i] = 0;
         return 0;
     }
-    am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen) - AM_MUL(m->c_col[AM_VC(m, i)], s->v[2][i]);
+    am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen) - AM_MUL(m->c_col[AM_VC(m, i)], am_sim_vel(m, s, 2, i));
     if (N < AM_R(0)) N = AM_R(0); /* the floor pushes, never pulls */
     F->z += N;
 
     /* squared norms as wide products: in the fixed-point build these forces and speeds are small
      * (gravity is 1e-4 of a unit) and their squares would fall below the resolution */
-    const am_real vx = s->v[0][i], vy = s->v[1][i];
+    const am_real vx = am_sim_vel(m, s, 0, i), vy = am_sim_vel(m, s, 1, i);
     am_wide v2 = AM_MULW(vx, vx) + AM_MULW(vy, vy);
     if (s->contact[i] == 0) s->contact[i] = v2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
     am_wide fh2 = AM_MULW(F->x, F->x) + AM_MULW(F->y, F->y);
@@ -317,20 +381,48 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     return 0;
 }
 
-/* per voxel: the total force without the floor into f (which holds the collision force on
- * entry), and the whole rotational update h += M dt, q = quat(w dt) q. Each voxel gathers its six
- * links in a fixed order: + slots (this voxel is the negative end) add the link's force, - slots
- * subtract it and take the positive end's moment. No branch: the compiler vectorises it. */
-static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, const am_index (*restrict slot)[AM_MAX_VOXELS],
-                                const link_row* restrict fn, const link_row* restrict mn, const link_row* restrict mp,
-                                const vox_row* restrict fext, const vox_row* restrict mext, const am_real* restrict mass,
+/* per voxel: the total force without the floor into f, and the whole rotational update
+ * h += M dt, q = quat(w dt) q. On the desktop f holds the collision force on entry and each voxel
+ * gathers its six links in a fixed order: + slots (this voxel is the negative end) add the link's
+ * force, - slots subtract it and take the positive end's moment. On a board f and mt hold those
+ * totals already (add_links) but for the zeros of missing links. No branch: the compiler
+ * vectorises it. */
+#if defined(AM_COMPACT)
+#define TOTAL_PARAM const uint8_t* restrict surface, const am_index* restrict slot_px, const am_index* restrict slot_py, \
+                    const am_index* restrict slot_pz, int nl, const vox_row* restrict mt
+#define TOTAL_ARG(m, s) (m)->surface, (m)->slot[0], (m)->slot[2], (m)->slot[4], (m)->nl, (const vox_row*)(s)->mc
+#define VEL_PARAM , const am_real* restrict inv_mass
+#define VEL_ARG(m) , (m)->inv_mass
+#define VGET(r, c, i) AM_MUL(r[c][i], inv_mass[VCI(i)])
+#else
+#define TOTAL_PARAM const am_index (*restrict slot)[AM_MAX_VOXELS], const link_row* restrict fn, \
+                    const link_row* restrict mn, const link_row* restrict mp, const vox_row* restrict fext, \
+                    const vox_row* restrict mext
+#define TOTAL_ARG(m, s) (const am_index(*)[AM_MAX_VOXELS])(m)->slot, (const link_row*)(s)->fn, (const link_row*)(s)->mn, \
+                        (const link_row*)(s)->mp, (const vox_row*)(s)->fext, (const vox_row*)(s)->mext
+#define VEL_PARAM
+#define VEL_ARG(m)
+#define VGET(r, c, i) r[c][i]
+#endif
+static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, TOTAL_PARAM, const am_real* restrict mass,
                                 const am_real* restrict c_glob_t, const am_real* restrict c_glob_r,
                                 const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
-                                const uint8_t* restrict mat, const vox_row* restrict v, vox_row* restrict f, vox_row* restrict h,
-                                vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
+                                const uint8_t* restrict mat, const vox_row* restrict v VEL_PARAM, vox_row* restrict f,
+                                vox_row* restrict h, vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
 {
     (void)mat; /* read through VCI in the board profile only */
     for (int i = 0; i < nv; i++) {
+#if defined(AM_COMPACT)
+        (void)collisions;
+        vec3 F = v3(f[0][i], f[1][i], f[2][i]), M = v3(mt[0][i], mt[1][i], mt[2][i]);
+        /* a missing + link adds a zero force, any missing link a zero moment: x + 0 is x but for
+         * x = -0, and where in the sum it comes does not matter */
+        const vec3 zero = v3(AM_R(0), AM_R(0), AM_R(0));
+        if ((slot_px[i] == nl) | (slot_py[i] == nl) | (slot_pz[i] == nl)) F = v3_add(F, zero);
+        if (surface[i]) M = v3_add(M, zero);
+        const vec3 wi = v3(AM_MUL(h[0][i], inv_inertia[VCI(i)]), AM_MUL(h[1][i], inv_inertia[VCI(i)]),
+                           AM_MUL(h[2][i], inv_inertia[VCI(i)]));
+#else
         /* fc is zero without self-collision, and then holds the last step's total: not read */
         vec3 F = v3(fext[0][i] + (collisions ? f[0][i] : AM_R(0)), fext[1][i] + (collisions ? f[1][i] : AM_R(0)),
                     fext[2][i] + (collisions ? f[2][i] : AM_R(0)));
@@ -342,10 +434,11 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, c
             F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));
             M = v3_add(M, v3(mp[0][ln], mp[1][ln], mp[2][ln]));
         }
+        const vec3 wi = v3(w[0][i], w[1][i], w[2][i]);
+#endif
         F.z -= AM_MUL(mass[VCI(i)], g);
         const am_real cg = c_glob_t[VCI(i)], cgr = c_glob_r[VCI(i)];
-        vec3 wi = v3(w[0][i], w[1][i], w[2][i]);
-        F = v3_sub(F, v3(AM_MUL(cg, v[0][i]), AM_MUL(cg, v[1][i]), AM_MUL(cg, v[2][i])));
+        F = v3_sub(F, v3(AM_MUL(cg, VGET(v, 0, i)), AM_MUL(cg, VGET(v, 1, i)), AM_MUL(cg, VGET(v, 2, i))));
         M = v3_sub(M, v3(AM_MUL(cgr, wi.x), AM_MUL(cgr, wi.y), AM_MUL(cgr, wi.z)));
         f[0][i] = F.x; f[1][i] = F.y; f[2][i] = F.z;
 
@@ -356,7 +449,11 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, c
         if (fixed[i]) hx = hy = hz = AM_R(0);
         vec3 wn = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
         h[0][i] = hx; h[1][i] = hy; h[2][i] = hz;
+#if defined(AM_COMPACT)
+        (void)w;
+#else
         w[0][i] = wn.x; w[1][i] = wn.y; w[2][i] = wn.z;
+#endif
         quat dq = q_from_rotvec(v3_scale(wn, dt));
         quat qn = q_mul(dq, qt(q[0][i], q[1][i], q[2][i], q[3][i]));
         am_real n2 = AM_MUL(qn.w, qn.w) + AM_MUL(qn.x, qn.x) + AM_MUL(qn.y, qn.y) + AM_MUL(qn.z, qn.z);
@@ -397,8 +494,8 @@ static void floor_pass(const am_model* m, am_state* s)
 /* p += F dt; x += p dt / m for every voxel (a fixed voxel keeps no momentum); returns 1 when
  * some voxel's squared speed is beyond v2_max (or NaN) */
 static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* restrict f, const am_real* restrict inv_mass,
-                           const uint8_t* restrict fixed, const uint8_t* restrict mat, vox_row* restrict p, vox_row* restrict v, vox_row* restrict x
-                           REM_PARAM(p_rem) REM_PARAM(x_rem))
+                           const uint8_t* restrict fixed, const uint8_t* restrict mat, vox_row* restrict p, vox_row* restrict v,
+                           vox_row* restrict x REM_PARAM(p_rem) REM_PARAM(x_rem))
 {
     (void)mat; /* read through VCI in the board profile only */
     int bad = 0;
@@ -409,7 +506,11 @@ static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* re
         if (fixed[i]) px = py = pz = AM_R(0);
         am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
         p[0][i] = px; p[1][i] = py; p[2][i] = pz;
+#if defined(AM_COMPACT)
+        (void)v; /* derived where read */
+#else
         v[0][i] = vx; v[1][i] = vy; v[2][i] = vz;
+#endif
         x[0][i] = AM_ACC(x[0][i], x_rem[0][i], vx, dt);
         x[1][i] = AM_ACC(x[1][i], x_rem[1][i], vy, dt);
         x[2][i] = AM_ACC(x[2][i], x_rem[2][i], vz, dt);
@@ -419,22 +520,44 @@ static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* re
     return bad;
 }
 
+#if defined(AM_COMPACT)
+/* a board's totals before the links add to them: the external loads and the collision forces
+ * (zero without self-collision), as the desktop's gather starts */
+static void totals_start(int nv, int collisions, const vox_row* restrict fext, const vox_row* restrict mext,
+                         vox_row* restrict f, vox_row* restrict mt)
+{
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < nv; i++) {
+            f[c][i] = fext[c][i] + (collisions ? f[c][i] : AM_R(0));
+            mt[c][i] = mext[c][i];
+        }
+}
+#endif
+
 void am_step(const am_model* m, am_state* s)
 {
     if (s->diverged) return;
     actuation(m, s);
+    /* contacts and links both read the state at the start of the step */
+    am_sim_collide(m, s);
+#if defined(AM_COMPACT)
+    totals_start(m->nv, m->env.collisions, (const vox_row*)s->fext, (const vox_row*)s->mext, s->fc, s->mc);
+    /* a board keeps no velocities: the voxel passes read the momenta for them and store none */
+    const vox_row* v = (const vox_row*)s->p;
+    vox_row *w = NULL, *v_out = NULL;
+#else
+    const vox_row* v = (const vox_row*)s->v;
+    vox_row *w = s->w, *v_out = s->v;
+#endif
     int bad = link_forces(m, s, 0, m->axis_end[0], 0);
     bad |= link_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
     bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
-    am_sim_collide(m, s);
     /* semi-implicit Euler: rotation and total force, floor and friction, translation */
-    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, (const am_index(*)[AM_MAX_VOXELS])m->slot,
-                        (const link_row*)s->fn, (const link_row*)s->mn, (const link_row*)s->mp,
-                        (const vox_row*)s->fext, (const vox_row*)s->mext, m->mass, m->c_glob_t, m->c_glob_r,
-                        m->inv_inertia, m->fixed, m->mat, (const vox_row*)s->v, s->fc, s->h, s->w, s->q REM_ARG(s->h_rem));
+    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, TOTAL_ARG(m, s), m->mass, m->c_glob_t, m->c_glob_r,
+                        m->inv_inertia, m->fixed, m->mat, v VEL_ARG(m), s->fc, s->h, w, s->q REM_ARG(s->h_rem));
     if (m->env.floor) floor_pass(m, s);
     bad |= voxel_translate(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), (const vox_row*)s->fc, m->inv_mass,
-                           m->fixed, m->mat, s->p, s->v, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
+                           m->fixed, m->mat, s->p, v_out, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
     s->step++;
     s->t = AM_MUL_INT(s->dt, s->step);
     if (bad) {

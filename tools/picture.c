@@ -103,7 +103,7 @@ void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3])
         double s = 0;
         int n = 0;
         for (int d = 2 * a; d < 2 * a + 2; d++) {
-            int j = mo->model->nbr[d][i];
+            int j = am_neighbour(mo->model, d, i);
             if (j < 0) continue;
             double dx = (double)f[7 * j] - (double)f[7 * i], dy = (double)f[7 * j + 1] - (double)f[7 * i + 1],
                    dz = (double)f[7 * j + 2] - (double)f[7 * i + 2];

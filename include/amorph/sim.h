@@ -77,7 +77,6 @@ typedef struct am_model {
     uint8_t surface[AM_MAX_VOXELS];       /* 1 when fewer than 6 links */
     uint8_t fixed[AM_MAX_VOXELS];         /* 1 when clamped */
     am_index slot[6][AM_MAX_VOXELS];      /* link per direction +x,-x,+y,-y,+z,-z; nl (a zero link) if none */
-    am_index nbr[6][AM_MAX_VOXELS];       /* neighbour voxel per direction, -1 if none */
     am_real x0[3][AM_MAX_VOXELS];         /* initial centre, m */
     am_real mass[AM_VC_CAP];          /* kg */
     am_real inv_mass[AM_VC_CAP];      /* 1/kg, 0 for fixed voxels */
@@ -114,6 +113,14 @@ typedef struct am_model {
     am_real gravity;               /* env.gravity in model units */
     am_real temp_base, temp_amplitude; /* env temperatures, degrees */
 } am_model;
+
+/* the neighbour of voxel i in direction d (0..5: +x, -x, +y, -y, +z, -z): the other end of the
+ * link in that slot, -1 if none */
+static inline int am_neighbour(const am_model* m, int d, int i)
+{
+    const int l = m->slot[d][i];
+    return l == m->nl ? -1 : (d & 1 ? m->lneg[l] : m->lpos[l]);
+}
 
 /* dimensions for converting model values to and from SI */
 enum {
@@ -158,8 +165,12 @@ typedef struct am_state {
     am_real q[4][AM_MAX_VOXELS];  /* orientation quaternion w, x, y, z */
     am_real p[3][AM_MAX_VOXELS];  /* linear momentum, kg m/s */
     am_real h[3][AM_MAX_VOXELS];  /* angular momentum, kg m^2/s */
-    am_real v[3][AM_MAX_VOXELS];  /* velocity p/m (derived, kept for the link loop) */
-    am_real w[3][AM_MAX_VOXELS];  /* angular velocity h/I (derived) */
+#if !defined(AM_COMPACT)
+    /* derived and kept for the link loop; the board profile computes them where they are read,
+     * the same values (am_sim_vel, am_sim_spin in sim_internal.h) */
+    am_real v[3][AM_MAX_VOXELS];  /* velocity p/m */
+    am_real w[3][AM_MAX_VOXELS];  /* angular velocity h/I */
+#endif
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
     am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
     am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
@@ -171,10 +182,17 @@ typedef struct am_state {
     am_real pair_inv_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS]; /* its inverse, 1/m */
     /* per link (nl + 1; index nl stays zero) */
     am_flag large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
+#if defined(AM_COMPACT)
+    /* the board profile keeps no per-link results: the step adds each link's force and moments
+     * to its two voxels' totals (fc and mc) as it goes, in the order in which the desktop's voxels
+     * gather them, so that every sum is the same (sim_step.c) */
+    am_real mc[3][AM_MAX_VOXELS];        /* scratch: the step's total moment, N m */
+#else
     am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
     am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
     am_real mp[3][AM_MAX_LINKS + 1];     /* moment on the positive voxel, world, N m */
     am_real strain[AM_MAX_LINKS + 1];    /* axial strain (diagnostic) */
+#endif
     /* self-collision candidates */
     int npairs;                          /* -1 until the first build */
     int max_npairs;                      /* largest list so far */
