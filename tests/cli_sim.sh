@@ -63,4 +63,17 @@ printf 'amorph-lattice 1\nsize 3 2 1\nlayer 0\n...\n...\n' >"$TMPD/empty.lattice
 expect_ok "$AMORPH" sim "$TMPD/empty.lattice" --json
 check "empty body not flagged with zero fitness: $(head -c 300 "$TMPD/out")" grep -q '"fitness": 0, "voxels": 0, "links": 0, "empty": 1' "$TMPD/out"
 
+# --- amorph bench: figures, not timings asserted ---
+expect_ok "$AMORPH" bench --scene cube:3 --steps 40 --collisions off
+check "bench line: $(head -c 300 "$TMPD/out")" grep -qE '^scene=cube:3 collisions=off voxels=27 links=54 steps=40 .*voxel_steps_per_s=[0-9.e+]+ .*diverged=0$' "$TMPD/out"
+# the product kernels compute the same polynomial in float and in Q24: their sums agree to the
+# fixed-point resolution (2048 values of magnitude below 2)
+expect_ok "$AMORPH" bench --kernels
+sf=$(sed -n 's/^kernel=horner8 real=float .*sum=\([-0-9.]*\)$/\1/p' "$TMPD/out")
+sq=$(sed -n 's/^kernel=horner8 real=q24 .*sum=\([-0-9.]*\)$/\1/p' "$TMPD/out")
+check "kernel sums missing or apart: float '$sf' q24 '$sq'" awk -v a="$sf" -v b="$sq" 'BEGIN { d = a - b; exit !(a != "" && b != "" && a > 1 && d < 1e-3 && d > -1e-3) }'
+check "kernel ratio line: $(head -c 300 "$TMPD/out")" grep -qE '^kernel=horner8 q24_time_over_float=[0-9.]+$' "$TMPD/out"
+expect_fail 2 "bench: unknown option '--kernel'" "$AMORPH" bench --kernel
+expect_fail 2 "bench: --steps needs a whole number" "$AMORPH" bench --steps 0
+
 summary cli_sim

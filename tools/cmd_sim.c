@@ -204,13 +204,85 @@ static int bench_one(const char* scene, long steps, int collisions)
     return 0;
 }
 
+/* The product at the heart of both number types, alone: a degree-8 polynomial by Horner's rule
+ * (8 products and 8 sums per element, in registers, as in the link element where loads are few
+ * against the arithmetic) over arrays that stay in the L1 cache, in float and with the
+ * fixed-point build's Q24 product (64-bit multiply, half an ulp, arithmetic shift: am_fx_mul of
+ * amorph/real.h). Both are in every build, so one binary shows what a product costs in each
+ * (docs/benchmarks.md, Fixed point). */
+#define KERNEL_N 2048
+#define KERNEL_DEG 8
+static float g_kf[2][KERNEL_N];
+static int32_t g_ki[2][KERNEL_N];
+static const double g_kc[KERNEL_DEG + 1] = {0.5, -0.25, 0.125, 0.75, -0.5, 0.3, -0.2, 0.1, 1.0};
+
+static void kernel_f32(const float* restrict x, float* restrict y, const float* restrict k)
+{
+    for (int i = 0; i < KERNEL_N; i++) {
+        float p = k[0];
+        for (int d = 1; d <= KERNEL_DEG; d++) p = p * x[i] + k[d];
+        y[i] = p;
+    }
+}
+static inline int32_t q24_mul(int32_t a, int32_t b) { return (int32_t)(((int64_t)a * b + ((int64_t)1 << 23)) >> 24); }
+static void kernel_q24(const int32_t* restrict x, int32_t* restrict y, const int32_t* restrict k)
+{
+    for (int i = 0; i < KERNEL_N; i++) {
+        int32_t p = k[0];
+        for (int d = 1; d <= KERNEL_DEG; d++) p = q24_mul(p, x[i]) + k[d];
+        y[i] = p;
+    }
+}
+
+static void bench_kernels(void)
+{
+    float kf[KERNEL_DEG + 1];
+    int32_t ki[KERNEL_DEG + 1];
+    for (int d = 0; d <= KERNEL_DEG; d++) {
+        kf[d] = (float)g_kc[d];
+        ki[d] = (int32_t)(g_kc[d] * 16777216.0);
+    }
+    for (int i = 0; i < KERNEL_N; i++) {
+        g_kf[0][i] = (float)(i % 97) / 97.0f - 0.5f;
+        g_ki[0][i] = (int32_t)((double)g_kf[0][i] * 16777216.0);
+    }
+    /* called through volatile pointers: the compiler can neither inline the kernels nor drop the
+     * repetitions */
+    void (*volatile run_f)(const float*, float*, const float*) = kernel_f32;
+    void (*volatile run_q)(const int32_t*, int32_t*, const int32_t*) = kernel_q24;
+    const long reps = 4000;
+    double best_f = 1e30, best_q = 1e30, sf = 0, sq = 0;
+    for (int round = 0; round < 5; round++) { /* best of five, the two kernels in turns */
+        double t0 = am_port_now();
+        for (long r = 0; r < reps; r++) run_f(g_kf[0], g_kf[1], kf);
+        double tf = am_port_now() - t0;
+        t0 = am_port_now();
+        for (long r = 0; r < reps; r++) run_q(g_ki[0], g_ki[1], ki);
+        double tq = am_port_now() - t0;
+        best_f = tf < best_f ? tf : best_f;
+        best_q = tq < best_q ? tq : best_q;
+    }
+    for (int i = 0; i < KERNEL_N; i++) { /* the two agree to Q24's resolution: both computed */
+        sf += (double)g_kf[1][i];
+        sq += (double)g_ki[1][i] / 16777216.0;
+    }
+    const double n = (double)reps * KERNEL_N * KERNEL_DEG;
+    printf("kernel=horner8 real=float ns_per_product=%.4f sum=%.6f\n", 1e9 * best_f / n, sf);
+    printf("kernel=horner8 real=q24 ns_per_product=%.4f sum=%.6f\n", 1e9 * best_q / n, sq);
+    printf("kernel=horner8 q24_time_over_float=%.2f\n", best_q / (best_f > 0 ? best_f : 1e-9));
+    fflush(stdout);
+}
+
 static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off]\n"
     "       amorph bench --evolve [--evals N]\n"
+    "       amorph bench --kernels\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
     "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
-    "each a run of N evaluations (60), and the speedup of the second core.\n";
+    "each a run of N evaluations (60), and the speedup of the second core.\n"
+    "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
+    "vectorisable loops.\n";
 
 int cmd_bench(int argc, char** argv)
 {
@@ -218,6 +290,7 @@ int cmd_bench(int argc, char** argv)
     long steps = 2000, n;
     int coll = -1;
     long evolve_evals = 0;
+    int kernels = 0;
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -231,12 +304,19 @@ int cmd_bench(int argc, char** argv)
         } else if (!strcmp(a, "--collisions")) {
             if (!tool_parse_onoff(v, &coll)) return tool_usage_error("bench: --collisions takes on or off");
             i++;
+        } else if (!strcmp(a, "--kernels")) {
+            kernels = 1;
         } else if (!strcmp(a, "--evolve")) {
             evolve_evals = 60;
         } else if (!strcmp(a, "--evals")) {
             if (!tool_parse_long(v, 2, 1000000, &n)) return tool_usage_error("bench: --evals needs a whole number >= 2");
             evolve_evals = n, i++;
         } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
+    }
+    if (kernels) {
+        printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+        bench_kernels();
+        return 0;
     }
     if (evolve_evals) {
         printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
