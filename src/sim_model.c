@@ -9,7 +9,7 @@
 
 #include <string.h>
 
-_Static_assert(AM_MAX_MATERIALS * AM_MAX_MATERIALS <= 256, "am_model.lpair holds a pair of materials in a uint8_t");
+_Static_assert(AM_MAX_MATERIALS * AM_MAX_MATERIALS <= 256, "am_model.lpair holds a pair of materials in a uint8_t on a board");
 
 #if defined(AM_REAL_FIXED_POINT)
 /* a parameter in SI converted to model units (u: the SI value of one unit of its dimension) */
@@ -229,7 +229,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
             m->lneg[nl] = (am_index)i;
             m->lpos[nl] = (am_index)j;
-            m->lpair[nl] = (uint8_t)(m->mat[i] * AM_MAX_MATERIALS + m->mat[j]);
+            m->lpair[nl] = (am_pair)(m->mat[i] * AM_MAX_MATERIALS + m->mat[j]);
             const int lc = AM_LC(m, nl); /* the link's constants (once per pair of materials on a board) */
             m->k_ax[lc] = AM_MUL(E, L2);
             m->a2[lc] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));

@@ -184,7 +184,7 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
                       const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                       const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
-                      const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                      const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
                       const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
                       out_row* restrict fn, out_row* restrict mn, out_row* restrict mp, am_real* restrict strain, int o)
 {
@@ -215,7 +215,7 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
-                     const am_real* restrict c_t, const am_real* restrict c_r, const uint8_t* restrict lpair,
+                     const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
                      am_flag* restrict large, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp,
                      am_real* restrict strain, int o)
@@ -470,24 +470,47 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, T
     }
 }
 
+/* touch[j] = 1 when voxel i0 + j (j < n) reaches below the floor: the test of floor_contact for a
+ * chunk of voxels at once (no branch: the compiler vectorises it); returns 1 when one does */
+#define FLOOR_CHUNK 64
+static int floor_touch(int n, am_real L, const am_real* restrict scale, const am_real* restrict z, int32_t* restrict touch)
+{
+    int any = 0;
+    for (int j = 0; j < n; j++) {
+        touch[j] = AM_MUL(AM_MUL(AM_R(0.5), scale[j]), L) - z[j] > AM_R(0);
+        any |= touch[j];
+    }
+    return any;
+}
+
 /* the floor under every voxel that touches it: normal force and friction into its total force;
- * a stuck voxel loses its horizontal momentum (and force, so the update below keeps it zero) */
+ * a stuck voxel loses its horizontal momentum (and force, so the update below keeps it zero).
+ * Most voxels do not touch: a vectorised test picks the ones that do. */
 static void floor_pass(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
-    for (int i = 0; i < nv; i++) {
-        if (!(AM_MUL(AM_MUL(AM_R(0.5), s->s[i]), m->L) - s->x[2][i] > AM_R(0))) { /* as floor_contact */
-            s->contact[i] = 0;
+    int32_t touch[FLOOR_CHUNK];
+    for (int i0 = 0; i0 < nv; i0 += FLOOR_CHUNK) {
+        const int n = nv - i0 < FLOOR_CHUNK ? nv - i0 : FLOOR_CHUNK;
+        if (!floor_touch(n, m->L, s->s + i0, s->x[2] + i0, touch)) { /* voxels go by layer: most chunks are above */
+            for (int j = 0; j < n; j++) s->contact[i0 + j] = 0;
             continue;
         }
-        vec3 F = v3(s->fc[0][i], s->fc[1][i], s->fc[2][i]);
-        if (floor_contact(m, s, i, &F)) {
-            F.x = F.y = AM_R(0);
-            s->p[0][i] = s->p[1][i] = AM_R(0);
-            AM_REM_CLEAR(s->p_rem[0][i]);
-            AM_REM_CLEAR(s->p_rem[1][i]);
+        for (int j = 0; j < n; j++) {
+            const int i = i0 + j;
+            if (!touch[j]) {
+                s->contact[i] = 0;
+                continue;
+            }
+            vec3 F = v3(s->fc[0][i], s->fc[1][i], s->fc[2][i]);
+            if (floor_contact(m, s, i, &F)) {
+                F.x = F.y = AM_R(0);
+                s->p[0][i] = s->p[1][i] = AM_R(0);
+                AM_REM_CLEAR(s->p_rem[0][i]);
+                AM_REM_CLEAR(s->p_rem[1][i]);
+            }
+            s->fc[0][i] = F.x; s->fc[1][i] = F.y; s->fc[2][i] = F.z;
         }
-        s->fc[0][i] = F.x; s->fc[1][i] = F.y; s->fc[2][i] = F.z;
     }
 }
 

@@ -48,6 +48,7 @@ am_env am_default_env(void);
 #define AM_COMPACT 1
 typedef int16_t am_index;                 /* voxel, link and cell index */
 typedef uint8_t am_flag;                  /* a per-link flag */
+typedef uint8_t am_pair;                  /* a link's pair of materials */
 #define AM_VC_CAP AM_MAX_MATERIALS        /* entries of a per-voxel constant */
 #define AM_LC_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS) /* entries of a per-link constant */
 #define AM_VC(m, i) ((m)->mat[i])         /* the entry of voxel i */
@@ -55,6 +56,7 @@ typedef uint8_t am_flag;                  /* a per-link flag */
 #else
 typedef int32_t am_index;
 typedef int32_t am_flag;                  /* as wide as the values beside it: the loops vectorise */
+typedef int32_t am_pair;                  /* 32 bits: the link loop gathers the rest lengths by it */
 #define AM_VC_CAP AM_MAX_VOXELS
 #define AM_LC_CAP AM_MAX_LINKS
 #define AM_VC(m, i) (i)
@@ -89,7 +91,7 @@ typedef struct am_model {
     /* per link (nl); index nl is the zero link that missing slots point at; the constants per link
      * through AM_LC */
     am_index lneg[AM_MAX_LINKS], lpos[AM_MAX_LINKS]; /* voxel at the -axis / +axis end */
-    uint8_t lpair[AM_MAX_LINKS];   /* materials of the ends: mat_neg * AM_MAX_MATERIALS + mat_pos */
+    am_pair lpair[AM_MAX_LINKS];   /* materials of the ends: mat_neg * AM_MAX_MATERIALS + mat_pos */
     am_real k_ax[AM_LC_CAP];    /* E_link L^2, N (axial force = k_ax * strain) */
     am_real a2[AM_LC_CAP];      /* torsion GJ/L, N m */
     am_real b1[AM_LC_CAP];      /* shear 12EI/L^3, N/m */
