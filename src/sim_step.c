@@ -176,6 +176,10 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
 #define LINK_CHUNK 32
 #endif
 
+/* The two passes below write their results out line by line: with the stores in a helper
+ * function (restrict-qualified or not) gcc 12 no longer proves that they cannot alias the gathers
+ * and leaves the loops scalar (five times the instructions). */
+
 /* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
  * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
