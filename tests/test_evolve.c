@@ -2,6 +2,7 @@
  * crowding rule, bit-identical runs for 1, 2 and 3 workers, checkpoints (round trip, resume
  * equals an uninterrupted run, damage detected), cancellation, and a pinned golden run hash. */
 #include "harness.h"
+#include "sink.h"
 
 #include "amorph.h"
 
@@ -197,18 +198,6 @@ static void test_workers_give_identical_runs(void)
     CHECK(am_evo_hash(&g_c) != h[0], "seeds 7 and 8 gave the same run");
 }
 
-/* the far end of a stream: appends what is flushed to g_text2 */
-static long streamed;
-static am_status collect(void* ctx, const char* data, long n)
-{
-    (void)ctx;
-    if (streamed + n >= (long)sizeof g_text2) return AM_ERR_IO;
-    memcpy(g_text2 + streamed, data, (size_t)n);
-    streamed += n;
-    g_text2[streamed] = 0;
-    return AM_OK;
-}
-
 static void test_checkpoint_resume_equals_uninterrupted(void)
 {
     const int reprs[3] = {AM_REPR_DCT, AM_REPR_CPPN, AM_REPR_GMX};
@@ -223,9 +212,9 @@ static void test_checkpoint_resume_equals_uninterrupted(void)
         CHECK(am_evo_checkpoint_format(&g_b, g_text, sizeof g_text, &la, err, sizeof err) == AM_OK, "%s", err);
         /* through a 64-byte stream: the same text, checksum included */
         char piece[64];
-        am_text out = {piece, sizeof piece, 0, 0, collect, NULL, 0};
-        streamed = 0;
-        CHECK(am_evo_checkpoint_write(&g_b, &out, err, sizeof err) == AM_OK && am_text_flush(&out) == AM_OK && streamed == la &&
+        t_sink sink = {g_text2, sizeof g_text2, 0};
+        am_text out = {piece, sizeof piece, 0, 0, t_sink_flush, &sink, 0};
+        CHECK(am_evo_checkpoint_write(&g_b, &out, err, sizeof err) == AM_OK && am_text_flush(&out) == AM_OK && sink.n == la &&
                   memcmp(g_text, g_text2, (size_t)la) == 0, "%s: the streamed checkpoint differs", am_repr_name(reprs[r]));
         memcpy(g_text2, g_text, (size_t)la + 1);
         CHECK(am_evo_checkpoint_parse(&g_c, g_text2, "ck", err, sizeof err) == AM_OK, "%s: %s", am_repr_name(reprs[r]), err);

@@ -2,6 +2,7 @@
  * the axis order, defaults, and one test per error with its status and "fname:LINE:" prefix. */
 #include "amorph.h"
 #include "harness.h"
+#include "sink.h"
 
 #include <stdint.h>
 
@@ -15,18 +16,6 @@ static char big[1L << 20];
 /* random draws as parameters (exact in the float and double builds) */
 static am_param unit_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_unit(r))); }
 static am_param normal_p(am_rng* r) { return AM_PARAM_FROM_DOUBLE(AM_TO_DOUBLE(am_rng_normal(r))); }
-
-/* the far end of a stream: appends what is flushed to text2 */
-static long streamed;
-static am_status collect(void* ctx, const char* data, long n)
-{
-    (void)ctx;
-    if (streamed + n >= (long)sizeof text2) return AM_ERR_IO;
-    memcpy(text2 + streamed, data, (size_t)n);
-    streamed += n;
-    text2[streamed] = 0;
-    return AM_OK;
-}
 
 /* format a, parse it into b, check they agree and that formatting b gives the same text, also
  * through a 128-byte stream */
@@ -43,8 +32,8 @@ static void round_trip(const am_lattice* a, const char* what)
     st = am_lattice_format(&lat_b, text2, sizeof text2, &len2, err, sizeof err);
     CHECK(st == AM_OK && len2 == len && strcmp(text, text2) == 0, "%s: second format differs", what);
     char piece[128];
-    am_text out = {piece, sizeof piece, 0, 0, collect, NULL, 0};
-    streamed = 0;
+    t_sink sink = {text2, sizeof text2, 0};
+    am_text out = {piece, sizeof piece, 0, 0, t_sink_flush, &sink, 0};
     st = am_lattice_write(&lat_b, &out, err, sizeof err);
     CHECK(st == AM_OK && am_text_flush(&out) == AM_OK && out.done == len && strcmp(text, text2) == 0, "%s: streamed text differs", what);
 }

@@ -2,6 +2,7 @@
  * set, the text format. Statistical tests state their tolerance next to the expected value. */
 #include "amorph.h"
 #include "harness.h"
+#include "sink.h"
 
 static am_geno_work W;
 static am_dct_work D;
@@ -653,18 +654,6 @@ static void test_lattice_palette(void)
 
 /* ---- text format ---- */
 
-/* the far end of a stream: appends what is flushed to text2 */
-static long streamed;
-static am_status collect(void* ctx, const char* data, long n)
-{
-    (void)ctx;
-    if (streamed + n >= (long)sizeof text2) return AM_ERR_IO;
-    memcpy(text2 + streamed, data, (size_t)n);
-    streamed += n;
-    text2[streamed] = 0;
-    return AM_OK;
-}
-
 static void test_text_round_trip_is_exact(void)
 {
     char err[AM_ERR_MAX] = "";
@@ -689,8 +678,8 @@ static void test_text_round_trip_is_exact(void)
                   "second text differs");
             /* written through a 256-byte stream: the same text */
             char piece[256];
-            am_text st = {piece, sizeof piece, 0, 0, collect, NULL, 0};
-            streamed = 0;
+            t_sink sink = {text2, sizeof text2, 0};
+            am_text st = {piece, sizeof piece, 0, 0, t_sink_flush, &sink, 0};
             CHECK(am_genome_write(&gb, &st, err, sizeof err) == AM_OK && am_text_flush(&st) == AM_OK && !strcmp(text1, text2) &&
                       st.done == len1, "%s: the streamed text differs", am_repr_name(repr));
 #if !defined(AM_REAL_FIXED_POINT) /* a fixed-point zero has no sign */
