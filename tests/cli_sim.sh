@@ -73,6 +73,13 @@ sf=$(sed -n 's/^kernel=horner8 real=float .*sum=\([-0-9.]*\)$/\1/p' "$TMPD/out")
 sq=$(sed -n 's/^kernel=horner8 real=q24 .*sum=\([-0-9.]*\)$/\1/p' "$TMPD/out")
 check "kernel sums missing or apart: float '$sf' q24 '$sq'" awk -v a="$sf" -v b="$sq" 'BEGIN { d = a - b; exit !(a != "" && b != "" && a > 1 && d < 1e-3 && d > -1e-3) }'
 check "kernel ratio line: $(head -c 300 "$TMPD/out")" grep -qE '^kernel=horner8 q24_time_over_float=[0-9.]+$' "$TMPD/out"
+# --repeat: every run's line, then best >= median >= worst of them
+expect_ok "$AMORPH" bench --scene cube:3 --steps 40 --collisions on --repeat 3
+check "three runs: $(head -c 300 "$TMPD/out")" [ "$(grep -c '^scene=cube:3 collisions=on voxels=27' "$TMPD/out")" -eq 3 ]
+check "summary: $(tail -n 1 "$TMPD/out")" awk '/^scene=cube:3 collisions=on runs=3 / { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] + 0 }
+    ok = v["best_voxel_steps_per_s"] >= v["median_voxel_steps_per_s"] && v["median_voxel_steps_per_s"] >= v["worst_voxel_steps_per_s"] && v["worst_voxel_steps_per_s"] > 0; n++ }
+    END { exit !(n == 1 && ok) }' "$TMPD/out"
+expect_fail 2 "bench: --repeat needs a whole number from 1 to 64" "$AMORPH" bench --repeat 65
 expect_fail 2 "bench: unknown option '--kernel'" "$AMORPH" bench --kernel
 expect_fail 2 "bench: --steps needs a whole number" "$AMORPH" bench --steps 0
 
