@@ -235,6 +235,7 @@ static int bench_scene(const char* scene, long steps, int collisions, int repeat
  * fixed-point build's Q24 product (64-bit multiply, half an ulp, arithmetic shift: am_fx_mul of
  * amorph/real.h). Both are in every build, so one binary shows what a product costs in each
  * (docs/benchmarks.md, Fixed point). */
+#if !defined(AM_PROFILE_BOARD) /* its 32 KB of arrays are not worth a board's RAM */
 #define KERNEL_N 2048
 #define KERNEL_DEG 8
 static float g_kf[2][KERNEL_N];
@@ -297,6 +298,7 @@ static void bench_kernels(void)
     printf("kernel=horner8 q24_time_over_float=%.2f\n", best_q / (best_f > 0 ? best_f : 1e-9));
     fflush(stdout);
 }
+#endif
 
 static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--repeat N]\n"
@@ -308,7 +310,7 @@ static const char bench_help[] =
     "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
     "each a run of N evaluations (60), and the speedup of the second core.\n"
     "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
-    "vectorisable loops.\n";
+    "vectorisable loops" TOOL_DESKTOP_ONLY ".\n";
 
 int cmd_bench(int argc, char** argv)
 {
@@ -343,9 +345,13 @@ int cmd_bench(int argc, char** argv)
         } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
     }
     if (kernels) {
+#if defined(AM_PROFILE_BOARD)
+        return tool_not_in_build("bench --kernels", "the product kernels");
+#else
         printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
         bench_kernels();
         return 0;
+#endif
     }
     if (evolve_evals) {
         printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);

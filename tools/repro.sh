@@ -108,10 +108,23 @@ for name in $(echo "$TARGETS" | cut -d'|' -f1); do
     [ "$hash" = "$REPRO_EXPECT" ] || { mark="  MISMATCH (build/repro/$name-$REAL.log)"; bad=$((bad + 1)); }
     printf '%-22s %-18s %8s%s\n' "$name" "${hash:-(missing)}" "${secs:--}" "$mark"
 done
+# the board budget: with the board profile's population of 20, at most 192 KiB of RAM (data + bss,
+# stack and heap arena included) and 256 KiB of flash (text + data), from arm-none-eabi-size
+RAM_MAX=196608
+FLASH_MAX=262144
+for name in cortex-m3 cortex-m4; do
+    bin=$(build_of "TARGET=$name")/amorph
+    [ -f "$bin" ] && command -v arm-none-eabi-size >/dev/null 2>&1 || continue
+    sizes=$(arm-none-eabi-size "$bin" | awk 'NR == 2 { print $1 + $2, $2 + $3 }')
+    flash=${sizes% *} ram=${sizes#* }
+    mark=""
+    if [ "$ram" -gt $RAM_MAX ] || [ "$flash" -gt $FLASH_MAX ]; then mark="  OVER BUDGET"; bad=$((bad + 1)); fi
+    printf 'memory %-15s RAM %7d of %d bytes, flash %7d of %d%s\n' "$name" "$ram" $RAM_MAX "$flash" $FLASH_MAX "$mark"
+done
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
 if [ "$bad" -ne 0 ]; then
-    echo "repro ($REAL): $bad of $n targets differ from $REPRO_EXPECT (${total}s)"
+    echo "repro ($REAL): $bad of $n targets differ from $REPRO_EXPECT or exceed the board budget (${total}s)"
     exit 1
 fi
 echo "repro ($REAL): all $n targets print $REPRO_EXPECT (${total}s)"
