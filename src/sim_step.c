@@ -44,13 +44,19 @@ typedef am_real link_row[AM_MAX_LINKS + 1];
 #define REM_ARG(rem)
 #endif
 
+/* Links are evaluated LINK_CHUNK at a time. The large-angle frame costs about as much again as
+ * the small-angle element, and large links come in clusters that last: a chunk none of whose
+ * links was large at the last step runs the small-angle loop alone, and again with the
+ * large-angle frame only if one of its links turns large now. Both loops compute a link the same
+ * way, so the results do not depend on the chunking. */
+#define LINK_CHUNK 32
+
 /* The link passes read the velocities and spins of the voxels (rows v and w) and write their
  * results (rows fn, mn, mp and strain, at index l - o). On the desktop v and w are the state's and
  * the results go to the per-link arrays (o = 0); on a board v and w are the momenta p and h, scaled
  * where read by the voxel's 1/m and 1/I (the values the desktop keeps), and the results go to a
  * chunk's buffer (o = the chunk's first link). */
 #if defined(AM_COMPACT)
-#define LINK_CHUNK 32
 typedef am_real out_row[LINK_CHUNK];
 #define KIN_PARAM , const am_real* restrict vim, const am_real* restrict wim, const uint8_t* restrict vmat
 #define KIN_ARG(m) , (m)->inv_mass, (m)->inv_inertia, (m)->mat
@@ -166,15 +172,6 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
 /* bound on the axial strain of any link: no physical run stretches a link to six times its rest
  * length or through its neighbour */
 #define AM_DIVERGE_STRAIN AM_R(5)
-
-/* Links are evaluated LINK_CHUNK at a time. The large-angle frame costs about as much again as
- * the small-angle element, and large links come in clusters that last: a chunk none of whose
- * links was large at the last step runs the small-angle loop alone, and again with the
- * large-angle frame only if one of its links turns large now. Both loops compute a link the same
- * way, so the results do not depend on the chunking. */
-#if !defined(AM_COMPACT)
-#define LINK_CHUNK 32
-#endif
 
 /* The two passes below write their results out line by line: with the stores in a helper
  * function (restrict-qualified or not) gcc 12 no longer proves that they cannot alias the gathers
