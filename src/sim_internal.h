@@ -171,20 +171,16 @@ static inline am_real am_acc(am_real v, am_real* rem, am_real a, am_real b)
 
 /* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
 am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
-/* velocity and angular velocity component c of voxel i: kept in the state on the desktop, derived
- * from the momenta where read on a board (the same values: the step computes them so) */
+/* velocity component c of voxel i outside the step's loops: kept in the state on the desktop,
+ * derived from the momentum where read on a board (the same value: the step computes it so; the
+ * step's own loops do the same for the spins, see sim_step.c) */
 #if defined(AM_COMPACT)
 static inline am_real am_sim_vel(const am_model* m, const am_state* s, int c, int i)
 {
     return AM_MUL(s->p[c][i], m->inv_mass[AM_VC(m, i)]);
 }
-static inline am_real am_sim_spin(const am_model* m, const am_state* s, int c, int i)
-{
-    return AM_MUL(s->h[c][i], m->inv_inertia[AM_VC(m, i)]);
-}
 #else
 static inline am_real am_sim_vel(const am_model* m, const am_state* s, int c, int i) { (void)m; return s->v[c][i]; }
-static inline am_real am_sim_spin(const am_model* m, const am_state* s, int c, int i) { (void)m; return s->w[c][i]; }
 #endif
 
 /* self-collision forces into s->fc, rebuilding the candidate list when needed (sim_collide.c) */

@@ -169,7 +169,7 @@ typedef struct am_state {
     am_real h[3][AM_MAX_VOXELS];  /* angular momentum, kg m^2/s */
 #if !defined(AM_COMPACT)
     /* derived and kept for the link loop; the board profile computes them where they are read,
-     * the same values (am_sim_vel, am_sim_spin in sim_internal.h) */
+     * the same values (src/sim_internal.h, src/sim_step.c) */
     am_real v[3][AM_MAX_VOXELS];  /* velocity p/m */
     am_real w[3][AM_MAX_VOXELS];  /* angular velocity h/I */
 #endif
