@@ -178,7 +178,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             return am_fail(err, errsz, AM_ERR_RANGE, "cell %d holds material %d, the palette has %d", c, id, lat->palette.count);
         vid[c] = (am_index)nv;
         m->cell[nv] = (am_index)c;
-        m->mat[nv] = (uint8_t)(id - 1);
+        m->mat[nv] = (am_matid)(id - 1);
         nv++;
         int z = c / (nx * ny);
         if (z < kmin) kmin = z;

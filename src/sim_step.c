@@ -58,7 +58,7 @@ typedef am_real link_row[AM_MAX_LINKS + 1];
  * chunk's buffer (o = the chunk's first link). */
 #if defined(AM_COMPACT)
 typedef am_real out_row[LINK_CHUNK];
-#define KIN_PARAM , const am_real* restrict vim, const am_real* restrict wim, const uint8_t* restrict vmat
+#define KIN_PARAM , const am_real* restrict vim, const am_real* restrict wim, const am_matid* restrict vmat
 #define KIN_ARG(m) , (m)->inv_mass, (m)->inv_inertia, (m)->mat
 #define VEL3(r, i) v3(AM_MUL(r[0][i], vim[vmat[i]]), AM_MUL(r[1][i], vim[vmat[i]]), AM_MUL(r[2][i], vim[vmat[i]]))
 #define SPIN3(r, i) v3(AM_MUL(r[0][i], wim[vmat[i]]), AM_MUL(r[1][i], wim[vmat[i]]), AM_MUL(r[2][i], wim[vmat[i]]))
@@ -70,7 +70,7 @@ typedef link_row out_row;
 #define SPIN3(r, i) v3(r[0][i], r[1][i], r[2][i])
 #endif
 
-static void voxel_scales(int nv, const uint8_t* restrict mat, const am_real* restrict mat_scale, am_real* restrict scale)
+static void voxel_scales(int nv, const am_matid* restrict mat, const am_real* restrict mat_scale, am_real* restrict scale)
 {
     for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
 }
@@ -408,7 +408,7 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
 static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, TOTAL_PARAM, const am_real* restrict mass,
                                 const am_real* restrict c_glob_t, const am_real* restrict c_glob_r,
                                 const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
-                                const uint8_t* restrict mat, const vox_row* restrict v VEL_PARAM, vox_row* restrict f,
+                                const am_matid* restrict mat, const vox_row* restrict v VEL_PARAM, vox_row* restrict f,
                                 vox_row* restrict h, vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
 {
     (void)mat; /* read through VCI in the board profile only */
@@ -518,7 +518,7 @@ static void floor_pass(const am_model* m, am_state* s)
 /* p += F dt; x += p dt / m for every voxel (a fixed voxel keeps no momentum); returns 1 when
  * some voxel's squared speed is beyond v2_max (or NaN) */
 static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* restrict f, const am_real* restrict inv_mass,
-                           const uint8_t* restrict fixed, const uint8_t* restrict mat, vox_row* restrict p, vox_row* restrict v,
+                           const uint8_t* restrict fixed, const am_matid* restrict mat, vox_row* restrict p, vox_row* restrict v,
                            vox_row* restrict x REM_PARAM(p_rem) REM_PARAM(x_rem))
 {
     (void)mat; /* read through VCI in the board profile only */

@@ -49,6 +49,7 @@ am_env am_default_env(void);
 typedef int16_t am_index;                 /* voxel, link and cell index */
 typedef uint8_t am_flag;                  /* a per-link flag */
 typedef uint8_t am_pair;                  /* a link's pair of materials */
+typedef uint8_t am_matid;                 /* a voxel's material */
 #define AM_VC_CAP AM_MAX_MATERIALS        /* entries of a per-voxel constant */
 #define AM_LC_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS) /* entries of a per-link constant */
 #define AM_VC(m, i) ((m)->mat[i])         /* the entry of voxel i */
@@ -57,6 +58,7 @@ typedef uint8_t am_pair;                  /* a link's pair of materials */
 typedef int32_t am_index;
 typedef int32_t am_flag;                  /* as wide as the values beside it: the loops vectorise */
 typedef int32_t am_pair;                  /* 32 bits: the link loop gathers the rest lengths by it */
+typedef int32_t am_matid;                 /* 32 bits: the step gathers the voxel scales by it */
 #define AM_VC_CAP AM_MAX_VOXELS
 #define AM_LC_CAP AM_MAX_LINKS
 #define AM_VC(m, i) (i)
@@ -75,7 +77,7 @@ typedef struct am_model {
     am_index cell_voxel[AM_MAX_CELLS];    /* voxel of each lattice cell, -1 if empty */
     /* per voxel (nv); the constants below per voxel through AM_VC */
     am_index cell[AM_MAX_VOXELS];         /* lattice cell index */
-    uint8_t mat[AM_MAX_VOXELS];           /* palette index (0-based) */
+    am_matid mat[AM_MAX_VOXELS];          /* palette index (0-based) */
     uint8_t surface[AM_MAX_VOXELS];       /* 1 when fewer than 6 links */
     uint8_t fixed[AM_MAX_VOXELS];         /* 1 when clamped */
     am_index slot[6][AM_MAX_VOXELS];      /* link per direction +x,-x,+y,-y,+z,-z; nl (a zero link) if none */
