@@ -173,9 +173,12 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * length or through its neighbour */
 #define AM_DIVERGE_STRAIN AM_R(5)
 
-/* The two passes below write their results out line by line: with the stores in a helper
- * function (restrict-qualified or not) gcc 12 no longer proves that they cannot alias the gathers
- * and leaves the loops scalar (five times the instructions). */
+/* The two passes below are near-copies on purpose. They write their results out line by line:
+ * with the stores in a helper function (restrict-qualified or not) gcc 12 no longer proves that
+ * they cannot alias the gathers and leaves the loops scalar (five times the instructions). And one
+ * function for both, told which by a constant argument, is neither inlined nor vectorised by gcc
+ * 12 (it clones it per axis and keeps the branches); only forced inlining would, and under forced
+ * inlining gcc 12 fuses multiplies and adds (see check-fma in the Makefile). */
 
 /* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
