@@ -89,8 +89,6 @@ relax_min_steps = 50
 seed = 5
 CFG
 E="$B evolve --config $TMPD/big.cfg --quiet"
-nowall() { cut -d, -f1-7 "$1"; }
-sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }
 expect_ok $E --out "$TMPD/full" --evaluations 60
 expect_ok $E --out "$TMPD/part" --evaluations 40
 size=$(wc -c <"$TMPD/part/checkpoint.txt")

@@ -19,11 +19,6 @@ seed = 11
 CFG
 E="$AMORPH evolve --config $TMPD/small.cfg --quiet --no-pictures"
 
-# the log without its wall-clock column (the one column that differs between runs)
-nowall() { cut -d, -f1-7 "$1"; }
-# the run folder's summary line key=value
-sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }
-
 # --- a run and its folder ---
 expect_ok $E --out "$TMPD/a" --threads 1
 for f in config.txt log.csv best.genome best.lattice summary.txt checkpoint.txt; do

@@ -19,3 +19,7 @@ expect_ok() {
     if [ $rc -eq 0 ]; then ok; else ko "$* -> exit $rc: $(head -c 300 "$TMPD/err")"; fi
 }
 summary() { echo "$1: $T_PASS passed, $T_FAIL failed"; [ "$T_FAIL" -eq 0 ]; }
+# nowall LOG: an evolution's log.csv without its wall-clock column (the one that differs between runs)
+nowall() { cut -d, -f1-7 "$1"; }
+# sumval DIR KEY: the value of KEY in run folder DIR's summary.txt
+sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }

@@ -247,6 +247,16 @@ static int slot_ok(am_port_stream s)
     return s >= 0 && s < PORT_STREAMS && streams[s].handle >= 0;
 }
 
+/* stream slot k from now on for the open host handle h of path; returns k */
+static int claim(int k, int32_t h, const char* path, int writing)
+{
+    streams[k].handle = h;
+    streams[k].writing = writing;
+    streams[k].failed = 0;
+    streams[k].path = path;
+    return k;
+}
+
 am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
 {
     char tmp[PORT_PATH_MAX];
@@ -256,11 +266,7 @@ am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int
     if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     int32_t h = sh_open(tmp, SH_MODE_WB);
     if (h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create (host errno %d)", tmp, (int)sh_call(SH_SYS_ERRNO, 0));
-    streams[k].handle = h;
-    streams[k].writing = 1;
-    streams[k].failed = 0;
-    streams[k].path = path;
-    *s = k;
+    *s = claim(k, h, path, 1);
     return AM_OK;
 }
 
@@ -281,11 +287,7 @@ am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int 
     if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     int32_t h = sh_open(path, SH_MODE_RB);
     if (h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open (host errno %d)", path, (int)sh_call(SH_SYS_ERRNO, 0));
-    streams[k].handle = h;
-    streams[k].writing = 0;
-    streams[k].failed = 0;
-    streams[k].path = path;
-    *s = k;
+    *s = claim(k, h, path, 0);
     return AM_OK;
 }
 

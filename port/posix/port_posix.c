@@ -101,6 +101,17 @@ static int slot_ok(am_port_stream s)
     return s >= 0 && s < PORT_STREAMS && streams[s].used;
 }
 
+/* stream slot k from now on for the open file fd of path; returns k */
+static int claim(int k, int fd, const char* path, int writing)
+{
+    streams[k].used = 1;
+    streams[k].writing = writing;
+    streams[k].failed = 0;
+    streams[k].fd = fd;
+    streams[k].path = path;
+    return k;
+}
+
 am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
 {
     char tmp[4096];
@@ -110,12 +121,7 @@ am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int
     if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
-    streams[k].used = 1;
-    streams[k].writing = 1;
-    streams[k].failed = 0;
-    streams[k].fd = fd;
-    streams[k].path = path;
-    *s = k;
+    *s = claim(k, fd, path, 1);
     return AM_OK;
 }
 
@@ -138,12 +144,7 @@ am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int 
     if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     int fd = open(path, O_RDONLY);
     if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
-    streams[k].used = 1;
-    streams[k].writing = 0;
-    streams[k].failed = 0;
-    streams[k].fd = fd;
-    streams[k].path = path;
-    *s = k;
+    *s = claim(k, fd, path, 0);
     return AM_OK;
 }
 
