@@ -40,6 +40,7 @@ double am_strain_energy(const am_model* m, const am_state* s)
 {
     double e = 0;
     for (int l = 0; l < m->nl; l++) {
+        if (!am_link_live(m, l)) continue;
         link_kin k;
         int axis = link_axis(m, l);
         link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
@@ -211,7 +212,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
 {
     memset(out, 0, sizeof *out);
     out->voxels = m->nv;
-    out->links = m->nl;
+    out->links = m->links;
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
     if (def->dt_search) s->dt = dt;

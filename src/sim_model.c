@@ -209,27 +209,36 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         m->mu_k[vc] = PV(mt->mu_kinetic, 1.0);
     }
 
-    /* links grouped by axis */
-    int nl = 0;
+    /* links grouped by axis; along x the lanes (amorph/sim.h): lane i + 1 from voxel i to i + 1,
+     * empty when that is not its +x neighbour (the constants of a link all the same, never a force),
+     * lanes 0 and nv from voxel 0 to itself and always empty */
+    int nl = 0, nlinks = 0;
     for (int axis = 0; axis < 3; axis++) {
-        for (int i = 0; i < nv; i++) {
-            int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
-            int nc;
-            if (axis == 0) nc = x + 1 < nx ? c + 1 : -1;
-            else if (axis == 1) nc = y + 1 < ny ? c + nx : -1;
-            else nc = z + 1 < nz ? c + nx * ny : -1;
-            if (nc < 0 || vid[nc] < 0) continue;
+        for (int i = axis == 0 ? -1 : 0; i < nv; i++) {
+            int j = -1;
+            if (i >= 0) {
+                int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
+                int nc;
+                if (axis == 0) nc = x + 1 < nx ? c + 1 : -1;
+                else if (axis == 1) nc = y + 1 < ny ? c + nx : -1;
+                else nc = z + 1 < nz ? c + nx * ny : -1;
+                if (nc >= 0) j = vid[nc];
+            }
+            const int live = j >= 0;
+            if (axis != 0 && !live) continue;
             if (nl >= AM_MAX_LINKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "more than %d links", AM_MAX_LINKS);
-            int j = vid[nc];
-            const am_material* ma = &lat->palette.mat[m->mat[i]];
+            if (axis == 0) j = i >= 0 && i + 1 < nv ? i + 1 : 0;
+            const int a = i < 0 ? 0 : i; /* the negative end */
+            nlinks += live;
+            const am_material* ma = &lat->palette.mat[m->mat[a]];
             const am_material* mb = &lat->palette.mat[m->mat[j]];
             const am_real Ea = PV(ma->E, uP), Eb = PV(mb->E, uP);
             am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(Ea, Eb)), Ea + Eb); /* halves in series */
             am_real nu = AM_MUL(AM_R(0.5), PV(ma->poisson, 1.0) + PV(mb->poisson, 1.0));
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
-            m->lneg[nl] = (am_index)i;
+            m->lneg[nl] = (am_index)a;
             m->lpos[nl] = (am_index)j;
-            m->lpair[nl] = (am_pair)(m->mat[i] * AM_MAX_MATERIALS + m->mat[j]);
+            m->lpair[nl] = (am_pair)(m->mat[a] * AM_MAX_MATERIALS + m->mat[j]);
             const int lc = AM_LC(m, nl); /* the link's constants (once per pair of materials on a board) */
             m->k_ax[lc] = AM_MUL(E, L2);
             m->a2[lc] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
@@ -239,7 +248,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             /* internal damping as a fraction of the critical damping of the link's own two-body
              * modes: reduced mass with the axial stiffness E L, reduced inertia with the bending
              * stiffness b3 */
-            am_real mu = AM_DIV(AM_MUL(m->mass[AM_VC(m, i)], m->mass[AM_VC(m, j)]), m->mass[AM_VC(m, i)] + m->mass[AM_VC(m, j)]);
+            am_real mu = AM_DIV(AM_MUL(m->mass[AM_VC(m, a)], m->mass[AM_VC(m, j)]), m->mass[AM_VC(m, a)] + m->mass[AM_VC(m, j)]);
             am_real mu_I = AM_DIV(AM_MUL(mu, L2), AM_R(6));
             am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
                                 PV(env->zeta_internal_scale, 1.0));
@@ -250,12 +259,18 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         m->axis_end[axis] = nl;
     }
     m->nl = nl;
+    m->links = nlinks;
 
     /* slots: +x,-x,+y,-y,+z,-z; the voxel is the negative end of its + links */
     for (int d = 0; d < 6; d++)
         for (int i = 0; i < nv; i++) m->slot[d][i] = (am_index)nl;
     for (int l = 0; l < nl; l++) {
         int axis = l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2);
+        if (axis == 0) { /* lane l from voxel l - 1 to l */
+            if (l == 0 || l == nv) continue;
+            const int c = m->cell[l - 1];
+            if (!(c % nx + 1 < nx && m->cell[l] == c + 1)) continue; /* an empty lane */
+        }
         m->slot[2 * axis][m->lneg[l]] = (am_index)l;
         m->slot[2 * axis + 1][m->lpos[l]] = (am_index)l;
     }
@@ -301,6 +316,7 @@ am_real am_dt_analytic(const am_model* m)
 {
     am_real wmax = AM_R(0);
     for (int l = 0; l < m->nl; l++) {
+        if (!am_link_live(m, l)) continue;
         am_real a1 = AM_DIV(m->k_ax[AM_LC(m, l)], m->L); /* E L */
         am_real mm = am_min(m->mass[AM_VC(m, m->lneg[l])], m->mass[AM_VC(m, m->lpos[l])]);
         wmax = am_max(wmax, AM_DIV(a1, mm));

@@ -180,6 +180,22 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * 12 (it clones it per axis and keeps the branches); only forced inlining would, and under forced
  * inlining gcc 12 fuses multiplies and adds (see check-fma in the Makefile). */
 
+/* the two ends of entry l, and whether it is a link: x lane l joins voxels l - 1 and l (read
+ * contiguously: the axis is a constant in each of link_forces' copies), and is a link when voxel
+ * l's -x slot holds it (amorph/sim.h) */
+#define LINK_ENDS(l)                                                                                          \
+    const int a = axis == 0 ? (l) - 1 : lneg[l], b = axis == 0 ? (l) : lpos[l];                                \
+    const int live = axis != 0 || slot_mx[l] == (l)
+/* the results of entry l at j: zeros for an empty lane (what the zero link nl holds); the strain
+ * check for links only */
+#define STORE_RESULTS(j_)                                                                                      \
+    const int j = (j_);                                                                                        \
+    fn[0][j] = live ? r.F.x : AM_R(0); fn[1][j] = live ? r.F.y : AM_R(0); fn[2][j] = live ? r.F.z : AM_R(0);      \
+    mn[0][j] = live ? r.M.x : AM_R(0); mn[1][j] = live ? r.M.y : AM_R(0); mn[2][j] = live ? r.M.z : AM_R(0);      \
+    mp[0][j] = live ? r.Mp.x : AM_R(0); mp[1][j] = live ? r.Mp.y : AM_R(0); mp[2][j] = live ? r.Mp.z : AM_R(0);   \
+    strain[j] = live ? r.strain : AM_R(0);                                                                      \
+    bad |= live & !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN)
+
 /* the links [l0, l1), all along one axis and none of them large at the last step, as small-angle
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
  * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
@@ -190,24 +206,20 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                       const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
                       const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
-                      out_row* restrict fn, out_row* restrict mn, out_row* restrict mp, am_real* restrict strain, int o)
+                      const am_index* restrict slot_mx, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp,
+                      am_real* restrict strain, int o)
 {
     int bad = 0, any_large = 0;
     for (int l = l0; l < l1; l++) {
-        const int a = lneg[l], b = lpos[l];
+        LINK_ENDS(l);
         link_kin k;
         link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
                       v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
-        any_large |= large_switch(&k, 0, inv_rest);
+        any_large |= live & large_switch(&k, 0, inv_rest);
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
         link_out r = link_element(&k, 0, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
-        const int j = l - o;
-        fn[0][j] = r.F.x; fn[1][j] = r.F.y; fn[2][j] = r.F.z;
-        mn[0][j] = r.M.x; mn[1][j] = r.M.y; mn[2][j] = r.M.z;
-        mp[0][j] = r.Mp.x; mp[1][j] = r.Mp.y; mp[2][j] = r.Mp.z;
-        strain[j] = r.strain;
-        bad |= !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN);
+        STORE_RESULTS(l - o);
     }
     return bad | any_large << 1;
 }
@@ -221,17 +233,17 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
                      const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
-                     am_flag* restrict large, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp,
-                     am_real* restrict strain, int o)
+                     const am_index* restrict slot_mx, am_flag* restrict large, out_row* restrict fn,
+                     out_row* restrict mn, out_row* restrict mp, am_real* restrict strain, int o)
 {
     int bad = 0;
     for (int l = l0; l < l1; l++) {
-        const int a = lneg[l], b = lpos[l];
+        LINK_ENDS(l);
         link_kin k;
         link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
                       v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
-        int lg = large_switch(&k, large[l], inv_rest);
+        int lg = live & large_switch(&k, large[l], inv_rest);
 #if defined(AM_REAL_FIXED_POINT)
         /* integer roots and 64-bit divisions do not vectorise: the large-angle frame only where it
          * is on (the same values as the select) */
@@ -242,12 +254,7 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
         link_out r = link_element(&k, lg, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
         large[l] = (am_flag)lg;
-        const int j = l - o;
-        fn[0][j] = r.F.x; fn[1][j] = r.F.y; fn[2][j] = r.F.z;
-        mn[0][j] = r.M.x; mn[1][j] = r.M.y; mn[2][j] = r.M.z;
-        mp[0][j] = r.Mp.x; mp[1][j] = r.Mp.y; mp[2][j] = r.Mp.z;
-        strain[j] = r.strain;
-        bad |= !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN);
+        STORE_RESULTS(l - o);
     }
     return bad;
 }
@@ -304,10 +311,11 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
         for (int l = c0; l < c1; l++) was_large |= s->large[l];
         if (!was_large)
             r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
-                           m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), fn, mn, mp, strain, o);
+                           m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
         if (r & 2)
             r = full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
-                          m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), s->large, fn, mn, mp, strain, o);
+                          m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
+                          strain, o);
         bad |= r & 1;
 #if defined(AM_COMPACT)
         add_links(c0, c1, m->lneg, m->lpos, (const out_row*)fn, (const out_row*)mn, (const out_row*)mp, s->fc, s->mc);
@@ -432,7 +440,8 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, T
                     fext[2][i] + (collisions ? f[2][i] : AM_R(0)));
         vec3 M = v3(mext[0][i], mext[1][i], mext[2][i]);
         for (int d = 0; d < 3; d++) {
-            int lp = slot[2 * d][i], ln = slot[2 * d + 1][i];
+            /* the +x and -x results at lanes i + 1 and i (contiguous; zeros where empty) */
+            int lp = d == 0 ? i + 1 : slot[2 * d][i], ln = d == 0 ? i : slot[2 * d + 1][i];
             F = v3_add(F, v3(fn[0][lp], fn[1][lp], fn[2][lp]));
             M = v3_add(M, v3(mn[0][lp], mn[1][lp], mn[2][lp]));
             F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));
@@ -576,7 +585,7 @@ void am_step(const am_model* m, am_state* s)
     const vox_row* v = (const vox_row*)s->v;
     vox_row *w = s->w, *v_out = s->v;
 #endif
-    int bad = link_forces(m, s, 0, m->axis_end[0], 0);
+    int bad = link_forces(m, s, 1, m->axis_end[0] - 1, 0); /* lanes 0 and nv are always empty */
     bad |= link_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
     bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
     /* semi-implicit Euler: rotation and total force, floor and friction, translation */

@@ -198,7 +198,7 @@ static int bench_one(const char* scene, long steps, int collisions, double* vps_
     double vps = (double)done * tool_work[0].model.nv / (wall > 0 ? wall : 1e-9);
     printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld wall_s=%.4f voxel_steps_per_s=%.4g "
            "ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
-           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.nl, done, wall, vps, 1e9 / vps,
+           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.links, done, wall, vps, 1e9 / vps,
            tool_work[0].state.rebuilds - r0, tool_work[0].state.npairs, tool_work[0].state.diverged);
     fflush(stdout);
     *vps_out = vps;

@@ -18,7 +18,8 @@
 
 #define AM_MAX_CELLS (AM_MAX_DIM * AM_MAX_DIM * AM_MAX_DIM)   /* lattice cells */
 #define AM_MAX_VOXELS AM_MAX_CELLS                            /* filled cells */
-#define AM_MAX_LINKS (3 * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM - 1)) /* face pairs of a full box */
+/* link entries: nv + 1 x lanes (sim.h), and the y and z face pairs of a full box */
+#define AM_MAX_LINKS (AM_MAX_VOXELS + 1 + 2 * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM - 1))
 #define AM_MAX_MATERIALS 16     /* palette entries; cell value 0 is empty, 1..16 a material */
 #if defined(AM_PROFILE_BOARD)
 #define AM_MAX_PAIRS (6 * AM_MAX_VOXELS)   /* self-collision candidate pairs */

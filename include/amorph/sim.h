@@ -65,10 +65,16 @@ typedef int32_t am_matid;                 /* 32 bits: the step gathers the voxel
 #define AM_LC(m, l) (l)
 #endif
 
-/* the immutable model. Shapes in the comments: nv = voxels, nl = links. Links are grouped by
- * axis: x-links are [0, axis_end[0]), y-links [axis_end[0], axis_end[1]), z-links the rest. */
+/* the immutable model. Shapes in the comments: nv = voxels, nl = link entries. Links are grouped
+ * by axis: x-links are [0, axis_end[0]), y-links [axis_end[0], axis_end[1]), z-links the rest.
+ * The x entries are lanes, nv + 1 of them: lane e (0 < e < nv) joins voxel e - 1 to voxel e, its +x
+ * neighbour when it has one (voxels go by cell, x fastest); otherwise, and always for lanes 0 and
+ * nv, the lane is empty (am_link_live) and its results are zeros, like those of the zero link nl.
+ * So the step's x-link loop reads both ends contiguously, and voxel i finds its +x and -x results
+ * at lanes i + 1 and i, instead of gathering them. */
 typedef struct am_model {
-    int nv, nl;                  /* voxels, links */
+    int nv, nl;                  /* voxels, link entries (links and empty x lanes) */
+    int links;                   /* links */
     int axis_end[3];             /* see above */
     am_real L;                   /* nominal voxel edge, m */
     am_env env;                  /* the environment the model was built for */
@@ -125,6 +131,9 @@ static inline int am_neighbour(const am_model* m, int d, int i)
     const int l = m->slot[d][i];
     return l == m->nl ? -1 : (d & 1 ? m->lneg[l] : m->lpos[l]);
 }
+
+/* 1 when entry l is a link (not an empty x lane) */
+static inline int am_link_live(const am_model* m, int l) { return l >= m->axis_end[0] || m->slot[1][m->lpos[l]] == l; }
 
 /* dimensions for converting model values to and from SI */
 enum {
