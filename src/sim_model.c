@@ -211,8 +211,12 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
 
     /* links grouped by axis; along x the lanes (amorph/sim.h): lane i + 1 from voxel i to i + 1,
      * empty when that is not its +x neighbour (the constants of a link all the same, never a force),
-     * lanes 0 and nv from voxel 0 to itself and always empty */
+     * lanes 0 and nv from voxel 0 to itself and always empty. The slots are filled on the way. */
     int nl = 0, nlinks = 0;
+    /* slots: +x,-x,+y,-y,+z,-z, the voxel is the negative end of its + links; -1 (then the zero
+     * link nl) where it has no link */
+    for (int d = 0; d < 6; d++)
+        for (int i = 0; i < nv; i++) m->slot[d][i] = -1;
     for (int axis = 0; axis < 3; axis++) {
         for (int i = axis == 0 ? -1 : 0; i < nv; i++) {
             int j = -1;
@@ -227,9 +231,14 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             const int live = j >= 0;
             if (axis != 0 && !live) continue;
             if (nl >= AM_MAX_LINKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "more than %d links", AM_MAX_LINKS);
-            if (axis == 0) j = i >= 0 && i + 1 < nv ? i + 1 : 0;
-            const int a = i < 0 ? 0 : i; /* the negative end */
-            nlinks += live;
+            const int edge = axis == 0 && (i < 0 || i + 1 >= nv); /* lane 0 or nv */
+            const int a = edge ? 0 : i; /* the negative end */
+            if (axis == 0) j = edge ? 0 : i + 1;
+            if (live) {
+                m->slot[2 * axis][a] = (am_index)nl;
+                m->slot[2 * axis + 1][j] = (am_index)nl;
+                nlinks++;
+            }
             const am_material* ma = &lat->palette.mat[m->mat[a]];
             const am_material* mb = &lat->palette.mat[m->mat[j]];
             const am_real Ea = PV(ma->E, uP), Eb = PV(mb->E, uP);
@@ -261,19 +270,9 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     m->nl = nl;
     m->links = nlinks;
 
-    /* slots: +x,-x,+y,-y,+z,-z; the voxel is the negative end of its + links */
-    for (int d = 0; d < 6; d++)
-        for (int i = 0; i < nv; i++) m->slot[d][i] = (am_index)nl;
-    for (int l = 0; l < nl; l++) {
-        int axis = l < m->axis_end[0] ? 0 : (l < m->axis_end[1] ? 1 : 2);
-        if (axis == 0) { /* lane l from voxel l - 1 to l */
-            if (l == 0 || l == nv) continue;
-            const int c = m->cell[l - 1];
-            if (!(c % nx + 1 < nx && m->cell[l] == c + 1)) continue; /* an empty lane */
-        }
-        m->slot[2 * axis][m->lneg[l]] = (am_index)l;
-        m->slot[2 * axis + 1][m->lpos[l]] = (am_index)l;
-    }
+    for (int d = 0; d < 6; d++) /* a missing link: the zero link */
+        for (int i = 0; i < nv; i++)
+            if (m->slot[d][i] < 0) m->slot[d][i] = (am_index)nl;
     for (int i = 0; i < nv; i++) {
         int links = 0;
         for (int d = 0; d < 6; d++) links += m->slot[d][i] != nl;
