@@ -1,6 +1,7 @@
 # tests/cli_evolve.sh: `amorph evolve` and `amorph experiment` as a researcher runs them: run
-# folders, config files and flags, identical runs for 1, 2 and 3 threads, Ctrl-C and kill -9
-# followed by --resume ending exactly like an uninterrupted run, and every bad input refused with
+# folders, config files and flags, identical runs for 1, 2 and 3 threads, Ctrl-C, SIGTERM and
+# kill -9 (sent at a chosen evaluation through AMORPH_TEST_INTERRUPT, no timing) followed by
+# --resume ending exactly like an uninterrupted run, and every bad input refused with
 # one line and a non-zero exit without damaging the run. Run from the repository root.
 . tests/shlib.sh
 
@@ -107,48 +108,65 @@ expect_ok $E --out "$TMPD/long" --evaluations 48
 if [ "$(nowall "$TMPD/r/log.csv")" = "$(nowall "$TMPD/long/log.csv")" ] && cmp -s "$TMPD/r/best.genome" "$TMPD/long/best.genome"; then ok
 else ko "extending a finished run differs from a longer run"; fi
 
-# --- interruptions: Ctrl-C (SIGINT) and kill -9 mid-generation, then --resume ---
+# --- interruptions: Ctrl-C (SIGINT), SIGTERM and kill -9, then --resume ---
+# AMORPH_TEST_INTERRUPT=SIG:N makes the run send itself SIG when it is about to start evaluation
+# N + 1 (docs/evolve.md, Testing interruptions): the interruption lands at the same point on any
+# machine, however fast, with no sleep and no race. Population 6: a generation ends at every
+# multiple of 6, so 27 and 50 fall inside a generation (its evaluations are dropped and done
+# again on resume) and 36 between two.
 L="--evaluations 120"
 expect_ok $E --out "$TMPD/ref" $L
-# wait_rows DIR N: until DIR/log.csv has N data rows (10 s at most)
-wait_rows() {
-    i=0
-    while [ $i -lt 200 ]; do
-        [ -f "$1/log.csv" ] && [ $(($(wc -l <"$1/log.csv") - 1)) -ge "$2" ] && return 0
-        sleep 0.05; i=$((i + 1))
-    done
-    return 1
-}
-for how in INT KILL; do
-    d="$TMPD/int-$how"
-    $E --out "$d" $L >"$TMPD/out" 2>"$TMPD/err" &
-    pid=$!
-    if wait_rows "$d" 3; then ok; else ko "$how: the run did not start"; fi
-    sleep 0.1
-    kill -s $how $pid
-    wait $pid 2>/dev/null; rc=$?
-    if [ $how = INT ]; then
-        if [ $rc -eq 130 ] && grep -q "resume with: amorph evolve --resume $d" "$TMPD/err"; then ok
-        else ko "Ctrl-C: exit $rc, stderr: $(cat "$TMPD/err")"; fi
-    else
-        if [ $rc -eq 137 ]; then ok; else ko "kill -9: exit $rc"; fi
-    fi
+# interrupt SIG:N ROWS: a run interrupted at N; its log then holds ROWS rows (the whole
+# generations before N), and the resumed run ends exactly like the uninterrupted one
+interrupt() {
+    how=${1%%:*}; d="$TMPD/int-$how"
+    AMORPH_TEST_INTERRUPT=$1 $E --out "$d" $L >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    if [ $how = KILL ]; then
+        if [ $rc -eq 137 ]; then ok; else ko "kill -9 at $1: exit $rc, stderr: $(cat "$TMPD/err")"; fi
+    elif [ $rc -eq 130 ] && grep -q "resume with: amorph evolve --resume $d\$" "$TMPD/err" &&
+         grep -q "interrupted after $(($2 * 6)) evaluations" "$TMPD/err"; then ok
+    else ko "$how at $1: exit $rc, stderr: $(cat "$TMPD/err")"; fi
     done_rows=$(($(wc -l <"$d/log.csv") - 1))
-    if [ "$done_rows" -lt 20 ]; then ok; else ko "$how: the run finished before the interruption ($done_rows rows)"; fi
-    expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
-    if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok
-    else nowall "$d/log.csv" >"$TMPD/l1"; nowall "$TMPD/ref/log.csv" >"$TMPD/l2"; ko "$how: resumed log differs: $(diff "$TMPD/l1" "$TMPD/l2" | head -5)"; fi
-    if cmp -s "$d/best.genome" "$TMPD/ref/best.genome" && cmp -s "$d/best.lattice" "$TMPD/ref/best.lattice"; then ok
-    else ko "$how: resumed best genome differs"; fi
-    if [ "$(sumval "$d" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "$how: run hash differs"; fi
-done
-# a checkpoint every few seconds instead of every generation resumes just as exactly
+    if [ "$done_rows" -eq "$2" ] && [ "$done_rows" -lt 20 ]; then ok
+    else ko "$how at $1: $done_rows rows when interrupted, want $2 of 20"; fi
+    if grep -qx "evaluations $(($2 * 6))" "$d/checkpoint.txt"; then ok
+    else ko "$how at $1: checkpoint at $(grep '^evaluations [0-9]' "$d/checkpoint.txt"), want $(($2 * 6))"; fi
+    resumed "$how" "$d"
+}
+# resumed WHAT DIR: DIR resumed (without the test variable) ends exactly like the reference run
+resumed() {
+    expect_ok "$AMORPH" evolve --resume "$2" --quiet --no-pictures
+    if [ "$(nowall "$2/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok
+    else nowall "$2/log.csv" >"$TMPD/l1"; nowall "$TMPD/ref/log.csv" >"$TMPD/l2"; ko "$1: resumed log differs: $(diff "$TMPD/l1" "$TMPD/l2" | head -5)"; fi
+    if cmp -s "$2/best.genome" "$TMPD/ref/best.genome" && cmp -s "$2/best.lattice" "$TMPD/ref/best.lattice"; then ok
+    else ko "$1: resumed best genome or lattice differs"; fi
+    if [ "$(sumval "$2" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "$1: run hash differs"; fi
+}
+interrupt INT:27 4
+interrupt TERM:36 6
+interrupt KILL:50 8
+# checkpoints at most every N seconds instead of every generation: the log has rows the
+# checkpoint has not seen, which the resume cuts back and does again. With 3600 s the only
+# checkpoint before the kill is the first one (before any evaluation), on any machine.
 d="$TMPD/slow"
-$E --out "$d" $L --checkpoint-seconds 1 >"$TMPD/out" 2>"$TMPD/err" &
-pid=$!
-wait_rows "$d" 6; sleep 0.1; kill -9 $pid; wait $pid 2>/dev/null
-expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
-if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ]; then ok; else ko "checkpoint_seconds: resumed log differs"; fi
+AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L --checkpoint-seconds 3600 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+if [ $rc -eq 137 ] && [ $(($(wc -l <"$d/log.csv") - 1)) -eq 8 ] && grep -qx "evaluations 0" "$d/checkpoint.txt"; then ok
+else ko "checkpoint_seconds 3600, kill -9 at 50: exit $rc, $(($(wc -l <"$d/log.csv") - 1)) rows, checkpoint at $(grep '^evaluations [0-9]' "$d/checkpoint.txt")"; fi
+resumed "checkpoint_seconds 3600" "$d"
+# every second: whichever checkpoints the machine's speed gave, the resume ends the same
+d="$TMPD/slow1"
+AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L --checkpoint-seconds 1 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+if [ $rc -eq 137 ]; then ok; else ko "checkpoint_seconds 1, kill -9 at 50: exit $rc"; fi
+resumed "checkpoint_seconds 1" "$d"
+# a malformed setting is refused before anything is written
+for v in INT HUP:3 INT: INT:x INT:-2 KILL:3:4 int:3 " INT:3" TERM:5x; do
+    expect_fail 2 "AMORPH_TEST_INTERRUPT = '$v': expected SIG:N" env AMORPH_TEST_INTERRUPT="$v" $E --out "$TMPD/bad2"
+done
+expect_fail 2 "AMORPH_TEST_INTERRUPT = 'x'" env AMORPH_TEST_INTERRUPT=x "$AMORPH" experiment representations --out "$TMPD/bad2"
+if [ ! -e "$TMPD/bad2" ]; then ok; else ko "a refused AMORPH_TEST_INTERRUPT left a folder behind"; fi
+# a point past the end of the run never comes: the run ends normally
+expect_ok env AMORPH_TEST_INTERRUPT=INT:120 $E --out "$TMPD/late" $L
+if [ "$(sumval "$TMPD/late" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "INT:120 changed the run"; fi
 
 # --- progress: a live line on a terminal, plain lines otherwise, nothing with --quiet ---
 P="$AMORPH evolve --config $TMPD/small.cfg --evaluations 18 --no-pictures"
@@ -186,6 +204,13 @@ if [ "$m" = "$got" ]; then ok; else ko "gmx mean/stderr at 12 evaluations: want 
 before=$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)
 expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet
 if [ "$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)" = "$before" ]; then ok; else ko "re-running a finished experiment changed it"; fi
+# an experiment interrupted in its first run (Ctrl-C at evaluation 9) and run again ends the same
+env AMORPH_TEST_INTERRUPT=INT:9 "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp2" --quiet \
+    >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+if [ $rc -eq 130 ] && grep -q "resume the experiment with the same command and --out $TMPD/exp2" "$TMPD/err" && [ ! -e "$TMPD/exp2/dct-2" ]; then ok
+else ko "experiment interrupted: exit $rc, stderr: $(cat "$TMPD/err")"; fi
+expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp2" --quiet
+if cmp -s "$TMPD/exp/results.csv" "$TMPD/exp2/results.csv"; then ok; else ko "an interrupted experiment ended differently"; fi
 expect_fail 2 "unknown experiment 'colours'" "$AMORPH" experiment colours
 expect_fail 2 "--runs needs" "$AMORPH" experiment friction --runs 0
 for x in three-materials dynamic friction; do

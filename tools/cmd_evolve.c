@@ -3,6 +3,7 @@
 #include "cmd.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -328,6 +329,63 @@ static TOOL_NOINLINE void progress(const am_evo* e, double t_start, long evals_s
     }
 }
 
+/* ---- testing interruptions: AMORPH_TEST_INTERRUPT=SIG:N (docs/evolve.md) ----
+ * The process sends itself SIG (INT, TERM or KILL) when its run is about to start evaluation
+ * N + 1, counted over the whole run (a resumed run counts from its checkpoint): with one worker,
+ * exactly N evaluations are done; with more, N have started and the unfinished generation is
+ * dropped all the same. INT and TERM take the Ctrl-C path (stop, checkpoint, exit 130), KILL is
+ * kill -9 (exit 137). Evaluations are polled through the cancel callback of am_evo_generation,
+ * which sees every evaluation of a generation when the generation is one batch (the desktop);
+ * a point past the first batch of a generation of several batches (the board profile) is taken
+ * when that generation returns, before it is logged, as a Ctrl-C is there. Fired at most once. */
+static struct {
+    am_port_signal sig;       /* 0: no interruption asked for */
+    long after;               /* N */
+    long base;                /* the run's evaluations before the generation under way */
+    atomic_long started;      /* cancel polls (evaluations about to start) of that generation */
+    atomic_int fired;
+} g_test_int;
+
+/* reads AMORPH_TEST_INTERRUPT (unset or empty: none); 0, or 2 after a one-line message */
+static TOOL_NOINLINE int test_interrupt_setup(void)
+{
+    static const struct {
+        const char* name;
+        am_port_signal sig;
+    } sigs[] = {{"INT", AM_PORT_SIGINT}, {"TERM", AM_PORT_SIGTERM}, {"KILL", AM_PORT_SIGKILL}};
+    const char* v = am_port_getenv("AMORPH_TEST_INTERRUPT");
+    g_test_int.sig = (am_port_signal)0;
+    if (!v || !*v) return 0;
+    const char* colon = strchr(v, ':');
+    for (size_t k = 0; colon && k < sizeof sigs / sizeof sigs[0]; k++)
+        if (strlen(sigs[k].name) == (size_t)(colon - v) && !strncmp(v, sigs[k].name, (size_t)(colon - v)) &&
+            tool_parse_long(colon + 1, 0, 1000000000L, &g_test_int.after)) {
+            g_test_int.sig = sigs[k].sig;
+            atomic_store(&g_test_int.fired, 0);
+            return 0;
+        }
+    char shown[48];
+    snprintf(shown, sizeof shown, "%s", v);
+    for (char* c = shown; *c; c++)
+        if ((unsigned char)*c < 32 || *c == 127) *c = '?'; /* the message stays one line */
+    return tool_usage_error("AMORPH_TEST_INTERRUPT = '%s%s': expected SIG:N, SIG one of INT, TERM, KILL and N a whole number "
+                            "of evaluations >= 0 (a test setting, docs/evolve.md)",
+                            shown, strlen(v) >= sizeof shown ? "..." : "");
+}
+
+static void test_interrupt_fire(void)
+{
+    if (!atomic_exchange(&g_test_int.fired, 1)) am_port_raise(g_test_int.sig);
+}
+
+/* the cancel callback of a run's generations (on the workers, before each evaluation) */
+static int run_cancel(void)
+{
+    if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base + atomic_fetch_add(&g_test_int.started, 1) == g_test_int.after)
+        test_interrupt_fire();
+    return am_port_interrupted();
+}
+
 static int workers_of(const am_evo_def* d)
 {
     int w = d->threads > 0 ? d->threads : am_port_cores();
@@ -347,12 +405,17 @@ static int run_loop(am_evo* e, const run_io* io)
     while (!am_evo_done(e)) {
         double best_before = e->has_best ? e->best.fitness : 0.0;
         int had_best = e->has_best;
-        am_status st = am_evo_generation(e, tool_work, workers, am_port_interrupted, err, sizeof err);
+        g_test_int.base = e->evaluations;
+        atomic_store(&g_test_int.started, 0);
+        am_status st = am_evo_generation(e, tool_work, workers, run_cancel, err, sizeof err);
         if (st != AM_OK) {
             if (am_port_interrupted()) break;
             fprintf(stderr, "amorph: %s\n", err);
             return 1;
         }
+        /* a test's point inside this generation that no cancel poll saw (several batches) */
+        if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base <= g_test_int.after && g_test_int.after < e->evaluations)
+            test_interrupt_fire();
         if (append_log(io->dir, &e->last)) return 1;
         if ((!had_best || e->best.fitness != best_before) && write_best(io->dir, e)) return 1;
         dirty = 1;
@@ -549,6 +612,7 @@ int cmd_evolve(int argc, char** argv)
     } else if (o.print_config) return tool_usage_error("evolve: --print-config and --resume: print a run's settings with cat DIR/config.txt");
     char dir[EXP_DIR_MAX];
     if (strlen(o.resume ? o.resume : o.out ? o.out : "") >= sizeof dir) return tool_usage_error("evolve: folder name too long");
+    if (test_interrupt_setup()) return 2;
     if (o.resume) snprintf(dir, sizeof dir, "%s", o.resume);
     else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else if (default_out(dir, sizeof dir)) return 2;
@@ -725,6 +789,7 @@ int cmd_experiment(int argc, char** argv)
     am_evo_def base;
     if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
     if (evals) base.evaluations = evals;
+    if (test_interrupt_setup()) return 2;
     char dir[EXP_DIR_MAX], err[AM_ERR_MAX];
     if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");
     if (o.out) snprintf(dir, sizeof dir, "%s", o.out);

@@ -10,8 +10,8 @@
  * - no allocation (static storage only), no recursion;
  * - nothing here may change a result: the clock, the console and the number of workers only
  *   change how fast and how chatty a run is, never what it computes;
- * - every function is callable from the main thread; only am_port_now and the task given to
- *   am_port_parallel_map run on worker threads.
+ * - every function is callable from the main thread; only am_port_now, am_port_interrupted,
+ *   am_port_raise and the task given to am_port_parallel_map run on worker threads.
  */
 #ifndef AMORPH_PORT_H
 #define AMORPH_PORT_H
@@ -92,5 +92,20 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
 void am_port_catch_interrupt(void);
 /* 1 once an interruption was requested since am_port_catch_interrupt */
 int am_port_interrupted(void);
+
+/* ---- testing interruptions ---- */
+
+/* the value of the environment variable name, or NULL when it is not set (always NULL on a port
+ * without an environment, as port/baremetal). The command reads AMORPH_TEST_INTERRUPT with it
+ * (docs/evolve.md, Testing interruptions); the library never does. */
+const char* am_port_getenv(const char* name);
+/* the interruptions a process can be sent from outside */
+typedef enum am_port_signal { AM_PORT_SIGINT = 1, AM_PORT_SIGTERM, AM_PORT_SIGKILL } am_port_signal;
+/* sends sig to this process itself, as `kill -SIG` from outside would, for deterministic tests
+ * of the interruption paths: SIGINT and SIGTERM go to the calling thread, so the handler of
+ * am_port_catch_interrupt has run when this returns (am_port_interrupted() is then 1); SIGKILL
+ * ends the process at once, wherever it is (a shell sees status 137). Callable from a worker of
+ * am_port_parallel_map. A port without signals does nothing. */
+void am_port_raise(am_port_signal sig);
 
 #endif

@@ -409,3 +409,16 @@ int am_port_interrupted(void)
 {
     return 0;
 }
+
+/* ---- testing interruptions: no environment, no signals ---- */
+
+const char* am_port_getenv(const char* name)
+{
+    (void)name;
+    return NULL;
+}
+
+void am_port_raise(am_port_signal sig)
+{
+    (void)sig;
+}

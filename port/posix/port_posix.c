@@ -1,5 +1,6 @@
 /* POSIX port: clock, console and progress line, files with atomic replace, a parallel map on
- * POSIX threads, and Ctrl-C / SIGTERM caught into a flag. */
+ * POSIX threads, Ctrl-C / SIGTERM caught into a flag, and the environment and a signal to
+ * itself for tests of interruptions. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph/port.h"
 
@@ -8,6 +9,7 @@
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
@@ -382,4 +384,22 @@ void am_port_catch_interrupt(void)
 int am_port_interrupted(void)
 {
     return interrupt_flag ? 1 : 0;
+}
+
+/* ---- testing interruptions ---- */
+
+const char* am_port_getenv(const char* name)
+{
+    return getenv(name);
+}
+
+void am_port_raise(am_port_signal sig)
+{
+    switch (sig) {
+    case AM_PORT_SIGINT: raise(SIGINT); break; /* raise: the calling thread, handler run on return */
+    case AM_PORT_SIGTERM: raise(SIGTERM); break;
+    case AM_PORT_SIGKILL:
+        raise(SIGKILL);
+        _exit(128 + SIGKILL); /* not reached: SIGKILL cannot be caught */
+    }
 }
