@@ -94,6 +94,8 @@ static const key_def keys[] = {
     {"relax_min_steps", K_LONG, OFF(eval.relax_min_steps), 0, 1e8, NULL, 0, "relaxation lasts at least this"},
     {"relax_max_steps", K_LONG, OFF(eval.relax_max_steps), 0, 1e8, NULL, 0, "and at most this"},
     {"settle_speed", K_PARAM, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
+    {"release_steps", K_LONG, OFF(eval.release_steps), 0, 1e8, NULL, 0,
+     "settled: calm through this many last relaxation steps, model damping alone"},
     {"voxel_size", K_PARAM, OFF(voxel_size), 1e-5, 10, NULL, 0, "cell edge, m"},
     {"dct_k", K_INT, OFF(geno.dct_k), 1, AM_MAX_DCT_K, NULL, 0, "DCT amplitudes per axis"},
     {"cppn_layers", K_INT, OFF(geno.cppn_layers), 1, AM_MAX_CPPN_LAYERS, NULL, 0, "CPPN layers"},

@@ -1,4 +1,5 @@
-# tests/cli_sim.sh: the `amorph sim` command: JSON output, divergence reporting, bad input.
+# tests/cli_sim.sh: the `amorph sim` command: JSON output, relaxation diagnostics, divergence and
+# settling warnings, bad input; `amorph bench` figures; the evolver's release_steps key.
 # Run from the repository root: sh tests/cli_sim.sh
 . tests/shlib.sh
 
@@ -6,15 +7,27 @@
 field() { sed -n "s/.*\"$1\": *\(-\{0,1\}[0-9][0-9.eE+-]*\).*/\1/p" "$2"; }
 # check DESCRIPTION CONDITION...: ok when the shell test succeeds
 check() { d=$1; shift; if "$@"; then ok; else ko "$d"; fi; }
+# tval NAME FILE: the value of a `name = value` line in FILE
+tval() { sed -n "s/^$1 = //p" "$2"; }
+# isnum V: V is one decimal number (sign, digits, point, exponent), as printf %g or %ld writes it
+isnum() { echo "$1" | grep -qE '^-?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$'; }
+# isint V: V is a whole number >= 0
+isint() { echo "$1" | grep -qE '^[0-9]+$'; }
+# awkt DESCRIPTION EXPR -v NAME=VALUE...: ok when the awk expression over the named values holds
+awkt() { ad=$1; ae=$2; shift 2; if awk "$@" "BEGIN { exit !($ae) }"; then ok; else ko "$ad"; fi; }
+# lines FILE: its line count
+lines() { wc -l <"$1" | tr -d ' '; }
 
 # a normal run: every key, a 16-hex-digit hash, sane numbers
 expect_ok "$AMORPH" sim --scene cube:4 --cycles 2 --json
 cp "$TMPD/out" "$TMPD/cube"
 check "one line of JSON: $(head -c 300 "$TMPD/cube")" [ "$(wc -l <"$TMPD/cube")" -eq 1 ]
-for k in fitness dx dy dz voxels links dt steps relax_steps move_steps diverged settled sim_seconds wall_seconds; do
+for k in fitness dx dy dz voxels links dt steps relax_steps move_steps diverged settled residual_speed kinetic_resets \
+         sim_seconds wall_seconds; do
     v=$(field $k "$TMPD/cube")
-    check "key $k missing or not a number in: $(head -c 300 "$TMPD/cube")" [ -n "$v" ]
+    check "key $k missing or not a number in: $(head -c 300 "$TMPD/cube")" isnum "$v"
 done
+check "kinetic_resets not a whole number: $(head -c 300 "$TMPD/cube")" isint "$(field kinetic_resets "$TMPD/cube")"
 check "hash is not 16 hex digits: $(head -c 300 "$TMPD/cube")" grep -qE '"hash": *"[0-9a-f]{16}"' "$TMPD/cube"
 check "cube:4 has 64 voxels" [ "$(field voxels "$TMPD/cube")" = 64 ]
 check "cube:4 has 144 links" [ "$(field links "$TMPD/cube")" = 144 ]
@@ -25,9 +38,49 @@ check "2 cycles of the default 500-step period should be 1000 move steps, got $m
 check "passive cube: fitness should be >= 0, got $(field fitness "$TMPD/cube")" \
     awk -v f="$(field fitness "$TMPD/cube")" 'BEGIN { exit !(f >= 0) }'
 
-# the name = value form carries the same hash
+# the name = value form carries the same hash, and the same relaxation diagnostics
 expect_ok "$AMORPH" sim --scene cube:4 --cycles 2
+cp "$TMPD/out" "$TMPD/cube.txt"
 check "text output hash differs from JSON" grep -q "^hash = $(sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$TMPD/cube")\$" "$TMPD/out"
+for k in relax_steps settled residual_speed kinetic_resets; do
+    v=$(tval $k "$TMPD/cube.txt")
+    check "line '$k = NUMBER' missing: $(tr '\n' ' ' <"$TMPD/cube.txt" | head -c 400)" isnum "$v"
+    check "$k: text '$v', JSON '$(field $k "$TMPD/cube")'" [ "$v" = "$(field $k "$TMPD/cube")" ]
+done
+
+# a passive cube resting on the floor settles: settled = 1, nothing on stderr; residual_speed is
+# the largest RMS speed through the release window, so below settle_speed (1e-3 m/s), and the
+# relaxation lasted at least that window (500 steps)
+check "cube:4 did not settle: $(head -c 300 "$TMPD/cube")" [ "$(field settled "$TMPD/cube")" = 1 ]
+check "settled run wrote on stderr: $(head -c 300 "$TMPD/err")" [ ! -s "$TMPD/err" ]
+awkt "settled, yet residual_speed $(field residual_speed "$TMPD/cube") is not in [0, 1e-3)" 'r >= 0 && r < 1e-3' \
+    -v r="$(field residual_speed "$TMPD/cube")"
+awkt "settled after $(field relax_steps "$TMPD/cube") relaxation steps, fewer than the release window (500)" 'n >= 500' \
+    -v n="$(field relax_steps "$TMPD/cube")"
+expect_ok "$AMORPH" sim --scene cube:4 --cycles 1 --release-steps 1500 --json
+if [ "$(field settled "$TMPD/out")" = 1 ]; then
+    awkt "--release-steps 1500: settled after $(field relax_steps "$TMPD/out") relaxation steps" 'n >= 1500' -v n="$(field relax_steps "$TMPD/out")"
+else
+    check "--release-steps 1500: not settled, yet no warning: $(head -c 300 "$TMPD/err")" grep -q "did not settle" "$TMPD/err"
+fi
+# a release window longer than the relaxation can never end: not settled, whatever the physics
+expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 300 --release-steps 1000 --json
+check "--relax-max 300 --release-steps 1000 settled: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
+
+# a run that cannot settle (--relax-max 10): a result, not an error: exit 0, settled = 0, the full
+# output on stdout, exactly one warning line on stderr, in both forms
+for form in --json ""; do
+    "$AMORPH" sim --scene cube:4 --cycles 1 --relax-max 10 $form >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    check "--relax-max 10 $form: exit $rc" [ $rc -eq 0 ]
+    if [ -n "$form" ]; then sv=$(field settled "$TMPD/out"); rv=$(field relax_steps "$TMPD/out"); dv=$(field diverged "$TMPD/out")
+    else sv=$(tval settled "$TMPD/out"); rv=$(tval relax_steps "$TMPD/out"); dv=$(tval diverged "$TMPD/out"); fi
+    check "--relax-max 10 $form: settled '$sv', want 0" [ "$sv" = 0 ]
+    check "--relax-max 10 $form: relax_steps '$rv', want 10" [ "$rv" = 10 ]
+    check "--relax-max 10 $form: diverged '$dv', want 0" [ "$dv" = 0 ]
+    check "--relax-max 10 $form: want one stderr line, got $(lines "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 1 ]
+    check "--relax-max 10 $form: warning: $(head -c 300 "$TMPD/err")" \
+        grep -qE '^amorph: sim: warning: cube:4 did not settle within 10 relaxation steps \(residual speed [-0-9.e+]+ m/s' "$TMPD/err"
+done
 
 # options that change the run still succeed
 expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --collisions off --json
@@ -41,6 +94,10 @@ check "--dt 2e-5 not used: $(head -c 300 "$TMPD/out")" awk -v d="$(field dt "$TM
 expect_ok "$AMORPH" sim --scene cube:4 --dt 1 --json
 check "--dt 1 should print \"diverged\": 1, got: $(head -c 300 "$TMPD/out")" grep -qE '"diverged": *1[,}]' "$TMPD/out"
 check "--dt 1 should give fitness -1, got $(field fitness "$TMPD/out")" awk -v f="$(field fitness "$TMPD/out")" 'BEGIN { exit !(f == -1) }'
+check "--dt 1 diverged: settled should be 0: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
+# and said once on stderr (diverged, not also "did not settle")
+check "--dt 1: want one stderr line, got $(lines "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 1 ]
+check "--dt 1: warning: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: sim: warning: cube:4 diverged at step [0-9]+, in the relaxation \(fitness -1\)$' "$TMPD/err"
 
 # bad input: exit 2 and one line on stderr
 expect_fail 2 "." "$AMORPH" sim
@@ -56,6 +113,14 @@ expect_fail 2 "seed" "$AMORPH" random --repr gmx --seed -3
 expect_fail 2 "scene" "$AMORPH" sim --scene nosuch:3
 expect_fail 2 "no-such-robot" "$AMORPH" sim "$TMPD/no-such-robot.lattice"
 expect_fail 2 "unknown option" "$AMORPH" sim --scene cube:3 --bogus
+# --release-steps: a whole number 0..1e8, checked like --relax-max
+for bad in x -1 100000001 " 5" 5x 1e3 ""; do
+    expect_fail 2 "^amorph: sim: --release-steps needs a whole number from 0 to 100000000$" "$AMORPH" sim --scene cube:3 --release-steps "$bad"
+done
+expect_fail 2 "^amorph: sim: --release-steps needs a whole number" "$AMORPH" sim --scene cube:3 --release-steps
+expect_fail 2 "relax-max" "$AMORPH" sim --scene cube:3 --relax-max -1
+expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --release-steps 0 --json
+check "--release-steps 0: $(head -c 300 "$TMPD/out")" isnum "$(field residual_speed "$TMPD/out")"
 expect_ok "$AMORPH" sim --help
 
 # an empty body is a valid robot: zero fitness, flagged, exit 0, no simulation
@@ -66,6 +131,12 @@ check "empty body not flagged with zero fitness: $(head -c 300 "$TMPD/out")" gre
 # --- amorph bench: figures, not timings asserted ---
 expect_ok "$AMORPH" bench --scene cube:3 --steps 40 --collisions off
 check "bench line: $(head -c 300 "$TMPD/out")" grep -qE '^scene=cube:3 collisions=off voxels=27 links=54 steps=40 .*voxel_steps_per_s=[0-9.e+]+ .*diverged=0$' "$TMPD/out"
+# simulated seconds per wall second beside it, at the default step (dt_frac): steps * dt / wall
+# time = voxel_steps_per_s * dt_s / voxels
+check "bench: sim_s_per_s and dt_frac: $(head -c 300 "$TMPD/out")" awk '/^scene=cube:3 / { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+    n++; s = v["sim_s_per_s"] + 0; e = v["voxel_steps_per_s"] * v["dt_s"] / v["voxels"]
+    ok = v["sim_s_per_s"] ~ /^[0-9.e+-]+$/ && s > 0 && v["dt_frac"] > 0 && v["dt_s"] > 0 && s > 0.999 * e && s < 1.001 * e }
+    END { exit !(n == 1 && ok) }' "$TMPD/out"
 # the product kernels compute the same polynomial in float and in Q24: their sums agree to the
 # fixed-point resolution (2048 values of magnitude below 2)
 expect_ok "$AMORPH" bench --kernels
@@ -79,8 +150,34 @@ check "three runs: $(head -c 300 "$TMPD/out")" [ "$(grep -c '^scene=cube:3 colli
 check "summary: $(tail -n 1 "$TMPD/out")" awk '/^scene=cube:3 collisions=on runs=3 / { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] + 0 }
     ok = v["best_voxel_steps_per_s"] >= v["median_voxel_steps_per_s"] && v["median_voxel_steps_per_s"] >= v["worst_voxel_steps_per_s"] && v["worst_voxel_steps_per_s"] > 0; n++ }
     END { exit !(n == 1 && ok) }' "$TMPD/out"
+check "summary, sim_s_per_s: $(tail -n 1 "$TMPD/out")" awk '/^scene=cube:3 collisions=on runs=3 / { for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] + 0 }
+    ok = v["best_sim_s_per_s"] >= v["median_sim_s_per_s"] && v["median_sim_s_per_s"] >= v["worst_sim_s_per_s"] && v["worst_sim_s_per_s"] > 0; n++ }
+    END { exit !(n == 1 && ok) }' "$TMPD/out"
 expect_fail 2 "bench: --repeat needs a whole number from 1 to 64" "$AMORPH" bench --repeat 65
 expect_fail 2 "bench: unknown option '--kernel'" "$AMORPH" bench --kernel
 expect_fail 2 "bench: --steps needs a whole number" "$AMORPH" bench --steps 0
+
+# --- the evolver's release_steps key (docs/evolve.md): a config key and a flag, 0..1e8 ---
+expect_ok "$AMORPH" evolve --help-config
+check "--help-config lists release_steps 500: $(grep release "$TMPD/out")" grep -qE '^ +release_steps +500 ' "$TMPD/out"
+expect_ok "$AMORPH" evolve --print-config --release-steps 7
+check "--release-steps 7 not in the configuration: $(grep release "$TMPD/out")" grep -qx 'release_steps = 7' "$TMPD/out"
+expect_fail 2 "release_steps = '-1': expected an integer in \[0, 100000000\]" "$AMORPH" evolve --print-config --release-steps -1
+expect_fail 2 "release_steps = '100000001'" "$AMORPH" evolve --print-config --release-steps 100000001
+expect_fail 2 "relax_min_steps = 500 exceeds relax_max_steps = 100" "$AMORPH" evolve --print-config --relax-min-steps 500 --relax-max-steps 100
+# a run folder's release_steps reaches amorph sim, and --release-steps overrides it: a window
+# longer than the relaxation never ends; the flag back at the default gives the default run
+mkdir -p "$TMPD/run"
+expect_ok "$AMORPH" random --repr gmx --size 4 --seed 7 --out "$TMPD/run/best.genome"
+"$AMORPH" evolve --print-config --workspace 4 --relax-max-steps 2000 >"$TMPD/run/config.txt"
+"$AMORPH" sim "$TMPD/run" --cycles 1 --json >"$TMPD/def.json" 2>/dev/null
+"$AMORPH" evolve --print-config --workspace 4 --relax-max-steps 2000 --release-steps 100000000 >"$TMPD/run/config.txt"
+expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json
+check "run's release_steps 1e8: settled, or not 2000 steps: $(head -c 300 "$TMPD/out")" \
+    [ "$(field settled "$TMPD/out")/$(field relax_steps "$TMPD/out")" = 0/2000 ]
+check "run's release_steps 1e8: want one warning, got: $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 1 ]
+expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json --release-steps 500
+h1=$(sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$TMPD/def.json"); h2=$(sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$TMPD/out")
+check "--release-steps 500 over the run's 1e8 is not the default run: '$h1' vs '$h2'" [ "${h1:-none}" = "$h2" ]
 
 summary cli_sim

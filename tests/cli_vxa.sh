@@ -48,7 +48,8 @@ for w in "$F:18: warning: unsupported tag <Features> ignored" "$F:23: warning: u
          "$F:86: warning: unsupported tag <IsConductive> ignored" "$F:6: warning: <DtFrac> 0.9 is above"; do
     if grep -qF "$w" "$D/q.err"; then ok; else ko "missing warning '$w' in: $(cat "$D/q.err")"; fi
 done
-if [ "$(wc -l <"$D/q.err")" -eq 4 ]; then ok; else ko "expected 4 warning lines: $(cat "$D/q.err")"; fi
+# (the file's warnings; amorph sim adds its own line when 400 relaxation steps do not settle the body)
+if [ "$(grep -c "^$F:" "$D/q.err")" -eq 4 ]; then ok; else ko "expected 4 warning lines: $(cat "$D/q.err")"; fi
 # its materials and environment arrive: names made safe, linear CTE, amplitude, damping
 expect_ok "$AMORPH" export "$F" --lattice "$D/q.lattice"
 if grep -q '^material Active__ E=1000000 density=1000 poisson=0.35 cte=0.01 phase=0 mu_s=1 mu_k=0.5 zeta_int=1 zeta_glob=0.01 zeta_col=0.8 color=#ff0000 fixed=0$' "$D/q.lattice"

@@ -22,11 +22,18 @@ static const char sim_help[] =
     "  --gravity G           m/s^2 (9.80665)\n"
     "  --cte linear|volume   CTE convention (volume, the seed's)\n"
     "  --fitness horizontal|x|3d   centre of mass displacement measured (horizontal)\n"
-    "  --relax-max N         relaxation steps at most (4000)\n"
-    "  --json                one JSON object instead of name = value lines\n";
+    "  --relax-max N         relaxation steps at most (20000)\n"
+    "  --release-steps N     steps, at the end of the relaxation, of the model's own damping through\n"
+    "                        which the body must stay calm to count as settled (500)\n"
+    "  --json                one JSON object instead of name = value lines\n"
+    "A run that diverged or did not settle prints one warning line on stderr; the exit status is\n"
+    "still 0 (it is a result). Besides the fitness: residual_speed (m/s, the largest RMS voxel speed\n"
+    "through the release window, or the last one when the relaxation ran out first) and\n"
+    "kinetic_resets (the relaxation's kinetic damping stops; docs/physics.md, Evaluation).\n";
 
 enum { G_PERIOD = 1, G_AMPLITUDE = 2, G_DT_FRAC = 4, G_GRAVITY = 8, G_COLLISIONS = 16, G_FLOOR = 32, G_CTE = 64,
-       G_CYCLES = 128, G_FITNESS = 256, G_RELAX = 512, G_DT_SEARCH = 1024 };
+       G_CYCLES = 128, G_FITNESS = 256, G_RELAX = 512, G_DT_SEARCH = 1024,
+       G_RELEASE = 2048 };
 
 /* a file's environment (VXA file, run folder), with the flags given on the command line on top */
 static am_env merge_env(const am_env* file, const am_env* cli, unsigned given)
@@ -73,6 +80,9 @@ int cmd_sim(int argc, char** argv)
             if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
             def.relax_max_steps = n, given |= G_RELAX, i++;
             if (def.relax_min_steps > n) def.relax_min_steps = n;
+        } else if (!strcmp(a, "--release-steps")) {
+            if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --release-steps needs a whole number from 0 to 100000000");
+            def.release_steps = n, given |= G_RELEASE, i++;
         } else if (!strcmp(a, "--amplitude")) {
             if (!tool_parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
             env.temp_amplitude = AM_PARAM_FROM_DOUBLE(r), given |= G_AMPLITUDE, i++;
@@ -129,6 +139,7 @@ int cmd_sim(int argc, char** argv)
             rdef.relax_max_steps = def.relax_max_steps;
             if (rdef.relax_min_steps > def.relax_max_steps) rdef.relax_min_steps = def.relax_max_steps;
         }
+        if (given & G_RELEASE) rdef.release_steps = def.release_steps;
         rdef.record = def.record;
         def = rdef;
     } else {
@@ -163,24 +174,38 @@ int cmd_sim(int argc, char** argv)
     if (json) {
         printf("{\"robot\": \"%s\", \"fitness\": %.9g, \"dx\": %.9g, \"dy\": %.9g, \"dz\": %.9g, \"voxels\": %d, "
                "\"links\": %d, \"dt\": %.9g, \"steps\": %ld, \"relax_steps\": %ld, \"move_steps\": %ld, "
-               "\"diverged\": %d, \"settled\": %d, \"sim_seconds\": %.9g, \"wall_seconds\": %.6f, "
-               "\"collision_rebuilds\": %ld, \"max_pairs\": %d, \"hash\": \"%016llx\"}\n",
+               "\"diverged\": %d, \"settled\": %d, \"residual_speed\": %.9g, \"kinetic_resets\": %ld, "
+               "\"sim_seconds\": %.9g, \"wall_seconds\": %.6f, \"collision_rebuilds\": %ld, \"max_pairs\": %d, "
+               "\"hash\": \"%016llx\"}\n",
                file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
-               res.move_steps, res.diverged, res.settled, res.sim_seconds, wall, res.rebuilds, res.max_pairs,
-               (unsigned long long)res.hash);
+               res.move_steps, res.diverged, res.settled, res.residual_speed, res.kinetic_resets, res.sim_seconds, wall,
+               res.rebuilds, res.max_pairs, (unsigned long long)res.hash);
     } else {
         printf("robot = %s\nfitness = %.9g\ndx = %.9g\ndy = %.9g\ndz = %.9g\nvoxels = %d\nlinks = %d\ndt = %.9g\n"
-               "steps = %ld\nrelax_steps = %ld\nmove_steps = %ld\ndiverged = %d\nsettled = %d\nsim_seconds = %.9g\n"
-               "wall_seconds = %.6f\ncollision_rebuilds = %ld\nmax_pairs = %d\nhash = %016llx\n",
+               "steps = %ld\nrelax_steps = %ld\nmove_steps = %ld\ndiverged = %d\nsettled = %d\nresidual_speed = %.9g\n"
+               "kinetic_resets = %ld\nsim_seconds = %.9g\nwall_seconds = %.6f\ncollision_rebuilds = %ld\nmax_pairs = %d\n"
+               "hash = %016llx\n",
                file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
-               res.move_steps, res.diverged, res.settled, res.sim_seconds, wall, res.rebuilds, res.max_pairs,
-               (unsigned long long)res.hash);
+               res.move_steps, res.diverged, res.settled, res.residual_speed, res.kinetic_resets, res.sim_seconds, wall,
+               res.rebuilds, res.max_pairs, (unsigned long long)res.hash);
+    }
+    fflush(stdout);
+    /* a run that diverged or did not settle is a result (exit status 0), with one line of warning */
+    if (res.diverged) {
+        const long at = tool_work[0].state.diverge_step;
+        fprintf(stderr, "amorph: sim: warning: %s diverged at step %ld, in the %s (fitness %g)\n", file, at,
+                at <= res.relax_steps ? "relaxation" : "actuation", res.fitness);
+    } else if (!res.settled) {
+        fprintf(stderr, "amorph: sim: warning: %s did not settle within %ld relaxation steps (residual speed %.2e m/s, "
+                "release window %ld steps)\n", file, res.relax_steps, res.residual_speed, def.release_steps);
     }
     return 0;
 }
 
-/* times `steps` actuated steps of one scene after a short warm-up; *vps_out gets the figure */
-static int bench_one(const char* scene, long steps, int collisions, double* vps_out)
+/* times `steps` actuated steps of one scene after a short warm-up, at the default time step;
+ * *vps_out gets the voxel steps per second, *k_out the simulated seconds per voxel step (dt / nv,
+ * the same in every run of the scene), so that vps * k is the simulated seconds per second */
+static int bench_one(const char* scene, long steps, int collisions, double* vps_out, double* k_out)
 {
     char err[AM_ERR_MAX];
     am_env env = am_default_env();
@@ -195,13 +220,17 @@ static int bench_one(const char* scene, long steps, int collisions, double* vps_
     double t0 = am_port_now();
     long done = am_steps(&tool_work[0].model, &tool_work[0].state, steps);
     double wall = am_port_now() - t0;
-    double vps = (double)done * tool_work[0].model.nv / (wall > 0 ? wall : 1e-9);
-    printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld wall_s=%.4f voxel_steps_per_s=%.4g "
-           "ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
-           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.links, done, wall, vps, 1e9 / vps,
-           tool_work[0].state.rebuilds - r0, tool_work[0].state.npairs, tool_work[0].state.diverged);
+    const double vps = (double)done * tool_work[0].model.nv / (wall > 0 ? wall : 1e-9);
+    const double dt = am_to_si(&tool_work[0].model, tool_work[0].state.dt, AM_DIM_TIME);
+    const double k = dt / tool_work[0].model.nv, sps = vps * k;
+    printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld dt_frac=%g dt_s=%.4g wall_s=%.4f voxel_steps_per_s=%.4g "
+           "sim_s_per_s=%.4g ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
+           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.links, done,
+           AM_PARAM_TO_DOUBLE(tool_work[0].model.env.dt_frac), dt, wall, vps, sps, 1e9 / vps, tool_work[0].state.rebuilds - r0,
+           tool_work[0].state.npairs, tool_work[0].state.diverged);
     fflush(stdout);
     *vps_out = vps;
+    *k_out = k;
     return 0;
 }
 
@@ -210,9 +239,9 @@ static int bench_one(const char* scene, long steps, int collisions, double* vps_
  * the code */
 static int bench_scene(const char* scene, long steps, int collisions, int repeat)
 {
-    double v[64];
+    double v[64], sk = 0; /* voxel steps per second; simulated seconds per voxel step */
     for (int k = 0; k < repeat; k++) {
-        if (bench_one(scene, steps, collisions, &v[k])) return 2;
+        if (bench_one(scene, steps, collisions, &v[k], &sk)) return 2;
         for (int j = k; j > 0 && v[j] < v[j - 1]; j--) { /* sorted as they come */
             double t = v[j];
             v[j] = v[j - 1];
@@ -222,8 +251,8 @@ static int bench_scene(const char* scene, long steps, int collisions, int repeat
     if (repeat > 1) {
         double med = repeat % 2 ? v[repeat / 2] : 0.5 * (v[repeat / 2 - 1] + v[repeat / 2]);
         printf("scene=%s collisions=%s runs=%d best_voxel_steps_per_s=%.4g median_voxel_steps_per_s=%.4g "
-               "worst_voxel_steps_per_s=%.4g\n",
-               scene, collisions ? "on" : "off", repeat, v[repeat - 1], med, v[0]);
+               "worst_voxel_steps_per_s=%.4g best_sim_s_per_s=%.4g median_sim_s_per_s=%.4g worst_sim_s_per_s=%.4g\n",
+               scene, collisions ? "on" : "off", repeat, v[repeat - 1], med, v[0], v[repeat - 1] * sk, med * sk, v[0] * sk);
         fflush(stdout);
     }
     return 0;
@@ -306,6 +335,8 @@ static const char bench_help[] =
     "       amorph bench --kernels\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
+    "Each scene's line: the time step (dt_frac of the analytic limit, dt_s), voxel steps per second\n"
+    "and simulated seconds per wall second (sim_s_per_s), both over --steps actuated steps (2000).\n"
     "--repeat N: each scene N times (1 to 64), then the best, median and worst figure.\n"
     "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
     "each a run of N evaluations (60), and the speedup of the second core.\n"
