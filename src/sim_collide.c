@@ -38,6 +38,11 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)AM_FLOOR_INT(AM_
 static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(x, inv_h)); }
 #endif
 
+/* the centre of voxel i along c (x holds displacements from the rest lattice x0), and the offset
+ * from voxel a to voxel b: the rest lattice's offset plus the displacements' */
+#define POS(c, i) (m->x0[c][i] + s->x[c][i])
+#define OFFSET(x0, x, c, a, b) ((x0[c][b] - x0[c][a]) + (x[c][b] - x[c][a]))
+
 static void rebuild(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
@@ -46,14 +51,14 @@ static void rebuild(const am_model* m, am_state* s)
     /* insert in descending index order so every list runs in ascending order */
     for (int i = nv - 1; i >= 0; i--) {
         if (!m->surface[i]) continue;
-        uint32_t b = bucket_of(cell_coord(s->x[0][i], inv_h), cell_coord(s->x[1][i], inv_h), cell_coord(s->x[2][i], inv_h));
+        uint32_t b = bucket_of(cell_coord(POS(0, i), inv_h), cell_coord(POS(1, i), inv_h), cell_coord(POS(2, i), inv_h));
         s->bucket_next[i] = s->bucket_head[b];
         s->bucket_head[b] = (am_index)i;
     }
     int np = 0;
     for (int i = 0; i < nv; i++) {
         if (!m->surface[i]) continue;
-        long cx = cell_coord(s->x[0][i], inv_h), cy = cell_coord(s->x[1][i], inv_h), cz = cell_coord(s->x[2][i], inv_h);
+        long cx = cell_coord(POS(0, i), inv_h), cy = cell_coord(POS(1, i), inv_h), cz = cell_coord(POS(2, i), inv_h);
         uint32_t seen[27];
         int nseen = 0;
         for (int dz = -1; dz <= 1; dz++)
@@ -66,7 +71,7 @@ static void rebuild(const am_model* m, am_state* s)
                     seen[nseen++] = b;
                     for (int j = s->bucket_head[b]; j >= 0; j = s->bucket_next[j]) {
                         if (j <= i) continue;
-                        am_real ex = s->x[0][j] - s->x[0][i], ey = s->x[1][j] - s->x[1][i], ez = s->x[2][j] - s->x[2][i];
+                        am_real ex = OFFSET(m->x0, s->x, 0, i, j), ey = OFFSET(m->x0, s->x, 1, i, j), ez = OFFSET(m->x0, s->x, 2, i, j);
                         /* a far pair is out on one axis already (and its square might leave a
                          * fixed-point range) */
                         if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
@@ -122,12 +127,12 @@ static int needs_rebuild(const am_model* m, const am_state* s)
 /* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
  * a chunk of the list at once (no branch: the compiler vectorises it) */
 #define PAIR_CHUNK 64
-static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, const vox_row* restrict x,
-                     const am_real* restrict scale, int32_t* restrict touch)
+static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, const vox_row* restrict x0,
+                     const vox_row* restrict x, const am_real* restrict scale, int32_t* restrict touch)
 {
     for (int j = 0; j < n; j++) {
         const int a = pa[j], b = pb[j];
-        am_real ex = x[0][b] - x[0][a], ey = x[1][b] - x[1][a], ez = x[2][b] - x[2][a];
+        am_real ex = OFFSET(x0, x, 0, a, b), ey = OFFSET(x0, x, 1, a, b), ez = OFFSET(x0, x, 2, a, b);
         am_real reach = AM_MUL(rad, scale[a] + scale[b]);
         am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
         touch[j] = !(d2 >= AM_MUL(reach, reach)) & (d2 > AM_R(0));
@@ -146,11 +151,11 @@ void am_sim_collide(const am_model* m, am_state* s)
     for (int k = 0; k < s->npairs; k++) {
         if (k % PAIR_CHUNK == 0) {
             int n = s->npairs - k < PAIR_CHUNK ? s->npairs - k : PAIR_CHUNK;
-            overlaps(n, rad, s->pa + k, s->pb + k, (const vox_row*)s->x, s->s, touch);
+            overlaps(n, rad, s->pa + k, s->pb + k, (const vox_row*)m->x0, (const vox_row*)s->x, s->s, touch);
         }
         if (!touch[k % PAIR_CHUNK]) continue;
         const int a = s->pa[k], b = s->pb[k];
-        am_real ex = s->x[0][b] - s->x[0][a], ey = s->x[1][b] - s->x[1][a], ez = s->x[2][b] - s->x[2][a];
+        am_real ex = OFFSET(m->x0, s->x, 0, a, b), ey = OFFSET(m->x0, s->x, 1, a, b), ez = OFFSET(m->x0, s->x, 2, a, b);
         am_real reach = AM_MUL(rad, s->s[a] + s->s[b]);
         am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
         if (d2 >= AM_MUL(reach, reach) || !(d2 > AM_R(0))) continue;

@@ -119,11 +119,13 @@ static inline void link_kin_from(quat qn, quat qp, vec3 d, int axis, link_kin* k
     k->rot = qt(1, 0, 0, 0);
 }
 
-/* the same from the state, for the link from voxel a to voxel b */
-static inline void link_kin_small(const am_state* s, int a, int b, int axis, link_kin* k)
+/* the same from the state, for the link from voxel a to voxel b: the offset is the rest lattice's
+ * L along the axis plus the difference of the displacements, as in the step */
+static inline void link_kin_small(const am_model* m, const am_state* s, int a, int b, int axis, link_kin* k)
 {
+    am_real dx = s->x[0][b] - s->x[0][a], dy = s->x[1][b] - s->x[1][a], dz = s->x[2][b] - s->x[2][a];
     link_kin_from(qt(s->q[0][a], s->q[1][a], s->q[2][a], s->q[3][a]), qt(s->q[0][b], s->q[1][b], s->q[2][b], s->q[3][b]),
-                  v3(s->x[0][b] - s->x[0][a], s->x[1][b] - s->x[1][a], s->x[2][b] - s->x[2][a]), axis, k);
+                  v3(axis == 0 ? dx + m->L : dx, axis == 1 ? dy + m->L : dy, axis == 2 ? dz + m->L : dz), axis, k);
 }
 
 /* per-component choices (on ? a : b), written so that loops over links stay vectorisable */
@@ -182,6 +184,13 @@ static inline am_real am_sim_vel(const am_model* m, const am_state* s, int c, in
 #else
 static inline am_real am_sim_vel(const am_model* m, const am_state* s, int c, int i) { (void)m; return s->v[c][i]; }
 #endif
+
+/* the centre of voxel i along c in model units, in double: the rest lattice plus the displacement
+ * (diagnostics only; the step works on displacements) */
+static inline double am_sim_pos(const am_model* m, const am_state* s, int c, int i)
+{
+    return AM_TO_DOUBLE(m->x0[c][i]) + AM_TO_DOUBLE(s->x[c][i]);
+}
 
 /* self-collision forces into s->fc, rebuilding the candidate list when needed (sim_collide.c) */
 void am_sim_collide(const am_model* m, am_state* s);

@@ -63,7 +63,7 @@ am_env am_default_env(void)
     e.temp_base = AM_P(0);
     e.temp_amplitude = AM_P(30);
     e.period_steps = 500;
-    e.dt_frac = AM_P(0.3);
+    e.dt_frac = AM_P(0.9);
     e.lift = AM_P(0);
     e.zeta_internal_scale = AM_P(1);
     e.zeta_global_scale = AM_P(1);
@@ -340,6 +340,8 @@ void am_state_reset(const am_model* m, am_state* s)
     s->npairs = -1; /* the first step builds the collision list */
     s->max_npairs = 0;
     s->scales_valid = 0; /* the first step sets scales and rest lengths */
+    s->damp_dt = AM_R(0);   /* and the damping for dt */
+    s->glob_scale = AM_R(1);
 #if defined(AM_REAL_FIXED_POINT)
     memset(s->x_rem, 0, sizeof s->x_rem);
     memset(s->p_rem, 0, sizeof s->p_rem);
@@ -352,7 +354,7 @@ void am_state_reset(const am_model* m, am_state* s)
     }
     for (int i = 0; i < nv; i++) {
         for (int c = 0; c < 3; c++) {
-            s->x[c][i] = m->x0[c][i];
+            s->x[c][i] = AM_R(0); /* displacements from x0 */
             s->p[c][i] = s->h[c][i] = AM_R(0);
 #if defined(AM_COMPACT)
             s->mc[c][i] = AM_R(0);
@@ -360,7 +362,7 @@ void am_state_reset(const am_model* m, am_state* s)
             s->v[c][i] = s->w[c][i] = AM_R(0);
 #endif
             s->fext[c][i] = s->mext[c][i] = s->fc[c][i] = AM_R(0);
-            s->xref[c][i] = m->x0[c][i];
+            s->xref[c][i] = AM_R(0);
         }
         s->q[0][i] = AM_R(1);
         s->q[1][i] = s->q[2][i] = s->q[3][i] = AM_R(0);

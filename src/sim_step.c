@@ -180,6 +180,11 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * 12 (it clones it per axis and keeps the branches); only forced inlining would, and under forced
  * inlining gcc 12 fuses multiplies and adds (see check-fma in the Makefile). */
 
+/* the world offset x_pos - x_neg of the ends a, b: the rest lattice's L along the axis plus the
+ * difference of the displacements (amorph/sim.h: x holds displacements) */
+#define LINK_OFFSET(x, a, b)                                                                                  \
+    v3(axis == 0 ? (x[0][b] - x[0][a]) + L : x[0][b] - x[0][a], axis == 1 ? (x[1][b] - x[1][a]) + L : x[1][b] - x[1][a], \
+       axis == 2 ? (x[2][b] - x[2][a]) + L : x[2][b] - x[2][a])
 /* the two ends of entry l, and whether it is a link: x lane l joins voxels l - 1 and l (read
  * contiguously: the axis is a constant in each of link_forces' copies), and is a link when voxel
  * l's -x slot holds it (amorph/sim.h) */
@@ -200,7 +205,7 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
  * elements. No branch: the compiler vectorises it. Returns bit 0 when some link is strained
  * beyond AM_DIVERGE_STRAIN (or NaN), bit 1 when some link's switch turns on (then its results are
  * wrong and the caller runs full_pass on the range). */
-static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, const am_index* restrict lpos,
+static int small_pass(int l0, int l1, int axis, am_real L, const am_index* restrict lneg, const am_index* restrict lpos,
                       const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                       const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
@@ -214,7 +219,7 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
         LINK_ENDS(l);
         link_kin k;
         link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
-                      v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
+                      LINK_OFFSET(x, a, b), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
         any_large |= live & large_switch(&k, 0, inv_rest);
         link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
@@ -227,7 +232,7 @@ static int small_pass(int l0, int l1, int axis, const am_index* restrict lneg, c
 /* the links [l0, l1), all along one axis: the large-angle switch with its hysteresis, and each
  * link with the frame its switch says (both frames are computed, one is kept: no branch, the
  * compiler vectorises it). Returns 1 when some link is strained beyond AM_DIVERGE_STRAIN (or NaN). */
-static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, const am_index* restrict lpos,
+static int full_pass(int l0, int l1, int axis, am_real L, const am_index* restrict lneg, const am_index* restrict lpos,
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
@@ -241,7 +246,7 @@ static int full_pass(int l0, int l1, int axis, const am_index* restrict lneg, co
         LINK_ENDS(l);
         link_kin k;
         link_kin_from(qt(q[0][a], q[1][a], q[2][a], q[3][a]), qt(q[0][b], q[1][b], q[2][b], q[3][b]),
-                      v3(x[0][b] - x[0][a], x[1][b] - x[1][a], x[2][b] - x[2][a]), axis, &k);
+                      LINK_OFFSET(x, a, b), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
         int lg = live & large_switch(&k, large[l], inv_rest);
 #if defined(AM_REAL_FIXED_POINT)
@@ -310,11 +315,11 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
         int was_large = 0, r = 2;
         for (int l = c0; l < c1; l++) was_large |= s->large[l];
         if (!was_large)
-            r = small_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
-                           m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
+            r = small_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
+                           s->damp_t, s->damp_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
         if (r & 2)
-            r = full_pass(c0, c1, axis, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3, m->c_t,
-                          m->c_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
+            r = full_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
+                          s->damp_t, s->damp_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
                           strain, o);
         bad |= r & 1;
 #if defined(AM_COMPACT)
@@ -324,72 +329,70 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
     return bad;
 }
 
-/* floor contact of voxel i: normal force and the static/kinetic friction state machine. F is the
- * voxel's total force without the floor; returns 1 when the horizontal motion is stuck. */
+/* the floor's penetration of voxel i: half its current edge less its height (z = x0 + displacement) */
+#define FLOOR_PEN(scale, L, z0, z) (AM_MUL(AM_MUL(AM_R(0.5), (scale)), (L)) - (z0) - (z))
+
+/* floor contact of voxel i (docs/physics.md, Gravity, floor, friction). F is the voxel's total force
+ * without the floor. Adds the normal force (spring plus collision damping, never pulling) and
+ * friction, the seed's static/kinetic model, which only ever resists: every decision is taken on
+ * friction's own impulse, never on the elastic forces, and in one step the floor's horizontal
+ * impulse never exceeds mu_s N dt (mu_k N dt when that is larger), N the contact's spring force.
+ * Returns 1 when the voxel is stuck: then the caller zeroes its horizontal force and momentum, an
+ * impulse of -(p_h + F_h dt), which the test below has bounded. */
 static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
 {
-    am_real pen = AM_MUL(AM_MUL(AM_R(0.5), s->s[i]), m->L) - s->x[2][i];
+    const am_real pen = FLOOR_PEN(s->s[i], m->L, m->x0[2][i], s->x[2][i]);
     if (!(pen > AM_R(0))) {
         s->contact[i] = 0;
         return 0;
     }
-    am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen) - AM_MUL(m->c_col[AM_VC(m, i)], am_sim_vel(m, s, 2, i));
-    if (N < AM_R(0)) N = AM_R(0); /* the floor pushes, never pulls */
-    F->z += N;
+    const am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen); /* the spring force: friction's N */
+    am_real Fn = N - AM_MUL(m->c_col[AM_VC(m, i)], am_sim_vel(m, s, 2, i));
+    F->z += Fn < AM_R(0) ? AM_R(0) : Fn; /* the floor pushes, never pulls */
 
-    /* squared norms as wide products: in the fixed-point build these forces and speeds are small
-     * (gravity is 1e-4 of a unit) and their squares would fall below the resolution */
-    const am_real vx = am_sim_vel(m, s, 0, i), vy = am_sim_vel(m, s, 1, i);
-    am_wide v2 = AM_MULW(vx, vx) + AM_MULW(vy, vy);
-    if (s->contact[i] == 0) s->contact[i] = v2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
-    am_wide fh2 = AM_MULW(F->x, F->x) + AM_MULW(F->y, F->y);
-    if (s->contact[i] == 1) {
-        am_real lim = AM_MUL(m->mu_s[AM_VC(m, i)], N);
-        if (fh2 <= AM_MULW(lim, lim)) {
-            F->x = F->y = AM_R(0);
+    /* squared norms as wide products: in the fixed-point build these impulses are small and their
+     * squares would fall below the resolution */
+    const am_real dt = s->dt, px = s->p[0][i], py = s->p[1][i];
+    const am_real jk = AM_MUL(AM_MUL(m->mu_k[AM_VC(m, i)], N), dt); /* kinetic friction's impulse in a step */
+    const am_real js = AM_MUL(AM_MUL(m->mu_s[AM_VC(m, i)], N), dt); /* static friction's bound */
+    const am_wide p2 = AM_MULW(px, px) + AM_MULW(py, py);
+    if (s->contact[i] == 0) s->contact[i] = p2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
+    am_real ux, uy; /* the unit direction friction acts along */
+    if (s->contact[i] == 2 && p2 > AM_MULW(jk, jk)) {
+        /* sliding, and kinetic friction alone does not stop it within the step: against the motion */
+#if defined(AM_REAL_FIXED_POINT)
+        am_real n = AM_WIDE_SQRT(p2);
+        ux = -AM_DIV(px, n);
+        uy = -AM_DIV(py, n);
+#else
+        am_real inv = AM_DIV(AM_R(1), am_sqrt(p2));
+        ux = -AM_MUL(px, inv);
+        uy = -AM_MUL(py, inv);
+#endif
+    } else {
+        /* at rest, or kinetic friction alone stops it within the step: static friction holds it if
+         * the impulse that stops it, j = -(p_h + F_h dt), is within mu_s N dt */
+        const am_real jx = -(px + AM_MUL(F->x, dt)), jy = -(py + AM_MUL(F->y, dt));
+        const am_wide j2 = AM_MULW(jx, jx) + AM_MULW(jy, jy);
+        if (j2 <= AM_MULW(js, js) || j2 <= AM_MULW(jk, jk)) {
+            s->contact[i] = 1;
             return 1;
         }
-        s->contact[i] = 2; /* breaks loose: kinetic friction from this step */
-    }
-    /* sliding: kinetic friction against the velocity (against the force when not yet moving) */
-    am_real fk = AM_MUL(m->mu_k[AM_VC(m, i)], N);
-    am_real dx, dy;
+        /* it breaks loose (or keeps sliding): kinetic friction against the motion it would have */
+        s->contact[i] = 2;
 #if defined(AM_REAL_FIXED_POINT)
-    /* the direction as quotients (1 / |v| may be beyond the range) */
-    if (v2 > 0) {
-        am_real n = AM_WIDE_SQRT(v2);
-        dx = AM_DIV(vx, n);
-        dy = AM_DIV(vy, n);
-    } else if (fh2 > 0) {
-        am_real n = AM_WIDE_SQRT(fh2);
-        dx = AM_DIV(F->x, n);
-        dy = AM_DIV(F->y, n);
-    } else {
+        am_real n = AM_WIDE_SQRT(j2);
+        ux = AM_DIV(jx, n);
+        uy = AM_DIV(jy, n);
 #else
-    if (v2 > AM_R(0)) {
-        am_real inv = AM_DIV(AM_R(1), am_sqrt(v2));
-        dx = AM_MUL(vx, inv);
-        dy = AM_MUL(vy, inv);
-    } else if (fh2 > AM_R(0)) {
-        am_real inv = AM_DIV(AM_R(1), am_sqrt(fh2));
-        dx = AM_MUL(F->x, inv);
-        dy = AM_MUL(F->y, inv);
-    } else {
+        am_real inv = AM_DIV(AM_R(1), am_sqrt(j2));
+        ux = AM_MUL(jx, inv);
+        uy = AM_MUL(jy, inv);
 #endif
-        s->contact[i] = 1;
-        return 1;
     }
-    am_real fx = F->x - AM_MUL(fk, dx), fy = F->y - AM_MUL(fk, dy);
-    /* friction may stop the voxel within the step but never reverse it: then it sticks */
-    am_real px = s->p[0][i], py = s->p[1][i];
-    am_real nx = px + AM_MUL(fx, s->dt), ny = py + AM_MUL(fy, s->dt);
-    if (v2 > AM_R(0) && AM_MULW(nx, px) + AM_MULW(ny, py) <= AM_R(0)) {
-        s->contact[i] = 1;
-        F->x = F->y = AM_R(0);
-        return 1;
-    }
-    F->x = fx;
-    F->y = fy;
+    const am_real fk = AM_MUL(m->mu_k[AM_VC(m, i)], N);
+    F->x += AM_MUL(fk, ux);
+    F->y += AM_MUL(fk, uy);
     return 0;
 }
 
@@ -486,11 +489,12 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, T
 /* touch[j] = 1 when voxel i0 + j (j < n) reaches below the floor: the test of floor_contact for a
  * chunk of voxels at once (no branch: the compiler vectorises it); returns 1 when one does */
 #define FLOOR_CHUNK 64
-static int floor_touch(int n, am_real L, const am_real* restrict scale, const am_real* restrict z, int32_t* restrict touch)
+static int floor_touch(int n, am_real L, const am_real* restrict scale, const am_real* restrict z0, const am_real* restrict z,
+                       int32_t* restrict touch)
 {
     int any = 0;
     for (int j = 0; j < n; j++) {
-        touch[j] = AM_MUL(AM_MUL(AM_R(0.5), scale[j]), L) - z[j] > AM_R(0);
+        touch[j] = FLOOR_PEN(scale[j], L, z0[j], z[j]) > AM_R(0);
         any |= touch[j];
     }
     return any;
@@ -505,7 +509,7 @@ static void floor_pass(const am_model* m, am_state* s)
     int32_t touch[FLOOR_CHUNK];
     for (int i0 = 0; i0 < nv; i0 += FLOOR_CHUNK) {
         const int n = nv - i0 < FLOOR_CHUNK ? nv - i0 : FLOOR_CHUNK;
-        if (!floor_touch(n, m->L, s->s + i0, s->x[2] + i0, touch)) { /* voxels go by layer: most chunks are above */
+        if (!floor_touch(n, m->L, s->s + i0, m->x0[2] + i0, s->x[2] + i0, touch)) { /* voxels go by layer: most chunks are above */
             for (int j = 0; j < n; j++) s->contact[i0 + j] = 0;
             continue;
         }
@@ -570,9 +574,63 @@ static void totals_start(int nv, int collisions, const vox_row* restrict fext, c
 }
 #endif
 
+/* the largest fraction of a link's two-body relative velocity its damping may remove in one step
+ * (docs/physics.md, Damping) */
+#if !defined(AM_DAMP_CAP)
+#define AM_DAMP_CAP AM_R(0.15)
+#endif
+/* the damping for this dt: each link's c_t and c_r, capped at AM_DAMP_CAP mu / dt (mu the link's
+ * reduced mass or inertia), so that one step removes at most that fraction of its two-body relative
+ * motion (docs/physics.md, Damping), and the global damping times glob_scale, capped likewise by the
+ * voxel's mass and inertia. Once per dt and scale, not per step. */
+static void damping_for_dt(const am_model* m, am_state* s)
+{
+    s->damp_dt = s->dt;
+    s->glob_for_scale = s->glob_scale;
+    const am_real L = m->L, dt = s->dt, k = s->glob_scale;
+#if defined(AM_COMPACT)
+    const int n = AM_LC_CAP; /* per pair of materials */
+#else
+    const int n = m->nl;
+#endif
+    for (int c = 0; c < n; c++) {
+#if defined(AM_COMPACT)
+        const int ma = c / AM_MAX_MATERIALS, mb = c % AM_MAX_MATERIALS;
+        if (ma >= m->palette.count || mb >= m->palette.count) {
+            s->damp_t[c] = s->damp_r[c] = AM_R(0);
+            continue;
+        }
+        const am_real mass_a = m->mass[ma], mass_b = m->mass[mb];
+#else
+        const am_real mass_a = m->mass[m->lneg[c]], mass_b = m->mass[m->lpos[c]];
+#endif
+        /* the reduced mass and inertia of the pair, as sim_model.c damps them */
+        const am_real mu = AM_DIV(AM_MUL(mass_a, mass_b), mass_a + mass_b);
+        const am_real mu_I = AM_DIV(AM_MUL(mu, AM_MUL(L, L)), AM_R(6));
+        const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu), dt) : m->c_t[c];
+        const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu_I), dt) : m->c_r[c];
+        s->damp_t[c] = am_min(m->c_t[c], cap_t);
+        s->damp_r[c] = am_min(m->c_r[c], cap_r);
+    }
+    /* global damping: the same cap on a voxel's own velocity (never reached at the seed's 0.01) */
+#if defined(AM_COMPACT)
+    const int nvc = m->palette.count;
+#else
+    const int nvc = m->nv;
+#endif
+    for (int c = 0; c < nvc; c++) {
+        const am_real mass = m->mass[c], inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
+        const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mass), dt) : m->c_glob_t[c];
+        const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, inertia), dt) : m->c_glob_r[c];
+        s->glob_t[c] = am_min(AM_MUL(k, m->c_glob_t[c]), cap_t);
+        s->glob_r[c] = am_min(AM_MUL(k, m->c_glob_r[c]), cap_r);
+    }
+}
+
 void am_step(const am_model* m, am_state* s)
 {
     if (s->diverged) return;
+    if (s->damp_dt != s->dt || s->glob_for_scale != s->glob_scale) damping_for_dt(m, s);
     actuation(m, s);
     /* contacts and links both read the state at the start of the step */
     am_sim_collide(m, s);
@@ -589,7 +647,7 @@ void am_step(const am_model* m, am_state* s)
     bad |= link_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
     bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
     /* semi-implicit Euler: rotation and total force, floor and friction, translation */
-    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, TOTAL_ARG(m, s), m->mass, m->c_glob_t, m->c_glob_r,
+    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, TOTAL_ARG(m, s), m->mass, s->glob_t, s->glob_r,
                         m->inv_inertia, m->fixed, m->mat, v VEL_ARG(m), s->fc, s->h, w, s->q REM_ARG(s->h_rem));
     if (m->env.floor) floor_pass(m, s);
     bad |= voxel_translate(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), (const vox_row*)s->fc, m->inv_mass,

@@ -174,7 +174,8 @@ typedef struct am_state {
     int pairs_overflow;      /* 1 when the collision candidate list hit AM_MAX_PAIRS */
     long rebuilds;           /* collision candidate list rebuilds */
     /* per voxel (nv) */
-    am_real x[3][AM_MAX_VOXELS];  /* centre, m */
+    am_real x[3][AM_MAX_VOXELS];  /* displacement of the centre from the rest lattice (model x0), m:
+                                   * small numbers keep small increments (docs/physics.md) */
     am_real q[4][AM_MAX_VOXELS];  /* orientation quaternion w, x, y, z */
     am_real p[3][AM_MAX_VOXELS];  /* linear momentum, kg m/s */
     am_real h[3][AM_MAX_VOXELS];  /* angular momentum, kg m^2/s */
@@ -193,6 +194,14 @@ typedef struct am_state {
      * of its two voxels' materials */
     am_real pair_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS];     /* current rest length, m */
     am_real pair_inv_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS]; /* its inverse, 1/m */
+    /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t and c_r,
+     * each capped so that one step removes at most AM_DAMP_CAP of its link's two-body relative motion
+     * (docs/physics.md, Damping); recomputed when dt or glob_scale changes */
+    am_real damp_t[AM_LC_CAP], damp_r[AM_LC_CAP];
+    am_real glob_t[AM_VC_CAP], glob_r[AM_VC_CAP]; /* the global damping likewise, per voxel constant */
+    am_real glob_scale;                  /* multiplies the global damping (1; 0 while the evaluation
+                                          * settles a body with kinetic damping) */
+    am_real damp_dt, glob_for_scale;     /* the dt and scale they were computed for (0: not yet) */
     /* per link (nl + 1; index nl stays zero) */
     am_flag large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
 #if defined(AM_COMPACT)
@@ -255,9 +264,11 @@ typedef struct am_eval_def {
     int cycles;              /* actuation cycles of the movement segment (10) */
     int fitness;             /* AM_FIT_HORIZONTAL (default), AM_FIT_PLUS_X or AM_FIT_3D */
     int dt_search;           /* 1: the seed's empirical time step search instead of env.dt_frac */
-    long relax_max_steps;    /* relaxation ends here at the latest (4000) */
+    long relax_max_steps;    /* relaxation ends here at the latest (40000) */
     long relax_min_steps;    /* and not before this (200) */
-    am_param settle_speed;   /* m/s: relaxed when the RMS voxel speed stays below this (1e-3) */
+    am_param settle_speed;   /* m/s: relaxed when the RMS voxel speed stays below this (1e-4) */
+    long release_steps;      /* the last steps of relaxation, with the model's damping alone, over
+                              * which the RMS speed must stay below settle_speed (500) */
     am_record* record;       /* optional recording (may be NULL) */
 } am_eval_def;
 
@@ -270,7 +281,10 @@ typedef struct am_result {
     double dt;               /* s */
     long relax_steps, move_steps, steps;
     int diverged;            /* 1 when the run diverged */
-    int settled;             /* 1 when the relaxation met the speed criterion */
+    int settled;             /* 1 when the body came to rest: calm through the release window */
+    double residual_speed;   /* m/s: the largest RMS voxel speed over the last release window
+                              * (the last RMS speed when relaxation ran out first) */
+    long kinetic_resets;     /* kinetic damping's stops during relaxation (docs/physics.md) */
     double sim_seconds;      /* simulated time, s */
     long rebuilds;           /* collision list rebuilds */
     int max_pairs;           /* largest collision candidate list */
