@@ -13,9 +13,10 @@ am_eval_def am_default_eval(void)
     d.cycles = 10;
     d.fitness = AM_FIT_HORIZONTAL;
     d.dt_search = 0;
-    d.relax_max_steps = 4000;
+    d.relax_max_steps = 40000;
     d.relax_min_steps = 200;
-    d.settle_speed = AM_P(1e-3);
+    d.settle_speed = AM_P(1e-4);
+    d.release_steps = 500;
     d.record = 0;
     return d;
 }
@@ -43,7 +44,7 @@ double am_strain_energy(const am_model* m, const am_state* s)
         if (!am_link_live(m, l)) continue;
         link_kin k;
         int axis = link_axis(m, l);
-        link_kin_small(s, m->lneg[l], m->lpos[l], axis, &k);
+        link_kin_small(m, s, m->lneg[l], m->lpos[l], axis, &k);
         link_kin_large(&k, s->large[l]);
         double rest = AM_TO_DOUBLE(m->L) * 0.5 * (AM_TO_DOUBLE(s->s[m->lneg[l]]) + AM_TO_DOUBLE(s->s[m->lpos[l]]));
         double u = AM_TO_DOUBLE(k.p.x) - rest, y = AM_TO_DOUBLE(k.p.y), z = AM_TO_DOUBLE(k.p.z);
@@ -62,9 +63,10 @@ double am_potential_energy(const am_model* m, const am_state* s)
 {
     double e = 0;
     for (int i = 0; i < m->nv; i++) {
-        e += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * AM_TO_DOUBLE(m->gravity) * AM_TO_DOUBLE(s->x[2][i]);
+        const double z = AM_TO_DOUBLE(m->x0[2][i]) + AM_TO_DOUBLE(s->x[2][i]);
+        e += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * AM_TO_DOUBLE(m->gravity) * z;
         if (m->env.floor) {
-            double pen = 0.5 * AM_TO_DOUBLE(s->s[i]) * AM_TO_DOUBLE(m->L) - AM_TO_DOUBLE(s->x[2][i]);
+            double pen = 0.5 * AM_TO_DOUBLE(s->s[i]) * AM_TO_DOUBLE(m->L) - z;
             if (pen > 0) e += 0.5 * AM_TO_DOUBLE(m->k_floor[AM_VC(m, i)]) * pen * pen;
         }
     }
@@ -76,7 +78,7 @@ void am_com(const am_model* m, const am_state* s, double out[3])
     double mt = 0, c[3] = {0, 0, 0};
     for (int i = 0; i < m->nv; i++) {
         mt += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]);
-        for (int k = 0; k < 3; k++) c[k] += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * AM_TO_DOUBLE(s->x[k][i]);
+        for (int k = 0; k < 3; k++) c[k] += AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * am_sim_pos(m, s, k, i);
     }
     for (int k = 0; k < 3; k++) out[k] = (mt > 0 ? c[k] / mt : 0) * m->unit_len;
 }
@@ -85,7 +87,7 @@ void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang
 {
     for (int k = 0; k < 3; k++) lin[k] = ang[k] = 0;
     for (int i = 0; i < m->nv; i++) {
-        double x = AM_TO_DOUBLE(s->x[0][i]), y = AM_TO_DOUBLE(s->x[1][i]), z = AM_TO_DOUBLE(s->x[2][i]);
+        double x = am_sim_pos(m, s, 0, i), y = am_sim_pos(m, s, 1, i), z = am_sim_pos(m, s, 2, i);
         double px = AM_TO_DOUBLE(s->p[0][i]), py = AM_TO_DOUBLE(s->p[1][i]), pz = AM_TO_DOUBLE(s->p[2][i]);
         lin[0] += px; lin[1] += py; lin[2] += pz;
         ang[0] += y * pz - z * py + AM_TO_DOUBLE(s->h[0][i]);
@@ -125,9 +127,7 @@ void am_record_frame(const am_model* m, const am_state* s, am_record* rec)
     }
     float* f = rec->pose + (long)rec->frames * m->nv * 7;
     for (int i = 0; i < m->nv; i++) {
-        f[7 * i + 0] = (float)am_to_si(m, s->x[0][i], AM_DIM_LENGTH);
-        f[7 * i + 1] = (float)am_to_si(m, s->x[1][i], AM_DIM_LENGTH);
-        f[7 * i + 2] = (float)am_to_si(m, s->x[2][i], AM_DIM_LENGTH);
+        for (int c = 0; c < 3; c++) f[7 * i + c] = (float)(am_sim_pos(m, s, c, i) * am_unit(m, AM_DIM_LENGTH));
         for (int c = 0; c < 4; c++) f[7 * i + 3 + c] = (float)AM_TO_DOUBLE(s->q[c][i]);
     }
     if (rec->step) rec->step[rec->frames] = s->step;
@@ -197,15 +197,38 @@ am_real am_dt_search(const am_model* m, am_state* scratch)
     return AM_MUL(AM_R(0.95), stable);
 }
 
-static double rms_speed(const am_model* m, const am_state* s)
+/* the RMS voxel speed, m/s, and the kinetic energy (model units) */
+static double motion(const am_model* m, const am_state* s, double* ke)
 {
-    double sum = 0;
-    for (int i = 0; i < m->nv; i++)
+    double sum = 0, e = 0;
+    for (int i = 0; i < m->nv; i++) {
+        double v2 = 0, w2 = 0;
         for (int c = 0; c < 3; c++) {
             const double vc = AM_TO_DOUBLE(am_sim_vel(m, s, c, i));
-            sum += vc * vc;
+            const double hc = AM_TO_DOUBLE(s->h[c][i]);
+            v2 += vc * vc;
+            w2 += hc * hc;
         }
+        sum += v2;
+        e += 0.5 * AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * v2 + 0.5 * w2 * AM_TO_DOUBLE(m->inv_inertia[AM_VC(m, i)]);
+    }
+    *ke = e;
     return sqrt(sum / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
+}
+
+/* every voxel's linear and angular momentum to zero (kinetic damping's stop) */
+static void stop_all(const am_model* m, am_state* s)
+{
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < m->nv; i++) {
+            s->p[c][i] = s->h[c][i] = AM_R(0);
+#if !defined(AM_COMPACT)
+            s->v[c][i] = s->w[c][i] = AM_R(0);
+#endif
+#if defined(AM_REAL_FIXED_POINT)
+            s->p_rem[c][i] = s->h_rem[c][i] = 0;
+#endif
+        }
 }
 
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
@@ -225,17 +248,52 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     }
     am_record_frame(m, s, rec);
 
-    /* relaxation: no actuation until the RMS speed stays under settle_speed for 20 steps */
-    long calm = 0;
+    /* relaxation (docs/physics.md, Evaluation): no actuation. Settling: kinetic damping in place of
+     * the global damping. Every time the kinetic energy passes a peak, all momenta are set to zero,
+     * so the body stops near the bottom of each swing and comes to rest in equilibrium in a few
+     * swings, while a body that must topple falls at its own pace (the seed's global damping, a
+     * drag on every voxel, would make it creep for seconds). The internal damping stays. Once the
+     * RMS speed has stayed below settle_speed for CALM_STEPS steps, the release: the model's damping
+     * alone for release_steps; the body has settled when the RMS speed stays below settle_speed
+     * through it, else settling goes on. */
+    enum { CALM_STEPS = 50 };
+    const double calm_speed = (double)def->settle_speed;
+    long calm = 0, release = -1; /* release: steps into the release window, -1 while settling */
+    double ke_prev = 0, worst = 0, speed = 0;
+    s->glob_scale = AM_R(0);
     while (s->step < def->relax_max_steps && !s->diverged) {
         am_step(m, s);
         am_record_frame(m, s, rec);
-        calm = rms_speed(m, s) < (double)def->settle_speed ? calm + 1 : 0;
-        if (calm >= 20 && s->step >= def->relax_min_steps) {
-            out->settled = 1;
-            break;
+        double ke;
+        speed = motion(m, s, &ke);
+        if (release < 0) {
+            if (ke < ke_prev) { /* past a peak: stop */
+                stop_all(m, s);
+                out->kinetic_resets++;
+                ke = 0;
+            }
+            ke_prev = ke;
+            calm = speed < calm_speed ? calm + 1 : 0;
+            if (calm >= CALM_STEPS && s->step >= def->relax_min_steps) {
+                release = 0;
+                worst = 0;
+                s->glob_scale = AM_R(1);
+            }
+        } else {
+            worst = speed > worst ? speed : worst;
+            if (!(speed < calm_speed)) { /* moving again: back to settling */
+                release = -1;
+                calm = 0;
+                ke_prev = ke;
+                s->glob_scale = AM_R(0);
+            } else if (++release >= def->release_steps) {
+                out->settled = 1;
+                break;
+            }
         }
     }
+    out->residual_speed = out->settled ? worst : speed;
+    s->glob_scale = AM_R(1); /* the movement segment: the model's damping */
     out->relax_steps = s->step;
     double c0[3], c1[3];
     am_com(m, s, c0);
