@@ -504,13 +504,14 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
             if (v != 0) warn(c, it[0], "<Integrator> %ld not supported: amorph integrates with semi-implicit Euler", v);
         }
         if (it[1] >= 0) {
-            /* a setting of Voxelyze's integrator: amorph's is stable to about 0.4 of its dt_rec
-             * (docs/physics.md), so a larger fraction keeps amorph's default */
+            /* a setting of Voxelyze's integrator: amorph's default (0.9 of its dt_rec) keeps a margin
+             * of two below where the seed's sphere diverges (docs/physics.md), so a larger fraction
+             * keeps the default */
             am_param f = AM_P(0);
             if ((st = real_in(c, it[1], &f, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
             if (f > env->dt_frac)
-                warn(c, it[1], "<DtFrac> %g is above the step amorph's integrator is stable at: %g used (amorph sim --dt-frac "
-                               "overrides)", (double)f, (double)env->dt_frac);
+                warn(c, it[1], "<DtFrac> %g is above amorph's default step, kept with a margin below its stability limit: %g "
+                               "used (amorph sim --dt-frac overrides)", (double)f, (double)env->dt_frac);
             else
                 env->dt_frac = f;
         }

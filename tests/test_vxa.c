@@ -336,7 +336,7 @@ static void test_vxa_warnings(void)
     char err[AM_ERR_MAX] = "";
     const char* t = "<VXA Version=\"1.1\">\n"
                     "<GPU><HeapSize>0.5</HeapSize></GPU>\n"
-                    "<Simulator><Integration><Integrator>1</Integrator><DtFrac>0.9</DtFrac></Integration></Simulator>\n"
+                    "<Simulator><Integration><Integrator>1</Integrator><DtFrac>1.5</DtFrac></Integration></Simulator>\n"
                     "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X></FRegion></Boundary_Conditions>"
                     "</Environment>\n"
                     "<VXC><Lattice><X_Dim_Adj>0.5</X_Dim_Adj></Lattice><Palette><Material ID=\"7\">\n"
@@ -353,8 +353,8 @@ static void test_vxa_warnings(void)
         "w.vxa:7: warning: <MatModel> 1 (non-linear) not supported: material 1 is linear elastic here\n"
         "w.vxa:8: warning: unsupported tag <PhaseOffset> ignored\n"
         "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
-        "w.vxa:3: warning: <DtFrac> 0.9 is above the step amorph's integrator is stable at: 0.3 used (amorph sim --dt-frac "
-        "overrides)\n"
+        "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
+        "used (amorph sim --dt-frac overrides)\n"
         "w.vxa:5: warning: unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material "
         "instead)\n";
     CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 9, "%d warnings:\n%s", info_a.warnings, info_a.warning);
