@@ -1,6 +1,7 @@
 # tests/cli_fixed.sh: the fixed-point build (make REAL=fixed, docs/fixed.md) against this float
 # build: the fitness of the reference robots (sphere:8, cube:4 and random genomes of every
-# representation) within 5% (or both below 1e-7 m, a body that does not move). Needs
+# representation) within 5% (or both below 1e-5 m: a body that does not locomote; a settled body
+# may drift up to that much with the actuation off, docs/physics.md, Evaluation). Needs
 # $FIXED_BUILD/amorph (exported by `make test`); skipped otherwise. Run from the repository root.
 . tests/shlib.sh
 
@@ -24,7 +25,7 @@ compare() {
     "$AMORPH" sim "$@" --json >"$TMPD/f" 2>"$TMPD/err" || { ko "$name: float sim failed: $(head -c 200 "$TMPD/err")"; return; }
     "$FIXED_BUILD/amorph" sim "$@" --json >"$TMPD/x" 2>"$TMPD/err" || { ko "$name: fixed sim failed: $(head -c 200 "$TMPD/err")"; return; }
     a=$(fitness_of "$TMPD/f"); b=$(fitness_of "$TMPD/x")
-    if awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; m = a < 0 ? -a : a; exit !(a >= 0 && b >= 0 && (d <= 0.05 * m || (m < 1e-7 && b < 1e-7))) }'; then
+    if awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; m = a < 0 ? -a : a; exit !(a >= 0 && b >= 0 && (d <= 0.05 * m || (m < 1e-5 && b < 1e-5))) }'; then
         ok; echo "  $name: float $a m, fixed $b m"
     else ko "$name: fitness float $a m, fixed $b m: more than 5% apart"; fi
 }
