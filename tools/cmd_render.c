@@ -291,7 +291,7 @@ static const char render_help[] =
     "  --width W          pixels, 200..4096 (1600)\n"
     "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
     "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
-    "  --relax-max N      relaxation steps at most (20000)\n";
+    "  --relax-max N      relaxation steps at most (40000)\n";
 
 int cmd_render(int argc, char** argv)
 {

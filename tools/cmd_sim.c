@@ -16,13 +16,13 @@ static const char sim_help[] =
     "  --amplitude DEG       temperature amplitude (30)\n"
     "  --dt-search           the seed's empirical time step search\n"
     "  --dt SECONDS          a fixed time step instead\n"
-    "  --dt-frac F           time step as a fraction of the analytic one (0.3)\n"
+    "  --dt-frac F           time step as a fraction of the analytic one (0.9)\n"
     "  --collisions on|off   self-collision (on)\n"
     "  --floor on|off        the floor (on)\n"
     "  --gravity G           m/s^2 (9.80665)\n"
     "  --cte linear|volume   CTE convention (volume, the seed's)\n"
     "  --fitness horizontal|x|3d   centre of mass displacement measured (horizontal)\n"
-    "  --relax-max N         relaxation steps at most (20000)\n"
+    "  --relax-max N         relaxation steps at most (40000)\n"
     "  --release-steps N     steps, at the end of the relaxation, of the model's own damping through\n"
     "                        which the body must stay calm to count as settled (500)\n"
     "  --json                one JSON object instead of name = value lines\n"
@@ -205,11 +205,12 @@ int cmd_sim(int argc, char** argv)
 /* times `steps` actuated steps of one scene after a short warm-up, at the default time step;
  * *vps_out gets the voxel steps per second, *k_out the simulated seconds per voxel step (dt / nv,
  * the same in every run of the scene), so that vps * k is the simulated seconds per second */
-static int bench_one(const char* scene, long steps, int collisions, double* vps_out, double* k_out)
+static int bench_one(const char* scene, long steps, int collisions, double dt_frac, double* vps_out, double* k_out)
 {
     char err[AM_ERR_MAX];
     am_env env = am_default_env();
     env.collisions = collisions;
+    if (dt_frac > 0) env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_frac);
     am_lattice* lat = &tool_work[0].lattice;
     if (am_scene_build(lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
     if (am_model_build(&tool_work[0].model, lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
@@ -237,11 +238,11 @@ static int bench_one(const char* scene, long steps, int collisions, double* vps_
 /* `repeat` runs of bench_one, then the best and the median figure: on a shared or virtual
  * machine whose speed moves from minute to minute, the best of several runs is the figure of
  * the code */
-static int bench_scene(const char* scene, long steps, int collisions, int repeat)
+static int bench_scene(const char* scene, long steps, int collisions, double dt_frac, int repeat)
 {
     double v[64], sk = 0; /* voxel steps per second; simulated seconds per voxel step */
     for (int k = 0; k < repeat; k++) {
-        if (bench_one(scene, steps, collisions, &v[k], &sk)) return 2;
+        if (bench_one(scene, steps, collisions, dt_frac, &v[k], &sk)) return 2;
         for (int j = k; j > 0 && v[j] < v[j - 1]; j--) { /* sorted as they come */
             double t = v[j];
             v[j] = v[j - 1];
@@ -330,13 +331,14 @@ static void bench_kernels(void)
 #endif
 
 static const char bench_help[] =
-    "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--repeat N]\n"
+    "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--dt-frac F] [--repeat N]\n"
     "       amorph bench --evolve [--evals N]\n"
     "       amorph bench --kernels\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
     "Each scene's line: the time step (dt_frac of the analytic limit, dt_s), voxel steps per second\n"
     "and simulated seconds per wall second (sim_s_per_s), both over --steps actuated steps (2000).\n"
+    "--dt-frac F: another step than the default (to compare builds or steps at the same step).\n"
     "--repeat N: each scene N times (1 to 64), then the best, median and worst figure.\n"
     "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
     "each a run of N evaluations (60), and the speedup of the second core.\n"
@@ -350,6 +352,7 @@ int cmd_bench(int argc, char** argv)
     int coll = -1;
     long evolve_evals = 0;
     int kernels = 0, repeat = 1;
+    double dt_frac = 0; /* the default step */
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -366,6 +369,9 @@ int cmd_bench(int argc, char** argv)
         } else if (!strcmp(a, "--repeat")) {
             if (!tool_parse_long(v, 1, 64, &n)) return tool_usage_error("bench: --repeat needs a whole number from 1 to 64");
             repeat = (int)n, i++;
+        } else if (!strcmp(a, "--dt-frac")) {
+            if (!tool_parse_real(v, 1e-6, 100, &dt_frac)) return tool_usage_error("bench: --dt-frac needs a number in [1e-6, 100]");
+            i++;
         } else if (!strcmp(a, "--kernels")) {
             kernels = 1;
         } else if (!strcmp(a, "--evolve")) {
@@ -390,14 +396,14 @@ int cmd_bench(int argc, char** argv)
     }
     printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
     if (scene) {
-        if (coll != 0 && bench_scene(scene, steps, 1, repeat)) return 2;
-        if (coll != 1 && bench_scene(scene, steps, 0, repeat)) return 2;
+        if (coll != 0 && bench_scene(scene, steps, 1, dt_frac, repeat)) return 2;
+        if (coll != 1 && bench_scene(scene, steps, 0, dt_frac, repeat)) return 2;
         return 0;
     }
     const char* scenes[2] = {AM_MAX_DIM >= 20 ? "sphere:20" : "sphere:8", AM_MAX_DIM >= 10 ? "cube:10" : "cube:8"};
     for (int k = 0; k < 2; k++)
         for (int c = 0; c <= 1; c++)
-            if ((coll < 0 || coll == c) && bench_scene(scenes[k], steps, c, repeat)) return 2;
+            if ((coll < 0 || coll == c) && bench_scene(scenes[k], steps, c, dt_frac, repeat)) return 2;
     tool_bench_express();
     return 0;
 }

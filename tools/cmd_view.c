@@ -194,7 +194,7 @@ static const char view_help[] =
     "  --frames N         frames recorded, 2..1000 (200; fewer for big bodies)\n"
     "  --title TEXT       the page's heading (the robot's name)\n"
     "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
-    "  --relax-max N      relaxation steps at most (20000)\n";
+    "  --relax-max N      relaxation steps at most (40000)\n";
 
 int cmd_view(int argc, char** argv)
 {
