@@ -38,10 +38,10 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)AM_FLOOR_INT(AM_
 static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(x, inv_h)); }
 #endif
 
-/* the centre of voxel i along c (x holds displacements from the rest lattice x0), and the offset
- * from voxel a to voxel b: the rest lattice's offset plus the displacements' */
+/* the centre of voxel i along c: x holds displacements from the rest lattice x0. The desktop keeps
+ * the centres of the step in s->pos (collision_positions), the board computes them where read: the
+ * same values, so the same contacts */
 #define POS(c, i) (m->x0[c][i] + s->x[c][i])
-#define OFFSET(x0, x, c, a, b) ((x0[c][b] - x0[c][a]) + (x[c][b] - x[c][a]))
 
 static void rebuild(const am_model* m, am_state* s)
 {
@@ -71,7 +71,7 @@ static void rebuild(const am_model* m, am_state* s)
                     seen[nseen++] = b;
                     for (int j = s->bucket_head[b]; j >= 0; j = s->bucket_next[j]) {
                         if (j <= i) continue;
-                        am_real ex = OFFSET(m->x0, s->x, 0, i, j), ey = OFFSET(m->x0, s->x, 1, i, j), ez = OFFSET(m->x0, s->x, 2, i, j);
+                        am_real ex = POS(0, j) - POS(0, i), ey = POS(1, j) - POS(1, i), ez = POS(2, j) - POS(2, i);
                         /* a far pair is out on one axis already (and its square might leave a
                          * fixed-point range) */
                         if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
@@ -127,12 +127,27 @@ static int needs_rebuild(const am_model* m, const am_state* s)
 /* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
  * a chunk of the list at once (no branch: the compiler vectorises it) */
 #define PAIR_CHUNK 64
-static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, const vox_row* restrict x0,
-                     const vox_row* restrict x, const am_real* restrict scale, int32_t* restrict touch)
+#if defined(AM_COMPACT)
+#define CENTRES_PARAM const vox_row *restrict x0, const vox_row *restrict x
+#define CENTRES_ARG(m, s) (const vox_row*)(m)->x0, (const vox_row*)(s)->x
+#define CENTRE(c, i) (x0[c][i] + x[c][i])
+#else
+#define CENTRES_PARAM const vox_row* restrict pos
+#define CENTRES_ARG(m, s) (const vox_row*)(s)->pos
+#define CENTRE(c, i) pos[c][i]
+/* the centres of the step, once, for the candidate pairs to gather */
+static void collision_positions(int nv, const vox_row* restrict x0, const vox_row* restrict x, vox_row* restrict pos)
+{
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < nv; i++) pos[c][i] = x0[c][i] + x[c][i];
+}
+#endif
+static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, CENTRES_PARAM,
+                     const am_real* restrict scale, int32_t* restrict touch)
 {
     for (int j = 0; j < n; j++) {
         const int a = pa[j], b = pb[j];
-        am_real ex = OFFSET(x0, x, 0, a, b), ey = OFFSET(x0, x, 1, a, b), ez = OFFSET(x0, x, 2, a, b);
+        am_real ex = CENTRE(0, b) - CENTRE(0, a), ey = CENTRE(1, b) - CENTRE(1, a), ez = CENTRE(2, b) - CENTRE(2, a);
         am_real reach = AM_MUL(rad, scale[a] + scale[b]);
         am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
         touch[j] = !(d2 >= AM_MUL(reach, reach)) & (d2 > AM_R(0));
@@ -146,16 +161,19 @@ void am_sim_collide(const am_model* m, am_state* s)
     for (int c = 0; c < 3; c++)
         for (int i = 0; i < nv; i++) s->fc[c][i] = AM_R(0);
     if (needs_rebuild(m, s)) rebuild(m, s);
+#if !defined(AM_COMPACT)
+    collision_positions(nv, (const vox_row*)m->x0, (const vox_row*)s->x, s->pos);
+#endif
     const am_real rad = AM_MUL(AM_R(0.625), m->L);
     int32_t touch[PAIR_CHUNK];
     for (int k = 0; k < s->npairs; k++) {
         if (k % PAIR_CHUNK == 0) {
             int n = s->npairs - k < PAIR_CHUNK ? s->npairs - k : PAIR_CHUNK;
-            overlaps(n, rad, s->pa + k, s->pb + k, (const vox_row*)m->x0, (const vox_row*)s->x, s->s, touch);
+            overlaps(n, rad, s->pa + k, s->pb + k, CENTRES_ARG(m, s), s->s, touch);
         }
         if (!touch[k % PAIR_CHUNK]) continue;
         const int a = s->pa[k], b = s->pb[k];
-        am_real ex = OFFSET(m->x0, s->x, 0, a, b), ey = OFFSET(m->x0, s->x, 1, a, b), ez = OFFSET(m->x0, s->x, 2, a, b);
+        am_real ex = POS(0, b) - POS(0, a), ey = POS(1, b) - POS(1, a), ez = POS(2, b) - POS(2, a);
         am_real reach = AM_MUL(rad, s->s[a] + s->s[b]);
         am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
         if (d2 >= AM_MUL(reach, reach) || !(d2 > AM_R(0))) continue;

@@ -219,7 +219,11 @@ typedef struct am_state {
     int npairs;                          /* -1 until the first build */
     int max_npairs;                      /* largest list so far */
     am_index pa[AM_MAX_PAIRS], pb[AM_MAX_PAIRS];
-    am_real xref[3][AM_MAX_VOXELS];      /* positions at the last rebuild */
+    am_real xref[3][AM_MAX_VOXELS];      /* displacements at the last rebuild */
+#if !defined(AM_COMPACT)
+    am_real pos[3][AM_MAX_VOXELS];       /* scratch: the centres x0 + x of the step, for the contacts
+                                          * (the board computes them where read) */
+#endif
     am_index bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
     am_index bucket_next[AM_MAX_VOXELS];
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
