@@ -16,8 +16,8 @@ cd "$(dirname "$0")/.."
 # the number type is the first argument: float (default) or fixed, each with its pinned hash
 REAL=${1:-float}
 case "$REAL" in
-float) REPRO_EXPECT=${REPRO_EXPECT:-b9c47f68a0529b5f} ;;
-fixed) REPRO_EXPECT=${REPRO_EXPECT_FIXED:-cafd0eb2831d8585} ;;
+float) REPRO_EXPECT=${REPRO_EXPECT:-0ddbf177fd2d4de0} ;;
+fixed) REPRO_EXPECT=${REPRO_EXPECT_FIXED:-40442ae1fcc51267} ;;
 *) echo "repro: the number type must be float or fixed, not '$REAL'" >&2; exit 2 ;;
 esac
 REPRO_ARGS=${REPRO_ARGS:-"repro"}
