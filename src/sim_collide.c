@@ -41,7 +41,11 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(
 /* the centre of voxel i along c: x holds displacements from the rest lattice x0. The desktop keeps
  * the centres of the step in s->pos (collision_positions), the board computes them where read: the
  * same values, so the same contacts */
+#if defined(AM_COMPACT)
 #define POS(c, i) (m->x0[c][i] + s->x[c][i])
+#else
+#define POS(c, i) (s->pos[c][i])
+#endif
 
 static void rebuild(const am_model* m, am_state* s)
 {
@@ -160,10 +164,10 @@ void am_sim_collide(const am_model* m, am_state* s)
     const int nv = m->nv;
     for (int c = 0; c < 3; c++)
         for (int i = 0; i < nv; i++) s->fc[c][i] = AM_R(0);
-    if (needs_rebuild(m, s)) rebuild(m, s);
 #if !defined(AM_COMPACT)
     collision_positions(nv, (const vox_row*)m->x0, (const vox_row*)s->x, s->pos);
 #endif
+    if (needs_rebuild(m, s)) rebuild(m, s);
     const am_real rad = AM_MUL(AM_R(0.625), m->L);
     int32_t touch[PAIR_CHUNK];
     for (int k = 0; k < s->npairs; k++) {
