@@ -7,10 +7,9 @@
  * - with the seed's actuation each runs at the default step (0.9 dt_rec) without diverging;
  * - the seed's time step search gives a step under which the actuated sphere:20 and every body
  *   stay stable.
- * The float desktop build runs all 30; other builds (AddressSanitizer's and AM_TEST_QUICK=1, as
- * under valgrind, among them) the
- * first body of each representation that has at most QUICK_VOXELS voxels, with the actuation
- * off, to keep the suite's time. */
+ * The float desktop build runs all 30; other builds (AddressSanitizer's, and AM_TEST_QUICK=1 as
+ * under valgrind) only the bodies of at most QUICK_VOXELS voxels, with the actuation off, to keep
+ * the suite's time. */
 #include "amorph.h"
 #include "harness.h"
 
