@@ -197,22 +197,15 @@ am_real am_dt_search(const am_model* m, am_state* scratch)
     return AM_MUL(AM_R(0.95), stable);
 }
 
-/* the RMS voxel speed, m/s, and the kinetic energy (model units) */
-static double motion(const am_model* m, const am_state* s, double* ke)
+/* the RMS voxel speed, m/s */
+static double rms_speed(const am_model* m, const am_state* s)
 {
-    double sum = 0, e = 0;
-    for (int i = 0; i < m->nv; i++) {
-        double v2 = 0, w2 = 0;
+    double sum = 0;
+    for (int i = 0; i < m->nv; i++)
         for (int c = 0; c < 3; c++) {
             const double vc = AM_TO_DOUBLE(am_sim_vel(m, s, c, i));
-            const double hc = AM_TO_DOUBLE(s->h[c][i]);
-            v2 += vc * vc;
-            w2 += hc * hc;
+            sum += vc * vc;
         }
-        sum += v2;
-        e += 0.5 * AM_TO_DOUBLE(m->mass[AM_VC(m, i)]) * v2 + 0.5 * w2 * AM_TO_DOUBLE(m->inv_inertia[AM_VC(m, i)]);
-    }
-    *ke = e;
     return sqrt(sum / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
 }
 
@@ -264,8 +257,8 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     while (s->step < def->relax_max_steps && !s->diverged) {
         am_step(m, s);
         am_record_frame(m, s, rec);
-        double ke;
-        speed = motion(m, s, &ke);
+        double ke = am_kinetic_energy(m, s);
+        speed = rms_speed(m, s);
         if (release < 0) {
             if (ke < ke_prev) { /* past a peak: stop */
                 stop_all(m, s);

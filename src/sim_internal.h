@@ -171,6 +171,11 @@ static inline am_real am_acc(am_real v, am_real* rem, am_real a, am_real b)
 #define AM_REM_CLEAR(rem) ((void)0)
 #endif
 
+/* a voxel's rotational inertia m L^2 / 6, and the reduced mass of a link's two voxels: what the
+ * internal damping's ratios refer to (sim_model.c) and what its cap per step bounds (sim_step.c) */
+static inline am_real am_sim_inertia(am_real mass, am_real L) { return AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6)); }
+static inline am_real am_sim_reduced_mass(am_real ma, am_real mb) { return AM_DIV(AM_MUL(ma, mb), ma + mb); }
+
 /* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
 am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
 /* velocity component c of voxel i outside the step's loops: kept in the state on the desktop,

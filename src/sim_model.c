@@ -194,7 +194,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         m->x0[2][i] = AM_MUL(AM_INT(z - kmin) + AM_R(0.5), L) + PV(env->lift, m->unit_len);
         const int vc = AM_VC(m, i); /* the voxel's constants (once per material in the board profile) */
         am_real mass = AM_MUL(PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
-        am_real inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
+        am_real inertia = am_sim_inertia(mass, L);
         m->mass[vc] = mass;
         m->fixed[i] = (uint8_t)(mt->fixed != 0);
         m->inv_mass[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
@@ -257,8 +257,8 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
             /* internal damping as a fraction of the critical damping of the link's own two-body
              * modes: reduced mass with the axial stiffness E L, reduced inertia with the bending
              * stiffness b3 */
-            am_real mu = AM_DIV(AM_MUL(m->mass[AM_VC(m, a)], m->mass[AM_VC(m, j)]), m->mass[AM_VC(m, a)] + m->mass[AM_VC(m, j)]);
-            am_real mu_I = AM_DIV(AM_MUL(mu, L2), AM_R(6));
+            am_real mu = am_sim_reduced_mass(m->mass[AM_VC(m, a)], m->mass[AM_VC(m, j)]);
+            am_real mu_I = am_sim_inertia(mu, L);
             am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
                                 PV(env->zeta_internal_scale, 1.0));
             m->c_t[lc] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));

@@ -576,9 +576,7 @@ static void totals_start(int nv, int collisions, const vox_row* restrict fext, c
 
 /* the largest fraction of a link's two-body relative velocity its damping may remove in one step
  * (docs/physics.md, Damping) */
-#if !defined(AM_DAMP_CAP)
 #define AM_DAMP_CAP AM_R(0.15)
-#endif
 /* the damping for this dt: each link's c_t and c_r, capped at AM_DAMP_CAP mu / dt (mu the link's
  * reduced mass or inertia), so that one step removes at most that fraction of its two-body relative
  * motion (docs/physics.md, Damping), and the global damping times glob_scale, capped likewise by the
@@ -604,9 +602,7 @@ static void damping_for_dt(const am_model* m, am_state* s)
 #else
         const am_real mass_a = m->mass[m->lneg[c]], mass_b = m->mass[m->lpos[c]];
 #endif
-        /* the reduced mass and inertia of the pair, as sim_model.c damps them */
-        const am_real mu = AM_DIV(AM_MUL(mass_a, mass_b), mass_a + mass_b);
-        const am_real mu_I = AM_DIV(AM_MUL(mu, AM_MUL(L, L)), AM_R(6));
+        const am_real mu = am_sim_reduced_mass(mass_a, mass_b), mu_I = am_sim_inertia(mu, L);
         const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu), dt) : m->c_t[c];
         const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu_I), dt) : m->c_r[c];
         s->damp_t[c] = am_min(m->c_t[c], cap_t);
@@ -619,7 +615,7 @@ static void damping_for_dt(const am_model* m, am_state* s)
     const int nvc = m->nv;
 #endif
     for (int c = 0; c < nvc; c++) {
-        const am_real mass = m->mass[c], inertia = AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6));
+        const am_real mass = m->mass[c], inertia = am_sim_inertia(mass, L);
         const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mass), dt) : m->c_glob_t[c];
         const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, inertia), dt) : m->c_glob_r[c];
         s->glob_t[c] = am_min(AM_MUL(k, m->c_glob_t[c]), cap_t);

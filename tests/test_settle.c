@@ -54,7 +54,8 @@ static int full_set(void)
 #if defined(AM_REAL_FLOAT) && !defined(AM_PROFILE_BOARD) && !defined(__SANITIZE_ADDRESS__)
     return !test_quick();
 #else
-    return 0 * test_quick();
+    (void)test_quick; /* the harness's, unused here */
+    return 0;
 #endif
 }
 
