@@ -202,7 +202,7 @@ int cmd_sim(int argc, char** argv)
     return 0;
 }
 
-/* times `steps` actuated steps of one scene after a short warm-up, at the default time step;
+/* times `steps` actuated steps of one scene after a short warm-up, at dt_frac of dt_rec (the default when 0);
  * *vps_out gets the voxel steps per second, *k_out the simulated seconds per voxel step (dt / nv,
  * the same in every run of the scene), so that vps * k is the simulated seconds per second */
 static int bench_one(const char* scene, long steps, int collisions, double dt_frac, double* vps_out, double* k_out)
