@@ -3,7 +3,7 @@
  * Reals of the genomes are written so they read back bit for bit; fitness values (doubles) as
  * the hexadecimal digits of their bit patterns, so a checkpoint is exact on every platform.
  *
- *   amorph-checkpoint 1
+ *   amorph-checkpoint 2
  *   config-begin
  *   key = value ...            (am_evo_format, runtime keys included)
  *   config-end
@@ -12,7 +12,7 @@
  *   evaluations N
  *   history HEX
  *   last G N BEST MEAN MEDIAN DIVERGED EMPTY WALL   (doubles as HEX bit patterns)
- *   individual pop|best INDEX FITNESS VOXELS DIVERGED EMPTY STEPS STATEHASH
+ *   individual pop|best INDEX FITNESS VOXELS DIVERGED EMPTY STEPS STATEHASH ID
  *   amorph-genome 1 ... end    (the individual's genome, am_genome_format)
  *   ...
  *   checksum HEX               (am_hash_bytes of every byte before this line)
@@ -20,10 +20,11 @@
 #include "amorph/evolve.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#define CHECKPOINT_VERSION 1
+#define CHECKPOINT_VERSION 2 /* 2: individuals carry the id of their evaluation; 1 (read): without */
 
 static unsigned long long dbits(double v)
 {
@@ -78,8 +79,8 @@ static am_status ck_flush(void* ctx, const char* data, long n)
  * message kept in err (the first one counts) */
 static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* it, char* err, int errsz, am_status* st)
 {
-    am_text_put(s, "individual %s %d %016llx %d %d %d %ld %016llx\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
-                it->empty, it->steps, (unsigned long long)it->state_hash);
+    am_text_put(s, "individual %s %d %016llx %d %d %d %ld %016llx %ld\n", kind, index, dbits(it->fitness), it->voxels, it->diverged,
+                it->empty, it->steps, (unsigned long long)it->state_hash, it->id);
     char msg[AM_ERR_MAX];
     am_status c = am_genome_check(&it->genome, msg, sizeof msg);
     if (c != AM_OK) {
@@ -251,17 +252,26 @@ void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo
 static am_status read_ind(am_evo_ckpt_reader* r, char** tok, int ntok, char* err, int errsz)
 {
     am_evo* e = r->e;
-    long idx, vox, div, emp, steps;
+    long idx, vox, div, emp, steps, id = -1;
     uint64_t fit, hash;
-    if (ntok != 9 || (strcmp(tok[1], "pop") && strcmp(tok[1], "best")) || !to_long(tok[2], 0, AM_MAX_POPULATION - 1, &idx) ||
+    const int want = r->version >= 2 ? 10 : 9;
+    if (ntok != want || (strcmp(tok[1], "pop") && strcmp(tok[1], "best")) || !to_long(tok[2], 0, AM_MAX_POPULATION - 1, &idx) ||
         !hex64(tok[3], &fit) || !to_long(tok[4], 0, AM_MAX_CELLS, &vox) || !to_long(tok[5], 0, 1, &div) ||
-        !to_long(tok[6], 0, 1, &emp) || !to_long(tok[7], 0, 2000000000L, &steps) || !hex64(tok[8], &hash))
+        !to_long(tok[6], 0, 1, &emp) || !to_long(tok[7], 0, 2000000000L, &steps) || !hex64(tok[8], &hash) ||
+        (want == 10 && !to_long(tok[9], -1, LONG_MAX, &id)))
         BAD("%s:%d: malformed individual line", r->fname, r->line);
     int is_best = strcmp(tok[1], "best") == 0;
     if (!is_best && idx >= e->def.population)
         BAD("%s:%d: individual %ld beyond the population of %d", r->fname, r->line, idx, e->def.population);
+    if (is_best ? r->best_seen : r->pop_have[idx])
+        BAD("%s:%d: individual %s %ld given twice", r->fname, r->line, tok[1], is_best ? 0L : idx);
+    double f = bits_d(fit);
+    if (!isfinite(f)) BAD("%s:%d: fitness of individual %s %ld is not a finite number", r->fname, r->line, tok[1], idx);
+    if (is_best) r->best_seen = 1;
+    else r->pop_have[idx] = 1;
     am_evo_ind* it = is_best ? &e->best : &e->pop[idx];
-    it->fitness = bits_d(fit);
+    it->id = id;
+    it->fitness = f;
     it->voxels = (int)vox;
     it->diverged = (int)div;
     it->empty = (int)emp;
@@ -312,8 +322,9 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
         long v;
         int ntok = split(text, tok, 12);
         if (ntok != 2 || strcmp(tok[0], "amorph-checkpoint") != 0) BAD("%s:1: not an amorph checkpoint", fname);
-        if (!to_long(tok[1], 0, 1000, &v) || v != CHECKPOINT_VERSION)
-            BAD("%s:1: checkpoint version '%s': this build reads version %d", fname, tok[1], CHECKPOINT_VERSION);
+        if (!to_long(tok[1], 0, 1000, &v) || v < 1 || v > CHECKPOINT_VERSION)
+            BAD("%s:1: checkpoint version '%s': this build reads versions 1 to %d", fname, tok[1], CHECKPOINT_VERSION);
+        r->version = (int)v;
         return AM_OK;
     }
     if (r->line == 2) {
@@ -359,6 +370,8 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
         e->last.diverged = (int)dv;
         e->last.empty = (int)em;
         e->last.wall_s = bits_d(b[3]);
+        if (!isfinite(e->last.best) || !isfinite(e->last.mean) || !isfinite(e->last.median) || !isfinite(e->last.wall_s))
+            BAD("%s:%d: 'last' line holds a number that is not finite", fname, r->line);
         r->seen_last = 1;
     } else if (strcmp(tok[0], "individual") == 0) {
         return read_ind(r, tok, ntok, err, errsz);
@@ -377,9 +390,9 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
     if (read < 2) BAD("%s:%d: expected config-begin", fname, read);
     if (r->in_genome) BAD("%s:%d: genome of individual %ld not closed by 'end'", fname, read, r->idx);
     if (!r->seen_rng || !r->seen_gen || !r->seen_evals || !r->seen_hist || !r->seen_last)
-        BAD("%s: checkpoint misses its rng, generation, evaluations, history or last line", fname);
-    if (r->pop_seen != r->e->def.population)
-        BAD("%s: checkpoint holds %d individuals, the population is %d", fname, r->pop_seen, r->e->def.population);
+        BAD("%s:%d: checkpoint misses its rng, generation, evaluations, history or last line", fname, read);
+    for (int i = 0; i < r->e->def.population; i++)
+        if (!r->pop_have[i]) BAD("%s:%d: individual pop %d missing (the population is %d)", fname, read, i, r->e->def.population);
     return AM_OK;
 }
 

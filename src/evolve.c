@@ -25,9 +25,11 @@ am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_ge
 }
 
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
-                     am_record* rec, am_evo_ind* out)
+                     am_record* rec, am_evo_ind* out, am_evo_eval* detail)
 {
     char err[AM_ERR_MAX];
+    am_evo_eval scratch;
+    if (!detail) detail = &scratch;
     if (&out->genome != g) out->genome = *g;
     out->fitness = 0.0;
     out->voxels = 0;
@@ -35,11 +37,18 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     out->empty = 0;
     out->steps = 0;
     out->state_hash = 0;
+    memset(detail, 0, sizeof *detail);
+    detail->parent[0] = detail->parent[1] = -1;
+    detail->materials = g->materials;
     if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
         out->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
         return;
     }
     out->voxels = w->geno.voxels;
+    /* the expressed body holds 1 + the genome's material index in each filled cell */
+    const int cells = g->nx * g->ny * g->nz;
+    for (int c = 0; c < cells; c++)
+        if (w->geno.cell[c] > 0 && w->geno.cell[c] <= AM_MAX_GENO_MATERIALS) detail->material_voxels[w->geno.cell[c] - 1]++;
     am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         out->empty = 1; /* a valid body that goes nowhere */
@@ -54,6 +63,11 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     am_result res;
     am_evaluate(&w->model, &w->state, &ev, &res);
     out->fitness = res.diverged ? -1.0 : res.fitness;
+    detail->dx = res.dx;
+    detail->dy = res.dy;
+    detail->dz = res.dz;
+    detail->settled = res.settled;
+    detail->relax_steps = res.relax_steps;
     out->diverged = res.diverged;
     out->steps = res.steps;
     out->state_hash = res.hash;
@@ -70,7 +84,9 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
     for (int i = 0; i < d->population; i++) {
         st = am_genome_init(&e->pop[i].genome, &d->geno, &e->rng, err, errsz);
         if (st != AM_OK) return st;
+        e->pop[i].id = -1; /* not evaluated yet */
     }
+    e->best.id = -1;
     e->history = AM_HASH_INIT;
     return AM_OK;
 }
@@ -95,9 +111,10 @@ _Static_assert(AM_EVO_BATCH >= 2 && AM_EVO_BATCH % 2 == 0, "offspring come in pa
 typedef struct eval_job {
     const am_evo* e;
     am_evo_ind* items;
+    am_evo_eval* details;
     const int* order;        /* item i of the map evaluates items[order[i]] */
     am_evo_work* work;
-    int (*cancel)(void);
+    const am_evo_hooks* hooks; /* with a cancel callback, or NULL */
     int skipped[AM_EVO_BATCH];
 } eval_job;
 
@@ -105,17 +122,17 @@ static void eval_task(void* ctx, int item, int worker)
 {
     eval_job* job = (eval_job*)ctx;
     int idx = job->order[item];
-    if (job->cancel && job->cancel()) {
+    if (job->hooks && job->hooks->cancel(job->hooks->ctx)) {
         job->skipped[idx] = 1;
         return;
     }
     am_evo_ind* it = &job->items[idx];
-    am_evo_evaluate(&job->e->def, &job->e->palette, &it->genome, &job->work[worker], NULL, it);
+    am_evo_evaluate(&job->e->def, &job->e->palette, &it->genome, &job->work[worker], NULL, it, &job->details[idx]);
 }
 
 /* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
  * returns 1 when every item was evaluated */
-static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, int (*cancel)(void),
+static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, const am_evo_hooks* cancel,
                         char* err, int errsz, am_status* st)
 {
     eval_job job;
@@ -139,9 +156,10 @@ static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int
     memset(&job, 0, sizeof job);
     job.e = e;
     job.items = items;
+    job.details = e->eval;
     job.order = order;
     job.work = w;
-    job.cancel = cancel;
+    job.hooks = cancel && cancel->cancel ? cancel : NULL;
     *st = am_port_parallel_map(n, workers, eval_task, &job, err, errsz);
     if (*st != AM_OK) return 0;
     for (int i = 0; i < n; i++)
@@ -160,7 +178,8 @@ static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w)
     if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) memset(w->cell, 0, (size_t)cells);
 }
 
-static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
+/* offspring c and c + 1 against parents a and b; placed[] gets 1 for an offspring that entered */
+static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w, int* placed)
 {
     am_evo_ind* p1 = &e->pop[a];
     am_evo_ind* p2 = &e->pop[b];
@@ -179,14 +198,19 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
     am_real d2a = am_body_distance(e->body, w->cell, cells), d2b = am_body_distance(w->other, w->cell, cells);
     am_real straight = d1a + d2b;
     am_real crossed = d2a + d1b;
+    int k1 = c, k2 = c + 1;
     if (!(straight <= crossed)) {
         am_evo_ind* t = c1;
         c1 = c2;
         c2 = t;
+        k1 = c + 1;
+        k2 = c;
     }
     /* each offspring meets its more similar parent and replaces it when strictly better */
-    if (better(c1, p1)) *p1 = *c1;
-    if (better(c2, p2)) *p2 = *c2;
+    placed[k1] = better(c1, p1);
+    placed[k2] = better(c2, p2);
+    if (placed[k1]) *p1 = *c1;
+    if (placed[k2]) *p2 = *c2;
 }
 
 /* ---- statistics ---- */
@@ -237,7 +261,7 @@ uint64_t am_evo_hash(const am_evo* e)
 
 /* ---- one generation ---- */
 
-am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz)
+am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz)
 {
     const int n = e->def.population;
     const double t0 = am_port_now();
@@ -279,13 +303,14 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel
             }
         }
         /* cancelling is possible while nothing of the run has changed: in the first batch */
-        if (!evaluate_all(e, e->child, m, w, workers, b == 0 ? cancel : NULL, err, errsz, &st)) {
+        if (!evaluate_all(e, e->child, m, w, workers, b == 0 ? hooks : NULL, err, errsz, &st)) {
             e->rng = saved;
             if (st != AM_OK) return st;
-            return am_fail(err, errsz, AM_ERR_ARG, "interrupted");
+            return am_fail(err, errsz, AM_ERR_CANCELLED, "interrupted");
         }
         for (int j = 0; j < m; j++) {
-            const am_evo_ind* c = &e->child[j];
+            am_evo_ind* c = &e->child[j];
+            c->id = e->evaluations + b + j;
             e->history = ind_hash(e->history, c);
             s.diverged += c->diverged;
             s.empty += c->empty;
@@ -296,10 +321,23 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel
                 e->has_best = 1;
             }
         }
+        int placed[AM_EVO_BATCH];
+        for (int j = 0; j < m; j++) {
+            am_evo_eval* ev = &e->eval[j];
+            ev->index = e->child[j].id;
+            ev->generation = e->generation;
+            ev->parent[0] = e->generation == 0 ? -1 : e->pop[parent[b + (j & ~1)]].id;
+            ev->parent[1] = e->generation == 0 ? -1 : e->pop[parent[b + (j | 1)]].id;
+            placed[j] = 1;
+        }
         if (e->generation == 0) {
             for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];
         } else {
-            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno);
+            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno, placed);
+        }
+        for (int j = 0; j < m; j++) {
+            e->eval[j].placed = placed[j];
+            if (hooks && hooks->evaluated) hooks->evaluated(hooks->ctx, &e->child[j], &e->eval[j]);
         }
     }
     e->evaluations += n;
@@ -312,18 +350,4 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel
     e->last_voxel_steps = voxel_steps;
     e->generation++;
     return AM_OK;
-}
-
-/* ---- log ---- */
-
-const char* am_evo_log_header(void)
-{
-    return "generation,evaluations,best,mean,median,diverged,empty,wall_s";
-}
-
-int am_evo_log_row(const am_evo_stats* s, char* buf, int cap)
-{
-    int n = snprintf(buf, (size_t)cap, "%ld,%ld,%.9g,%.9g,%.9g,%d,%d,%.3f", s->generation, s->evaluations, s->best, s->mean,
-                     s->median, s->diverged, s->empty, s->wall_s);
-    return n < 0 ? 0 : n;
 }

@@ -4,6 +4,13 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+const char* am_status_name(am_status code)
+{
+    static const char* const names[] = {"ok", "parse", "range", "capacity", "io", "empty", "arg", "cancelled"};
+    unsigned k = (unsigned)code;
+    return k < sizeof names / sizeof names[0] ? names[k] : "unknown";
+}
+
 am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
 {
     if (err && errsz > 0) {

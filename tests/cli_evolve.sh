@@ -22,7 +22,7 @@ E="$AMORPH evolve --config $TMPD/small.cfg --quiet --no-pictures"
 
 # --- a run and its folder ---
 expect_ok $E --out "$TMPD/a" --threads 1
-for f in config.txt log.csv best.genome best.lattice summary.txt checkpoint.txt; do
+for f in config.txt log.csv evals.csv best.genome best.lattice summary.txt checkpoint.txt; do
     if [ -s "$TMPD/a/$f" ]; then ok; else ko "run folder lacks $f"; fi
 done
 if [ "$(head -n 1 "$TMPD/a/log.csv")" = "generation,evaluations,best,mean,median,diverged,empty,wall_s" ]; then ok
@@ -40,6 +40,21 @@ else ko "best.genome / best.lattice unreadable"; fi
 f=$("$AMORPH" sim "$TMPD/a" | sed -n 's/^fitness = //p')
 if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/a" best_fitness)" ]; then ok
 else ko "amorph sim RUN gives fitness '$f', the run logged $(sumval "$TMPD/a" best_fitness)"; fi
+# evals.csv: one row per evaluation, numbered 0..35 in order, generation 0 without parents, the
+# later ones with parents made before them; its best row is the summary's best robot
+EV="$TMPD/a/evals.csv"
+if [ "$(head -n 1 "$EV")" = "evaluation,generation,parent_a,parent_b,placed,representation,voxels,voxels_m1,voxels_m2,fitness,dx,dy,dz,settled,diverged,empty,relax_steps,steps,state_hash" ]; then ok
+else ko "evals.csv header: $(head -n 1 "$EV")"; fi
+if tail -n +2 "$EV" | awk -F, '$1 != NR - 1 || $2 != int($1 / 6) || ($2 == 0) != ($3 == -1) || ($2 > 0 && ($3 >= $2 * 6 || $4 >= $2 * 6)) ||
+       $7 != $8 + $9 || $6 != "gmx" { bad = 1 } END { exit bad || NR != 36 }'; then ok
+else ko "evals.csv rows: $(tail -n +2 "$EV" | head -3)"; fi
+best_row=$(tail -n +2 "$EV" | awk -F, '$15 == 0 && (!n++ || $10 > b) { b = $10; h = $19 } END { print h }')
+if [ -n "$best_row" ] && [ "$best_row" = "$(sumval "$TMPD/a" best_state_hash)" ]; then ok
+else ko "evals.csv best row's hash '$best_row', summary $(sumval "$TMPD/a" best_state_hash)"; fi
+# dx, dy give the fitness (horizontal travel), and the placed rows of the last generation with
+# those of earlier ones are the final population (as many as the population)
+if tail -n +2 "$EV" | awk -F, '$15 == 0 { d = sqrt($11 * $11 + $12 * $12) - $10; if (d > 1e-9 || d < -1e-9) bad = 1 } END { exit bad }'; then ok
+else ko "evals.csv fitness is not the horizontal travel dx, dy"; fi
 if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
 else ko "config.txt does not hold the effective configuration"; fi
 
@@ -55,7 +70,8 @@ expect_ok $E --out "$TMPD/t2" --threads 2
 expect_ok $E --out "$TMPD/t3" --threads 3
 h1=$(sumval "$TMPD/a" run_hash); h2=$(sumval "$TMPD/t2" run_hash); h3=$(sumval "$TMPD/t3" run_hash)
 if [ -n "$h1" ] && [ "$h1" = "$h2" ] && [ "$h2" = "$h3" ]; then ok; else ko "run hashes differ: $h1 $h2 $h3"; fi
-if [ "$(nowall "$TMPD/a/log.csv")" = "$(nowall "$TMPD/t3/log.csv")" ] && cmp -s "$TMPD/a/best.genome" "$TMPD/t3/best.genome"; then ok
+if [ "$(nowall "$TMPD/a/log.csv")" = "$(nowall "$TMPD/t3/log.csv")" ] && cmp -s "$TMPD/a/best.genome" "$TMPD/t3/best.genome" &&
+   cmp -s "$TMPD/a/evals.csv" "$TMPD/t3/evals.csv"; then ok
 else ko "logs or best genomes differ between 1 and 3 threads"; fi
 
 # --- configuration: file, flags over file, print-config round trip ---
@@ -141,6 +157,8 @@ resumed() {
     if cmp -s "$2/best.genome" "$TMPD/ref/best.genome" && cmp -s "$2/best.lattice" "$TMPD/ref/best.lattice"; then ok
     else ko "$1: resumed best genome or lattice differs"; fi
     if [ "$(sumval "$2" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "$1: run hash differs"; fi
+    if cmp -s "$2/evals.csv" "$TMPD/ref/evals.csv"; then ok
+    else ko "$1: resumed evals.csv differs: $(diff "$2/evals.csv" "$TMPD/ref/evals.csv" | head -4)"; fi
 }
 interrupt INT:27 4
 interrupt TERM:36 6
@@ -150,7 +168,8 @@ interrupt KILL:50 8
 # checkpoint before the kill is the first one (before any evaluation), on any machine.
 d="$TMPD/slow"
 AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L --checkpoint-seconds 3600 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-if [ $rc -eq 137 ] && [ $(($(wc -l <"$d/log.csv") - 1)) -eq 8 ] && grep -qx "evaluations 0" "$d/checkpoint.txt"; then ok
+if [ $rc -eq 137 ] && [ $(($(wc -l <"$d/log.csv") - 1)) -eq 8 ] && [ $(($(wc -l <"$d/evals.csv") - 1)) -eq 48 ] &&
+   grep -qx "evaluations 0" "$d/checkpoint.txt"; then ok
 else ko "checkpoint_seconds 3600, kill -9 at 50: exit $rc, $(($(wc -l <"$d/log.csv") - 1)) rows, checkpoint at $(grep '^evaluations [0-9]' "$d/checkpoint.txt")"; fi
 resumed "checkpoint_seconds 3600" "$d"
 # every second: whichever checkpoints the machine's speed gave, the resume ends the same
@@ -158,6 +177,14 @@ d="$TMPD/slow1"
 AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L --checkpoint-seconds 1 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 if [ $rc -eq 137 ]; then ok; else ko "checkpoint_seconds 1, kill -9 at 50: exit $rc"; fi
 resumed "checkpoint_seconds 1" "$d"
+# a run folder from a build without evals.csv resumes; its evals.csv starts at the checkpoint
+d="$TMPD/noevals"
+AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L >"$TMPD/out" 2>"$TMPD/err"
+rm -f "$d/evals.csv"
+expect_ok "$AMORPH" evolve --resume "$d" --quiet --no-pictures
+if [ "$(head -n 1 "$d/evals.csv")" = "$(head -n 1 "$TMPD/ref/evals.csv")" ] &&
+   [ "$(tail -n +2 "$d/evals.csv")" = "$(tail -n +50 "$TMPD/ref/evals.csv")" ]; then ok
+else ko "evals.csv of a resumed run without one: $(sed -n 2p "$d/evals.csv")"; fi
 # a malformed setting is refused before anything is written
 for v in INT HUP:3 INT: INT:x INT:-2 KILL:3:4 int:3 " INT:3" TERM:5x; do
     expect_fail 2 "AMORPH_TEST_INTERRUPT = '$v': expected SIG:N" env AMORPH_TEST_INTERRUPT="$v" $E --out "$TMPD/bad2"

@@ -255,8 +255,160 @@ static void test_checkpoint_damage_is_refused(void)
     CHECK(am_evo_checkpoint_format(&g_a, g_text2, 100, &len, err, sizeof err) == AM_ERR_CAPACITY, "capacity: %s", err);
 }
 
-static int cancel_now(void)
+/* text with its last line (the checksum) replaced by one that matches the new text */
+static void reseal(char* text)
 {
+    size_t n = strlen(text);
+    if (n < 2) return;
+    size_t k = n - 1;
+    while (k > 0 && text[k - 1] != '\n') k--;
+    text[k] = 0;
+    uint64_t h = am_hash_bytes(AM_HASH_INIT, text, (unsigned long)k);
+    snprintf(text + k, 64, "checksum %016llx\n", (unsigned long long)h);
+}
+
+/* in g_text2 (a copy of src), the first occurrence of `from` replaced by `to`, sealed again */
+static int edit_checkpoint(const char* src, const char* from, const char* to)
+{
+    char* p = strstr(src, from);
+    if (!p) return 0;
+    size_t head = (size_t)(p - src), nf = strlen(from), nt = strlen(to);
+    memcpy(g_text2, src, head);
+    memcpy(g_text2 + head, to, nt);
+    strcpy(g_text2 + head + nt, p + nf);
+    reseal(g_text2);
+    return 1;
+}
+
+static void test_checkpoint_members_checked(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX], line[160];
+    long len = 0;
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(run_to_end(&g_a, 1), "run");
+    CHECK(am_evo_checkpoint_format(&g_a, g_text, sizeof g_text, &len, err, sizeof err) == AM_OK, "%s", err);
+    /* resealed unchanged: read back */
+    CHECK(edit_checkpoint(g_text, "history", "history") && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_OK,
+          "%s", err);
+    CHECK(am_evo_hash(&g_b) == am_evo_hash(&g_a) && g_b.pop[3].id == g_a.pop[3].id && g_b.best.id == g_a.best.id && g_a.best.id >= 0,
+          "ids did not read back");
+    /* member 1 given twice (in place of member 0): refused with its line */
+    CHECK(edit_checkpoint(g_text, "individual pop 0 ", "individual pop 1 ") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "ck.txt:") &&
+              strstr(err, "individual pop 1 given twice"),
+          "%s", err);
+    /* a member beyond the population: a malformed index */
+    CHECK(edit_checkpoint(g_text, "individual pop 2 ", "individual pop 9 ") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "beyond the population"),
+          "%s", err);
+    /* a non-finite fitness (the bit pattern of +inf, then of a NaN) */
+    snprintf(line, sizeof line, "individual pop 4 %016llx ", 0x7ff0000000000000ULL);
+    {
+        char from[40];
+        char* p = strstr(g_text, "individual pop 4 ");
+        CHECK(p != NULL, "member 4");
+        if (p) {
+            memcpy(from, p, 33);
+            from[33] = 0;
+            CHECK(edit_checkpoint(g_text, from, line) && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+                      strstr(err, "not a finite number"),
+                  "%s", err);
+            snprintf(line, sizeof line, "individual pop 4 %016llx ", 0x7ff8000000000001ULL);
+            CHECK(edit_checkpoint(g_text, from, line) && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+                      strstr(err, "not a finite number"),
+                  "%s", err);
+        }
+    }
+    /* version 1 (individuals without ids) still reads, the ids unknown; version 3 does not */
+    {
+        static char v1[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+        size_t o = 0;
+        for (const char* p = g_text; *p;) {
+            const char* nl = strchr(p, '\n');
+            size_t n = nl ? (size_t)(nl - p) : strlen(p);
+            size_t keep = n;
+            if (!strncmp(p, "individual ", 11))
+                while (keep > 0 && p[keep - 1] != ' ') keep--; /* drop the last token (the id) and its space */
+            if (keep < n && keep > 0) keep--;
+            memcpy(v1 + o, p, keep);
+            o += keep;
+            if (!nl) break;
+            v1[o++] = '\n';
+            p = nl + 1;
+        }
+        v1[o] = 0;
+        memcpy(g_text, v1, o + 1);
+    }
+    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 2", "amorph-checkpoint 1") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_OK,
+          "version 1: %s", err);
+    CHECK(am_evo_hash(&g_b) == am_evo_hash(&g_a) && g_b.pop[0].id == -1 && g_b.best.id == -1, "version 1 read differently");
+    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 2", "amorph-checkpoint 3") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "ck.txt:1:") &&
+              strstr(err, "versions 1 to 2"),
+          "version 3: %s", err);
+}
+
+/* evals.csv's view of a run: every evaluation once, in index order */
+typedef struct seen_evals {
+    long next;                /* the index expected next */
+    int bad;                  /* 1 after a row out of order or with impossible parents */
+    int placed;               /* placed rows */
+    const am_evo* e;
+} seen_evals;
+
+static void on_eval(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
+{
+    seen_evals* s = (seen_evals*)ctx;
+    int mats = 0;
+    for (int k = 0; k < ev->materials; k++) mats += ev->material_voxels[k];
+    if (ev->index != s->next || ind->id != ev->index || ev->generation != s->e->generation || mats != ind->voxels ||
+        (ev->generation == 0 && (ev->parent[0] != -1 || ev->parent[1] != -1 || !ev->placed)) ||
+        (ev->generation > 0 && (ev->parent[0] < 0 || ev->parent[0] >= s->e->evaluations || ev->parent[1] < 0 ||
+                                ev->parent[1] >= s->e->evaluations)))
+        s->bad = 1;
+    s->placed += ev->placed;
+    s->next++;
+}
+
+static void test_evaluations_are_reported(void)
+{
+    am_evo_def d = small_def(AM_REPR_CPPN);
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    seen_evals s = {0, 0, 0, &g_a};
+    const am_evo_hooks hooks = {NULL, on_eval, &s};
+    while (!am_evo_done(&g_a)) {
+        long before = s.placed;
+        CHECK(am_evo_generation(&g_a, g_work, 2, &hooks, err, sizeof err) == AM_OK, "%s", err);
+        /* a placed offspring is in the population now (unless a later one of its pair's parent... none: pairs are disjoint) */
+        for (int i = 0; i < d.population; i++) CHECK(g_a.pop[i].id >= 0 && g_a.pop[i].id < g_a.evaluations, "member %d id %ld", i, g_a.pop[i].id);
+        CHECK(s.placed >= before, "placed");
+    }
+    CHECK(!s.bad && s.next == g_a.evaluations, "rows out of order or impossible: bad %d, %ld of %ld", s.bad, s.next, g_a.evaluations);
+    /* the hooks never change a run */
+    CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK && run_to_end(&g_b, 1), "reference");
+    CHECK(am_evo_hash(&g_a) == am_evo_hash(&g_b), "a run with hooks differs");
+    /* the rows' text: a header with a column per material, and a row per evaluation */
+    char hdr[AM_EVO_EVALS_ROW_MAX], row[AM_EVO_EVALS_ROW_MAX];
+    int n = am_evo_evals_header(d.geno.materials, hdr, (int)sizeof hdr);
+    CHECK(n == (int)strlen(hdr) && strstr(hdr, ",voxels_m1,voxels_m2,fitness,") && !strstr(hdr, "voxels_m3"), "%s", hdr);
+    am_evo_eval ev;
+    memset(&ev, 0, sizeof ev);
+    ev.index = 7;
+    ev.parent[0] = ev.parent[1] = -1;
+    am_evo_ind div = g_a.pop[0];
+    div.diverged = 1;
+    div.fitness = -1;
+    n = am_evo_evals_row(&d, &div, &ev, row, (int)sizeof row);
+    CHECK(n == (int)strlen(row) && strstr(row, ",,,,") && !strstr(row, "nan"), "diverged row: %s", row);
+    CHECK(am_evo_evals_row(&d, &g_a.pop[0], &ev, row, 12) == 11 && strlen(row) == 11, "a short buffer: %s", row);
+}
+
+static int cancel_now(void* ctx)
+{
+    (void)ctx;
     return 1;
 }
 
@@ -269,7 +421,8 @@ static void test_cancel_leaves_the_run_unchanged(void)
     uint64_t h = am_evo_hash(&g_a);
     am_rng r = g_a.rng;
     long gen = g_a.generation;
-    CHECK(am_evo_generation(&g_a, g_work, 2, cancel_now, err, sizeof err) == AM_ERR_ARG && strstr(err, "interrupted"), "%s", err);
+    const am_evo_hooks hooks = {cancel_now, NULL, NULL};
+    CHECK(am_evo_generation(&g_a, g_work, 2, &hooks, err, sizeof err) == AM_ERR_CANCELLED && strstr(err, "interrupted"), "%s", err);
     CHECK(am_evo_hash(&g_a) == h && g_a.generation == gen && memcmp(&r, &g_a.rng, sizeof r) == 0, "cancelled generation changed the run");
     /* and the run goes on as if nothing happened */
     CHECK(run_to_end(&g_a, 1), "after a cancel");
@@ -298,5 +451,7 @@ int main(int argc, char** argv)
     RUN(test_checkpoint_resume_equals_uninterrupted);
     RUN(test_checkpoint_damage_is_refused);
     RUN(test_cancel_leaves_the_run_unchanged);
+    RUN(test_checkpoint_members_checked);
+    RUN(test_evaluations_are_reported);
     return SUMMARY();
 }

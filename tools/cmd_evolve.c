@@ -35,7 +35,7 @@ static const char evolve_help[] =
     "  --help-config      list the configuration keys\n"
     "  --quiet            no progress output\n"
     "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
-    "The run folder holds config.txt, log.csv, best.genome, best.lattice, summary.txt,\n"
+    "The run folder holds config.txt, log.csv, evals.csv, best.genome, best.lattice, summary.txt,\n"
     "checkpoint.txt and, at the end, best.png (filmstrip), best.html (viewer) and fitness.svg.\n"
     "Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
 
@@ -237,17 +237,17 @@ static TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
     return 0;
 }
 
-/* log.csv cut back to the header and the first `rows` rows (rows the checkpoint has seen): the
- * file is read line by line, then, when it holds more, copied that far into its replacement */
-static TOOL_NOINLINE int trim_log(const char* dir, long rows)
+/* dir/file (a table: log.csv or evals.csv with header hdr) cut back to the header and the first
+ * `rows` rows (rows the checkpoint has seen, `unit` its count's name in messages): the file is
+ * read line by line, then, when it holds more, copied that far into its replacement */
+static TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
     long n, have = 0;
     int r;
-    path_join(path, sizeof path, dir, "log.csv");
+    path_join(path, sizeof path, dir, file);
     tool_src src;
     if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    const char* hdr = am_evo_log_header();
     r = tool_src_next(&src, &line, &n, err, sizeof err);
     if (r == 1 && (strcmp(line, hdr) != 0 || !src.newline)) r = 2;
     if (r != 1) {
@@ -270,7 +270,7 @@ static TOOL_NOINLINE int trim_log(const char* dir, long rows)
     }
     if (have < rows) {
         tool_src_close(&src);
-        return tool_usage_error("%s: %ld rows, but the checkpoint is at generation %ld (the log is damaged)", path, have, rows);
+        return tool_usage_error("%s: %ld rows, but the checkpoint is at %s %ld (the table is damaged)", path, have, unit, rows);
     }
     if (!more) {
         tool_src_close(&src);
@@ -287,6 +287,36 @@ static TOOL_NOINLINE int trim_log(const char* dir, long rows)
     }
     tool_src_close(&src);
     return tool_out_close(&o, 1) ? 2 : 0;
+}
+
+/* evals.csv: one row per evaluation, appended as the library places each batch */
+typedef struct evals_out {
+    const char* dir;
+    const am_evo_def* def;
+    int failed;               /* 1 after a row could not be written (reported once) */
+} evals_out;
+
+static void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
+{
+    evals_out* o = (evals_out*)ctx;
+    char row[AM_EVO_EVALS_ROW_MAX + 1], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    if (o->failed) return;
+    int n = am_evo_evals_row(o->def, ind, ev, row, (int)sizeof row - 1);
+    row[n++] = '\n';
+    path_join(path, sizeof path, o->dir, "evals.csv");
+    if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        o->failed = 1;
+    }
+}
+
+/* the header of a run's evals.csv, with its newline; returns its length */
+static int evals_header(const am_evo_def* d, char* buf, int cap)
+{
+    int n = am_evo_evals_header(d->geno.materials, buf, cap - 1);
+    buf[n++] = '\n';
+    buf[n] = 0;
+    return n;
 }
 
 /* a fresh folder name under runs/ */
@@ -379,8 +409,9 @@ static void test_interrupt_fire(void)
 }
 
 /* the cancel callback of a run's generations (on the workers, before each evaluation) */
-static int run_cancel(void)
+static int run_cancel(void* ctx)
 {
+    (void)ctx;
     if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base + atomic_fetch_add(&g_test_int.started, 1) == g_test_int.after)
         test_interrupt_fire();
     return am_port_interrupted();
@@ -402,17 +433,20 @@ static int run_loop(am_evo* e, const run_io* io)
     const long evals0 = e->evaluations;
     double last_ckpt = t0, last_line = t0;
     int dirty = 0;
+    evals_out eo = {io->dir, &e->def, 0};
+    const am_evo_hooks hooks = {run_cancel, evals_append, &eo};
     while (!am_evo_done(e)) {
         double best_before = e->has_best ? e->best.fitness : 0.0;
         int had_best = e->has_best;
         g_test_int.base = e->evaluations;
         atomic_store(&g_test_int.started, 0);
-        am_status st = am_evo_generation(e, tool_work, workers, run_cancel, err, sizeof err);
+        am_status st = am_evo_generation(e, tool_work, workers, &hooks, err, sizeof err);
+        if (st == AM_ERR_CANCELLED) break;
         if (st != AM_OK) {
-            if (am_port_interrupted()) break;
             fprintf(stderr, "amorph: %s\n", err);
             return 1;
         }
+        if (eo.failed) return 1; /* the checkpoint stays behind: a resume cuts evals.csv back to it */
         /* a test's point inside this generation that no cancel poll saw (several batches) */
         if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base <= g_test_int.after && g_test_int.after < e->evaluations)
             test_interrupt_fire();
@@ -479,9 +513,11 @@ static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (am_evo_init(&tool_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
-    char hdr[128];
+    char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
     if (write_text(dir, "log.csv", hdr, n)) return 1;
+    n = evals_header(d, hdr, (int)sizeof hdr);
+    if (write_text(dir, "evals.csv", hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
     if (write_checkpoint(dir, &tool_evo)) return 1;
     return 0;
@@ -556,7 +592,17 @@ static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const c
     tool_evo.def.checkpoint_seconds = d.checkpoint_seconds;
     if (tool_evo.def.evaluations < tool_evo.evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, tool_evo.def.evaluations, tool_evo.evaluations);
-    if (trim_log(dir, tool_evo.generation)) return 2;
+    if (trim_table(dir, "log.csv", am_evo_log_header(), tool_evo.generation, "generation")) return 2;
+    char hdr[AM_EVO_EVALS_ROW_MAX + 2];
+    int n = evals_header(&tool_evo.def, hdr, (int)sizeof hdr);
+    path_join(path, sizeof path, dir, "evals.csv");
+    if (!am_port_exists(path)) {
+        /* a run begun by a build without evals.csv: the table starts at the checkpoint's evaluation */
+        if (write_text(dir, "evals.csv", hdr, n)) return 1;
+    } else {
+        hdr[n - 1] = 0;
+        if (trim_table(dir, "evals.csv", hdr, tool_evo.evaluations, "evaluation")) return 2;
+    }
     if (write_config(dir, &tool_evo.def)) return 1;
     return 0;
 }

@@ -88,7 +88,33 @@ typedef struct am_evo_ind {
     int empty;                /* 1: the body was empty (fitness 0, not simulated) */
     long steps;               /* time steps simulated */
     uint64_t state_hash;      /* am_state_hash at the end of the evaluation (0 when empty) */
+    long id;                  /* the evaluation that made it: its index in the run, from 0 (-1: unknown,
+                               * a checkpoint of version 1) */
 } am_evo_ind;
+
+/* what an evaluation measured besides its am_evo_ind, and where it stands in the run: one row of
+ * a run's evals.csv (am_evo_evals_row) */
+typedef struct am_evo_eval {
+    long index;               /* the evaluation's index in the run, from 0 (= its individual's id) */
+    long generation;          /* 0: the initial population */
+    long parent[2];           /* ids of the two parents (-1 in generation 0 or when unknown) */
+    int placed;               /* 1: it entered the population (generation 0, or beat its parent) */
+    double dx, dy, dz;        /* centre-of-mass displacement over the movement segment, m */
+    int settled;              /* 1: the body came to rest before the movement (am_result.settled) */
+    long relax_steps;         /* steps of the relaxation */
+    int materials;            /* materials of the run */
+    int material_voxels[AM_MAX_GENO_MATERIALS]; /* voxels of each material (the genome's order) */
+} am_evo_eval;
+
+/* what a caller of am_evo_generation may watch; every member may be NULL */
+typedef struct am_evo_hooks {
+    /* on the workers, before each evaluation of the generation's first batch: non-zero stops the
+     * generation (AM_ERR_CANCELLED) */
+    int (*cancel)(void* ctx);
+    /* on the calling thread, every evaluation in index order, as its batch is placed */
+    void (*evaluated)(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
+    void* ctx;
+} am_evo_hooks;
 
 /* statistics of one generation, after replacement (one row of log.csv) */
 typedef struct am_evo_stats {
@@ -119,6 +145,7 @@ typedef struct am_evo {
     am_evo_stats last;                        /* statistics of the last generation */
     long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
     long last_voxel_steps;                    /* the same, each step times the body's voxels */
+    am_evo_eval eval[AM_EVO_BATCH];           /* what the evaluations of the current batch measured */
     int order[AM_EVO_BATCH];                  /* scratch: evaluation order (largest body first) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
                                                  (the second's is in w[0].geno.other) */
@@ -141,15 +168,16 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
 int am_evo_done(const am_evo* e);
 /* one generation: generation 0 evaluates the initial population; later ones make offspring,
  * evaluate them on up to `workers` workspaces w[0..workers-1] through am_port_parallel_map and
- * apply crowding. When cancel (may be NULL) returns non-zero during the evaluations of the first
- * batch (every evaluation of the generation when AM_EVO_BATCH >= population, as on the desktop),
- * no further evaluation starts, the generation is abandoned and e is left as it was before the
- * call (AM_ERR_ARG, "interrupted"); once a batch has been placed the generation runs to its end.
- * Fills e->last. */
-am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, int (*cancel)(void), char* err, int errsz);
-/* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec may be NULL */
+ * apply crowding. hooks may be NULL. When hooks->cancel returns non-zero during the evaluations of
+ * the first batch (every evaluation of the generation when AM_EVO_BATCH >= population, as on the
+ * desktop), no further evaluation starts, the generation is abandoned and e is left as it was
+ * before the call (AM_ERR_CANCELLED, "interrupted"); once a batch has been placed the generation
+ * runs to its end. hooks->evaluated sees each evaluation as its batch is placed. Fills e->last. */
+am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz);
+/* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec and detail
+ * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
-                     am_record* rec, am_evo_ind* out);
+                     am_record* rec, am_evo_ind* out, am_evo_eval* detail);
 /* expresses g into lat with the run's palette and voxel size */
 am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
                          am_lattice* lat, char* err, int errsz);
@@ -196,7 +224,9 @@ typedef struct am_evo_ckpt_reader {
     int line;                   /* lines read */
     int until, config_end, last_end; /* from the scan */
     am_status st;               /* the first failure: every later call returns it */
-    int seen_rng, seen_gen, seen_evals, seen_hist, seen_last, pop_seen;
+    int version;                /* the checkpoint's format version (1 or 2) */
+    int seen_rng, seen_gen, seen_evals, seen_hist, seen_last, pop_seen, best_seen;
+    uint8_t pop_have[AM_MAX_POPULATION]; /* 1 for each member index read */
     int in_genome;              /* 1 while the lines of an individual's genome are read */
     am_evo_ind* ind;            /* that individual */
     int ind_pop;                /* 1 for a member of the population, 0 for the best */
@@ -218,5 +248,11 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
 /* the log.csv header line (no newline) and one row for s; returns the characters written */
 const char* am_evo_log_header(void);
 int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
+/* the evals.csv header line of a run with `materials` materials (no newline), and one row for an
+ * evaluation; both return the characters written (cut to cap - 1). docs/evolve.md gives the
+ * columns. AM_EVO_EVALS_ROW_MAX: a capacity every header and row fits. */
+#define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
+int am_evo_evals_header(int materials, char* buf, int cap);
+int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
 
 #endif

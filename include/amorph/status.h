@@ -12,8 +12,13 @@ typedef enum am_status {
     AM_ERR_CAPACITY,   /* a compile-time capacity would be exceeded */
     AM_ERR_IO,         /* a file could not be read or written */
     AM_ERR_EMPTY,      /* nothing to simulate (no voxel) */
-    AM_ERR_ARG         /* a bad argument from the caller */
+    AM_ERR_ARG,        /* a bad argument from the caller */
+    AM_ERR_CANCELLED   /* the caller asked to stop (a cancel callback returned non-zero) */
 } am_status;
+
+/* the code's name ("ok", "parse", "range", "capacity", "io", "empty", "arg", "cancelled";
+ * "unknown" for any other value) */
+const char* am_status_name(am_status code);
 
 /* writes "fmt" into err (size errsz, may be 0) like snprintf and returns code */
 am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
