@@ -18,6 +18,7 @@ am_eval_def am_default_eval(void)
     d.settle_speed = AM_P(1e-4);
     d.release_steps = 500;
     d.record = 0;
+    d.gait = 0;
     return d;
 }
 
@@ -224,6 +225,84 @@ static void stop_all(const am_model* m, am_state* s)
         }
 }
 
+/* ---- gait diagnostics ---- */
+
+static void gait_begin(am_gait* g, const double c0[3])
+{
+    memset(g, 0, sizeof *g);
+    for (int d = 0; d < 3; d++) g->com[0][d] = c0[d];
+}
+
+/* after step k (0-based) of the movement: the cycle's airborne steps and height range so far, and
+ * at the step that ends a cycle, its figures and centre of mass */
+static void gait_step(const am_model* m, const am_state* s, am_gait* g, long k)
+{
+    const long period = m->env.period_steps;
+    const long cyc = k / period, in = k % period;
+    if (cyc >= AM_GAIT_MAX_CYCLES) return;
+    int touching = 0;
+    for (int i = 0; i < m->nv && !touching; i++) touching = s->contact[i] != 0;
+    double c[3];
+    am_com(m, s, c);
+    if (in == 0) {
+        g->low = g->high = c[2];
+        g->air_steps = 0;
+    }
+    g->low = c[2] < g->low ? c[2] : g->low;
+    g->high = c[2] > g->high ? c[2] : g->high;
+    g->air_steps += !touching;
+    if (in == period - 1) {
+        g->lift[cyc] = g->high - g->low;
+        g->airborne[cyc] = (double)g->air_steps / (double)period;
+        for (int d = 0; d < 3; d++) g->com[cyc + 1][d] = c[d];
+        g->cycles = (int)cyc + 1;
+    }
+}
+
+double am_gait_travel(const am_gait* g, int fitness, int k)
+{
+    const double* a = g->com[k];
+    const double* b = g->com[k + 1];
+    double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    if (fitness == AM_FIT_PLUS_X) return dx;
+    if (fitness == AM_FIT_3D) return sqrt(dx * dx + dy * dy + dz * dz);
+    return sqrt(dx * dx + dy * dy);
+}
+
+void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out)
+{
+    memset(out, 0, sizeof *out);
+    const int n = g->cycles, h = n / 2;
+    out->cycles = n;
+    for (int k = 0; k < n; k++) {
+        double t = am_gait_travel(g, fitness, k);
+        out->travel_total += t;
+        if (k < h) out->first_half += t;
+        if (k >= n - h) out->last_half += t;
+        out->airborne += g->airborne[k];
+        out->lift += g->lift[k];
+    }
+    if (h > 0) {
+        out->first_half /= h;
+        out->last_half /= h;
+    }
+    if (n > 0) {
+        out->airborne /= n;
+        out->lift /= n;
+    }
+    out->sustained = out->first_half > 0 ? out->last_half / out->first_half : 0.0;
+    if (n == 0 || out->travel_total / n < AM_GAIT_STILL_FRAC * voxel_size) out->mode = AM_GAIT_STILL;
+    else if (h == 0 || out->sustained < AM_GAIT_FLOP_RATIO) out->mode = AM_GAIT_FLOP;
+    else if (out->airborne >= AM_GAIT_BOUNCE_AIR) out->mode = AM_GAIT_BOUNCE;
+    else out->mode = AM_GAIT_SCOOT;
+}
+
+const char* am_gait_mode_name(am_gait_mode mode)
+{
+    static const char* const names[] = {"still", "flop", "scoot", "bounce"};
+    return (unsigned)mode < 4 ? names[mode] : "unknown";
+}
+
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
 {
     memset(out, 0, sizeof *out);
@@ -295,9 +374,12 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     s->actuate = 1;
     s->actuation_step0 = s->step;
     long n = (long)def->cycles * m->env.period_steps;
+    am_gait* gait = def->gait;
+    if (gait) gait_begin(gait, c0);
     for (long k = 0; k < n && !s->diverged; k++) {
         am_step(m, s);
         am_record_frame(m, s, rec);
+        if (gait) gait_step(m, s, gait, k);
     }
     out->move_steps = s->step - out->relax_steps;
     out->steps = s->step;

@@ -55,6 +55,14 @@ else ko "evals.csv best row's hash '$best_row', summary $(sumval "$TMPD/a" best_
 # those of earlier ones are the final population (as many as the population)
 if tail -n +2 "$EV" | awk -F, '$15 == 0 { d = sqrt($11 * $11 + $12 * $12) - $10; if (d > 1e-9 || d < -1e-9) bad = 1 } END { exit bad }'; then ok
 else ko "evals.csv fitness is not the horizontal travel dx, dy"; fi
+# summary.json: one JSON line with the summary's values; --json prints the same as the last line
+SJ="$TMPD/a/summary.json"
+if [ "$(wc -l <"$SJ")" -eq 1 ] && grep -q "^{\"run\": \"$TMPD/a\", \"representation\": \"gmx\", \"evaluations\": 36, " "$SJ" &&
+   grep -q "\"run_hash\": \"$(sumval "$TMPD/a" run_hash)\"" "$SJ" && grep -q "\"best_evaluation\": $(sumval "$TMPD/a" best_evaluation)," "$SJ"; then ok
+else ko "summary.json: $(head -c 400 "$SJ")"; fi
+expect_ok $E --out "$TMPD/aj" --threads 1 --json
+if [ "$(wc -l <"$TMPD/out")" -eq 1 ] && grep -q "^{.*\"run_hash\": \"$(sumval "$TMPD/a" run_hash)\".*}$" "$TMPD/out"; then ok
+else ko "evolve --json: $(head -c 400 "$TMPD/out")"; fi
 if grep -q "^population = 6$" "$TMPD/a/config.txt" && grep -q "^representation = gmx$" "$TMPD/a/config.txt"; then ok
 else ko "config.txt does not hold the effective configuration"; fi
 
@@ -222,6 +230,14 @@ else ko "experiment run settings: $(grep -E 'representation|seed' "$TMPD/exp/cpp
 if [ "$(grep -c '^gmx,' "$TMPD/exp/results.csv")" -eq 2 ] && head -n 1 "$TMPD/exp/results.csv" | grep -q "variant,evaluations,mean_best,stderr_best,runs"; then ok
 else ko "results.csv: $(head -c 300 "$TMPD/exp/results.csv")"; fi
 if grep -q "evaluations.*dct.*cppn.*gmx" "$TMPD/out"; then ok; else ko "experiment table: $(head -c 300 "$TMPD/out")"; fi
+# the summary: the last row's means (those of results.csv) and the variants ranked by them
+rank=$(for v in dct cppn gmx; do grep "^$v,12," "$TMPD/exp/results.csv" | cut -d, -f1,3; done | sort -t, -k2 -g -r | cut -d, -f1 | tr '\n' ' ')
+if grep -qx "ranking = ${rank% }" "$TMPD/exp/summary.txt" && grep -qx "ranking = ${rank% }" "$TMPD/out" &&
+   grep -q "\"ranking\": \[\"$(echo ${rank% } | sed 's/ /", "/g')\"\]}" "$TMPD/exp/summary.json"; then ok
+else ko "experiment ranking '$rank': $(grep ranking "$TMPD/exp/summary.txt") / $(head -c 400 "$TMPD/exp/summary.json")"; fi
+expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet --json
+if [ "$(wc -l <"$TMPD/out")" -eq 1 ] && cmp -s "$TMPD/out" "$TMPD/exp/summary.json"; then ok
+else ko "experiment --json: $(head -c 400 "$TMPD/out")"; fi
 # mean and standard error agree with the two runs' logs
 m=$(awk -F, -v a="$(tail -n 1 "$TMPD/exp/gmx-1/log.csv" | cut -d, -f3)" -v b="$(tail -n 1 "$TMPD/exp/gmx-2/log.csv" | cut -d, -f3)" \
     'BEGIN { m = (a + b) / 2; s = sqrt(((a - m) ^ 2 + (b - m) ^ 2) / 1) / sqrt(2); printf "%.6g %.6g", m, s }')

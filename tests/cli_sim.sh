@@ -28,6 +28,19 @@ for k in fitness dx dy dz voxels links dt steps relax_steps move_steps diverged 
     check "key $k missing or not a number in: $(head -c 300 "$TMPD/cube")" isnum "$v"
 done
 check "kinetic_resets not a whole number: $(head -c 300 "$TMPD/cube")" isint "$(field kinetic_resets "$TMPD/cube")"
+# the gait (docs/results.md, Gaits): a travel per cycle, the halves, and one of the four names
+for k in travel_first_half travel_last_half sustained airborne lift; do
+    check "gait key $k missing or not a number in: $(head -c 600 "$TMPD/cube")" isnum "$(field $k "$TMPD/cube")"
+done
+check "cycle_travel of 2 cycles: $(head -c 600 "$TMPD/cube")" grep -qE '"cycle_travel": \[[-0-9.e]+, [-0-9.e]+\]' "$TMPD/cube"
+check "gait name: $(head -c 600 "$TMPD/cube")" grep -qE '"gait": "(still|flop|scoot|bounce)"}$' "$TMPD/cube"
+# the same fields as text
+expect_ok "$AMORPH" sim --scene cube:4 --cycles 3
+check "text cycle_travel of 3 cycles: $(grep cycle_travel "$TMPD/out")" grep -qE '^cycle_travel = [-0-9.e]+ [-0-9.e]+ [-0-9.e]+$' "$TMPD/out"
+check "text gait: $(grep gait "$TMPD/out")" grep -qE '^gait = (still|flop|scoot|bounce)$' "$TMPD/out"
+# a still body: no actuation, nothing travels
+expect_ok "$AMORPH" sim --scene cube:4 --cycles 4 --amplitude 0 --json
+check "unactuated cube should be still: $(head -c 600 "$TMPD/out")" grep -qE '"gait": "still"' "$TMPD/out"
 check "hash is not 16 hex digits: $(head -c 300 "$TMPD/cube")" grep -qE '"hash": *"[0-9a-f]{16}"' "$TMPD/cube"
 check "cube:4 has 64 voxels" [ "$(field voxels "$TMPD/cube")" = 64 ]
 check "cube:4 has 144 links" [ "$(field links "$TMPD/cube")" = 144 ]
@@ -95,6 +108,8 @@ expect_ok "$AMORPH" sim --scene cube:4 --dt 1 --json
 check "--dt 1 should print \"diverged\": 1, got: $(head -c 300 "$TMPD/out")" grep -qE '"diverged": *1[,}]' "$TMPD/out"
 check "--dt 1 should give fitness -1, got $(field fitness "$TMPD/out")" awk -v f="$(field fitness "$TMPD/out")" 'BEGIN { exit !(f == -1) }'
 check "--dt 1 diverged: settled should be 0: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
+check "--dt 1: JSON with nan or inf: $(head -c 600 "$TMPD/out")" sh -c "! grep -qiE 'nan|inf' '$TMPD/out'"
+check "--dt 1: gait should be diverged: $(head -c 600 "$TMPD/out")" grep -qE '"gait": "diverged"' "$TMPD/out"
 # and said once on stderr (diverged, not also "did not settle")
 check "--dt 1: want one stderr line, got $(lines "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 1 ]
 check "--dt 1: warning: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: sim: warning: cube:4 diverged at step [0-9]+, in the relaxation \(fitness -1\)$' "$TMPD/err"

@@ -156,6 +156,115 @@ static void test_dt_search(void)
     CHECK(g_s.diverged, "10x the searched dt did not diverge");
 }
 
+/* the gait figures of a body in free fall (no floor, no global damping): airborne throughout,
+ * and each cycle's rise and fall is the fall of g t^2 / 2 over the cycle's sampled steps */
+static void test_gait_free_fall(void)
+{
+    char err[AM_ERR_MAX];
+    static am_gait gait;
+    am_env env = am_default_env();
+    env.floor = 0;
+    env.zeta_global_scale = AM_P(0);
+    env.temp_amplitude = AM_P(0);
+    CHECK(am_scene_build(&g_lat, "cube:3", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    am_eval_def def = am_default_eval();
+    def.cycles = 3;
+    def.relax_max_steps = 300;
+    def.gait = &gait;
+    am_result r;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(!r.settled && r.relax_steps == 300 && gait.cycles == 3, "relax %ld, cycles %d", r.relax_steps, gait.cycles);
+    const double g = am_to_si(&g_m, g_m.gravity, AM_DIM_ACCEL), dt = r.dt;
+    const long P = g_m.env.period_steps;
+    for (int c = 0; c < 3; c++) {
+        /* sampled after movement steps c P + 1 .. (c + 1) P, falling since step 0 */
+        double t0 = (double)(r.relax_steps + c * P + 1) * dt, t1 = (double)(r.relax_steps + (c + 1) * P) * dt;
+        double want = 0.5 * g * (t1 * t1 - t0 * t0);
+        CHECK(gait.airborne[c] == 1.0, "cycle %d airborne %g", c, gait.airborne[c]);
+        NEAR(gait.lift[c], want, 2e-3 * want);
+        NEAR(am_gait_travel(&gait, AM_FIT_HORIZONTAL, c), 0, 1e-9);
+        NEAR(am_gait_travel(&gait, AM_FIT_3D, c), gait.com[c][2] - gait.com[c + 1][2], 1e-12);
+    }
+    /* the centres of mass bracket the movement: the first is where it began, the last where it ended */
+    NEAR(gait.com[3][2] - gait.com[0][2], r.dz, 1e-12);
+    am_gait_summary gs;
+    am_gait_summarize(&gait, AM_FIT_HORIZONTAL, 0.01, &gs);
+    CHECK(gs.mode == AM_GAIT_STILL && gs.airborne == 1.0, "falling straight down: %s, airborne %g", am_gait_mode_name(gs.mode), gs.airborne);
+}
+
+/* a gait with the given per-cycle travel along x (m) and airborne fraction */
+static void synth_gait(am_gait* g, const double* travel, int n, double air)
+{
+    memset(g, 0, sizeof *g);
+    g->cycles = n;
+    for (int k = 0; k < n; k++) {
+        g->com[k + 1][0] = g->com[k][0] + travel[k];
+        g->com[k + 1][1] = 0.5; /* constant y: no part of the travel */
+        g->com[k][1] = 0.5;
+        g->airborne[k] = air;
+    }
+}
+
+/* the numbers that tell a flop from a scoot from a bounce, on gaits made to be each */
+static void test_gait_modes(void)
+{
+    static am_gait g;
+    am_gait_summary s;
+    const double flop[10] = {0.02, 0.01, 0.004, 0.001, 0.0005, 0.0002, 0.0001, 0.0001, 0.0001, 0.0001};
+    const double scoot[10] = {0.002, 0.003, 0.002, 0.003, 0.002, 0.003, 0.002, 0.003, 0.002, 0.003};
+    const double still[10] = {1e-5, 2e-5, 1e-5, 2e-5, 1e-5, 2e-5, 1e-5, 2e-5, 1e-5, 2e-5};
+    synth_gait(&g, flop, 10, 0.0);
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    NEAR(s.first_half, (0.02 + 0.01 + 0.004 + 0.001 + 0.0005) / 5, 1e-15);
+    NEAR(s.last_half, (0.0002 + 4 * 0.0001) / 5, 1e-15);
+    CHECK(s.mode == AM_GAIT_FLOP && s.sustained < AM_GAIT_FLOP_RATIO, "flop: %s, sustained %g", am_gait_mode_name(s.mode), s.sustained);
+    synth_gait(&g, scoot, 10, 0.05);
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    NEAR(s.sustained, 0.0026 / 0.0024, 1e-12);
+    NEAR(s.travel_total, 0.025, 1e-15);
+    CHECK(s.mode == AM_GAIT_SCOOT, "scoot: %s", am_gait_mode_name(s.mode));
+    synth_gait(&g, scoot, 10, 0.5);
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(s.mode == AM_GAIT_BOUNCE && s.airborne == 0.5, "bounce: %s", am_gait_mode_name(s.mode));
+    synth_gait(&g, still, 10, 0.0);
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(s.mode == AM_GAIT_STILL, "still: %s", am_gait_mode_name(s.mode));
+    /* odd cycle counts leave the middle cycle out of both halves; +x counts backward travel negative */
+    synth_gait(&g, scoot, 9, 0.0);
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    NEAR(s.first_half, 0.01 / 4, 1e-15);
+    NEAR(s.last_half, 0.01 / 4, 1e-15);
+    const double back[2] = {-0.003, -0.003};
+    synth_gait(&g, back, 2, 0.0);
+    NEAR(am_gait_travel(&g, AM_FIT_PLUS_X, 0), -0.003, 1e-15);
+    NEAR(am_gait_travel(&g, AM_FIT_HORIZONTAL, 0), 0.003, 1e-15);
+}
+
+/* a body on the floor: the gait's ends are the result's displacement, and the per-cycle travels
+ * add up to at least the fitness (a path is never shorter than its chord) */
+static void test_gait_on_the_floor(void)
+{
+    static am_gait gait;
+    build("sphere:6");
+    am_eval_def def = am_default_eval();
+    def.cycles = 4;
+    def.gait = &gait;
+    am_result r, r2;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(gait.cycles == 4, "cycles %d", gait.cycles);
+    NEAR(gait.com[4][0] - gait.com[0][0], r.dx, 1e-12);
+    NEAR(gait.com[4][1] - gait.com[0][1], r.dy, 1e-12);
+    am_gait_summary s;
+    am_gait_summarize(&gait, def.fitness, 0.01, &s);
+    CHECK(s.travel_total >= r.fitness - 1e-12, "travel %g < fitness %g", s.travel_total, r.fitness);
+    CHECK(s.airborne >= 0 && s.airborne <= 1 && s.lift > 0, "airborne %g lift %g", s.airborne, s.lift);
+    /* watching changes nothing */
+    def.gait = NULL;
+    am_evaluate(&g_m, &g_s, &def, &r2);
+    CHECK(r2.hash == r.hash && r2.fitness == r.fitness, "the gait changed the evaluation");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -164,5 +273,8 @@ int main(int argc, char** argv)
     RUN(test_model_errors);
     RUN(test_link_layout);
     RUN(test_dt_search);
+    RUN(test_gait_free_fall);
+    RUN(test_gait_modes);
+    RUN(test_gait_on_the_floor);
     return SUMMARY();
 }

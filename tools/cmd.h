@@ -3,6 +3,9 @@
 #ifndef AMORPH_TOOLS_CMD_H
 #define AMORPH_TOOLS_CMD_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include "amorph.h"
 
 int cmd_sim(int argc, char** argv);
@@ -41,6 +44,26 @@ int tool_usage_error(const char* fmt, ...)
     __attribute__((format(printf, 1, 2)))
 #endif
     ;
+
+/* ---- results as key = value lines or one JSON object (tools/record.c) ---- */
+
+/* in as the contents of a JSON string: quotes, backslashes and control bytes escaped, cut to cap */
+void tool_json_escape(char* out, size_t cap, const char* in);
+/* one record: tool_rec_begin, its fields in order, tool_rec_end. In text, "key = value" lines;
+ * in JSON, one object on one line, numbers that are not finite written null */
+typedef struct tool_rec {
+    am_text* t;
+    int json;
+    int n;                      /* fields so far */
+} tool_rec;
+void tool_rec_begin(tool_rec* r, am_text* t, int json);
+void tool_rec_num(tool_rec* r, const char* key, double v);   /* %.9g */
+void tool_rec_int(tool_rec* r, const char* key, long v);
+void tool_rec_str(tool_rec* r, const char* key, const char* v);
+void tool_rec_hex(tool_rec* r, const char* key, uint64_t v);  /* 16 hex digits (a string in JSON) */
+void tool_rec_nums(tool_rec* r, const char* key, const double* v, int n); /* space-separated; a JSON array */
+void tool_rec_strs(tool_rec* r, const char* key, const char* const* v, int n); /* space-separated; a JSON array */
+void tool_rec_end(tool_rec* r);
 
 /* ---- text files (tools/files.c) ---- */
 

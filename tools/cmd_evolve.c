@@ -35,8 +35,10 @@ static const char evolve_help[] =
     "  --help-config      list the configuration keys\n"
     "  --quiet            no progress output\n"
     "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
-    "The run folder holds config.txt, log.csv, evals.csv, best.genome, best.lattice, summary.txt,\n"
-    "checkpoint.txt and, at the end, best.png (filmstrip), best.html (viewer) and fitness.svg.\n"
+    "  --json             the final summary as one JSON line (summary.json holds the same)\n"
+    "The run folder holds config.txt, log.csv, evals.csv (a row per evaluation), best.genome,\n"
+    "best.lattice, checkpoint.txt, and at the end summary.txt, summary.json, best.png (filmstrip),\n"
+    "best.html (viewer) and fitness.svg.\n"
     "Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
 
 /* ---- options shared by evolve and experiment ---- */
@@ -45,7 +47,7 @@ typedef struct evo_opts {
     const char* config;       /* --config FILE */
     const char* out;          /* --out DIR */
     const char* resume;       /* --resume DIR */
-    int print_config, quiet, pictures;
+    int print_config, quiet, pictures, json;
     int nflags;
     const char* key[64];      /* KEY VALUE flags in order */
     const char* val[64];
@@ -75,6 +77,7 @@ static int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* 
         if (*c == '-') *c = '_';
     if (!strcmp(norm, "quiet")) o->quiet = 1;
     else if (!strcmp(norm, "no_pictures")) o->pictures = 0;
+    else if (!strcmp(norm, "json")) o->json = 1;
     else if (!strcmp(norm, "print_config")) o->print_config = 1;
     else if (!strcmp(norm, "config") || !strcmp(norm, "out") || !strcmp(norm, "resume") || am_evo_is_key(norm)) {
         if (!v || (!eq && !strncmp(v, "--", 2))) {
@@ -207,21 +210,44 @@ static TOOL_NOINLINE int write_best(const char* dir, const am_evo* e)
     return write_stream(dir, "best.lattice", lattice_writer, &tool_work[0].lattice, "best lattice");
 }
 
+/* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
+static void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall)
+{
+    tool_rec_str(q, "run", dir);
+    tool_rec_str(q, "representation", am_repr_name(e->def.geno.repr));
+    tool_rec_int(q, "evaluations", e->evaluations);
+    tool_rec_int(q, "generations", e->generation);
+    tool_rec_num(q, "best_fitness", e->best.fitness);
+    tool_rec_int(q, "best_voxels", e->best.voxels);
+    tool_rec_int(q, "best_steps", e->best.steps);
+    tool_rec_hex(q, "best_state_hash", e->best.state_hash);
+    tool_rec_int(q, "best_evaluation", e->best.id);
+    tool_rec_num(q, "final_best", e->last.best);
+    tool_rec_num(q, "final_mean", e->last.mean);
+    tool_rec_num(q, "final_median", e->last.median);
+    tool_rec_hex(q, "run_hash", am_evo_hash(e));
+    tool_rec_num(q, "wall_s", wall);
+    char build[64];
+    snprintf(build, sizeof build, "%s %s", AM_REAL_NAME, AM_PROFILE_NAME);
+    tool_rec_str(q, "build", build);
+}
+
+/* summary.txt (key = value lines) and summary.json (one JSON object) */
 static TOOL_NOINLINE int write_summary(const char* dir, const am_evo* e, double wall)
 {
-    char path[TOOL_PATH_MAX];
-    path_join(path, sizeof path, dir, "summary.txt");
-    tool_out o;
-    if (tool_out_open(&o, path)) return 1;
-    am_text* t = &o.text;
-    am_text_put(t, "# amorph evolve summary\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\n", am_repr_name(e->def.geno.repr),
-                e->evaluations, e->generation);
-    am_text_put(t, "best_fitness = %.9g\nbest_voxels = %d\nbest_steps = %ld\nbest_state_hash = %016llx\n", e->best.fitness,
-                e->best.voxels, e->best.steps, (unsigned long long)e->best.state_hash);
-    am_text_put(t, "final_best = %.9g\nfinal_mean = %.9g\nfinal_median = %.9g\n", e->last.best, e->last.mean, e->last.median);
-    am_text_put(t, "run_hash = %016llx\nwall_s = %.3f\nbuild = %s %s\n", (unsigned long long)am_evo_hash(e), wall, AM_REAL_NAME,
-                AM_PROFILE_NAME);
-    return tool_out_close(&o, 1);
+    for (int json = 0; json < 2; json++) {
+        char path[TOOL_PATH_MAX];
+        path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
+        tool_out o;
+        if (tool_out_open(&o, path)) return 1;
+        if (!json) am_text_put(&o.text, "# amorph evolve summary\n");
+        tool_rec q;
+        tool_rec_begin(&q, &o.text, json);
+        put_summary(&q, e, dir, wall);
+        tool_rec_end(&q);
+        if (tool_out_close(&o, 1)) return 1;
+    }
+    return 0;
 }
 
 static TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
@@ -617,12 +643,16 @@ static int resume_run(const char* dir, const evo_opts* o, const char* const* ext
     return rc;
 }
 
-static void print_result(const am_evo* e, const char* dir)
+/* the run's summary on the standard output: key = value lines, or one JSON line (--json) */
+static int print_result(const am_evo* e, const char* dir, double wall, int json)
 {
-    printf("run = %s\nrepresentation = %s\nevaluations = %ld\ngenerations = %ld\nbest_fitness = %.9g\nbest_voxels = %d\n"
-           "run_hash = %016llx\n",
-           dir, am_repr_name(e->def.geno.repr), e->evaluations, e->generation, e->best.fitness, e->best.voxels,
-           (unsigned long long)am_evo_hash(e));
+    tool_out o;
+    if (tool_out_open(&o, NULL)) return 1;
+    tool_rec q;
+    tool_rec_begin(&q, &o.text, json);
+    put_summary(&q, e, dir, wall);
+    tool_rec_end(&q);
+    return tool_out_close(&o, 1);
 }
 
 int cmd_evolve(int argc, char** argv)
@@ -663,8 +693,9 @@ int cmd_evolve(int argc, char** argv)
     else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
+    const double t0 = am_port_now();
     int rc = o.resume ? resume_run(dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
-    if (rc == 0) print_result(&tool_evo, dir);
+    if (rc == 0) rc = print_result(&tool_evo, dir, am_port_now() - t0, o.json);
     return rc;
 }
 
@@ -704,12 +735,14 @@ static const char experiment_help[] =
     "usage: amorph experiment NAME [--evals N] [--runs R] [--out DIR] [--KEY VALUE]... [--quiet]\n"
     "Runs one of the seed's experiments: every variant R times (seeds seed, seed+1, ...), each a\n"
     "run folder DIR/<variant>-<k>, then writes DIR/results.csv (mean and standard error of the best\n"
-    "fitness against evaluations, per variant) and prints the table. Running the same command again\n"
+    "fitness against evaluations, per variant), summary.txt and summary.json (the last row and the\n"
+    "ranking), and prints the table. Running the same command again\n"
     "resumes unfinished runs and skips finished ones. Other flags set configuration keys of every\n"
     "run (amorph evolve --help-config).\n"
     "  --evals N     evaluations per run (the configuration's, 200)\n"
     "  --runs R      runs per variant (3)\n"
     "  --out DIR     experiment folder (default runs/NAME-NNN)\n"
+    "  --json        the summary as one JSON line instead of the table (summary.json holds it too)\n"
     "experiments:\n";
 
 /* applies "key=value ..." to d */
@@ -794,7 +827,7 @@ static TOOL_NOINLINE int experiment_run(const am_evo_def* base, const variant* v
     return resume_run(rdir, &none, extra, quiet, 0, label);
 }
 
-static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures);
+static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures, int json_out);
 
 int cmd_experiment(int argc, char** argv)
 {
@@ -860,11 +893,26 @@ int cmd_experiment(int argc, char** argv)
             }
             if (rc) return rc;
         }
-    return experiment_results(x, nv, runs, dir, o.pictures);
+    return experiment_results(x, nv, runs, dir, o.pictures, o.json);
+}
+
+/* an experiment's summary record: per variant the mean and standard error of the runs' best
+ * fitness at the last evaluation count every run holds, and the variants ranked by that mean */
+static void put_experiment(tool_rec* q, const char* name, const char* dir, long runs, long evaluations, const char* const* names,
+                           const double* mean, const double* se, const char* const* ranked, int nv)
+{
+    tool_rec_str(q, "experiment", name);
+    tool_rec_str(q, "folder", dir);
+    tool_rec_int(q, "runs", runs);
+    tool_rec_int(q, "evaluations", evaluations);
+    tool_rec_strs(q, "variants", names, nv);
+    tool_rec_nums(q, "mean_best", mean, nv);
+    tool_rec_nums(q, "stderr_best", se, nv);
+    tool_rec_strs(q, "ranking", ranked, nv);
 }
 
 /* the experiment's table: results.csv, and the printed summary; 0, 1 or 2 */
-static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures)
+static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures, int json_out)
 {
     /* results: mean and standard error of the runs' best fitness at each logged evaluation count.
      * First the rows every run holds; then variant by variant, the logs read again for the sums
@@ -928,16 +976,57 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
         char* dirs[1] = {(char*)(uintptr_t)dir};
         if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
-    printf("experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
-    for (int v = 0; v < nv; v++) printf(" %22s", x->v[v].name);
-    printf("\n");
-    for (int q = 0; q < nm; q++) {
-        printf("%-12ld", g_exp_evals[marks[q]]);
-        for (int v = 0; v < nv; v++) printf("   %9.4f +- %7.4f", mean_at[v][q], se_at[v][q]);
-        printf("\n");
+    /* the summary: the final row per variant, and the variants ranked by it */
+    const char* names[6];
+    const char* ranked[6];
+    double final_mean[6], final_se[6];
+    int order[6];
+    for (int v = 0; v < nv; v++) {
+        names[v] = x->v[v].name;
+        final_mean[v] = mean_at[v][nm - 1];
+        final_se[v] = se_at[v][nm - 1];
+        int j = v; /* insertion: the highest mean first, ties in the experiment's order */
+        while (j > 0 && final_mean[order[j - 1]] < final_mean[v]) {
+            order[j] = order[j - 1];
+            j--;
+        }
+        order[j] = v;
     }
-    printf("folder = %s\nresults = %s/results.csv\n", dir, dir);
-    return 0;
+    for (int v = 0; v < nv; v++) ranked[v] = names[order[v]];
+    for (int json = 0; json < 2; json++) {
+        char path[TOOL_PATH_MAX];
+        path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
+        tool_out o;
+        if (tool_out_open(&o, path)) return 1;
+        if (!json) am_text_put(&o.text, "# amorph experiment summary: the best fitness (m) at the last evaluation every run holds\n");
+        tool_rec q;
+        tool_rec_begin(&q, &o.text, json);
+        put_experiment(&q, x->name, dir, runs, g_exp_evals[rows - 1], names, final_mean, final_se, ranked, nv);
+        tool_rec_end(&q);
+        if (tool_out_close(&o, 1)) return 1;
+    }
+    tool_out o;
+    if (tool_out_open(&o, NULL)) return 1;
+    if (json_out) {
+        tool_rec q;
+        tool_rec_begin(&q, &o.text, 1);
+        put_experiment(&q, x->name, dir, runs, g_exp_evals[rows - 1], names, final_mean, final_se, ranked, nv);
+        tool_rec_end(&q);
+        return tool_out_close(&o, 1);
+    }
+    am_text* t = &o.text;
+    am_text_put(t, "experiment %s: best fitness (m), mean +- standard error of %ld runs\n%-12s", x->name, runs, "evaluations");
+    for (int v = 0; v < nv; v++) am_text_put(t, " %22s", x->v[v].name);
+    am_text_put(t, "\n");
+    for (int q = 0; q < nm; q++) {
+        am_text_put(t, "%-12ld", g_exp_evals[marks[q]]);
+        for (int v = 0; v < nv; v++) am_text_put(t, "   %9.4f +- %7.4f", mean_at[v][q], se_at[v][q]);
+        am_text_put(t, "\n");
+    }
+    am_text_put(t, "ranking =");
+    for (int v = 0; v < nv; v++) am_text_put(t, " %s", ranked[v]);
+    am_text_put(t, "\nfolder = %s\nresults = %s/results.csv\nsummary = %s/summary.json\n", dir, dir, dir);
+    return tool_out_close(&o, 1);
 }
 
 /* ---- bench --evolve ---- */

@@ -1,6 +1,7 @@
 /* amorph sim and amorph bench. */
 #include "cmd.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -47,6 +48,48 @@ static am_env merge_env(const am_env* file, const am_env* cli, unsigned given)
     if (given & G_FLOOR) e.floor = cli->floor;
     if (given & G_CTE) e.cte_mode = cli->cte_mode;
     return e;
+}
+
+/* the result and the gait of the movement segment (docs/results.md, Gaits), on the standard output */
+static int print_result(const char* robot, const am_result* r, double wall, const am_gait* g, int fitness, double voxel_size, int json)
+{
+    am_gait_summary gs;
+    am_gait_summarize(g, fitness, voxel_size, &gs);
+    double travel[AM_GAIT_MAX_CYCLES];
+    for (int k = 0; k < g->cycles; k++) travel[k] = am_gait_travel(g, fitness, k);
+    tool_out out;
+    if (tool_out_open(&out, NULL)) return 1;
+    tool_rec rec, *q = &rec;
+    tool_rec_begin(q, &out.text, json);
+    tool_rec_str(q, "robot", robot);
+    tool_rec_num(q, "fitness", r->fitness);
+    tool_rec_num(q, "dx", r->dx);
+    tool_rec_num(q, "dy", r->dy);
+    tool_rec_num(q, "dz", r->dz);
+    tool_rec_int(q, "voxels", r->voxels);
+    tool_rec_int(q, "links", r->links);
+    tool_rec_num(q, "dt", r->dt);
+    tool_rec_int(q, "steps", r->steps);
+    tool_rec_int(q, "relax_steps", r->relax_steps);
+    tool_rec_int(q, "move_steps", r->move_steps);
+    tool_rec_int(q, "diverged", r->diverged);
+    tool_rec_int(q, "settled", r->settled);
+    tool_rec_num(q, "residual_speed", r->residual_speed);
+    tool_rec_int(q, "kinetic_resets", r->kinetic_resets);
+    tool_rec_num(q, "sim_seconds", r->sim_seconds);
+    tool_rec_num(q, "wall_seconds", wall);
+    tool_rec_int(q, "collision_rebuilds", r->rebuilds);
+    tool_rec_int(q, "max_pairs", r->max_pairs);
+    tool_rec_hex(q, "hash", r->hash);
+    tool_rec_nums(q, "cycle_travel", travel, g->cycles);
+    tool_rec_num(q, "travel_first_half", gs.first_half);
+    tool_rec_num(q, "travel_last_half", gs.last_half);
+    tool_rec_num(q, "sustained", gs.sustained);
+    tool_rec_num(q, "airborne", gs.airborne);
+    tool_rec_num(q, "lift", gs.lift);
+    tool_rec_str(q, "gait", r->diverged ? "diverged" : am_gait_mode_name(gs.mode));
+    tool_rec_end(q);
+    return tool_out_close(&out, 1);
 }
 
 int cmd_sim(int argc, char** argv)
@@ -168,27 +211,12 @@ int cmd_sim(int argc, char** argv)
 #endif
 
     am_result res;
+    am_gait gait;
+    def.gait = &gait;
     double t0 = am_port_now();
     am_evaluate(&tool_work[0].model, &tool_work[0].state, &def, &res);
     double wall = am_port_now() - t0;
-    if (json) {
-        printf("{\"robot\": \"%s\", \"fitness\": %.9g, \"dx\": %.9g, \"dy\": %.9g, \"dz\": %.9g, \"voxels\": %d, "
-               "\"links\": %d, \"dt\": %.9g, \"steps\": %ld, \"relax_steps\": %ld, \"move_steps\": %ld, "
-               "\"diverged\": %d, \"settled\": %d, \"residual_speed\": %.9g, \"kinetic_resets\": %ld, "
-               "\"sim_seconds\": %.9g, \"wall_seconds\": %.6f, \"collision_rebuilds\": %ld, \"max_pairs\": %d, "
-               "\"hash\": \"%016llx\"}\n",
-               file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
-               res.move_steps, res.diverged, res.settled, res.residual_speed, res.kinetic_resets, res.sim_seconds, wall,
-               res.rebuilds, res.max_pairs, (unsigned long long)res.hash);
-    } else {
-        printf("robot = %s\nfitness = %.9g\ndx = %.9g\ndy = %.9g\ndz = %.9g\nvoxels = %d\nlinks = %d\ndt = %.9g\n"
-               "steps = %ld\nrelax_steps = %ld\nmove_steps = %ld\ndiverged = %d\nsettled = %d\nresidual_speed = %.9g\n"
-               "kinetic_resets = %ld\nsim_seconds = %.9g\nwall_seconds = %.6f\ncollision_rebuilds = %ld\nmax_pairs = %d\n"
-               "hash = %016llx\n",
-               file, res.fitness, res.dx, res.dy, res.dz, res.voxels, res.links, res.dt, res.steps, res.relax_steps,
-               res.move_steps, res.diverged, res.settled, res.residual_speed, res.kinetic_resets, res.sim_seconds, wall,
-               res.rebuilds, res.max_pairs, (unsigned long long)res.hash);
-    }
+    if (print_result(file, &res, wall, &gait, def.fitness, AM_PARAM_TO_DOUBLE(lat->voxel_size), json)) return 1;
     fflush(stdout);
     /* a run that diverged or did not settle is a result (exit status 0), with one line of warning */
     if (res.diverged) {

@@ -274,6 +274,7 @@ typedef struct am_eval_def {
     long release_steps;      /* the last steps of relaxation, with the model's damping alone, over
                               * which the RMS speed must stay below settle_speed (500) */
     am_record* record;       /* optional recording (may be NULL) */
+    struct am_gait* gait;    /* optional gait diagnostics of the movement segment (may be NULL) */
 } am_eval_def;
 
 am_eval_def am_default_eval(void);
@@ -297,6 +298,55 @@ typedef struct am_result {
 
 /* the whole evaluation of one model; s is overwritten */
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
+
+/* ---- gait diagnostics (docs/results.md, Gaits) ----
+ * What the movement segment looked like, cycle by cycle: the centre of mass sampled at the same
+ * phase of every actuation cycle (so vibration within a cycle cancels), how much of each cycle
+ * the body spent with no voxel on the floor, and how far its centre of mass rose and fell. */
+#if defined(AM_PROFILE_BOARD)
+#define AM_GAIT_MAX_CYCLES 32
+#else
+#define AM_GAIT_MAX_CYCLES 256
+#endif
+typedef struct am_gait {
+    int cycles;                                /* cycles recorded: the first AM_GAIT_MAX_CYCLES */
+    double com[AM_GAIT_MAX_CYCLES + 1][3];     /* m: at the start of the movement, then at the end of each cycle */
+    double airborne[AM_GAIT_MAX_CYCLES];       /* fraction of the cycle's steps with no voxel touching the floor */
+    double lift[AM_GAIT_MAX_CYCLES];           /* m: highest minus lowest centre-of-mass height within the cycle */
+    double low, high;                          /* scratch: the cycle under way's height range so far */
+    long air_steps;                            /* scratch: and its steps off the floor */
+} am_gait;
+
+/* the gait told by numbers (thresholds in docs/results.md) */
+typedef enum am_gait_mode {
+    AM_GAIT_STILL,           /* travels less than AM_GAIT_STILL_FRAC voxel edges per cycle */
+    AM_GAIT_FLOP,            /* travel stops: the last half's travel per cycle is below AM_GAIT_FLOP_RATIO of the first half's */
+    AM_GAIT_SCOOT,           /* travel goes on, the body on the floor */
+    AM_GAIT_BOUNCE           /* travel goes on, the body off the floor at least AM_GAIT_BOUNCE_AIR of the time */
+} am_gait_mode;
+#define AM_GAIT_STILL_FRAC 0.01
+#define AM_GAIT_FLOP_RATIO 0.25
+#define AM_GAIT_BOUNCE_AIR 0.2
+
+typedef struct am_gait_summary {
+    int cycles;              /* cycles summarised */
+    double travel_total;     /* m: the sum of the per-cycle travels */
+    double first_half;       /* m per cycle: mean travel per cycle over the first floor(cycles / 2) cycles */
+    double last_half;        /* m per cycle: the same over the last floor(cycles / 2) cycles */
+    double sustained;        /* last_half / first_half (0 when the first half did not move) */
+    double airborne;         /* fraction of the movement's steps with no voxel on the floor */
+    double lift;             /* m: mean over the cycles of the centre of mass's rise and fall */
+    am_gait_mode mode;
+} am_gait_summary;
+
+/* the travel of cycle k (0-based): the distance between the centres of mass at its start and end,
+ * measured as the fitness is (AM_FIT_HORIZONTAL: in the floor's plane; AM_FIT_PLUS_X: along +x;
+ * AM_FIT_3D: in space) */
+double am_gait_travel(const am_gait* g, int fitness, int k);
+/* the summary of g; voxel_size (m) scales the "still" threshold */
+void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out);
+/* "still", "flop", "scoot", "bounce" */
+const char* am_gait_mode_name(am_gait_mode mode);
 
 /* recording helper used by am_evaluate: stores a frame if s->step is a multiple of rec->every */
 void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
