@@ -12,7 +12,7 @@
  * common header is parsed here, the rest line by line by the representation's parse_line, so a
  * new representation brings its own lines. Every problem is reported as "file:line: problem".
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <stdio.h>
 #include <string.h>

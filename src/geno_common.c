@@ -13,7 +13,7 @@
  * Interpolation error is below 1e-6 on the desktop profile (4096 intervals) and below 3e-5 on the
  * board (256): the genotype-to-body map is a fixed, deterministic function either way.
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -28,7 +28,7 @@
  * (uniform starts in 0..n-L would favour the centre). A node carries its function, parameters
  * and incoming connections; nodes of the last layer also carry their connections to the outputs.
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <string.h>
 

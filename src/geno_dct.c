@@ -8,7 +8,7 @@
  * Crossover: each amplitude comes from either parent with probability 1/2 (the second child takes
  * the other parent's).
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <string.h>
 

@@ -21,7 +21,7 @@
  * points on the positive side and the second parent's on the other side, the second child the
  * rest (each up to def->gmx_max_points, in order).
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <string.h>
 

@@ -10,7 +10,7 @@
  * optional output (per-cell ratios of the positive parts of the densities) for formats that can
  * carry mixtures; the lattice itself holds one material per cell.
  */
-#include "amorph/genotype.h"
+#include "geno_internal.h"
 
 #include <string.h>
 
