@@ -109,6 +109,14 @@ expect_fail 2 "bad2.cfg:1: expected 'key = value'" "$AMORPH" evolve --config "$T
 expect_fail 2 "nothere.cfg: cannot open" "$AMORPH" evolve --config "$TMPD/nothere.cfg"
 if [ ! -e "$TMPD/bad1" ]; then ok; else ko "a refused run left a folder behind"; fi
 expect_fail 2 "holds a run already" $E --out "$TMPD/a"
+# a folder left by a run stopped before its first checkpoint (config.txt and a log header, as a
+# kill or a full disk leaves it) cannot be resumed, says so, and is started over by --out
+mkdir "$TMPD/early" && cp "$TMPD/a/config.txt" "$TMPD/early/" && head -n 1 "$TMPD/a/log.csv" >"$TMPD/early/log.csv"
+printf 'evaluation,partial' >"$TMPD/early/evals.csv"
+expect_fail 2 "no checkpoint.txt: the run stopped before its first checkpoint.*start it again with --out" "$AMORPH" evolve --resume "$TMPD/early"
+expect_ok $E --out "$TMPD/early" --threads 1
+if [ "$(sumval "$TMPD/early" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ] && cmp -s "$TMPD/early/evals.csv" "$TMPD/a/evals.csv"; then ok
+else ko "a run started over in a folder left before its first checkpoint differs"; fi
 
 # --- resume: bad cases leave the run as it was ---
 cp -r "$TMPD/a" "$TMPD/r"

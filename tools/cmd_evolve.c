@@ -528,14 +528,15 @@ static int finish_pictures(const am_evo* e, const char* dir)
 #endif
 }
 
-/* a new run in dir (created): its folder, configuration, log header and first checkpoint; 0, 1 or 2 */
+/* a new run in dir (created): its folder, configuration, log headers and first checkpoint; 0, 1
+ * or 2. A run exists once its first checkpoint does (written before any evaluation): a folder
+ * with the other files but no checkpoint was left by a run stopped before it, and is started
+ * over. */
 static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, "checkpoint.txt");
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
-    path_join(path, sizeof path, dir, "config.txt");
-    if (am_port_exists(path)) return tool_usage_error("%s holds a run already (config.txt): choose another --out", dir);
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (am_evo_init(&tool_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
@@ -604,7 +605,13 @@ static TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
 static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
+    path_join(path, sizeof path, dir, "config.txt");
+    const int has_config = am_port_exists(path);
     path_join(path, sizeof path, dir, "checkpoint.txt");
+    if (has_config && !am_port_exists(path))
+        return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
+                                "done; start it again with --out %s",
+                                dir, dir);
     int rc = read_checkpoint(path, &tool_evo);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
