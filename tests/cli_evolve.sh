@@ -131,6 +131,14 @@ expect_fail 2 "checkpoint.txt:[0-9]+: checksum mismatch" "$AMORPH" evolve --resu
 head -c 2000 "$TMPD/a/checkpoint.txt" >"$TMPD/r/checkpoint.txt"
 expect_fail 2 "missing checksum" "$AMORPH" evolve --resume "$TMPD/r" --quiet
 cp "$TMPD/a/checkpoint.txt" "$TMPD/r/checkpoint.txt"
+# a FIFO in place of the checkpoint or the configuration is refused at once, never waited on
+# (without the check, the resume would block on the FIFO until the timeout)
+mv "$TMPD/r/checkpoint.txt" "$TMPD/ck.keep" && mkfifo "$TMPD/r/checkpoint.txt"
+expect_fail 2 "checkpoint.txt: not a regular file" timeout 60 "$AMORPH" evolve --resume "$TMPD/r" --quiet
+rm "$TMPD/r/checkpoint.txt" && mv "$TMPD/ck.keep" "$TMPD/r/checkpoint.txt"
+mv "$TMPD/r/config.txt" "$TMPD/cfg.keep" && mkfifo "$TMPD/r/config.txt"
+expect_fail 2 "config.txt: not a regular file" timeout 60 "$AMORPH" evolve --resume "$TMPD/r" --quiet
+rm "$TMPD/r/config.txt" && mv "$TMPD/cfg.keep" "$TMPD/r/config.txt"
 if [ "$(snap "$TMPD/r")" = "$before" ]; then ok; else ko "a refused resume changed the run folder"; fi
 expect_fail 2 "cannot open" "$AMORPH" evolve --resume "$TMPD/nothere" --quiet
 expect_fail 2 "--out does not apply" "$AMORPH" evolve --resume "$TMPD/r" --out "$TMPD/x"

@@ -37,6 +37,8 @@ void am_port_progress(const char* line);
 
 /* ---- files ---- */
 
+/* Reading (whole files and streams) opens regular files only: a folder, FIFO or device is refused
+ * with AM_ERR_IO at once, never waited on. */
 /* reads the whole file path into buf (capacity cap) and NUL-terminates it; *len gets its length.
  * AM_ERR_IO if unreadable, AM_ERR_CAPACITY if larger than cap - 1. */
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz);

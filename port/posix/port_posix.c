@@ -24,10 +24,31 @@ double am_port_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* path opened for reading when it is a regular file: a FIFO, device or folder is refused without
+ * waiting for a writer (opened non-blocking, checked, then made blocking again); fd, or -1 after
+ * the message */
+static int open_regular(const char* path, char* err, int errsz)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0) {
+        am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
+        return -1;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl >= 0) fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    return fd;
+}
+
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz)
 {
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    int fd = open_regular(path, err, errsz);
+    if (fd < 0) return AM_ERR_IO;
     long n = 0;
     for (;;) {
         if (n >= cap - 1) {
@@ -144,8 +165,8 @@ am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int 
     *s = -1;
     int k = free_slot();
     if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    int fd = open_regular(path, err, errsz);
+    if (fd < 0) return AM_ERR_IO;
     *s = claim(k, fd, path, 0);
     return AM_OK;
 }
