@@ -189,32 +189,43 @@ void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc)
     sc->hash = sc->line_hash = sc->prev_hash = AM_HASH_INIT;
 }
 
+static void scan_byte(am_evo_ckpt_scan* sc, unsigned char c)
+{
+    sc->hash = am_hash_bytes(sc->hash, &c, 1);
+    sc->bytes++;
+    if (c != '\n') {
+        if (sc->cur_len < (long)sizeof sc->cur) sc->cur[sc->cur_len] = (char)c;
+        sc->cur_len++;
+        return;
+    }
+    /* a whole line: number lines + 1, its first bytes in cur */
+    int line = ++sc->lines;
+    if (sc->cur_len == 10 && !memcmp(sc->cur, "config-end", 10) && line >= 4 && !sc->config_end) sc->config_end = line;
+    if (sc->cur_len == 3 && !memcmp(sc->cur, "end", 3)) sc->last_end = line;
+    memcpy(sc->prev, sc->cur, sizeof sc->cur);
+    sc->prev_len = sc->cur_len;
+    sc->prev_hash = sc->line_hash;
+    sc->line_hash = sc->hash;
+    sc->cur_len = 0;
+}
+
+/* CRLF line ends (a checkpoint that went through a Windows editor or transfer) read as LF: a CR
+ * just before a LF is left out, of the checksum too, so the text is the one that was written */
 void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n)
 {
     const unsigned char* p = (const unsigned char*)data;
     for (long i = 0; i < n; i++) {
         unsigned char c = p[i];
-        sc->hash = am_hash_bytes(sc->hash, &c, 1);
-        sc->bytes++;
-        if (c != '\n') {
-            if (sc->cur_len < (long)sizeof sc->cur) sc->cur[sc->cur_len] = (char)c;
-            sc->cur_len++;
-            continue;
-        }
-        /* a whole line: number lines + 1, its first bytes in cur */
-        int line = ++sc->lines;
-        if (sc->cur_len == 10 && !memcmp(sc->cur, "config-end", 10) && line >= 4 && !sc->config_end) sc->config_end = line;
-        if (sc->cur_len == 3 && !memcmp(sc->cur, "end", 3)) sc->last_end = line;
-        memcpy(sc->prev, sc->cur, sizeof sc->cur);
-        sc->prev_len = sc->cur_len;
-        sc->prev_hash = sc->line_hash;
-        sc->line_hash = sc->hash;
-        sc->cur_len = 0;
+        if (sc->cr && c != '\n') scan_byte(sc, '\r'); /* a CR not before a LF is a byte like any other */
+        sc->cr = c == '\r';
+        if (!sc->cr) scan_byte(sc, c);
     }
 }
 
 am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz)
 {
+    if (sc->cr) scan_byte(sc, '\r');
+    sc->cr = 0;
     if (sc->bytes == 0) return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: empty checkpoint", fname);
     /* the last line: the unfinished one, or the last whole one when the text ends with a newline */
     int ends_nl = sc->cur_len == 0;
@@ -314,6 +325,7 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     am_evo* e = r->e;
     char* tok[12];
     if (r->st != AM_OK) return r->st;
+    if (n > 0 && text[n - 1] == '\r') text[--n] = 0; /* a CRLF line end, left out by the scan too */
     r->line++;
     if (r->line >= r->until) return AM_OK; /* the checksum line */
     if (r->in_genome) return read_genome_line(r, text, n, err, errsz);

@@ -140,6 +140,10 @@ mv "$TMPD/r/config.txt" "$TMPD/cfg.keep" && mkfifo "$TMPD/r/config.txt"
 expect_fail 2 "config.txt: not a regular file" timeout 60 "$AMORPH" evolve --resume "$TMPD/r" --quiet
 rm "$TMPD/r/config.txt" && mv "$TMPD/cfg.keep" "$TMPD/r/config.txt"
 if [ "$(snap "$TMPD/r")" = "$before" ]; then ok; else ko "a refused resume changed the run folder"; fi
+# a checkpoint whose line ends became CRLF (a Windows editor or transfer) resumes as the same run
+cp -r "$TMPD/a" "$TMPD/crlf" && sed -i 's/$/\r/' "$TMPD/crlf/checkpoint.txt"
+expect_ok "$AMORPH" evolve --resume "$TMPD/crlf" --quiet --no-pictures
+if [ "$(sumval "$TMPD/crlf" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ]; then ok; else ko "a CRLF checkpoint resumed differently: $(cat "$TMPD/err")"; fi
 expect_fail 2 "cannot open" "$AMORPH" evolve --resume "$TMPD/nothere" --quiet
 expect_fail 2 "--out does not apply" "$AMORPH" evolve --resume "$TMPD/r" --out "$TMPD/x"
 # a finished run resumed with more evaluations goes on; the result equals a longer run from scratch

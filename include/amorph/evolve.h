@@ -211,6 +211,7 @@ typedef struct am_evo_ckpt_scan {
     int config_end;             /* line of the first "config-end" after the first configuration line, 0 if none */
     int last_end;               /* line of the last "end" line, 0 if none */
     int checksum_line;          /* set by am_evo_checkpoint_scan_end: the last line, the checksum */
+    int cr;                     /* 1: the last byte seen was a CR (left out when a LF follows) */
 } am_evo_ckpt_scan;
 void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc);
 void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
