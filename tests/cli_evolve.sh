@@ -205,6 +205,22 @@ d="$TMPD/slow1"
 AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L --checkpoint-seconds 1 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 if [ $rc -eq 137 ]; then ok; else ko "checkpoint_seconds 1, kill -9 at 50: exit $rc"; fi
 resumed "checkpoint_seconds 1" "$d"
+# two processes on one run folder: the first stops itself (SIGSTOP) just before evaluation 15,
+# holding the folder; a second one, resuming or starting there, is refused with one line; the
+# first then ends exactly like the reference run, its logs without a duplicated row
+d="$TMPD/two"
+AMORPH_TEST_INTERRUPT=STOP:14 $E --out "$d" $L >"$TMPD/out1" 2>"$TMPD/err1" &
+pid=$!
+k=0
+while [ -e "/proc/$pid" ] && [ "$(cut -d' ' -f3 "/proc/$pid/stat" 2>/dev/null)" != T ] && [ $k -lt 1200 ]; do sleep 0.1; k=$((k + 1)); done
+if [ "$(cut -d' ' -f3 "/proc/$pid/stat" 2>/dev/null)" = T ]; then ok; else ko "the first process did not stop itself"; fi
+expect_fail 2 "two/lock: in use by process $pid \(another amorph is working in" "$AMORPH" evolve --resume "$d" --quiet
+expect_fail 2 "two/lock: in use by process $pid" $E --out "$d"
+kill -CONT $pid
+wait $pid; rc=$?
+if [ $rc -eq 0 ]; then ok; else ko "the first process, continued: exit $rc: $(cat "$TMPD/err1")"; fi
+if [ "$(nowall "$d/log.csv")" = "$(nowall "$TMPD/ref/log.csv")" ] && cmp -s "$d/evals.csv" "$TMPD/ref/evals.csv"; then ok
+else ko "two processes on one folder: the logs differ from the reference"; fi
 # a run folder from a build without evals.csv resumes; its evals.csv starts at the checkpoint
 d="$TMPD/noevals"
 AMORPH_TEST_INTERRUPT=KILL:50 $E --out "$d" $L >"$TMPD/out" 2>"$TMPD/err"

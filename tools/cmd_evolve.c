@@ -37,7 +37,8 @@ static const char evolve_help[] =
     "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
     "  --json             the final summary as one JSON line (summary.json holds the same)\n"
     "The run folder holds config.txt, log.csv, evals.csv (a row per evaluation), best.genome,\n"
-    "best.lattice, checkpoint.txt, and at the end summary.txt, summary.json, best.png (filmstrip),\n"
+    "best.lattice, checkpoint.txt, lock (one process at a time), and at the end summary.txt,\n"
+    "summary.json, best.png (filmstrip),\n"
     "best.html (viewer) and fitness.svg.\n"
     "Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
 
@@ -408,7 +409,7 @@ static TOOL_NOINLINE int test_interrupt_setup(void)
     static const struct {
         const char* name;
         am_port_signal sig;
-    } sigs[] = {{"INT", AM_PORT_SIGINT}, {"TERM", AM_PORT_SIGTERM}, {"KILL", AM_PORT_SIGKILL}};
+    } sigs[] = {{"INT", AM_PORT_SIGINT}, {"TERM", AM_PORT_SIGTERM}, {"KILL", AM_PORT_SIGKILL}, {"STOP", AM_PORT_SIGSTOP}};
     const char* v = am_port_getenv("AMORPH_TEST_INTERRUPT");
     g_test_int.sig = (am_port_signal)0;
     if (!v || !*v) return 0;
@@ -424,7 +425,7 @@ static TOOL_NOINLINE int test_interrupt_setup(void)
     snprintf(shown, sizeof shown, "%s", v);
     for (char* c = shown; *c; c++)
         if ((unsigned char)*c < 32 || *c == 127) *c = '?'; /* the message stays one line */
-    return tool_usage_error("AMORPH_TEST_INTERRUPT = '%s%s': expected SIG:N, SIG one of INT, TERM, KILL and N a whole number "
+    return tool_usage_error("AMORPH_TEST_INTERRUPT = '%s%s': expected SIG:N, SIG one of INT, TERM, KILL, STOP and N a whole number "
                             "of evaluations >= 0 (a test setting, docs/evolve.md)",
                             shown, strlen(v) >= sizeof shown ? "..." : "");
 }
@@ -528,16 +529,15 @@ static int finish_pictures(const am_evo* e, const char* dir)
 #endif
 }
 
-/* a new run in dir (created): its folder, configuration, log headers and first checkpoint; 0, 1
- * or 2. A run exists once its first checkpoint does (written before any evaluation): a folder
- * with the other files but no checkpoint was left by a run stopped before it, and is started
- * over. */
+/* a new run in dir (made and locked by the caller): its configuration, log headers and first
+ * checkpoint; 0, 1 or 2. A run exists once its first checkpoint does (written before any
+ * evaluation): a folder with the other files but no checkpoint was left by a run stopped before
+ * it, and is started over. */
 static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, "checkpoint.txt");
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
-    if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (am_evo_init(&tool_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
@@ -550,14 +550,30 @@ static TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
     return 0;
 }
 
+/* owns the run folder dir (its `lock` file) while this process works in it: a second process on
+ * the same folder is refused. 0, or 2 after a message */
+static TOOL_NOINLINE int lock_run(const char* dir)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, "lock");
+    if (am_port_lock(path, err, sizeof err) != AM_OK)
+        return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
+    return 0;
+}
+
 /* a new run in dir, to its end; 0, 1, 2 or 130 */
 static int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
 {
+    char err[AM_ERR_MAX];
+    if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (lock_run(dir)) return 2;
     int rc = start_prepare(d, dir);
-    if (rc) return rc;
-    run_io io = {dir, quiet, pictures, label};
-    rc = run_loop(&tool_evo, &io);
-    if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+    if (rc == 0) {
+        run_io io = {dir, quiet, pictures, label};
+        rc = run_loop(&tool_evo, &io);
+        if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+    }
+    am_port_unlock();
     return rc;
 }
 
@@ -642,11 +658,14 @@ static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const c
 
 static int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
 {
+    if (am_port_exists(dir) && lock_run(dir)) return 2;
     int rc = resume_load(dir, o, extra);
-    if (rc) return rc;
-    run_io io = {dir, quiet, pictures, label};
-    rc = run_loop(&tool_evo, &io);
-    if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+    if (rc == 0) {
+        run_io io = {dir, quiet, pictures, label};
+        rc = run_loop(&tool_evo, &io);
+        if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+    }
+    am_port_unlock();
     return rc;
 }
 

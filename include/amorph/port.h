@@ -95,6 +95,15 @@ void am_port_catch_interrupt(void);
 /* 1 once an interruption was requested since am_port_catch_interrupt */
 int am_port_interrupted(void);
 
+/* ---- owning a folder ---- */
+
+/* takes the exclusive lock of the file path (created if missing; the POSIX port writes its process
+ * id into it), held until am_port_unlock or the end of the process, however it ends (kill -9
+ * included: no stale lock is left). One lock at a time. AM_ERR_IO when another process holds it
+ * (the message names it) or the file cannot be made. A port with one process does nothing. */
+am_status am_port_lock(const char* path, char* err, int errsz);
+void am_port_unlock(void);
+
 /* ---- testing interruptions ---- */
 
 /* the value of the environment variable name, or NULL when it is not set (always NULL on a port
@@ -102,11 +111,12 @@ int am_port_interrupted(void);
  * (docs/evolve.md, Testing interruptions); the library never does. */
 const char* am_port_getenv(const char* name);
 /* the interruptions a process can be sent from outside */
-typedef enum am_port_signal { AM_PORT_SIGINT = 1, AM_PORT_SIGTERM, AM_PORT_SIGKILL } am_port_signal;
+typedef enum am_port_signal { AM_PORT_SIGINT = 1, AM_PORT_SIGTERM, AM_PORT_SIGKILL, AM_PORT_SIGSTOP } am_port_signal;
 /* sends sig to this process itself, as `kill -SIG` from outside would, for deterministic tests
  * of the interruption paths: SIGINT and SIGTERM go to the calling thread, so the handler of
  * am_port_catch_interrupt has run when this returns (am_port_interrupted() is then 1); SIGKILL
- * ends the process at once, wherever it is (a shell sees status 137). Callable from a worker of
+ * ends the process at once, wherever it is (a shell sees status 137); SIGSTOP stops it until a
+ * SIGCONT (or a SIGKILL) from outside, to hold it at a chosen point. Callable from a worker of
  * am_port_parallel_map. A port without signals does nothing. */
 void am_port_raise(am_port_signal sig);
 

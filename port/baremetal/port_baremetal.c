@@ -410,6 +410,18 @@ int am_port_interrupted(void)
     return 0;
 }
 
+/* ---- owning a folder: one process, nothing to lock ---- */
+
+am_status am_port_lock(const char* path, char* err, int errsz)
+{
+    (void)path, (void)err, (void)errsz;
+    return AM_OK;
+}
+
+void am_port_unlock(void)
+{
+}
+
 /* ---- testing interruptions: no environment, no signals ---- */
 
 const char* am_port_getenv(const char* name)

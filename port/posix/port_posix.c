@@ -296,6 +296,40 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
     return AM_OK;
 }
 
+/* ---- owning a folder: an fcntl lock, released by the kernel when the process ends ---- */
+
+static int lock_fd = -1;
+
+am_status am_port_lock(const char* path, char* err, int errsz)
+{
+    if (lock_fd >= 0) return am_fail(err, errsz, AM_ERR_ARG, "%s: a lock is held already", path);
+    int fd = open(path, O_RDWR | O_CREAT, 0644);
+    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    struct flock fl;
+    memset(&fl, 0, sizeof fl);
+    fl.l_type = F_WRLCK;
+    fl.l_whence = SEEK_SET;
+    if (fcntl(fd, F_SETLK, &fl) != 0) {
+        int e = errno;
+        long pid = 0;
+        if ((e == EACCES || e == EAGAIN) && fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK) pid = (long)fl.l_pid;
+        close(fd);
+        if (e == EACCES || e == EAGAIN) return am_fail(err, errsz, AM_ERR_IO, "%s: in use by process %ld", path, pid);
+        return am_fail(err, errsz, AM_ERR_IO, "%s: cannot lock: %s", path, strerror(e));
+    }
+    char text[32];
+    int n = snprintf(text, sizeof text, "%ld\n", (long)getpid());
+    if (ftruncate(fd, 0) == 0) (void)write_all(fd, text, n); /* the owner, for people: the lock is what counts */
+    lock_fd = fd;
+    return AM_OK;
+}
+
+void am_port_unlock(void)
+{
+    if (lock_fd >= 0) close(lock_fd); /* closing releases the lock */
+    lock_fd = -1;
+}
+
 am_status am_port_make_dir(const char* path, char* err, int errsz)
 {
     if (mkdir(path, 0755) == 0) return AM_OK;
@@ -422,5 +456,6 @@ void am_port_raise(am_port_signal sig)
     case AM_PORT_SIGKILL:
         raise(SIGKILL);
         _exit(128 + SIGKILL); /* not reached: SIGKILL cannot be caught */
+    case AM_PORT_SIGSTOP: kill(getpid(), SIGSTOP); break; /* the whole process, not one thread */
     }
 }
