@@ -38,8 +38,7 @@ static const char evolve_help[] =
     "  --json             the final summary as one JSON line (summary.json holds the same)\n"
     "The run folder holds config.txt, log.csv, evals.csv (a row per evaluation), best.genome,\n"
     "best.lattice, checkpoint.txt, lock (one process at a time), and at the end summary.txt,\n"
-    "summary.json, best.png (filmstrip),\n"
-    "best.html (viewer) and fitness.svg.\n"
+    "summary.json, best.png (filmstrip), best.html (viewer) and fitness.svg.\n"
     "Ctrl-C stops after the current evaluations; --resume continues exactly.\n";
 
 /* ---- options shared by evolve and experiment ---- */
