@@ -232,22 +232,41 @@ static void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wa
     tool_rec_str(q, "build", build);
 }
 
-/* summary.txt (key = value lines) and summary.json (one JSON object) */
-static TOOL_NOINLINE int write_summary(const char* dir, const am_evo* e, double wall)
+/* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON
+ * object), both of the fields put(q, ctx) writes; 0, or 1 after a message */
+static TOOL_NOINLINE int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx)
 {
     for (int json = 0; json < 2; json++) {
         char path[TOOL_PATH_MAX];
         path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
         tool_out o;
         if (tool_out_open(&o, path)) return 1;
-        if (!json) am_text_put(&o.text, "# amorph evolve summary\n");
+        if (!json) am_text_put(&o.text, "# %s\n", comment);
         tool_rec q;
         tool_rec_begin(&q, &o.text, json);
-        put_summary(&q, e, dir, wall);
+        put(&q, ctx);
         tool_rec_end(&q);
         if (tool_out_close(&o, 1)) return 1;
     }
     return 0;
+}
+
+typedef struct run_summary {
+    const am_evo* e;
+    const char* dir;
+    double wall;
+} run_summary;
+
+static void put_run_summary(tool_rec* q, const void* ctx)
+{
+    const run_summary* r = (const run_summary*)ctx;
+    put_summary(q, r->e, r->dir, r->wall);
+}
+
+static int write_summary(const char* dir, const am_evo* e, double wall)
+{
+    const run_summary r = {e, dir, wall};
+    return write_summaries(dir, "amorph evolve summary", put_run_summary, &r);
 }
 
 static TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
@@ -921,19 +940,29 @@ int cmd_experiment(int argc, char** argv)
     return experiment_results(x, nv, runs, dir, o.pictures, o.json);
 }
 
-/* an experiment's summary record: per variant the mean and standard error of the runs' best
- * fitness at the last evaluation count every run holds, and the variants ranked by that mean */
-static void put_experiment(tool_rec* q, const char* name, const char* dir, long runs, long evaluations, const char* const* names,
-                           const double* mean, const double* se, const char* const* ranked, int nv)
+/* an experiment's summary: per variant the mean and standard error of the runs' best fitness at
+ * the last evaluation count every run holds, and the variants ranked by that mean */
+typedef struct exp_summary {
+    const char* name;
+    const char* dir;
+    long runs, evaluations;
+    int nv;
+    const char* names[6];
+    const char* ranked[6];
+    double mean[6], se[6];
+} exp_summary;
+
+static void put_experiment(tool_rec* q, const void* ctx)
 {
-    tool_rec_str(q, "experiment", name);
-    tool_rec_str(q, "folder", dir);
-    tool_rec_int(q, "runs", runs);
-    tool_rec_int(q, "evaluations", evaluations);
-    tool_rec_strs(q, "variants", names, nv);
-    tool_rec_nums(q, "mean_best", mean, nv);
-    tool_rec_nums(q, "stderr_best", se, nv);
-    tool_rec_strs(q, "ranking", ranked, nv);
+    const exp_summary* x = (const exp_summary*)ctx;
+    tool_rec_str(q, "experiment", x->name);
+    tool_rec_str(q, "folder", x->dir);
+    tool_rec_int(q, "runs", x->runs);
+    tool_rec_int(q, "evaluations", x->evaluations);
+    tool_rec_strs(q, "variants", x->names, x->nv);
+    tool_rec_nums(q, "mean_best", x->mean, x->nv);
+    tool_rec_nums(q, "stderr_best", x->se, x->nv);
+    tool_rec_strs(q, "ranking", x->ranked, x->nv);
 }
 
 /* the experiment's table: results.csv, and the printed summary; 0, 1 or 2 */
@@ -1002,40 +1031,34 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
         if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
     /* the summary: the final row per variant, and the variants ranked by it */
-    const char* names[6];
-    const char* ranked[6];
-    double final_mean[6], final_se[6];
+    exp_summary sum;
+    memset(&sum, 0, sizeof sum);
+    sum.name = x->name;
+    sum.dir = dir;
+    sum.runs = runs;
+    sum.evaluations = g_exp_evals[rows - 1];
+    sum.nv = nv;
     int order[6];
     for (int v = 0; v < nv; v++) {
-        names[v] = x->v[v].name;
-        final_mean[v] = mean_at[v][nm - 1];
-        final_se[v] = se_at[v][nm - 1];
+        sum.names[v] = x->v[v].name;
+        sum.mean[v] = mean_at[v][nm - 1];
+        sum.se[v] = se_at[v][nm - 1];
         int j = v; /* insertion: the highest mean first, ties in the experiment's order */
-        while (j > 0 && final_mean[order[j - 1]] < final_mean[v]) {
+        while (j > 0 && sum.mean[order[j - 1]] < sum.mean[v]) {
             order[j] = order[j - 1];
             j--;
         }
         order[j] = v;
     }
-    for (int v = 0; v < nv; v++) ranked[v] = names[order[v]];
-    for (int json = 0; json < 2; json++) {
-        char path[TOOL_PATH_MAX];
-        path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
-        tool_out o;
-        if (tool_out_open(&o, path)) return 1;
-        if (!json) am_text_put(&o.text, "# amorph experiment summary: the best fitness (m) at the last evaluation every run holds\n");
-        tool_rec q;
-        tool_rec_begin(&q, &o.text, json);
-        put_experiment(&q, x->name, dir, runs, g_exp_evals[rows - 1], names, final_mean, final_se, ranked, nv);
-        tool_rec_end(&q);
-        if (tool_out_close(&o, 1)) return 1;
-    }
+    for (int v = 0; v < nv; v++) sum.ranked[v] = sum.names[order[v]];
+    if (write_summaries(dir, "amorph experiment summary: the best fitness (m) at the last evaluation every run holds", put_experiment, &sum))
+        return 1;
     tool_out o;
     if (tool_out_open(&o, NULL)) return 1;
     if (json_out) {
         tool_rec q;
         tool_rec_begin(&q, &o.text, 1);
-        put_experiment(&q, x->name, dir, runs, g_exp_evals[rows - 1], names, final_mean, final_se, ranked, nv);
+        put_experiment(&q, &sum);
         tool_rec_end(&q);
         return tool_out_close(&o, 1);
     }
@@ -1049,7 +1072,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
         am_text_put(t, "\n");
     }
     am_text_put(t, "ranking =");
-    for (int v = 0; v < nv; v++) am_text_put(t, " %s", ranked[v]);
+    for (int v = 0; v < nv; v++) am_text_put(t, " %s", sum.ranked[v]);
     am_text_put(t, "\nfolder = %s\nresults = %s/results.csv\nsummary = %s/summary.json\n", dir, dir, dir);
     return tool_out_close(&o, 1);
 }
