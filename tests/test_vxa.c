@@ -2,8 +2,11 @@
  * exact round trips, VoxCAD conventions (legacy TempAmp, names, damping, BASE64 layers), warnings,
  * and one check per malformed input with its status and exact "fname:line: problem" message. */
 #include "amorph.h"
+#include "cmd.h"
 #include "harness.h"
+#include "picture.h"
 
+#include <math.h>
 #include <stdint.h>
 
 static am_xml_doc doc;
@@ -511,10 +514,31 @@ static void test_vxa_format_errors(void)
     (void)msg;
 }
 
+/* render and view load a VXA robot through tool_load_subject: its period, given in seconds, must
+ * become steps of the robot's own time step in every build (the fixed-point build once took the
+ * step in model units and actuated with a period of 1 step) */
+static void test_vxa_period_for_pictures(void)
+{
+#if TOOL_VXA && TOOL_PICTURES
+    static am_lattice lat;
+    static am_model m;
+    char err[AM_ERR_MAX];
+    am_env env;
+    am_eval_def ev;
+    CHECK(tool_load_subject("tests/data/voxcad_quadruped.vxa", 0, &lat, &env, &ev, "test") == 0, "loading the quadruped");
+    CHECK(tool_vxa_loaded && tool_vxa_info.temp_period > 0, "the quadruped has a period in seconds");
+    CHECK(am_model_build(&m, &lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    const double dt = am_dt_si(&m, env.dt_frac), period_s = tool_vxa_info.temp_period;
+    CHECK(fabs((double)env.period_steps * dt - period_s) <= dt, "period %d steps of %g s, the file says %g s", env.period_steps, dt, period_s);
+    CHECK(env.period_steps > 100, "period %d steps", env.period_steps);
+#endif
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     RUN(test_xml_basics);
+    RUN(test_vxa_period_for_pictures);
     RUN(test_xml_errors);
     RUN(test_xml_limits);
     RUN(test_vxa_round_trip_scenes);

@@ -129,6 +129,12 @@ int tool_not_in_build(const char* what, const char* feature);
  * amorph reads (lattice text; genome text, expressed; VXA on the desktop). Messages are
  * "file:line: problem". */
 am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz);
+/* env made concrete for the robot lat before its model is built, so the model is never edited
+ * after am_model_build: a time step in seconds (dt_s > 0) becomes env->dt_frac, and a period in
+ * seconds (period_s > 0, a VXA file's) becomes env->period_steps of the resulting step. Builds the
+ * robot's model into tool_work[0].model to learn its dt_rec (which the other settings do not
+ * change). AM_ERR_EMPTY for an empty robot when anything is to be resolved. */
+am_status tool_resolve_env(const am_lattice* lat, double dt_s, double period_s, am_env* env, char* err, int errsz);
 
 /* what a text file holds, judged from its first meaningful lines as am_vxa_sniff and
  * am_genome_sniff judge a whole text: TOOL_TEXT_VXA, _GENOME or _LATTICE (anything else), or -1

@@ -94,10 +94,9 @@ int cmd_export(int argc, char** argv)
             g_one.cell[0] = 1;
             timed = &g_one;
         }
-        st = am_model_build(&tool_work[0].model, timed, &env, err, sizeof err);
+        const double period_s = tool_vxa_loaded && !tool_vxa_info.period_steps_given ? tool_vxa_info.temp_period : 0;
+        st = period_s > 0 ? tool_resolve_env(timed, 0, period_s, &env, err, sizeof err) : am_model_build(&tool_work[0].model, timed, &env, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", robot, err);
-        if (tool_vxa_loaded && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-            env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, env.dt_frac));
         double dt = am_dt_si(&tool_work[0].model, env.dt_frac);
         if (am_vxa_format(lat, &env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;

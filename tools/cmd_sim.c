@@ -192,7 +192,14 @@ int cmd_sim(int argc, char** argv)
         if (tool_vxa_loaded) env = merge_env(&tool_vxa_info.env, &env, given);
 #endif
     }
-    st = am_model_build(&tool_work[0].model, lat, &env, err, sizeof err);
+    /* settings in seconds become steps of this robot before its model is built: --dt, and a VXA
+     * file's period unless --period-steps or the file gives steps */
+    double period_s = 0;
+#if TOOL_VXA
+    if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given) period_s = tool_vxa_info.temp_period;
+#endif
+    st = tool_resolve_env(lat, dt_fixed, period_s, &env, err, sizeof err);
+    if (st == AM_OK) st = am_model_build(&tool_work[0].model, lat, &env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
         if (json)
@@ -203,12 +210,6 @@ int cmd_sim(int argc, char** argv)
         return 0;
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
-    if (dt_fixed > 0) tool_work[0].model.env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_fixed / am_to_si(&tool_work[0].model, tool_work[0].model.dt_rec, AM_DIM_TIME));
-#if TOOL_VXA
-    /* a VXA file's period is in seconds: in steps of this robot's time step */
-    if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0)
-        tool_work[0].model.env.period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, am_dt_si(&tool_work[0].model, tool_work[0].model.env.dt_frac));
-#endif
 
     am_result res;
     am_gait gait;

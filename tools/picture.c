@@ -136,9 +136,8 @@ int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* e
         /* a VXA file brings its environment (as amorph sim); its period in seconds becomes steps
          * of this robot's time step */
         *env = tool_vxa_info.env;
-        if (!tool_vxa_info.period_steps_given && tool_vxa_info.temp_period > 0 &&
-            am_model_build(&tool_work[0].model, lat, env, err, sizeof err) == AM_OK)
-            env->period_steps = am_vxa_period_steps(tool_vxa_info.temp_period, (double)(env->dt_frac * tool_work[0].model.dt_rec));
+        st = tool_resolve_env(lat, 0, tool_vxa_info.period_steps_given ? 0 : tool_vxa_info.temp_period, env, err, sizeof err);
+        if (st != AM_OK && st != AM_ERR_EMPTY) return tool_usage_error("%s: %s: %s", cmd, name, err);
     }
     return 0;
 }

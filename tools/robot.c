@@ -107,3 +107,15 @@ am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char*
     tool_src_close(&src);
     return st;
 }
+
+am_status tool_resolve_env(const am_lattice* lat, double dt_s, double period_s, am_env* env, char* err, int errsz)
+{
+    if (dt_s <= 0 && period_s <= 0) return AM_OK;
+    /* dt_rec depends on the materials and the voxel size only: a build with env as it is gives it */
+    am_status st = am_model_build(&tool_work[0].model, lat, env, err, errsz);
+    if (st != AM_OK) return st;
+    const am_model* m = &tool_work[0].model;
+    if (dt_s > 0) env->dt_frac = AM_PARAM_FROM_DOUBLE(dt_s / am_to_si(m, m->dt_rec, AM_DIM_TIME));
+    if (period_s > 0) env->period_steps = am_vxa_period_steps(period_s, am_dt_si(m, env->dt_frac));
+    return AM_OK;
+}
