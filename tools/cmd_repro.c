@@ -1,0 +1,96 @@
+/* amorph bench --evolve (evaluations per hour) and amorph repro (the reference evolution of
+ * `make repro`): evolutions in memory, without a run folder. */
+#include "evolve_cmd.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- bench --evolve ---- */
+
+int tool_bench_evolve(long evaluations)
+{
+    char err[AM_ERR_MAX];
+    am_evo_def d = am_default_evo();
+    d.evaluations = evaluations;
+    uint64_t hash[2] = {0, 0};
+    double rate[2] = {0, 0};
+    int cores = am_port_cores();
+    printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
+           d.population, evaluations, cores);
+    for (int t = 1; t <= 2; t++) {
+        if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+        double t0 = am_port_now();
+        long steps = 0, voxel_steps = 0;
+        while (!am_evo_done(&tool_evo)) {
+            if (am_evo_generation(&tool_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            steps += tool_evo.last_steps;
+            voxel_steps += tool_evo.last_voxel_steps;
+        }
+        double el = am_port_now() - t0;
+        rate[t - 1] = (double)tool_evo.evaluations / el * 3600.0;
+        hash[t - 1] = am_evo_hash(&tool_evo);
+        printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
+               "voxel_steps_per_s=%.0f run_hash=%016llx\n",
+               t, tool_evo.evaluations, el, rate[t - 1], (double)steps / (double)tool_evo.evaluations,
+               steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
+    }
+    printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
+           hash[0] == hash[1] ? "yes" : "NO");
+    return hash[0] == hash[1] ? 0 : 1;
+}
+
+/* ---- repro: the reference evolution of `make repro` ---- */
+
+static const char repro_help[] =
+    "usage: amorph repro [--KEY VALUE]...\n"
+    "Runs the reference evolution of `make repro` in memory (no files) and prints one line\n"
+    "repro_hash=<16 hex digits>: the run hash over every genome, fitness and final simulation\n"
+    "state of the run. Every build on every platform must print the same value. The reference\n"
+    "run: GMX, 6^3 workspace, population 8, 24 evaluations, 1 cycle of 100 steps after at most\n"
+    "150 steps of relaxation; flags (configuration keys) change it.\n";
+
+int cmd_repro(int argc, char** argv)
+{
+    evo_opts o;
+    memset(&o, 0, sizeof o);
+    static const char* const ref[][2] = {
+        {"representation", "gmx"}, {"workspace", "6"}, {"population", "8"}, {"evaluations", "24"}, {"cycles", "1"},
+        {"period_steps", "100"}, {"relax_min_steps", "50"}, {"relax_max_steps", "150"}, {"gmx_points", "12"},
+        {"seed", "2024"}, {"threads", "1"},
+    };
+    for (size_t k = 0; k < sizeof ref / sizeof ref[0]; k++) {
+        o.key[o.nflags] = ref[k][0];
+        o.val[o.nflags++] = ref[k][1];
+    }
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(repro_help, stdout);
+            return 0;
+        }
+        const char* a = argv[i];
+        int r = parse_common(argc, argv, &i, &o, "repro");
+        if (r < 0) return 2;
+        if (r == 0 || o.config || o.out || o.resume || o.print_config)
+            return tool_usage_error("repro: unknown option '%s' (amorph repro --help)", a);
+    }
+    am_evo_def d;
+    if (build_def(&o, NULL, NULL, &d, "repro")) return 2;
+    char err[AM_ERR_MAX];
+    if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
+    const double t0 = am_port_now();
+    while (!am_evo_done(&tool_evo))
+        if (am_evo_generation(&tool_evo, tool_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+            fprintf(stderr, "amorph: repro: %s\n", err);
+            return 1;
+        }
+    long voxel_steps = 0;
+    for (int i = 0; i < d.population; i++) voxel_steps += (long)tool_evo.pop[i].voxels * tool_evo.pop[i].steps;
+    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", tool_evo.evaluations,
+           tool_evo.generation, tool_evo.best.fitness, voxel_steps, am_port_now() - t0);
+    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&tool_evo));
+    return 0;
+}
+

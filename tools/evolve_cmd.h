@@ -1,0 +1,91 @@
+/* tools/evolve_cmd.h: what amorph evolve, experiment and repro share: the options, the run loop,
+ * and the run folder (tools/run_dir.c). Each function returns an exit status (0, 1 at run time, 2
+ * for bad input, 130 interrupted) after a one-line message, unless its comment says otherwise. */
+#ifndef AMORPH_TOOLS_EVOLVE_CMD_H
+#define AMORPH_TOOLS_EVOLVE_CMD_H
+
+#include "cmd.h"
+
+#if defined(AM_PROFILE_BOARD)
+#define EXP_ROWS 64             /* generations an experiment's table reads per run */
+#define EXP_MAX_RUNS 4          /* runs per variant */
+#define EXP_DIR_MAX 256         /* an experiment folder's name */
+#define EXP_RUN_DIR_MAX 384     /* a run folder's name */
+#else
+#define EXP_ROWS 4096
+#define EXP_MAX_RUNS 16
+#define EXP_DIR_MAX 1024
+#define EXP_RUN_DIR_MAX 2048
+#endif
+
+/* ---- options (tools/cmd_evolve.c) ---- */
+
+typedef struct evo_opts {
+    const char* config;       /* --config FILE */
+    const char* out;          /* --out DIR */
+    const char* resume;       /* --resume DIR */
+    int print_config, quiet, pictures, json;
+    int nflags;
+    const char* key[64];      /* KEY VALUE flags in order */
+    const char* val[64];
+} evo_opts;
+
+/* one option at argv[*i]; 1 when consumed, 0 when unknown, -1 after an error message */
+int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd);
+/* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
+ * `extra` more (keys and values, NULL-terminated; may be NULL) */
+int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd);
+/* the workers a run uses (threads, 0: all cores) */
+int workers_of(const am_evo_def* d);
+/* reads AMORPH_TEST_INTERRUPT (docs/evolve.md, Testing interruptions) */
+int test_interrupt_setup(void);
+
+/* ---- runs (tools/cmd_evolve.c) ---- */
+
+/* a new run in dir, to its end; label prefixes the progress lines (experiments) or is NULL */
+int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label);
+/* the run in dir continued to its end, with the flags o and `extra` keys and values */
+int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label);
+
+/* ---- the run folder (tools/run_dir.c) ---- */
+
+/* dir/file into out; 1 when it fits (a path too long is cut, and then fails to open with its name) */
+int path_join(char* out, size_t cap, const char* dir, const char* file);
+/* dir/file written atomically with len bytes of text */
+int write_text(const char* dir, const char* file, const char* text, long len);
+int write_config(const char* dir, const am_evo_def* d);
+int write_checkpoint(const char* dir, const am_evo* e);
+/* best.genome and best.lattice */
+int write_best(const char* dir, const am_evo* e);
+/* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON object),
+ * both of the fields put(q, ctx) writes */
+int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx);
+/* a run's summary fields (summary.txt, summary.json and the final output) */
+void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall);
+/* a run's summary.txt and summary.json */
+int write_summary(const char* dir, const am_evo* e, double wall);
+/* one row of log.csv */
+int append_log(const char* dir, const am_evo_stats* s);
+/* dir/file (a table with header hdr) cut back to its first `rows` rows */
+int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit);
+/* evals.csv: one row per evaluation, appended as the library places each batch */
+typedef struct evals_out {
+    const char* dir;
+    const am_evo_def* def;
+    int failed;               /* 1 after a row could not be written (reported once) */
+} evals_out;
+
+/* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
+void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
+/* the header of a run's evals.csv, with its newline; its length */
+int evals_header(const am_evo_def* d, char* buf, int cap);
+/* a fresh folder name runs/run-NNN */
+int default_out(char* out, size_t cap);
+/* a new run's files in dir (made and locked): configuration, log headers, first checkpoint */
+int start_prepare(const am_evo_def* d, const char* dir);
+/* the folder's lock (one process at a time) */
+int lock_run(const char* dir);
+/* the checkpoint at path read into e */
+int read_checkpoint(const char* path, am_evo* e);
+
+#endif

@@ -1,0 +1,325 @@
+/* The run folder of amorph evolve: its files, their writers, the tables (log.csv, evals.csv) and
+ * how a resume cuts them back, the checkpoint reader, the first files of a new run, and the lock
+ * that keeps a second process out. */
+#include "evolve_cmd.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- run folder ---- */
+
+/* dir/file into out; a path too long for out is cut (and then fails to open, with its name) */
+int path_join(char* out, size_t cap, const char* dir, const char* file)
+{
+    int n = snprintf(out, cap, "%s/%s", dir, file);
+    return n >= 0 && (size_t)n < cap;
+}
+
+TOOL_NOINLINE int write_text(const char* dir, const char* file, const char* text, long len)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, file);
+    if (am_port_write_file(path, text, len, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+/* dir/file written through a stream by a writer of the library: 0, or 1 after a message
+ * ("amorph: what: problem" for the writer's own failures) */
+typedef am_status (*text_writer)(const void* obj, am_text* out, char* err, int errsz);
+
+static TOOL_NOINLINE int write_stream(const char* dir, const char* file, text_writer fn, const void* obj, const char* what)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, file);
+    tool_out o;
+    if (tool_out_open(&o, path)) return 1;
+    am_status st = fn(obj, &o.text, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_IO) {
+        if (what) fprintf(stderr, "amorph: %s: %s\n", what, err);
+        else fprintf(stderr, "amorph: %s\n", err);
+        tool_out_close(&o, 0);
+        return 1;
+    }
+    return tool_out_close(&o, 1);
+}
+
+static am_status config_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)obj, 1, out, err, errsz);
+}
+
+static am_status checkpoint_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_evo_checkpoint_write((const am_evo*)obj, out, err, errsz);
+}
+
+static am_status genome_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_genome_write((const am_genome*)obj, out, err, errsz);
+}
+
+static am_status lattice_writer(const void* obj, am_text* out, char* err, int errsz)
+{
+    return am_lattice_write((const am_lattice*)obj, out, err, errsz);
+}
+
+int write_config(const char* dir, const am_evo_def* d)
+{
+    return write_stream(dir, "config.txt", config_writer, d, NULL);
+}
+
+int write_checkpoint(const char* dir, const am_evo* e)
+{
+    return write_stream(dir, "checkpoint.txt", checkpoint_writer, e, "checkpoint");
+}
+
+TOOL_NOINLINE int write_best(const char* dir, const am_evo* e)
+{
+    char err[AM_ERR_MAX];
+    if (write_stream(dir, "best.genome", genome_writer, &e->best.genome, "best genome")) return 1;
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: best lattice: %s\n", err);
+        return 1;
+    }
+    return write_stream(dir, "best.lattice", lattice_writer, &tool_work[0].lattice, "best lattice");
+}
+
+/* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
+void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall)
+{
+    tool_rec_str(q, "run", dir);
+    tool_rec_str(q, "representation", am_repr_name(e->def.geno.repr));
+    tool_rec_int(q, "evaluations", e->evaluations);
+    tool_rec_int(q, "generations", e->generation);
+    tool_rec_num(q, "best_fitness", e->best.fitness);
+    tool_rec_int(q, "best_voxels", e->best.voxels);
+    tool_rec_int(q, "best_steps", e->best.steps);
+    tool_rec_hex(q, "best_state_hash", e->best.state_hash);
+    tool_rec_int(q, "best_evaluation", e->best.id);
+    tool_rec_num(q, "final_best", e->last.best);
+    tool_rec_num(q, "final_mean", e->last.mean);
+    tool_rec_num(q, "final_median", e->last.median);
+    tool_rec_hex(q, "run_hash", am_evo_hash(e));
+    tool_rec_num(q, "wall_s", wall);
+    char build[64];
+    snprintf(build, sizeof build, "%s %s", AM_REAL_NAME, AM_PROFILE_NAME);
+    tool_rec_str(q, "build", build);
+}
+
+/* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON
+ * object), both of the fields put(q, ctx) writes; 0, or 1 after a message */
+TOOL_NOINLINE int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx)
+{
+    for (int json = 0; json < 2; json++) {
+        char path[TOOL_PATH_MAX];
+        path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
+        tool_out o;
+        if (tool_out_open(&o, path)) return 1;
+        if (!json) am_text_put(&o.text, "# %s\n", comment);
+        tool_rec q;
+        tool_rec_begin(&q, &o.text, json);
+        put(&q, ctx);
+        tool_rec_end(&q);
+        if (tool_out_close(&o, 1)) return 1;
+    }
+    return 0;
+}
+
+typedef struct run_summary {
+    const am_evo* e;
+    const char* dir;
+    double wall;
+} run_summary;
+
+static void put_run_summary(tool_rec* q, const void* ctx)
+{
+    const run_summary* r = (const run_summary*)ctx;
+    put_summary(q, r->e, r->dir, r->wall);
+}
+
+int write_summary(const char* dir, const am_evo* e, double wall)
+{
+    const run_summary r = {e, dir, wall};
+    return write_summaries(dir, "amorph evolve summary", put_run_summary, &r);
+}
+
+TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
+{
+    char row[256], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    int n = am_evo_log_row(s, row, (int)sizeof row - 1);
+    row[n++] = '\n';
+    path_join(path, sizeof path, dir, "log.csv");
+    if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
+    }
+    return 0;
+}
+
+/* dir/file (a table: log.csv or evals.csv with header hdr) cut back to the header and the first
+ * `rows` rows (rows the checkpoint has seen, `unit` its count's name in messages): the file is
+ * read line by line, then, when it holds more, copied that far into its replacement */
+TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
+    long n, have = 0;
+    int r;
+    path_join(path, sizeof path, dir, file);
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    r = tool_src_next(&src, &line, &n, err, sizeof err);
+    if (r == 1 && (strcmp(line, hdr) != 0 || !src.newline)) r = 2;
+    if (r != 1) {
+        tool_src_close(&src);
+        if (r < 0) return tool_usage_error("%s", err);
+        return tool_usage_error("%s:1: not an amorph log (expected the header '%s')", path, hdr);
+    }
+    /* rows the log holds (whole lines), and whether anything follows the last one kept */
+    int more = 0;
+    while ((r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) {
+        if (have == rows || !src.newline) {
+            more = 1;
+            break;
+        }
+        have++;
+    }
+    if (r < 0) {
+        tool_src_close(&src);
+        return tool_usage_error("%s", err);
+    }
+    if (have < rows) {
+        tool_src_close(&src);
+        return tool_usage_error("%s: %ld rows, but the checkpoint is at %s %ld (the table is damaged)", path, have, unit, rows);
+    }
+    if (!more) {
+        tool_src_close(&src);
+        return 0;
+    }
+    tool_out o;
+    if (tool_src_rewind(&src, err, sizeof err) != AM_OK || tool_out_open(&o, path)) {
+        tool_src_close(&src);
+        return tool_usage_error("%s", err);
+    }
+    for (long k = 0; k <= rows && tool_src_next(&src, &line, &n, err, sizeof err) == 1; k++) {
+        am_text_write(&o.text, line, n);
+        am_text_write(&o.text, "\n", 1);
+    }
+    tool_src_close(&src);
+    return tool_out_close(&o, 1) ? 2 : 0;
+}
+
+void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
+{
+    evals_out* o = (evals_out*)ctx;
+    char row[AM_EVO_EVALS_ROW_MAX + 1], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    if (o->failed) return;
+    int n = am_evo_evals_row(o->def, ind, ev, row, (int)sizeof row - 1);
+    row[n++] = '\n';
+    path_join(path, sizeof path, o->dir, "evals.csv");
+    if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
+        fprintf(stderr, "amorph: %s\n", err);
+        o->failed = 1;
+    }
+}
+
+/* the header of a run's evals.csv, with its newline; returns its length */
+int evals_header(const am_evo_def* d, char* buf, int cap)
+{
+    int n = am_evo_evals_header(d->geno.materials, buf, cap - 1);
+    buf[n++] = '\n';
+    buf[n] = 0;
+    return n;
+}
+
+/* a fresh folder name under runs/ */
+int default_out(char* out, size_t cap)
+{
+    char err[AM_ERR_MAX];
+    if (am_port_make_dir("runs", err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    for (int k = 1; k < 100000; k++) {
+        snprintf(out, cap, "runs/run-%03d", k);
+        if (!am_port_exists(out)) return 0;
+    }
+    return tool_usage_error("runs/: no free run-NNN name left");
+}
+
+
+/* a new run in dir (made and locked by the caller): its configuration, log headers and first
+ * checkpoint; 0, 1 or 2. A run exists once its first checkpoint does (written before any
+ * evaluation): a folder with the other files but no checkpoint was left by a run stopped before
+ * it, and is started over. */
+TOOL_NOINLINE int start_prepare(const am_evo_def* d, const char* dir)
+{
+    char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
+    path_join(path, sizeof path, dir, "checkpoint.txt");
+    if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
+    if (am_evo_init(&tool_evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (write_config(dir, d)) return 1;
+    char hdr[AM_EVO_EVALS_ROW_MAX + 2];
+    int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
+    if (write_text(dir, "log.csv", hdr, n)) return 1;
+    n = evals_header(d, hdr, (int)sizeof hdr);
+    if (write_text(dir, "evals.csv", hdr, n)) return 1;
+    /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
+    if (write_checkpoint(dir, &tool_evo)) return 1;
+    return 0;
+}
+
+
+/* owns the run folder dir (its `lock` file) while this process works in it: a second process on
+ * the same folder is refused. 0, or 2 after a message */
+TOOL_NOINLINE int lock_run(const char* dir)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, "lock");
+    if (am_port_lock(path, err, sizeof err) != AM_OK)
+        return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
+    return 0;
+}
+
+
+/* reads the checkpoint at path into e, in the two passes of the library (the checksum over the
+ * bytes, then the lines): 0, or 2 after a message */
+TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
+{
+    char err[AM_ERR_MAX], *line;
+    long n;
+    int r;
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_CKPT_MAX, 0, err, sizeof err);
+    if (st != AM_OK && !src.binary) return tool_usage_error("--resume: %s", err);
+    am_evo_ckpt_scan sc;
+    am_evo_checkpoint_scan_begin(&sc);
+    if (st == AM_OK) {
+        while ((r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) {
+            am_evo_checkpoint_scan(&sc, line, n);
+            if (src.newline) am_evo_checkpoint_scan(&sc, "\n", 1);
+        }
+        if (r < 0) st = src.binary ? AM_ERR_PARSE : src.st;
+    }
+    if (st != AM_OK) {
+        tool_src_close(&src);
+        if (src.binary) return tool_usage_error("%s:1: binary data in a checkpoint (damaged)", path);
+        return tool_usage_error("%s", err);
+    }
+    st = am_evo_checkpoint_scan_end(&sc, path, err, sizeof err);
+    if (st == AM_OK) st = tool_src_rewind(&src, err, sizeof err);
+    if (st == AM_OK) {
+        am_evo_ckpt_reader rd;
+        am_evo_checkpoint_read_begin(&rd, e, &sc, path);
+        r = 1;
+        while (st == AM_OK && src.line + 1 < sc.checksum_line && (r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1)
+            st = am_evo_checkpoint_read_line(&rd, line, n, err, sizeof err);
+        if (st == AM_OK && r < 0) st = src.st;
+        if (st == AM_OK) st = am_evo_checkpoint_read_end(&rd, err, sizeof err);
+    }
+    tool_src_close(&src);
+    return st == AM_OK ? 0 : tool_usage_error("%s", err);
+}
+
