@@ -42,7 +42,7 @@ static int put_len(char* buf, int cap, double v)
 int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap)
 {
     if (cap <= 0) return 0;
-    int n = held(snprintf(buf, (size_t)cap, "%ld,%ld,%ld,%ld,%d,%s,%d", ev->index, ev->generation, ev->parent[0], ev->parent[1],
+    int n = held(snprintf(buf, (size_t)cap, "%ld,%ld,%ld,%ld,%d,%s,%d", ind->id, ev->generation, ev->parent[0], ev->parent[1],
                           ev->placed, am_repr_name(d->geno.repr), ind->voxels),
                  cap);
     for (int k = 0; k < d->geno.materials && k < AM_MAX_GENO_MATERIALS; k++)

@@ -39,7 +39,6 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     out->state_hash = 0;
     memset(detail, 0, sizeof *detail);
     detail->parent[0] = detail->parent[1] = -1;
-    detail->materials = g->materials;
     if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
         out->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
         return;
@@ -132,7 +131,7 @@ static void eval_task(void* ctx, int item, int worker)
 
 /* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
  * returns 1 when every item was evaluated */
-static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, const am_evo_hooks* cancel,
+static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, const am_evo_hooks* hooks,
                         char* err, int errsz, am_status* st)
 {
     eval_job job;
@@ -159,7 +158,7 @@ static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int
     job.details = e->eval;
     job.order = order;
     job.work = w;
-    job.hooks = cancel && cancel->cancel ? cancel : NULL;
+    job.hooks = hooks && hooks->cancel ? hooks : NULL;
     *st = am_port_parallel_map(n, workers, eval_task, &job, err, errsz);
     if (*st != AM_OK) return 0;
     for (int i = 0; i < n; i++)
@@ -178,8 +177,8 @@ static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w)
     if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) memset(w->cell, 0, (size_t)cells);
 }
 
-/* offspring c and c + 1 against parents a and b; placed[] gets 1 for an offspring that entered */
-static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w, int* placed)
+/* offspring c and c + 1 against parents a and b; e->eval[].placed says which entered */
+static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
 {
     am_evo_ind* p1 = &e->pop[a];
     am_evo_ind* p2 = &e->pop[b];
@@ -207,10 +206,10 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w, int* pla
         k2 = c;
     }
     /* each offspring meets its more similar parent and replaces it when strictly better */
-    placed[k1] = better(c1, p1);
-    placed[k2] = better(c2, p2);
-    if (placed[k1]) *p1 = *c1;
-    if (placed[k2]) *p2 = *c2;
+    e->eval[k1].placed = better(c1, p1);
+    e->eval[k2].placed = better(c2, p2);
+    if (e->eval[k1].placed) *p1 = *c1;
+    if (e->eval[k2].placed) *p2 = *c2;
 }
 
 /* ---- statistics ---- */
@@ -321,24 +320,20 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo
                 e->has_best = 1;
             }
         }
-        int placed[AM_EVO_BATCH];
         for (int j = 0; j < m; j++) {
             am_evo_eval* ev = &e->eval[j];
-            ev->index = e->child[j].id;
             ev->generation = e->generation;
             ev->parent[0] = e->generation == 0 ? -1 : e->pop[parent[b + (j & ~1)]].id;
             ev->parent[1] = e->generation == 0 ? -1 : e->pop[parent[b + (j | 1)]].id;
-            placed[j] = 1;
+            ev->placed = 1; /* generation 0; crowding decides for the others */
         }
         if (e->generation == 0) {
             for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];
         } else {
-            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno, placed);
+            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno);
         }
-        for (int j = 0; j < m; j++) {
-            e->eval[j].placed = placed[j];
-            if (hooks && hooks->evaluated) hooks->evaluated(hooks->ctx, &e->child[j], &e->eval[j]);
-        }
+        if (hooks && hooks->evaluated)
+            for (int j = 0; j < m; j++) hooks->evaluated(hooks->ctx, &e->child[j], &e->eval[j]);
     }
     e->evaluations += n;
     s.generation = e->generation;

@@ -381,8 +381,8 @@ static void on_eval(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
 {
     seen_evals* s = (seen_evals*)ctx;
     int mats = 0;
-    for (int k = 0; k < ev->materials; k++) mats += ev->material_voxels[k];
-    if (ev->index != s->next || ind->id != ev->index || ev->generation != s->e->generation || mats != ind->voxels ||
+    for (int k = 0; k < s->e->def.geno.materials; k++) mats += ev->material_voxels[k];
+    if (ind->id != s->next || ev->generation != s->e->generation || mats != ind->voxels ||
         (ev->generation == 0 && (ev->parent[0] != -1 || ev->parent[1] != -1 || !ev->placed)) ||
         (ev->generation > 0 && (ev->parent[0] < 0 || ev->parent[0] >= s->e->evaluations || ev->parent[1] < 0 ||
                                 ev->parent[1] >= s->e->evaluations)))
@@ -399,11 +399,21 @@ static void test_evaluations_are_reported(void)
     seen_evals s = {0, 0, 0, &g_a};
     const am_evo_hooks hooks = {NULL, on_eval, &s};
     while (!am_evo_done(&g_a)) {
-        long before = s.placed;
+        long ids[AM_MAX_POPULATION];
+        for (int i = 0; i < d.population; i++) ids[i] = g_a.pop[i].id;
+        const long placed_before = s.placed, evals_before = g_a.evaluations;
         CHECK(am_evo_generation(&g_a, g_work, 2, &hooks, err, sizeof err) == AM_OK, "%s", err);
-        /* a placed offspring is in the population now (unless a later one of its pair's parent... none: pairs are disjoint) */
-        for (int i = 0; i < d.population; i++) CHECK(g_a.pop[i].id >= 0 && g_a.pop[i].id < g_a.evaluations, "member %d id %ld", i, g_a.pop[i].id);
-        CHECK(s.placed >= before, "placed");
+        /* the rows marked placed are exactly the members that are new: each pair of offspring meets
+         * its own two parents, so a placed offspring stays in the population to the generation's end */
+        int fresh = 0;
+        for (int i = 0; i < d.population; i++) {
+            CHECK(g_a.pop[i].id >= 0 && g_a.pop[i].id < g_a.evaluations, "member %d id %ld", i, g_a.pop[i].id);
+            if (g_a.pop[i].id != ids[i]) {
+                fresh++;
+                CHECK(g_a.pop[i].id >= evals_before, "member %d changed to an old id %ld", i, g_a.pop[i].id);
+            }
+        }
+        CHECK(s.placed - placed_before == fresh, "%ld rows placed, %d members new", s.placed - placed_before, fresh);
     }
     CHECK(!s.bad && s.next == g_a.evaluations, "rows out of order or impossible: bad %d, %ld of %ld", s.bad, s.next, g_a.evaluations);
     /* the hooks never change a run */
@@ -415,7 +425,6 @@ static void test_evaluations_are_reported(void)
     CHECK(n == (int)strlen(hdr) && strstr(hdr, ",voxels_m1,voxels_m2,fitness,") && !strstr(hdr, "voxels_m3"), "%s", hdr);
     am_evo_eval ev;
     memset(&ev, 0, sizeof ev);
-    ev.index = 7;
     ev.parent[0] = ev.parent[1] = -1;
     am_evo_ind div = g_a.pop[0];
     div.diverged = 1;

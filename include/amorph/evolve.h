@@ -92,17 +92,15 @@ typedef struct am_evo_ind {
                                * a checkpoint of version 1) */
 } am_evo_ind;
 
-/* what an evaluation measured besides its am_evo_ind, and where it stands in the run: one row of
- * a run's evals.csv (am_evo_evals_row) */
+/* what an evaluation measured besides its am_evo_ind (whose id is the evaluation's index), and
+ * where it stands in the run: with the individual, one row of a run's evals.csv (am_evo_evals_row) */
 typedef struct am_evo_eval {
-    long index;               /* the evaluation's index in the run, from 0 (= its individual's id) */
     long generation;          /* 0: the initial population */
     long parent[2];           /* ids of the two parents (-1 in generation 0 or when unknown) */
     int placed;               /* 1: it entered the population (generation 0, or beat its parent) */
     double dx, dy, dz;        /* centre-of-mass displacement over the movement segment, m */
     int settled;              /* 1: the body came to rest before the movement (am_result.settled) */
     long relax_steps;         /* steps of the relaxation */
-    int materials;            /* materials of the run */
     int material_voxels[AM_MAX_GENO_MATERIALS]; /* voxels of each material (the genome's order) */
 } am_evo_eval;
 
