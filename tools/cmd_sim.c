@@ -202,12 +202,19 @@ int cmd_sim(int argc, char** argv)
     if (st == AM_OK) st = am_model_build(&tool_work[0].model, lat, &env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
-        if (json)
-            printf("{\"robot\": \"%s\", \"fitness\": 0, \"voxels\": 0, \"links\": 0, \"empty\": 1, \"diverged\": 0, "
-                   "\"steps\": 0}\n", file);
-        else
-            printf("robot = %s\nfitness = 0\nvoxels = 0\nlinks = 0\nempty = 1\ndiverged = 0\nsteps = 0\n", file);
-        return 0;
+        tool_out out;
+        if (tool_out_open(&out, NULL)) return 1;
+        tool_rec q;
+        tool_rec_begin(&q, &out.text, json);
+        tool_rec_str(&q, "robot", file);
+        tool_rec_num(&q, "fitness", 0);
+        tool_rec_int(&q, "voxels", 0);
+        tool_rec_int(&q, "links", 0);
+        tool_rec_int(&q, "empty", 1);
+        tool_rec_int(&q, "diverged", 0);
+        tool_rec_int(&q, "steps", 0);
+        tool_rec_end(&q);
+        return tool_out_close(&out, 1);
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
 
