@@ -76,7 +76,7 @@ static const key_def keys[] = {
     {"evaluations", K_LONG, OFF(evaluations), 2, 1e9, NULL, 0, "the run stops after this many evaluations"},
     {"seed", K_U64, OFF(seed), 0, 0, NULL, 0, "seed of the random stream"},
     {"threads", K_INT, OFF(threads), 0, AM_MAX_WORKERS, NULL, 1, "evaluation workers; 0: every core"},
-    {"cycles", K_INT, OFF(eval.cycles), 1, 10000, NULL, 0, "actuation cycles of the movement segment"},
+    {"cycles", K_INT, OFF(eval.cycles), 0, 100000, NULL, 0, "actuation cycles of the movement segment (0: relaxation only)"},
     {"period_steps", K_INT, OFF(env.period_steps), 2, 1e7, NULL, 0, "actuation period, time steps"},
     {"amplitude", K_PARAM, OFF(env.temp_amplitude), 0, 1e4, NULL, 0, "temperature amplitude, degrees"},
     {"temp_base", K_PARAM, OFF(env.temp_base), -1e4, 1e4, NULL, 0, "temperature offset, degrees"},
@@ -86,6 +86,7 @@ static const key_def keys[] = {
     {"mu_kinetic", K_PARAM, OFF(mu_kinetic), 0, 100, NULL, 0, "kinetic floor friction"},
     {"fitness", K_ENUM, OFF(eval.fitness), 0, 2, fit_names, 0, "centre of mass displacement: horizontal, x or 3d"},
     {"collisions", K_ONOFF, OFF(env.collisions), 0, 1, NULL, 0, "self-collision: on or off"},
+    {"floor", K_ONOFF, OFF(env.floor), 0, 1, NULL, 0, "the floor: on or off"},
     {"gravity", K_PARAM, OFF(env.gravity), 0, 1000, NULL, 0, "m/s^2"},
     {"dt_frac", K_PARAM, OFF(env.dt_frac), 1e-6, 1, NULL, 0, "time step, fraction of the analytic limit"},
     {"dt_search", K_ONOFF, OFF(eval.dt_search), 0, 1, NULL, 0, "the seed's empirical time step search"},
@@ -112,7 +113,7 @@ static const key_def keys[] = {
     {"gmx_remove", K_REAL, OFF(geno.gmx_remove), 0, 1, NULL, 0, "GMX: probability a mutation removes a point"},
     {"checkpoint_seconds", K_LONG, OFF(checkpoint_seconds), 0, 1e7, NULL, 1, "0: a checkpoint every generation"},
 };
-#undef OFF
+
 #define KEY_COUNT ((int)(sizeof keys / sizeof keys[0]))
 
 static const key_def* find_key(const char* name)
@@ -125,6 +126,19 @@ static const key_def* find_key(const char* name)
 int am_evo_is_key(const char* key)
 {
     return find_key(key) != NULL;
+}
+
+int am_evo_key_group(const char* key)
+{
+    const key_def* k = find_key(key);
+    if (!k) return -1;
+    const size_t off = k->off;
+    /* unsigned: an offset below the member wraps past its end */
+    if (off - OFF(env) < sizeof(am_env)) return AM_KEYS_ENV;
+    if (off - OFF(eval) < sizeof(am_eval_def)) return AM_KEYS_EVAL;
+    if (off - OFF(geno) < sizeof(am_geno_def)) return AM_KEYS_GENOTYPE;
+    if (off == OFF(cte) || off == OFF(mu_static) || off == OFF(mu_kinetic) || off == OFF(voxel_size)) return AM_KEYS_MATERIALS;
+    return AM_KEYS_RUN;
 }
 
 int am_evo_key_count(void)

@@ -55,11 +55,20 @@ expect_fail 2 'notgenome\.txt:1: not a genome' "$AMORPH" express "$TMPD/notgenom
 expect_fail 2 'nothere\.genome' "$AMORPH" express "$TMPD/nothere.genome"
 
 # flags
-expect_fail 2 'random: --repr dct\|cppn\|gmx is required' "$AMORPH" random --seed 1
-expect_fail 2 'random: --repr takes dct, cppn or gmx' "$AMORPH" random --repr fourier
-expect_fail 2 'random: --materials takes 2 or 3' "$AMORPH" random --repr dct --materials 4
-expect_fail 2 'random: --seed needs a whole number' "$AMORPH" random --repr dct --seed -3
-expect_fail 2 'random: --size needs a whole number' "$AMORPH" random --repr dct --size 999
+expect_fail 2 "random: --representation = 'fourier': expected dct, cppn or gmx" "$AMORPH" random --repr fourier
+expect_fail 2 "random: --materials = '4': expected an integer in \[1, 3\]" "$AMORPH" random --repr dct --materials 4
+expect_fail 2 "random: --seed = '-3': expected an integer" "$AMORPH" random --repr dct --seed -3
+expect_fail 2 "random: --workspace = '999': each side must be in \[1, " "$AMORPH" random --repr dct --size 999
+expect_fail 2 "random: --population is not a setting of a genome" "$AMORPH" random --population 4
+# the defaults are the configuration's (gmx), and the old spellings are aliases of its keys
+expect_ok "$AMORPH" random --seed 1
+cp "$TMPD/out" "$TMPD/default.genome"
+expect_ok "$AMORPH" random --representation gmx --seed 1
+check "random without --repr is the configuration's default, gmx" cmp -s "$TMPD/out" "$TMPD/default.genome"
+expect_ok "$AMORPH" random --repr dct --size 5 --seed 3
+cp "$TMPD/out" "$TMPD/alias.genome"
+expect_ok "$AMORPH" random --representation=dct --workspace 5 --seed=3
+check "--repr/--size are aliases of --representation/--workspace" cmp -s "$TMPD/out" "$TMPD/alias.genome"
 expect_fail 2 "random: unknown option '--bogus'" "$AMORPH" random --repr dct --bogus
 expect_fail 2 'express: name a genome file' "$AMORPH" express
 expect_fail 2 "express: unknown option '--bogus'" "$AMORPH" express "$TMPD/dct.genome" --bogus

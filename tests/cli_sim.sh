@@ -128,12 +128,12 @@ expect_fail 2 "seed" "$AMORPH" random --repr gmx --seed -3
 expect_fail 2 "scene" "$AMORPH" sim --scene nosuch:3
 expect_fail 2 "no-such-robot" "$AMORPH" sim "$TMPD/no-such-robot.lattice"
 expect_fail 2 "unknown option" "$AMORPH" sim --scene cube:3 --bogus
-# --release-steps: a whole number 0..1e8, checked like --relax-max
+# --release-steps: a whole number 0..1e8, checked by the configuration table as evolve checks it
 for bad in x -1 100000001 " 5" 5x 1e3 ""; do
-    expect_fail 2 "^amorph: sim: --release-steps needs a whole number from 0 to 100000000$" "$AMORPH" sim --scene cube:3 --release-steps "$bad"
+    expect_fail 2 "^amorph: sim: --release_steps = '.*': expected an integer in \[0, 100000000\]$" "$AMORPH" sim --scene cube:3 --release-steps "$bad"
 done
-expect_fail 2 "^amorph: sim: --release-steps needs a whole number" "$AMORPH" sim --scene cube:3 --release-steps
-expect_fail 2 "relax-max" "$AMORPH" sim --scene cube:3 --relax-max -1
+expect_fail 2 "^amorph: sim: --release-steps needs a value$" "$AMORPH" sim --scene cube:3 --release-steps
+expect_fail 2 "^amorph: sim: --relax_max_steps = '-1': expected an integer" "$AMORPH" sim --scene cube:3 --relax-max -1
 expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --release-steps 0 --json
 check "--release-steps 0: $(head -c 300 "$TMPD/out")" isnum "$(field residual_speed "$TMPD/out")"
 expect_ok "$AMORPH" sim --help
@@ -194,5 +194,43 @@ check "run's release_steps 1e8: want one warning, got: $(head -c 300 "$TMPD/err"
 expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json --release-steps 500
 h1=$(sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$TMPD/def.json"); h2=$(sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$TMPD/out")
 check "--release-steps 500 over the run's 1e8 is not the default run: '$h1' vs '$h2'" [ "${h1:-none}" = "$h2" ]
+
+# --- one vocabulary: sim, render, view, export take the configuration keys (tools/robot.h) ---
+hash_of() { sed -n 's/.*"hash": *"\([0-9a-f]*\)".*/\1/p' "$1"; }
+"$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 200 --period_steps 300 --json >"$TMPD/a.json" 2>/dev/null
+for spelling in "--period-steps 300" "--period_steps=300" "--period-steps=300"; do
+    expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --relax_max_steps 200 $spelling --json
+    check "$spelling is --period_steps 300: $(hash_of "$TMPD/out") vs $(hash_of "$TMPD/a.json")" [ "$(hash_of "$TMPD/out")" = "$(hash_of "$TMPD/a.json")" ]
+done
+# flags in order: the last of two settings of a key wins
+expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 200 --period_steps 999 --period_steps 300 --json
+check "the later --period_steps wins" [ "$(hash_of "$TMPD/out")" = "$(hash_of "$TMPD/a.json")" ]
+# the same ranges and messages as evolve's configuration
+"$AMORPH" evolve --print-config --gravity 5000 2>"$TMPD/evolve.err"
+expect_fail 2 "^amorph: sim: --gravity = '5000': expected a number in \[0, 1000\]$" "$AMORPH" sim --scene cube:3 --gravity 5000
+check "sim and evolve word a bad gravity alike" [ "$(sed 's/^amorph: evolve: //' "$TMPD/evolve.err")" = "$(sed 's/^amorph: sim: //' "$TMPD/err")" ]
+expect_fail 2 "^amorph: sim: --period_steps = '1': expected an integer in \[2, " "$AMORPH" sim --scene cube:3 --period-steps 1
+expect_fail 2 "^amorph: sim: --amplitude = '-5': expected a number in \[0, " "$AMORPH" sim --scene cube:3 --amplitude -5
+expect_fail 2 "^amorph: sim: --cte linear: the CTE convention is --cte_mode volumetric\|linear" "$AMORPH" sim --scene cube:3 --cte linear
+expect_fail 2 "^amorph: sim: --cte volume: the CTE convention is --cte_mode" "$AMORPH" sim --scene cube:3 --cte volume
+expect_fail 2 "^amorph: render: --population is a setting of an evolution, not of one robot" "$AMORPH" render --scene cube:3 --population 4 --out "$TMPD/x.png"
+expect_fail 2 "^amorph: export: --seed is a setting of an evolution" "$AMORPH" export --scene cube:3 --seed 4 --lattice -
+# --cte_mode, --floor, --dt_search on: what the old flags did
+expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 200 --cte_mode linear --floor off --json
+check "--floor off: the cube falls (dz $(field dz "$TMPD/out"))" awk -v z="$(field dz "$TMPD/out")" 'BEGIN { exit !(z < -0.001) }'
+"$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 200 --dt-search --json >"$TMPD/b.json" 2>/dev/null
+expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --relax-max 200 --dt_search on --json
+check "--dt-search alone is --dt_search on" [ "$(hash_of "$TMPD/out")" = "$(hash_of "$TMPD/b.json")" ]
+# file first, then flags: a run folder's friction, changed by --mu_static, changes the result;
+# set back to the run's own value it gives the run's result again
+expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json --mu_static 0.05 --mu_kinetic 0.01
+check "--mu_static/--mu_kinetic over a run folder change its result" [ "$(hash_of "$TMPD/out")" != "$(hash_of "$TMPD/def.json")" ]
+"$AMORPH" evolve --print-config --workspace 4 --relax-max-steps 2000 >"$TMPD/run/config.txt"
+expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json --mu_static 1 --mu_kinetic 0.3
+check "the run's own friction as flags: the run's result" [ "$(hash_of "$TMPD/out")" = "$(hash_of "$TMPD/def.json")" ]
+# evolve takes the same aliases
+expect_ok "$AMORPH" evolve --print-config --repr dct --size 4 --relax-max 3000 --dt-search
+check "evolve: --repr/--size/--relax-max/--dt-search are aliases: $(grep -E '^(representation|workspace|relax_max_steps|dt_search) ' "$TMPD/out" | tr '\n' ' ')" \
+    [ "$(grep -cxE 'representation = dct|workspace = 4|relax_max_steps = 3000|dt_search = on' "$TMPD/out")" = 4 ]
 
 summary cli_sim

@@ -239,7 +239,7 @@ static void test_raster_text(void)
 static void test_filmstrip_png(void)
 {
 #if !TOOL_PICTURES
-    CHECK(tool_write_filmstrip(0, 0, 0, "x.png") == 1, "the board profile's stand-in returns 1");
+    CHECK(tool_write_filmstrip(0, 0, 0, 0, "x.png") == 1, "the board profile's stand-in returns 1");
     return;
 #endif
     static am_lattice lat;
@@ -255,7 +255,8 @@ static void test_filmstrip_png(void)
     CHECK(fd >= 0, "mkstemp");
     if (fd < 0) return;
     close(fd);
-    CHECK(tool_write_filmstrip(&lat, &env, &eval, path) == 0, "filmstrip written");
+    static tool_ctx ctx;
+    CHECK(tool_write_filmstrip(&ctx, &lat, &env, &eval, path) == 0, "filmstrip written");
     png_image img;
     int r = png_read_file(path, &img, why, sizeof why);
     CHECK(r == 0, "decode the filmstrip: %s", why);

@@ -5,6 +5,7 @@
 #include "cmd.h"
 #include "harness.h"
 #include "picture.h"
+#include "robot.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -514,31 +515,97 @@ static void test_vxa_format_errors(void)
     (void)msg;
 }
 
-/* render and view load a VXA robot through tool_load_subject: its period, given in seconds, must
+/* every command loads a VXA robot through tool_robot_load: its period, given in seconds, must
  * become steps of the robot's own time step in every build (the fixed-point build once took the
- * step in model units and actuated with a period of 1 step) */
-static void test_vxa_period_for_pictures(void)
+ * step in model units and actuated with a period of 1 step); a period_steps setting wins over the
+ * file, and --dt changes the step the period is counted in */
+static void test_vxa_period_for_commands(void)
 {
-#if TOOL_VXA && TOOL_PICTURES
+#if TOOL_VXA
+    static tool_ctx ctx;
     static am_lattice lat;
     static am_model m;
+    static am_xml_doc xdoc;
+    static am_vxa_info info;
+    static char vtext[1 << 16];
     char err[AM_ERR_MAX];
-    am_env env;
-    am_eval_def ev;
-    CHECK(tool_load_subject("tests/data/voxcad_quadruped.vxa", 0, &lat, &env, &ev, "test") == 0, "loading the quadruped");
-    CHECK(tool_vxa_loaded && tool_vxa_info.temp_period > 0, "the quadruped has a period in seconds");
-    CHECK(am_model_build(&m, &lat, &env, err, sizeof err) == AM_OK, "%s", err);
-    const double dt = am_dt_si(&m, env.dt_frac), period_s = tool_vxa_info.temp_period;
-    CHECK(fabs((double)env.period_steps * dt - period_s) <= dt, "period %d steps of %g s, the file says %g s", env.period_steps, dt, period_s);
-    CHECK(env.period_steps > 100, "period %d steps", env.period_steps);
+    long len = 0;
+    CHECK(am_port_read_file("tests/data/voxcad_quadruped.vxa", vtext, sizeof vtext, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_vxa_parse(&lat, &info, &xdoc, vtext, "q", err, sizeof err) == AM_OK, "%s", err);
+    const double period_s = info.temp_period;
+    CHECK(period_s > 0 && !info.period_steps_given, "the quadruped has a period in seconds");
+
+    tool_robot_args a;
+    memset(&a, 0, sizeof a);
+    a.name = "tests/data/voxcad_quadruped.vxa";
+    tool_robot r;
+    CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(r.kind == TOOL_ROBOT_VXA, "kind %d", r.kind);
+    CHECK(am_model_build(&m, &lat, &r.env, err, sizeof err) == AM_OK, "%s", err);
+    double dt = am_dt_si(&m, r.env.dt_frac);
+    CHECK(fabs((double)r.env.period_steps * dt - period_s) <= dt, "period %d steps of %g s, the file says %g s", r.env.period_steps, dt, period_s);
+    CHECK(r.env.period_steps > 100, "period %d steps", r.env.period_steps);
+
+    /* --dt twice the step: half as many steps per period */
+    const int steps1 = r.env.period_steps;
+    a.dt_s = 2 * dt;
+    CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_build(&m, &lat, &r.env, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(fabs(am_dt_si(&m, r.env.dt_frac) / dt - 2) < 1e-3, "--dt %g s gives a step of %g s", 2 * dt, am_dt_si(&m, r.env.dt_frac));
+    CHECK(abs(2 * r.env.period_steps - steps1) <= 2, "--dt doubled: %d steps, was %d", r.env.period_steps, steps1);
+
+    /* a setting of period_steps wins over the file's seconds; later settings win over earlier ones */
+    a.dt_s = 0;
+    a.nset = 2;
+    a.key[0] = "period_steps", a.val[0] = "77";
+    a.key[1] = "gravity", a.val[1] = "0";
+    CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(r.env.period_steps == 77, "period_steps %d", r.env.period_steps);
+    CHECK(r.env.gravity == AM_P(0), "gravity set by the flag");
 #endif
+}
+
+/* settings over a robot file's own values: the environment and evaluation keys replace them, the
+ * materials keys change the robot's palette (cte only where it actuates) */
+static void test_robot_settings(void)
+{
+    static tool_ctx ctx;
+    static am_lattice lat;
+    char err[AM_ERR_MAX];
+    tool_robot_args a;
+    memset(&a, 0, sizeof a);
+    a.name = "cube:3";
+    a.is_scene = 1;
+    const char* keys[] = {"mu_static", "mu_kinetic", "cte", "voxel_size", "cycles", "relax_max_steps", "floor", "cte_mode"};
+    const char* vals[] = {"2.5", "0.7", "0.02", "0.005", "3", "50", "off", "linear"};
+    for (int k = 0; k < 8; k++) a.key[k] = keys[k], a.val[k] = vals[k];
+    a.nset = 8;
+    tool_robot r;
+    CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
+    for (int m = 0; m < lat.palette.count; m++) {
+        CHECK(lat.palette.mat[m].mu_static == AM_P(2.5) && lat.palette.mat[m].mu_kinetic == AM_P(0.7), "friction of %d", m);
+    }
+    CHECK(lat.voxel_size == AM_P(0.005), "voxel size");
+    CHECK(r.eval.cycles == 3 && r.eval.relax_max_steps == 50 && r.eval.relax_min_steps <= 50, "evaluation settings");
+    CHECK(r.env.floor == 0 && r.env.cte_mode == AM_CTE_LINEAR, "environment settings");
+    /* cte changes the actuated materials only: compared with the scene loaded without settings */
+    tool_robot_args b;
+    memset(&b, 0, sizeof b);
+    b.name = "cube:3", b.is_scene = 1;
+    tool_robot r0;
+    static am_lattice lat0;
+    CHECK(tool_robot_load(&ctx, &b, &lat0, &r0, err, sizeof err) == AM_OK, "%s", err);
+    for (int m = 0; m < lat0.palette.count; m++)
+        CHECK(lat0.palette.mat[m].cte != AM_P(0) ? lat.palette.mat[m].cte == AM_P(0.02) : lat.palette.mat[m].cte == AM_P(0),
+              "cte of material %d follows its actuation", m);
 }
 
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     RUN(test_xml_basics);
-    RUN(test_vxa_period_for_pictures);
+    RUN(test_vxa_period_for_commands);
+    RUN(test_robot_settings);
     RUN(test_xml_errors);
     RUN(test_xml_limits);
     RUN(test_vxa_round_trip_scenes);

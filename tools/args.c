@@ -2,8 +2,26 @@
  * number (no blanks, no sign where none is allowed, no trailing text), and it must lie in range. */
 #include "cmd.h"
 
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+int tool_usage_error(const char* fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs("amorph: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return 2;
+}
+
+int tool_not_in_build(const char* what, const char* feature)
+{
+    return tool_usage_error("%s: not in this build: %s belong to the desktop profile (make PROFILE=desktop)", what, feature);
+}
 
 int tool_parse_u64(const char* s, uint64_t* out)
 {

@@ -1,5 +1,18 @@
-/* tools/cmd.h: the subcommands of the amorph program and what they share. Every command returns
- * the process exit status: 0 success, 1 failure at run time, 2 bad input (flags, files). */
+/* tools/cmd.h: the subcommands of the amorph program and what they share.
+ *
+ * One return convention. A command (cmd_*) and every helper that returns `int` return the exit
+ * status of the process: 0 success; 1 a failure at run time (a file that cannot be written, a
+ * capacity reached while running); 2 bad input (flags, files, settings); 130 a run interrupted by
+ * a signal (evolve, experiment). Any non-zero status has been told on stderr in one line before it
+ * is returned, so callers pass it up unchanged (`if (rc) return rc;`). Helpers that cannot tell
+ * the user (they hold no command name or are shared with the library) return an am_status with the
+ * message in err instead, and the command prints it. Functions named tool_parse_* and tool_is_*
+ * answer a question: 1 yes, 0 no.
+ *
+ * State. The workspaces the commands share are one tool_ctx that main owns and passes down; no
+ * tools/ file holds another global. A file's own scratch arrays (the pixels of a filmstrip, the
+ * reading buffer of tools/files.c) are static in that file and used only while one call runs:
+ * nothing in them carries from one call to the next. */
 #ifndef AMORPH_TOOLS_CMD_H
 #define AMORPH_TOOLS_CMD_H
 
@@ -8,27 +21,39 @@
 
 #include "amorph.h"
 
-int cmd_sim(int argc, char** argv);
-int cmd_bench(int argc, char** argv);
-int cmd_random(int argc, char** argv);
-int cmd_express(int argc, char** argv);
-int cmd_render(int argc, char** argv);
-int cmd_plot(int argc, char** argv);
-int cmd_view(int argc, char** argv);
-int cmd_evolve(int argc, char** argv);
-int cmd_experiment(int argc, char** argv);
-int cmd_repro(int argc, char** argv);
-int cmd_export(int argc, char** argv);
+/* the workspaces of the commands (they run one at a time), owned by main */
+typedef struct tool_ctx {
+    /* the evolver's evaluation workers; [0] also serves sim, bench, export, random, express and the
+     * pictures, each job on its own members (geno to express, lattice for the robot a command
+     * loads, model and state to simulate) */
+    am_evo_work work[AM_MAX_WORKERS];
+    /* the evolver's run (evolve, experiment, repro, bench --evolve); bench's expression timing
+     * borrows the genomes of its population as its pool */
+    am_evo evo;
+} tool_ctx;
+
+/* the genome a command reads (random, express, sim of a genome file or a run folder): the
+ * evolver's best slot, idle in those commands (the board's RAM holds no second genome) */
+static inline am_genome* tool_genome(tool_ctx* c) { return &c->evo.best.genome; }
+
+int cmd_sim(tool_ctx* c, int argc, char** argv);
+int cmd_bench(tool_ctx* c, int argc, char** argv);
+int cmd_random(tool_ctx* c, int argc, char** argv);
+int cmd_express(tool_ctx* c, int argc, char** argv);
+int cmd_render(tool_ctx* c, int argc, char** argv);
+int cmd_plot(tool_ctx* c, int argc, char** argv);
+int cmd_view(tool_ctx* c, int argc, char** argv);
+int cmd_evolve(tool_ctx* c, int argc, char** argv);
+int cmd_experiment(tool_ctx* c, int argc, char** argv);
+int cmd_repro(tool_ctx* c, int argc, char** argv);
+int cmd_export(tool_ctx* c, int argc, char** argv);
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);
-/* a run folder's best robot, and the environment and evaluation it evolved in (tools/run.c);
- * env and eval may be NULL */
-am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_def* eval, char* err, int errsz);
 
 /* prints name=value lines of the default experiment's evaluations per hour on 1 and 2 threads
  * (cmd_evolve.c); 0, or 1 when the two runs differ */
-int tool_bench_evolve(long evaluations);
+int tool_bench_evolve(tool_ctx* c, long evaluations);
 
 /* keeps a helper's locals out of its caller's frame, so they take stack only while it runs, not
  * all through the long calls of the caller (the board's stack is small) */
@@ -86,7 +111,7 @@ int tool_out_close(tool_out* o, int commit);
  * returns 0, or 1 after a one-line message on stderr */
 int tool_write_output(const char* out, const char* text, long len);
 
-/* a text file read line by line. The desktop profile reads the file whole into tool_file_buf (at
+/* a text file read line by line. The desktop profile reads the file whole into one buffer (at
  * most cap - 1 bytes, else AM_ERR_CAPACITY) and hands out its lines in place; the board profile
  * streams it through one buffer, so a line may hold at most TOOL_LINE_MAX characters (a longer
  * one is an error "file:line: line longer than ..."). Either way lines are cut at '\n' and a
@@ -125,17 +150,6 @@ am_status tool_src_binary(const tool_src* s, char* err, int errsz);
  * The board profile leaves out what a microcontroller has no use for (pictures, VXA files). */
 int tool_not_in_build(const char* what, const char* feature);
 
-/* loads a robot: "scene:NAME" style names (cube:N ...) when is_scene, else a file in any format
- * amorph reads (lattice text; genome text, expressed; VXA on the desktop). Messages are
- * "file:line: problem". */
-am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz);
-/* env made concrete for the robot lat before its model is built, so the model is never edited
- * after am_model_build: a time step in seconds (dt_s > 0) becomes env->dt_frac, and a period in
- * seconds (period_s > 0, a VXA file's) becomes env->period_steps of the resulting step. Builds the
- * robot's model into tool_work[0].model to learn its dt_rec (which the other settings do not
- * change). AM_ERR_EMPTY for an empty robot when anything is to be resolved. */
-am_status tool_resolve_env(const am_lattice* lat, double dt_s, double period_s, am_env* env, char* err, int errsz);
-
 /* what a text file holds, judged from its first meaningful lines as am_vxa_sniff and
  * am_genome_sniff judge a whole text: TOOL_TEXT_VXA, _GENOME or _LATTICE (anything else), or -1
  * when reading failed (message in err, or s->binary). The source is left at its start. */
@@ -149,9 +163,9 @@ am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int 
 am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz);
 /* a genome from the lines of src (its start) */
 am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);
-/* the genome of src (at its start) into tool_genome, expressed into lat with the built-in palette
- * (cmd_genome.c); "file:line: problem" messages */
-am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int errsz);
+/* the genome of src (at its start) into tool_genome(c), expressed into lat with the built-in
+ * palette (tools/robot.c); "file:line: problem" messages */
+am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, char* err, int errsz);
 
 /* VXA files (docs/vxa.md) are read and written in the desktop profile only; TOOL_DESKTOP_ONLY
  * marks what a help text names that the board build answers with "not in this build" */
@@ -162,12 +176,6 @@ am_status tool_genome_to_lattice(tool_src* src, am_lattice* lat, char* err, int 
 #define TOOL_VXA 1
 #define TOOL_DESKTOP_ONLY ""
 #endif
-/* VXA text -> lattice (cmd_export.c); prints the reader's warnings on stderr. Returns AM_ERR_ARG
- * without a message when text is not XML. On success tool_vxa_loaded is 1 and tool_vxa_info holds
- * the file's environment (tool_load_robot sets tool_vxa_loaded to 0 before each load). */
-am_status tool_vxa_text_to_lattice(const char* text, const char* fname, am_lattice* lat, char* err, int errsz);
-extern int tool_vxa_loaded;
-extern am_vxa_info tool_vxa_info;
 
 /* strict value parsers (tools/args.c): 1 when the whole token is a number in [lo, hi] */
 int tool_parse_u64(const char* s, uint64_t* out);
@@ -178,7 +186,7 @@ int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 
 
 /* prints name=value lines of the genotype expression times (cmd_genome.c) */
-void tool_bench_express(void);
+void tool_bench_express(tool_ctx* c);
 
 /* 1 when the picture commands are built in. Not in the board profile: a microcontroller shows no
  * pictures, and their buffers would be many times its RAM; there render, plot and view say so and
@@ -191,36 +199,22 @@ void tool_bench_express(void);
 /* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording in
  * env with eval (its record field is ignored) and writes path atomically. Silent on success;
  * 0, or 1 after a one-line message on stderr. */
-int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path);
-int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path);
+int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
                       const char* path);
 /* the best fitness against evaluations of run folders or experiment folders (a mean line and a
  * standard-error band per variant) as SVG */
 int tool_write_plot(int ndirs, char** dirs, const char* path);
 
-/* the desktop's whole-file buffer, shared by the commands (they run one at a time): files up to
- * TOOL_FILE_MAX - 1 bytes, checkpoints up to TOOL_CKPT_MAX - 1 (a population of
- * AM_MAX_POPULATION of the largest genomes). The board profile has none: its files stream. */
+/* the desktop profile reads whole files up to TOOL_FILE_MAX - 1 bytes, checkpoints up to
+ * TOOL_CKPT_MAX - 1 (a population of AM_MAX_POPULATION of the largest genomes), into one buffer of
+ * tools/files.c. The board profile has none: its files stream. */
 #define TOOL_FILE_MAX (4L << 20)
 #define TOOL_CKPT_MAX AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)
 #if TOOL_WHOLE_FILES
-#define TOOL_FILE_BUF (TOOL_FILE_MAX > TOOL_CKPT_MAX ? TOOL_FILE_MAX : TOOL_CKPT_MAX)
-extern char tool_file_buf[TOOL_FILE_BUF];
 /* the whole text of an open source */
 const char* tool_src_text(const tool_src* s);
 #endif
-
-/* the workspaces every command shares (they run one at a time): the evolver's evaluation
- * workers; [0] also serves sim, bench, export, random, express and the pictures, each job on its
- * own members (geno to express, lattice for the robot a command loads, model and state to
- * simulate) */
-extern am_evo_work tool_work[AM_MAX_WORKERS];
-/* the evolver's run (evolve, experiment, repro, bench --evolve); bench's expression timing
- * borrows the genomes of its population as its pool */
-extern am_evo tool_evo;
-/* the genome a command reads (random, express, sim of a genome file or a run folder): the
- * evolver's best slot, idle in those commands */
-#define tool_genome (tool_evo.best.genome)
 
 /* longest path the commands build (a run folder's files); the board's port takes 512 bytes */
 #if defined(AM_PROFILE_BOARD)

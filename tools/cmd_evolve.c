@@ -1,6 +1,7 @@
 /* amorph evolve: options shared with experiment and repro, the run loop (progress, testing
  * interruptions), starting and resuming a run in its folder (tools/run_dir.c). */
 #include "evolve_cmd.h"
+#include "robot.h"
 
 #include <stdatomic.h>
 #include <stdint.h>
@@ -35,47 +36,44 @@ static const char evolve_help[] =
 int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
 {
     const char* a = argv[*i];
-    const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
     if (strncmp(a, "--", 2) != 0) return 0;
-    const char* name = a + 2;
-    char keybuf[64];
-    const char* eq = strchr(name, '=');
-    if (eq) {
-        size_t n = (size_t)(eq - name);
-        if (n >= sizeof keybuf) return 0;
-        memcpy(keybuf, name, n);
-        keybuf[n] = 0;
-        name = keybuf;
-        v = eq + 1;
+    /* the settings: the configuration keys, as every command spells them (tools/robot.h) */
+    const char *key, *val;
+    int r = tool_setting_arg(cmd, argc, argv, i, &key, &val);
+    if (r < 0) return -1;
+    if (r == 1) {
+        if (o->nflags == 64) {
+            tool_usage_error("%s: too many settings on the command line", cmd);
+            return -1;
+        }
+        o->key[o->nflags] = key;
+        o->val[o->nflags++] = val;
+        return 1;
     }
-    /* flags may spell keys with '-' for '_' */
+    const char* name = a + 2;
+    const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
     char norm[64];
-    snprintf(norm, sizeof norm, "%s", name);
-    for (char* c = norm; *c; c++)
-        if (*c == '-') *c = '_';
+    const char* eq = strchr(name, '=');
+    size_t n = eq ? (size_t)(eq - name) : strlen(name);
+    if (n >= sizeof norm) return 0;
+    memcpy(norm, name, n);
+    norm[n] = 0;
+    for (char* p = norm; *p; p++)
+        if (*p == '-') *p = '_';
+    if (eq) v = eq + 1;
     if (!strcmp(norm, "quiet")) o->quiet = 1;
     else if (!strcmp(norm, "no_pictures")) o->pictures = 0;
     else if (!strcmp(norm, "json")) o->json = 1;
     else if (!strcmp(norm, "print_config")) o->print_config = 1;
-    else if (!strcmp(norm, "config") || !strcmp(norm, "out") || !strcmp(norm, "resume") || am_evo_is_key(norm)) {
+    else if (!strcmp(norm, "config") || !strcmp(norm, "out") || !strcmp(norm, "resume")) {
         if (!v || (!eq && !strncmp(v, "--", 2))) {
-            tool_usage_error("%s: --%s needs a value", cmd, name);
+            tool_usage_error("%s: --%s needs a value", cmd, norm);
             return -1;
         }
         if (!eq) (*i)++;
         if (!strcmp(norm, "config")) o->config = v;
         else if (!strcmp(norm, "out")) o->out = v;
-        else if (!strcmp(norm, "resume")) o->resume = v;
-        else {
-            if (o->nflags == 64) {
-                tool_usage_error("%s: too many settings on the command line", cmd);
-                return -1;
-            }
-            /* keep the key as spelt in the table */
-            for (int k = 0; k < am_evo_key_count(); k++)
-                if (!strcmp(am_evo_key_name(k), norm)) o->key[o->nflags] = am_evo_key_name(k);
-            o->val[o->nflags++] = v;
-        }
+        else o->resume = v;
     } else return 0;
     return 1;
 }
@@ -202,8 +200,9 @@ int workers_of(const am_evo_def* d)
 }
 
 /* runs e to its end in io->dir; 0 done, 130 interrupted, 1 error */
-static int run_loop(am_evo* e, const run_io* io)
+static int run_loop(tool_ctx* c, const run_io* io)
 {
+    am_evo* e = &c->evo;
     char err[AM_ERR_MAX];
     const int workers = workers_of(&e->def);
     const double t0 = am_port_now();
@@ -217,7 +216,7 @@ static int run_loop(am_evo* e, const run_io* io)
         int had_best = e->has_best;
         g_test_int.base = e->evaluations;
         atomic_store(&g_test_int.started, 0);
-        am_status st = am_evo_generation(e, tool_work, workers, &hooks, err, sizeof err);
+        am_status st = am_evo_generation(e, c->work, workers, &hooks, err, sizeof err);
         if (st == AM_ERR_CANCELLED) break;
         if (st != AM_OK) {
             fprintf(stderr, "amorph: %s\n", err);
@@ -228,7 +227,7 @@ static int run_loop(am_evo* e, const run_io* io)
         if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base <= g_test_int.after && g_test_int.after < e->evaluations)
             test_interrupt_fire();
         if (append_log(io->dir, &e->last)) return 1;
-        if ((!had_best || e->best.fitness != best_before) && write_best(io->dir, e)) return 1;
+        if ((!had_best || e->best.fitness != best_before) && write_best(c, io->dir)) return 1;
         dirty = 1;
         double now = am_port_now();
         if (e->def.checkpoint_seconds == 0 || now - last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
@@ -253,25 +252,26 @@ static int run_loop(am_evo* e, const run_io* io)
 
 /* the run's pictures: the best robot's filmstrip (best.png) and viewer page (best.html), and the
  * fitness plot (fitness.svg); builds without pictures (the board profile) skip them */
-static int finish_pictures(const am_evo* e, const char* dir)
+static int finish_pictures(tool_ctx* c, const char* dir)
 {
 #if !TOOL_PICTURES
-    (void)e, (void)dir;
+    (void)c, (void)dir;
     return 0;
 #else
+    const am_evo* e = &c->evo;
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], title[256];
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &tool_work[0].geno, &tool_work[0].lattice, err, sizeof err) != AM_OK) {
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &c->work[0].geno, &c->work[0].lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
     am_eval_def ev = e->def.eval;
     ev.record = NULL;
-    if (am_lattice_count(&tool_work[0].lattice) > 0) {
+    if (am_lattice_count(&c->work[0].lattice) > 0) {
         path_join(path, sizeof path, dir, "best.png");
-        if (tool_write_filmstrip(&tool_work[0].lattice, &e->def.env, &ev, path)) return 1;
+        if (tool_write_filmstrip(c, &c->work[0].lattice, &e->def.env, &ev, path)) return 1;
         path_join(path, sizeof path, dir, "best.html");
         snprintf(title, sizeof title, "amorph: best of %s (%.4f m)", dir, e->best.fitness);
-        if (tool_write_viewer(&tool_work[0].lattice, &e->def.env, &ev, title, path)) return 1;
+        if (tool_write_viewer(c, &c->work[0].lattice, &e->def.env, &ev, title, path)) return 1;
     }
     path_join(path, sizeof path, dir, "fitness.svg");
     char* dirs[1] = {(char*)(uintptr_t)dir};
@@ -281,16 +281,16 @@ static int finish_pictures(const am_evo* e, const char* dir)
 
 
 /* a new run in dir, to its end; 0, 1, 2 or 130 */
-int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
 {
     char err[AM_ERR_MAX];
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (lock_run(dir)) return 2;
-    int rc = start_prepare(d, dir);
+    int rc = start_prepare(c, d, dir);
     if (rc == 0) {
         run_io io = {dir, quiet, pictures, label};
-        rc = run_loop(&tool_evo, &io);
-        if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+        rc = run_loop(c, &io);
+        if (rc == 0 && pictures) rc = finish_pictures(c, dir);
     }
     am_port_unlock();
     return rc;
@@ -299,7 +299,7 @@ int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, con
 
 /* loads the run in dir and checks it against the settings the user gives now (flags o, then
  * `extra` keys and values); 0, 1 or 2 */
-static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const char* const* extra)
+static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
     path_join(path, sizeof path, dir, "config.txt");
@@ -309,42 +309,42 @@ static TOOL_NOINLINE int resume_load(const char* dir, const evo_opts* o, const c
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
                                 dir, dir);
-    int rc = read_checkpoint(path, &tool_evo);
+    int rc = read_checkpoint(path, &c->evo);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
     path_join(path, sizeof path, dir, "config.txt");
     am_evo_def d;
     if (build_def(o, path, extra, &d, "resume")) return 2;
-    if (!am_evo_same_run(&tool_evo.def, &d, what, sizeof what))
+    if (!am_evo_same_run(&c->evo.def, &d, what, sizeof what))
         return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
-    tool_evo.def.evaluations = d.evaluations;
-    tool_evo.def.threads = d.threads;
-    tool_evo.def.checkpoint_seconds = d.checkpoint_seconds;
-    if (tool_evo.def.evaluations < tool_evo.evaluations)
-        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, tool_evo.def.evaluations, tool_evo.evaluations);
-    if (trim_table(dir, "log.csv", am_evo_log_header(), tool_evo.generation, "generation")) return 2;
+    c->evo.def.evaluations = d.evaluations;
+    c->evo.def.threads = d.threads;
+    c->evo.def.checkpoint_seconds = d.checkpoint_seconds;
+    if (c->evo.def.evaluations < c->evo.evaluations)
+        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, c->evo.def.evaluations, c->evo.evaluations);
+    if (trim_table(dir, "log.csv", am_evo_log_header(), c->evo.generation, "generation")) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
-    int n = evals_header(&tool_evo.def, hdr, (int)sizeof hdr);
+    int n = evals_header(&c->evo.def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, "evals.csv");
     if (!am_port_exists(path)) {
         /* a run begun by a build without evals.csv: the table starts at the checkpoint's evaluation */
         if (write_text(dir, "evals.csv", hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, "evals.csv", hdr, tool_evo.evaluations, "evaluation")) return 2;
+        if (trim_table(dir, "evals.csv", hdr, c->evo.evaluations, "evaluation")) return 2;
     }
-    if (write_config(dir, &tool_evo.def)) return 1;
+    if (write_config(dir, &c->evo.def)) return 1;
     return 0;
 }
 
-int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
+int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
 {
     if (am_port_exists(dir) && lock_run(dir)) return 2;
-    int rc = resume_load(dir, o, extra);
+    int rc = resume_load(c, dir, o, extra);
     if (rc == 0) {
         run_io io = {dir, quiet, pictures, label};
-        rc = run_loop(&tool_evo, &io);
-        if (rc == 0 && pictures) rc = finish_pictures(&tool_evo, dir);
+        rc = run_loop(c, &io);
+        if (rc == 0 && pictures) rc = finish_pictures(c, dir);
     }
     am_port_unlock();
     return rc;
@@ -362,7 +362,7 @@ static int print_result(const am_evo* e, const char* dir, double wall, int json)
     return tool_out_close(&o, 1);
 }
 
-int cmd_evolve(int argc, char** argv)
+int cmd_evolve(tool_ctx* c, int argc, char** argv)
 {
     evo_opts o;
     memset(&o, 0, sizeof o);
@@ -401,8 +401,8 @@ int cmd_evolve(int argc, char** argv)
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
     const double t0 = am_port_now();
-    int rc = o.resume ? resume_run(dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(&d, dir, o.quiet, o.pictures, NULL);
-    if (rc == 0) rc = print_result(&tool_evo, dir, am_port_now() - t0, o.json);
+    int rc = o.resume ? resume_run(c, dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(c, &d, dir, o.quiet, o.pictures, NULL);
+    if (rc == 0) rc = print_result(&c->evo, dir, am_port_now() - t0, o.json);
     return rc;
 }
 

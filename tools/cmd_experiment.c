@@ -116,7 +116,7 @@ static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
 
 /* run k of variant v in dir/<variant>-<k>: started, resumed, or (finished) left as it is;
  * 0, 1, 2 or 130 */
-static TOOL_NOINLINE int experiment_run(const am_evo_def* base, const variant* v, long k, const char* dir, int quiet)
+static TOOL_NOINLINE int experiment_run(tool_ctx* c, const am_evo_def* base, const variant* v, long k, const char* dir, int quiet)
 {
     char err[AM_ERR_MAX], rdir[EXP_RUN_DIR_MAX], label[96];
     am_evo_def d = *base;
@@ -126,19 +126,19 @@ static TOOL_NOINLINE int experiment_run(const am_evo_def* base, const variant* v
     if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, v->name, k) >= (int)sizeof rdir)
         return tool_usage_error("experiment: folder name too long");
     snprintf(label, sizeof label, "%s-%ld", v->name, k);
-    if (!run_has_checkpoint(rdir)) return start_run(&d, rdir, quiet, 0, label);
+    if (!run_has_checkpoint(rdir)) return start_run(c, &d, rdir, quiet, 0, label);
     /* a run begun before: resumed with this experiment's evaluations and threads */
     static const evo_opts none;
     char evs[32], ths[32];
     snprintf(evs, sizeof evs, "%ld", d.evaluations);
     snprintf(ths, sizeof ths, "%d", d.threads);
     const char* const extra[] = {"evaluations", evs, "threads", ths, NULL};
-    return resume_run(rdir, &none, extra, quiet, 0, label);
+    return resume_run(c, rdir, &none, extra, quiet, 0, label);
 }
 
 static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures, int json_out);
 
-int cmd_experiment(int argc, char** argv)
+int cmd_experiment(tool_ctx* c, int argc, char** argv)
 {
     evo_opts o;
     memset(&o, 0, sizeof o);
@@ -195,7 +195,7 @@ int cmd_experiment(int argc, char** argv)
     while (nv < 6 && x->v[nv].name) nv++;
     for (int v = 0; v < nv; v++)
         for (long k = 1; k <= runs; k++) {
-            int rc = experiment_run(&base, &x->v[v], k, dir, o.quiet);
+            int rc = experiment_run(c, &base, &x->v[v], k, dir, o.quiet);
             if (rc == 130) {
                 fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
                 return rc;

@@ -61,11 +61,10 @@ static int load_run(const char* dir, int series)
     if (plot_nruns >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d runs", PLOT_MAX_RUNS);
     if (strlen(dir) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dir);
     snprintf(path, sizeof path, "%s/log.csv", dir);
-    long len = 0;
-    if (am_port_read_file(path, tool_file_buf, TOOL_FILE_MAX, &len, err, sizeof err) != AM_OK)
-        return tool_usage_error("plot: %s", err);
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err) != AM_OK) return tool_usage_error("plot: %s", err);
     /* the header names the columns; evaluations and best are found by name */
-    char* line = tool_file_buf;
+    char* line = (char*)(uintptr_t)tool_src_text(&src); /* its own buffer, free to edit */
     char* nl = strchr(line, '\n');
     if (nl) *nl = 0;
     if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
@@ -387,8 +386,9 @@ static const char plot_help[] =
     "  --out FILE.svg   the picture (written atomically); required\n"
     "  --title TEXT     the heading (\"best fitness against evaluations\")\n";
 
-int cmd_plot(int argc, char** argv)
+int cmd_plot(tool_ctx* c, int argc, char** argv)
 {
+    (void)c;
     const char* out = 0;
     const char* title = "best fitness against evaluations";
     static char* dirs[PLOT_MAX_RUNS];

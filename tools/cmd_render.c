@@ -252,14 +252,14 @@ static film_opts film_defaults(void)
 }
 
 /* records, draws and writes; 0, or an exit status after one line on stderr */
-static int film_write(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const film_opts* o,
+static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const film_opts* o,
                       const char* what, const char* path)
 {
     static tool_motion mo;
-    int rc = tool_record_motion(lat, env, eval, 400, &mo, what);
+    int rc = tool_record_motion(c, lat, env, eval, 400, &mo, what);
     if (rc) return rc;
-    am_canvas c = {o->width, o->height, film_rgb, film_depth};
-    film_draw(&mo, o, &c);
+    am_canvas cv = {o->width, o->height, film_rgb, film_depth};
+    film_draw(&mo, o, &cv);
     long n = 0;
     char err[AM_ERR_MAX];
     if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_FIXED, film_png, (long)sizeof film_png, &n, err,
@@ -274,31 +274,30 @@ static int film_write(const am_lattice* lat, const am_env* env, const am_eval_de
     return 0;
 }
 
-int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
 {
     film_opts o = film_defaults();
-    return film_write(lat, env, eval, &o, path, path) ? 1 : 0;
+    return film_write(c, lat, env, eval, &o, path, path) ? 1 : 0;
 }
 
 static const char render_help[] =
     "usage: amorph render ROBOT | --scene NAME --out FILE.png [options]\n"
     "Simulates the robot (relaxation, then actuation cycles, as amorph sim) and draws a filmstrip:\n"
     "the initial shape, the settled shape, then snapshots of the motion, with the centre of mass\n"
-    "path and the direction of travel. ROBOT is a lattice or genome file or a run folder (its best\n"
-    "robot in the run's environment); NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "path and the direction of travel. ROBOT is a lattice, genome or VXA file or a run folder (its\n"
+    "best robot in the run's environment); NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
+    "chain:N).\n"
     "  --out FILE.png     the picture (written atomically); required\n"
     "  --frames N         pictures side by side, 3..16 (6: initial, settled, 4 of the motion)\n"
     "  --width W          pixels, 200..4096 (1600)\n"
     "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
-    "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
-    "  --relax-max N      relaxation steps at most (40000)\n";
+    TOOL_ROBOT_HELP;
 
-int cmd_render(int argc, char** argv)
+int cmd_render(tool_ctx* c, int argc, char** argv)
 {
-    const char* file = 0;
     const char* out = 0;
-    int is_scene = 0, cycles = -1;
-    long relax = -1;
+    tool_robot_args ra;
+    memset(&ra, 0, sizeof ra);
     film_opts o = film_defaults();
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
@@ -306,10 +305,6 @@ int cmd_render(int argc, char** argv)
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             fputs(render_help, stdout);
             return 0;
-        } else if (!strcmp(a, "--scene")) {
-            if (!v) return tool_usage_error("render: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
-            if (file) return tool_usage_error("render: one robot at a time ('%s' and '%s')", file, v);
-            file = v, is_scene = 1, i++;
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("render: --out needs a file name");
             out = v, i++;
@@ -322,36 +317,22 @@ int cmd_render(int argc, char** argv)
         } else if (!strcmp(a, "--height")) {
             if (!tool_parse_int(v, 120, FILM_MAX_H, &o.height)) return tool_usage_error("render: --height needs a whole number 120..%d", FILM_MAX_H);
             i++;
-        } else if (!strcmp(a, "--cycles")) {
-            if (!tool_parse_int(v, 0, 100000, &cycles)) return tool_usage_error("render: --cycles needs a whole number 0..100000");
-            i++;
-        } else if (!strcmp(a, "--relax-max")) {
-            if (!tool_parse_long(v, 1, 100000000, &relax)) return tool_usage_error("render: --relax-max needs a whole number >= 1");
-            i++;
-        } else if (a[0] == '-' && a[1]) {
-            return tool_usage_error("render: unknown option '%s' (amorph render --help)", a);
         } else {
-            if (file) return tool_usage_error("render: one robot at a time ('%s' and '%s')", file, a);
-            file = a;
+            int r = tool_robot_arg("render", argc, argv, &i, &ra);
+            if (r == 2) return 2;
+            if (r == 0) return tool_usage_error("render: unknown option '%s' (amorph render --help)", a);
         }
     }
-    if (!file) return tool_usage_error("render: name a robot file, a run folder or --scene NAME (amorph render --help)");
+    if (!ra.name) return tool_usage_error("render: name a robot file, a run folder or --scene NAME (amorph render --help)");
     int rc = tool_check_output(out, "render", ".png");
     if (rc) return rc;
     if ((long)o.width * o.height > FILM_MAX_PIXELS)
         return tool_usage_error("render: %d x %d is more than %ld pixels", o.width, o.height, FILM_MAX_PIXELS);
     if (o.width / o.panels < 60) return tool_usage_error("render: %d frames need a width of at least %d", o.panels, 60 * o.panels);
-    static am_lattice lat;
-    am_env env;
-    am_eval_def eval;
-    rc = tool_load_subject(file, is_scene, &lat, &env, &eval, "render");
+    tool_robot rob;
+    rc = tool_load_subject(c, &ra, &rob, "render");
     if (rc) return rc;
-    if (cycles >= 0) eval.cycles = cycles;
-    if (relax >= 0) {
-        eval.relax_max_steps = relax;
-        if (eval.relax_min_steps > relax) eval.relax_min_steps = relax;
-    }
-    return film_write(&lat, &env, &eval, &o, file, out);
+    return film_write(c, &c->work[0].lattice, &rob.env, &rob.eval, &o, ra.name, out);
 }
 
 #else

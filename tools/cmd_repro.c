@@ -10,7 +10,7 @@
 
 /* ---- bench --evolve ---- */
 
-int tool_bench_evolve(long evaluations)
+int tool_bench_evolve(tool_ctx* c, long evaluations)
 {
     char err[AM_ERR_MAX];
     am_evo_def d = am_default_evo();
@@ -21,20 +21,20 @@ int tool_bench_evolve(long evaluations)
     printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
            d.population, evaluations, cores);
     for (int t = 1; t <= 2; t++) {
-        if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+        if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
-        while (!am_evo_done(&tool_evo)) {
-            if (am_evo_generation(&tool_evo, tool_work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-            steps += tool_evo.last_steps;
-            voxel_steps += tool_evo.last_voxel_steps;
+        while (!am_evo_done(&c->evo)) {
+            if (am_evo_generation(&c->evo, c->work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            steps += c->evo.last_steps;
+            voxel_steps += c->evo.last_voxel_steps;
         }
         double el = am_port_now() - t0;
-        rate[t - 1] = (double)tool_evo.evaluations / el * 3600.0;
-        hash[t - 1] = am_evo_hash(&tool_evo);
+        rate[t - 1] = (double)c->evo.evaluations / el * 3600.0;
+        hash[t - 1] = am_evo_hash(&c->evo);
         printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
                "voxel_steps_per_s=%.0f run_hash=%016llx\n",
-               t, tool_evo.evaluations, el, rate[t - 1], (double)steps / (double)tool_evo.evaluations,
+               t, c->evo.evaluations, el, rate[t - 1], (double)steps / (double)c->evo.evaluations,
                steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
     }
     printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
@@ -52,7 +52,7 @@ static const char repro_help[] =
     "run: GMX, 6^3 workspace, population 8, 24 evaluations, 1 cycle of 100 steps after at most\n"
     "150 steps of relaxation; flags (configuration keys) change it.\n";
 
-int cmd_repro(int argc, char** argv)
+int cmd_repro(tool_ctx* c, int argc, char** argv)
 {
     evo_opts o;
     memset(&o, 0, sizeof o);
@@ -79,18 +79,18 @@ int cmd_repro(int argc, char** argv)
     am_evo_def d;
     if (build_def(&o, NULL, NULL, &d, "repro")) return 2;
     char err[AM_ERR_MAX];
-    if (am_evo_init(&tool_evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
+    if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();
-    while (!am_evo_done(&tool_evo))
-        if (am_evo_generation(&tool_evo, tool_work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+    while (!am_evo_done(&c->evo))
+        if (am_evo_generation(&c->evo, c->work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
             fprintf(stderr, "amorph: repro: %s\n", err);
             return 1;
         }
     long voxel_steps = 0;
-    for (int i = 0; i < d.population; i++) voxel_steps += (long)tool_evo.pop[i].voxels * tool_evo.pop[i].steps;
-    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", tool_evo.evaluations,
-           tool_evo.generation, tool_evo.best.fitness, voxel_steps, am_port_now() - t0);
-    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&tool_evo));
+    for (int i = 0; i < d.population; i++) voxel_steps += (long)c->evo.pop[i].voxels * c->evo.pop[i].steps;
+    printf("evaluations=%ld generations=%ld best_fitness=%.9g final_population_voxel_steps=%ld wall_s=%.2f\n", c->evo.evaluations,
+           c->evo.generation, c->evo.best.fitness, voxel_steps, am_port_now() - t0);
+    printf("repro_hash=%016llx\n", (unsigned long long)am_evo_hash(&c->evo));
     return 0;
 }
 

@@ -1,5 +1,5 @@
 /* amorph sim and amorph bench. */
-#include "cmd.h"
+#include "robot.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -7,48 +7,16 @@
 
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
-    "Simulates one robot in the seed's environment (relaxation, then actuation cycles) and prints\n"
-    "its fitness and diagnostics. FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, whose\n"
-    "environment is used; the options below override it) or a run folder of amorph evolve (its best\n"
-    "robot, in the run's environment and evaluation); NAME a built-in scene (cube:N, sphere:D,\n"
-    "cantilever:N, chain:N).\n"
-    "  --cycles N            actuation cycles (10)\n"
-    "  --period-steps N      actuation period in time steps (500)\n"
-    "  --amplitude DEG       temperature amplitude (30)\n"
-    "  --dt-search           the seed's empirical time step search\n"
-    "  --dt SECONDS          a fixed time step instead\n"
-    "  --dt-frac F           time step as a fraction of the analytic one (0.9)\n"
-    "  --collisions on|off   self-collision (on)\n"
-    "  --floor on|off        the floor (on)\n"
-    "  --gravity G           m/s^2 (9.80665)\n"
-    "  --cte linear|volume   CTE convention (volume, the seed's)\n"
-    "  --fitness horizontal|x|3d   centre of mass displacement measured (horizontal)\n"
-    "  --relax-max N         relaxation steps at most (40000)\n"
-    "  --release-steps N     steps, at the end of the relaxation, of the model's own damping through\n"
-    "                        which the body must stay calm to count as settled (500)\n"
-    "  --json                one JSON object instead of name = value lines\n"
+    "Simulates one robot (relaxation, then actuation cycles) and prints its fitness and diagnostics.\n"
+    "FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, with its environment) or a\n"
+    "run folder of amorph evolve (its best robot, in the run's environment, evaluation and materials);\n"
+    "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N), in the seed's environment.\n"
+    TOOL_ROBOT_HELP
+    "  --json             one JSON object instead of name = value lines\n"
     "A run that diverged or did not settle prints one warning line on stderr; the exit status is\n"
     "still 0 (it is a result). Besides the fitness: residual_speed (m/s, the largest RMS voxel speed\n"
     "through the release window, or the last one when the relaxation ran out first) and\n"
     "kinetic_resets (the relaxation's kinetic damping stops; docs/physics.md, Evaluation).\n";
-
-enum { G_PERIOD = 1, G_AMPLITUDE = 2, G_DT_FRAC = 4, G_GRAVITY = 8, G_COLLISIONS = 16, G_FLOOR = 32, G_CTE = 64,
-       G_CYCLES = 128, G_FITNESS = 256, G_RELAX = 512, G_DT_SEARCH = 1024,
-       G_RELEASE = 2048 };
-
-/* a file's environment (VXA file, run folder), with the flags given on the command line on top */
-static am_env merge_env(const am_env* file, const am_env* cli, unsigned given)
-{
-    am_env e = *file;
-    if (given & G_PERIOD) e.period_steps = cli->period_steps;
-    if (given & G_AMPLITUDE) e.temp_amplitude = cli->temp_amplitude;
-    if (given & G_DT_FRAC) e.dt_frac = cli->dt_frac;
-    if (given & G_GRAVITY) e.gravity = cli->gravity;
-    if (given & G_COLLISIONS) e.collisions = cli->collisions;
-    if (given & G_FLOOR) e.floor = cli->floor;
-    if (given & G_CTE) e.cte_mode = cli->cte_mode;
-    return e;
-}
 
 /* the result and the gait of the movement segment (docs/results.md, Gaits), on the standard output */
 static int print_result(const char* robot, const am_result* r, double wall, const am_gait* g, int fitness, double voxel_size, int json)
@@ -92,114 +60,34 @@ static int print_result(const char* robot, const am_result* r, double wall, cons
     return tool_out_close(&out, 1);
 }
 
-int cmd_sim(int argc, char** argv)
+int cmd_sim(tool_ctx* c, int argc, char** argv)
 {
-    const char* file = 0;
-    int is_scene = 0, json = 0;
-    double dt_fixed = 0;
-    am_env env = am_default_env();
-    am_eval_def def = am_default_eval();
-    unsigned given = 0; /* environment flags given, which win over a VXA file's environment */
+    int json = 0;
+    tool_robot_args ra;
+    memset(&ra, 0, sizeof ra);
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
-        const char* v = i + 1 < argc ? argv[i + 1] : 0;
-        long n;
-        double r;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             fputs(sim_help, stdout);
             return 0;
-        } else if (!strcmp(a, "--json")) json = 1;
-        else if (!strcmp(a, "--dt-search")) def.dt_search = 1, given |= G_DT_SEARCH;
-        else if (!strcmp(a, "--scene")) {
-            if (!v) return tool_usage_error("sim: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
-            file = v, is_scene = 1, i++;
-        } else if (!strcmp(a, "--cycles")) {
-            if (!tool_parse_long(v, 0, 100000, &n)) return tool_usage_error("sim: --cycles needs a whole number 0..100000");
-            def.cycles = (int)n, given |= G_CYCLES, i++;
-        } else if (!strcmp(a, "--period-steps")) {
-            if (!tool_parse_long(v, 1, 10000000, &n)) return tool_usage_error("sim: --period-steps needs a whole number 1..10000000");
-            env.period_steps = (int)n, given |= G_PERIOD, i++;
-        } else if (!strcmp(a, "--relax-max")) {
-            if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --relax-max needs a whole number >= 0");
-            def.relax_max_steps = n, given |= G_RELAX, i++;
-            if (def.relax_min_steps > n) def.relax_min_steps = n;
-        } else if (!strcmp(a, "--release-steps")) {
-            if (!tool_parse_long(v, 0, 100000000, &n)) return tool_usage_error("sim: --release-steps needs a whole number from 0 to 100000000");
-            def.release_steps = n, given |= G_RELEASE, i++;
-        } else if (!strcmp(a, "--amplitude")) {
-            if (!tool_parse_real(v, -1e4, 1e4, &r)) return tool_usage_error("sim: --amplitude needs degrees in [-1e4, 1e4]");
-            env.temp_amplitude = AM_PARAM_FROM_DOUBLE(r), given |= G_AMPLITUDE, i++;
-        } else if (!strcmp(a, "--dt")) {
-            if (!tool_parse_real(v, 1e-12, 1e3, &r)) return tool_usage_error("sim: --dt needs seconds in [1e-12, 1e3]");
-            dt_fixed = r, i++;
-        } else if (!strcmp(a, "--dt-frac")) {
-            if (!tool_parse_real(v, 1e-6, 100, &r)) return tool_usage_error("sim: --dt-frac needs a number in [1e-6, 100]");
-            env.dt_frac = AM_PARAM_FROM_DOUBLE(r), given |= G_DT_FRAC, i++;
-        } else if (!strcmp(a, "--gravity")) {
-            if (!tool_parse_real(v, 0, 1e4, &r)) return tool_usage_error("sim: --gravity needs m/s^2 in [0, 1e4]");
-            env.gravity = AM_PARAM_FROM_DOUBLE(r), given |= G_GRAVITY, i++;
-        } else if (!strcmp(a, "--collisions")) {
-            if (!tool_parse_onoff(v, &env.collisions)) return tool_usage_error("sim: --collisions takes on or off");
-            given |= G_COLLISIONS, i++;
-        } else if (!strcmp(a, "--floor")) {
-            if (!tool_parse_onoff(v, &env.floor)) return tool_usage_error("sim: --floor takes on or off");
-            given |= G_FLOOR, i++;
-        } else if (!strcmp(a, "--cte")) {
-            if (v && !strcmp(v, "linear")) env.cte_mode = AM_CTE_LINEAR;
-            else if (v && !strcmp(v, "volume")) env.cte_mode = AM_CTE_VOLUMETRIC;
-            else return tool_usage_error("sim: --cte takes linear or volume");
-            given |= G_CTE, i++;
-        } else if (!strcmp(a, "--fitness")) {
-            if (v && !strcmp(v, "horizontal")) def.fitness = AM_FIT_HORIZONTAL;
-            else if (v && !strcmp(v, "x")) def.fitness = AM_FIT_PLUS_X;
-            else if (v && !strcmp(v, "3d")) def.fitness = AM_FIT_3D;
-            else return tool_usage_error("sim: --fitness takes horizontal, x or 3d");
-            given |= G_FITNESS, i++;
-        } else if (a[0] == '-' && a[1]) {
-            return tool_usage_error("sim: unknown option '%s' (amorph sim --help)", a);
-        } else {
-            if (file) return tool_usage_error("sim: one robot at a time ('%s' and '%s')", file, a);
-            file = a;
         }
+        if (!strcmp(a, "--json")) {
+            json = 1;
+            continue;
+        }
+        int r = tool_robot_arg("sim", argc, argv, &i, &ra);
+        if (r == 2) return 2;
+        if (r == 0) return tool_usage_error("sim: unknown option '%s' (amorph sim --help)", a);
     }
-    if (!file) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
-    if (def.dt_search && dt_fixed > 0) return tool_usage_error("sim: --dt and --dt-search exclude each other");
+    if (!ra.name) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
 
     char err[AM_ERR_MAX];
-    am_status st;
-    am_lattice* lat = &tool_work[0].lattice; /* the robot */
-    if (!is_scene && tool_is_run_dir(file)) {
-        /* a run folder: its best robot, in the environment and evaluation it evolved in */
-        am_env renv;
-        am_eval_def rdef;
-        st = tool_load_run(file, lat, &renv, &rdef, err, sizeof err);
-        if (st != AM_OK) return tool_usage_error("%s", err);
-        env = merge_env(&renv, &env, given);
-        if (given & G_CYCLES) rdef.cycles = def.cycles;
-        if (given & G_FITNESS) rdef.fitness = def.fitness;
-        if (given & G_DT_SEARCH) rdef.dt_search = def.dt_search;
-        if (given & G_RELAX) {
-            rdef.relax_max_steps = def.relax_max_steps;
-            if (rdef.relax_min_steps > def.relax_max_steps) rdef.relax_min_steps = def.relax_max_steps;
-        }
-        if (given & G_RELEASE) rdef.release_steps = def.release_steps;
-        rdef.record = def.record;
-        def = rdef;
-    } else {
-        st = tool_load_robot(file, is_scene, lat, err, sizeof err);
-        if (st != AM_OK) return tool_usage_error("%s", err);
-#if TOOL_VXA
-        if (tool_vxa_loaded) env = merge_env(&tool_vxa_info.env, &env, given);
-#endif
-    }
-    /* settings in seconds become steps of this robot before its model is built: --dt, and a VXA
-     * file's period unless --period-steps or the file gives steps */
-    double period_s = 0;
-#if TOOL_VXA
-    if (tool_vxa_loaded && !(given & G_PERIOD) && !tool_vxa_info.period_steps_given) period_s = tool_vxa_info.temp_period;
-#endif
-    st = tool_resolve_env(lat, dt_fixed, period_s, &env, err, sizeof err);
-    if (st == AM_OK) st = am_model_build(&tool_work[0].model, lat, &env, err, sizeof err);
+    am_lattice* lat = &c->work[0].lattice; /* the robot */
+    tool_robot rob;
+    const char* file = ra.name;
+    if (tool_robot_load(c, &ra, lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (rob.eval.dt_search && ra.dt_s > 0) return tool_usage_error("sim: --dt and dt_search exclude each other");
+    am_status st = am_model_build(&c->work[0].model, lat, &rob.env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
         tool_out out;
@@ -217,18 +105,19 @@ int cmd_sim(int argc, char** argv)
         return tool_out_close(&out, 1);
     }
     if (st != AM_OK) return tool_usage_error("%s: %s", file, err);
+    am_eval_def def = rob.eval;
 
     am_result res;
     am_gait gait;
     def.gait = &gait;
     double t0 = am_port_now();
-    am_evaluate(&tool_work[0].model, &tool_work[0].state, &def, &res);
+    am_evaluate(&c->work[0].model, &c->work[0].state, &def, &res);
     double wall = am_port_now() - t0;
     if (print_result(file, &res, wall, &gait, def.fitness, AM_PARAM_TO_DOUBLE(lat->voxel_size), json)) return 1;
     fflush(stdout);
     /* a run that diverged or did not settle is a result (exit status 0), with one line of warning */
     if (res.diverged) {
-        const long at = tool_work[0].state.diverge_step;
+        const long at = c->work[0].state.diverge_step;
         fprintf(stderr, "amorph: sim: warning: %s diverged at step %ld, in the %s (fitness %g)\n", file, at,
                 at <= res.relax_steps ? "relaxation" : "actuation", res.fitness);
     } else if (!res.settled) {
@@ -241,30 +130,30 @@ int cmd_sim(int argc, char** argv)
 /* times `steps` actuated steps of one scene after a short warm-up, at dt_frac of dt_rec (the default when 0);
  * *vps_out gets the voxel steps per second, *k_out the simulated seconds per voxel step (dt / nv,
  * the same in every run of the scene), so that vps * k is the simulated seconds per second */
-static int bench_one(const char* scene, long steps, int collisions, double dt_frac, double* vps_out, double* k_out)
+static int bench_one(tool_ctx* c, const char* scene, long steps, int collisions, double dt_frac, double* vps_out, double* k_out)
 {
     char err[AM_ERR_MAX];
     am_env env = am_default_env();
     env.collisions = collisions;
     if (dt_frac > 0) env.dt_frac = AM_PARAM_FROM_DOUBLE(dt_frac);
-    am_lattice* lat = &tool_work[0].lattice;
+    am_lattice* lat = &c->work[0].lattice;
     if (am_scene_build(lat, scene, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-    if (am_model_build(&tool_work[0].model, lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-    am_state_reset(&tool_work[0].model, &tool_work[0].state);
-    tool_work[0].state.actuate = 1;
-    am_steps(&tool_work[0].model, &tool_work[0].state, steps / 10 + 1); /* warm-up: caches, first collision build */
-    long r0 = tool_work[0].state.rebuilds;
+    if (am_model_build(&c->work[0].model, lat, &env, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+    am_state_reset(&c->work[0].model, &c->work[0].state);
+    c->work[0].state.actuate = 1;
+    am_steps(&c->work[0].model, &c->work[0].state, steps / 10 + 1); /* warm-up: caches, first collision build */
+    long r0 = c->work[0].state.rebuilds;
     double t0 = am_port_now();
-    long done = am_steps(&tool_work[0].model, &tool_work[0].state, steps);
+    long done = am_steps(&c->work[0].model, &c->work[0].state, steps);
     double wall = am_port_now() - t0;
-    const double vps = (double)done * tool_work[0].model.nv / (wall > 0 ? wall : 1e-9);
-    const double dt = am_to_si(&tool_work[0].model, tool_work[0].state.dt, AM_DIM_TIME);
-    const double k = dt / tool_work[0].model.nv, sps = vps * k;
+    const double vps = (double)done * c->work[0].model.nv / (wall > 0 ? wall : 1e-9);
+    const double dt = am_to_si(&c->work[0].model, c->work[0].state.dt, AM_DIM_TIME);
+    const double k = dt / c->work[0].model.nv, sps = vps * k;
     printf("scene=%s collisions=%s voxels=%d links=%d steps=%ld dt_frac=%g dt_s=%.4g wall_s=%.4f voxel_steps_per_s=%.4g "
            "sim_s_per_s=%.4g ns_per_voxel_step=%.2f rebuilds=%ld pairs=%d diverged=%d\n",
-           scene, collisions ? "on" : "off", tool_work[0].model.nv, tool_work[0].model.links, done,
-           AM_PARAM_TO_DOUBLE(tool_work[0].model.env.dt_frac), dt, wall, vps, sps, 1e9 / vps, tool_work[0].state.rebuilds - r0,
-           tool_work[0].state.npairs, tool_work[0].state.diverged);
+           scene, collisions ? "on" : "off", c->work[0].model.nv, c->work[0].model.links, done,
+           AM_PARAM_TO_DOUBLE(c->work[0].model.env.dt_frac), dt, wall, vps, sps, 1e9 / vps, c->work[0].state.rebuilds - r0,
+           c->work[0].state.npairs, c->work[0].state.diverged);
     fflush(stdout);
     *vps_out = vps;
     *k_out = k;
@@ -274,11 +163,11 @@ static int bench_one(const char* scene, long steps, int collisions, double dt_fr
 /* `repeat` runs of bench_one, then the best and the median figure: on a shared or virtual
  * machine whose speed moves from minute to minute, the best of several runs is the figure of
  * the code */
-static int bench_scene(const char* scene, long steps, int collisions, double dt_frac, int repeat)
+static int bench_scene(tool_ctx* c, const char* scene, long steps, int collisions, double dt_frac, int repeat)
 {
     double v[64], sk = 0; /* voxel steps per second; simulated seconds per voxel step */
     for (int k = 0; k < repeat; k++) {
-        if (bench_one(scene, steps, collisions, dt_frac, &v[k], &sk)) return 2;
+        if (bench_one(c, scene, steps, collisions, dt_frac, &v[k], &sk)) return 2;
         for (int j = k; j > 0 && v[j] < v[j - 1]; j--) { /* sorted as they come */
             double t = v[j];
             v[j] = v[j - 1];
@@ -381,7 +270,7 @@ static const char bench_help[] =
     "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
     "vectorisable loops" TOOL_DESKTOP_ONLY ".\n";
 
-int cmd_bench(int argc, char** argv)
+int cmd_bench(tool_ctx* c, int argc, char** argv)
 {
     const char* scene = 0;
     long steps = 2000, n;
@@ -428,18 +317,18 @@ int cmd_bench(int argc, char** argv)
     }
     if (evolve_evals) {
         printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
-        return tool_bench_evolve(evolve_evals);
+        return tool_bench_evolve(c, evolve_evals);
     }
     printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
     if (scene) {
-        if (coll != 0 && bench_scene(scene, steps, 1, dt_frac, repeat)) return 2;
-        if (coll != 1 && bench_scene(scene, steps, 0, dt_frac, repeat)) return 2;
+        if (coll != 0 && bench_scene(c, scene, steps, 1, dt_frac, repeat)) return 2;
+        if (coll != 1 && bench_scene(c, scene, steps, 0, dt_frac, repeat)) return 2;
         return 0;
     }
     const char* scenes[2] = {AM_MAX_DIM >= 20 ? "sphere:20" : "sphere:8", AM_MAX_DIM >= 10 ? "cube:10" : "cube:8"};
     for (int k = 0; k < 2; k++)
-        for (int c = 0; c <= 1; c++)
-            if ((coll < 0 || coll == c) && bench_scene(scenes[k], steps, c, dt_frac, repeat)) return 2;
-    tool_bench_express();
+        for (int on = 0; on <= 1; on++)
+            if ((coll < 0 || coll == on) && bench_scene(c, scenes[k], steps, on, dt_frac, repeat)) return 2;
+    tool_bench_express(c);
     return 0;
 }

@@ -159,11 +159,11 @@ static void view_data(text_out* o, const tool_motion* mo, const am_eval_def* eva
     out_str(o, "\"}\n");
 }
 
-static int view_write(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int frames, const char* title,
+static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int frames, const char* title,
                       const char* what, const char* path)
 {
     static tool_motion mo;
-    int rc = tool_record_motion(lat, env, eval, frames, &mo, what);
+    int rc = tool_record_motion(c, lat, env, eval, frames, &mo, what);
     if (rc) return rc;
     text_out o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
     view_html[0] = 0;
@@ -177,10 +177,10 @@ static int view_write(const am_lattice* lat, const am_env* env, const am_eval_de
     return tool_write_output(path, view_html, o.len);
 }
 
-int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
                       const char* path)
 {
-    return view_write(lat, env, eval, 200, title ? title : path, path, path) ? 1 : 0;
+    return view_write(c, lat, env, eval, 200, title ? title : path, path, path) ? 1 : 0;
 }
 
 static const char view_help[] =
@@ -189,30 +189,26 @@ static const char view_help[] =
     "self-contained HTML file that plays the recorded motion in a browser: drag to orbit, wheel to\n"
     "zoom, play/pause, speed, a time slider, the centre-of-mass trail. URL hash parameters pick a\n"
     "moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
-    "genome file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N).\n"
+    "genome or VXA file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
+    "chain:N).\n"
     "  --out FILE.html    the page (written atomically); required\n"
     "  --frames N         frames recorded, 2..1000 (200; fewer for big bodies)\n"
     "  --title TEXT       the page's heading (the robot's name)\n"
-    "  --cycles N         actuation cycles (the robot's evaluation: 10)\n"
-    "  --relax-max N      relaxation steps at most (40000)\n";
+    TOOL_ROBOT_HELP;
 
-int cmd_view(int argc, char** argv)
+int cmd_view(tool_ctx* c, int argc, char** argv)
 {
-    const char* file = 0;
     const char* out = 0;
     const char* title = 0;
-    int is_scene = 0, cycles = -1, frames = 200;
-    long relax = -1;
+    int frames = 200;
+    tool_robot_args ra;
+    memset(&ra, 0, sizeof ra);
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             fputs(view_help, stdout);
             return 0;
-        } else if (!strcmp(a, "--scene")) {
-            if (!v) return tool_usage_error("view: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)");
-            if (file) return tool_usage_error("view: one robot at a time ('%s' and '%s')", file, v);
-            file = v, is_scene = 1, i++;
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("view: --out needs a file name");
             out = v, i++;
@@ -222,33 +218,19 @@ int cmd_view(int argc, char** argv)
         } else if (!strcmp(a, "--frames")) {
             if (!tool_parse_int(v, 2, 1000, &frames)) return tool_usage_error("view: --frames needs a whole number 2..1000");
             i++;
-        } else if (!strcmp(a, "--cycles")) {
-            if (!tool_parse_int(v, 0, 100000, &cycles)) return tool_usage_error("view: --cycles needs a whole number 0..100000");
-            i++;
-        } else if (!strcmp(a, "--relax-max")) {
-            if (!tool_parse_long(v, 1, 100000000, &relax)) return tool_usage_error("view: --relax-max needs a whole number >= 1");
-            i++;
-        } else if (a[0] == '-' && a[1]) {
-            return tool_usage_error("view: unknown option '%s' (amorph view --help)", a);
         } else {
-            if (file) return tool_usage_error("view: one robot at a time ('%s' and '%s')", file, a);
-            file = a;
+            int r = tool_robot_arg("view", argc, argv, &i, &ra);
+            if (r == 2) return 2;
+            if (r == 0) return tool_usage_error("view: unknown option '%s' (amorph view --help)", a);
         }
     }
-    if (!file) return tool_usage_error("view: name a robot file, a run folder or --scene NAME (amorph view --help)");
+    if (!ra.name) return tool_usage_error("view: name a robot file, a run folder or --scene NAME (amorph view --help)");
     int rc = tool_check_output(out, "view", ".html");
     if (rc) return rc;
-    static am_lattice lat;
-    am_env env;
-    am_eval_def eval;
-    rc = tool_load_subject(file, is_scene, &lat, &env, &eval, "view");
+    tool_robot rob;
+    rc = tool_load_subject(c, &ra, &rob, "view");
     if (rc) return rc;
-    if (cycles >= 0) eval.cycles = cycles;
-    if (relax >= 0) {
-        eval.relax_max_steps = relax;
-        if (eval.relax_min_steps > relax) eval.relax_min_steps = relax;
-    }
-    return view_write(&lat, &env, &eval, frames, title ? title : file, file, out);
+    return view_write(c, &c->work[0].lattice, &rob.env, &rob.eval, frames, title ? title : ra.name, ra.name, out);
 }
 
 #else

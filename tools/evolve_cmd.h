@@ -43,9 +43,9 @@ int test_interrupt_setup(void);
 /* ---- runs (tools/cmd_evolve.c) ---- */
 
 /* a new run in dir, to its end; label prefixes the progress lines (experiments) or is NULL */
-int start_run(const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label);
+int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label);
 /* the run in dir continued to its end, with the flags o and `extra` keys and values */
-int resume_run(const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label);
+int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label);
 
 /* ---- the run folder (tools/run_dir.c) ---- */
 
@@ -55,8 +55,8 @@ int path_join(char* out, size_t cap, const char* dir, const char* file);
 int write_text(const char* dir, const char* file, const char* text, long len);
 int write_config(const char* dir, const am_evo_def* d);
 int write_checkpoint(const char* dir, const am_evo* e);
-/* best.genome and best.lattice */
-int write_best(const char* dir, const am_evo* e);
+/* best.genome and best.lattice of c->evo */
+int write_best(tool_ctx* c, const char* dir);
 /* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON object),
  * both of the fields put(q, ctx) writes */
 int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx);
@@ -82,7 +82,7 @@ int evals_header(const am_evo_def* d, char* buf, int cap);
 /* a fresh folder name runs/run-NNN */
 int default_out(char* out, size_t cap);
 /* a new run's files in dir (made and locked): configuration, log headers, first checkpoint */
-int start_prepare(const am_evo_def* d, const char* dir);
+int start_prepare(tool_ctx* c, const am_evo_def* d, const char* dir);
 /* the folder's lock (one process at a time) */
 int lock_run(const char* dir);
 /* the checkpoint at path read into e */

@@ -2,7 +2,7 @@
  * replace) or onto the standard output, and read line by line.
  *
  * Reading has two sources behind one interface. The desktop profile reads a file whole into
- * tool_file_buf, as amorph always did (a file larger than the buffer is refused whole), and hands
+ * one buffer, as amorph always did (a file larger than the buffer is refused whole), and hands
  * out its lines in place. The board profile streams the file through one line buffer
  * (TOOL_LINE_MAX characters), so a file of any length needs no more RAM than its longest line.
  * Both cut lines at '\n' the same way, so the parsers above see the same lines either way. */
@@ -89,7 +89,8 @@ int tool_write_output(const char* out, const char* text, long len)
 /* ---- reading ---- */
 
 #if TOOL_WHOLE_FILES
-char tool_file_buf[TOOL_FILE_BUF];
+#define TOOL_FILE_BUF (TOOL_FILE_MAX > TOOL_CKPT_MAX ? TOOL_FILE_MAX : TOOL_CKPT_MAX)
+static char tool_file_buf[TOOL_FILE_BUF];
 
 am_status tool_src_open(tool_src* s, const char* path, long cap, int nul_ends, char* err, int errsz)
 {
@@ -245,4 +246,55 @@ void tool_src_close(tool_src* s)
 am_status tool_src_binary(const tool_src* s, char* err, int errsz)
 {
     return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: binary data (a NUL byte) in a text file", s->path);
+}
+
+/* ---- what a text holds, and its lines one by one ---- */
+
+/* what a text is, from its first meaningful lines, as am_vxa_sniff and am_genome_sniff judge a
+ * whole text: XML when the first non-blank character (after a byte order mark) is '<'; a genome
+ * when the first line that is neither blank nor a comment starts with "amorph-genome"; else a
+ * lattice. The source is left at its start. */
+static int is_vxa_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+static int is_geno_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+int tool_src_sniff(tool_src* s, char* err, int errsz)
+{
+    char* line;
+    long n;
+    int r, vxa_open = 1, kind = TOOL_TEXT_LATTICE;
+    while ((r = tool_src_next(s, &line, &n, err, errsz)) == 1) {
+        if (vxa_open) {
+            const char* q = line;
+            if (s->line == 1 && (unsigned char)q[0] == 0xEF && (unsigned char)q[1] == 0xBB && (unsigned char)q[2] == 0xBF) q += 3;
+            while (is_vxa_blank(*q)) q++;
+            if (*q) {
+                vxa_open = 0;
+                if (*q == '<') {
+                    kind = TOOL_TEXT_VXA;
+                    break;
+                }
+            }
+        }
+        const char* q = line;
+        while (is_geno_blank(*q)) q++;
+        if (!*q || *q == '#') continue;
+        kind = am_genome_sniff(line) ? TOOL_TEXT_GENOME : TOOL_TEXT_LATTICE;
+        break;
+    }
+    if (r < 0) return -1;
+    if (tool_src_rewind(s, err, errsz) != AM_OK) return -1;
+    return kind;
+}
+
+am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz)
+{
+    char* line;
+    long n;
+    int r;
+    while ((r = tool_src_next(s, &line, &n, err, errsz)) == 1) {
+        am_status st = fn(ctx, s->line, line, n, err, errsz);
+        if (st != AM_OK) return st;
+    }
+    if (r < 0) return s->binary ? tool_src_binary(s, err, errsz) : s->st;
+    return AM_OK;
 }

@@ -6,7 +6,7 @@
 
 static const struct {
     const char* name;
-    int (*fn)(int, char**);
+    int (*fn)(tool_ctx*, int, char**);
     const char* help;
 } commands[] = {
     {"evolve", cmd_evolve, "evolve robots (the seed's experiment by default; resumable run folders)"},
@@ -34,6 +34,9 @@ static void usage(FILE* f)
     fprintf(f, "\nbuild: am_real=%s, profile=%s (workspace up to %d^3)\n", AM_REAL_NAME, AM_PROFILE_NAME, AM_MAX_DIM);
 }
 
+/* the commands' workspaces: large, so static storage rather than main's stack */
+static tool_ctx ctx;
+
 int main(int argc, char** argv)
 {
     if (argc < 2) {
@@ -45,6 +48,6 @@ int main(int argc, char** argv)
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(argc - 1, argv + 1);
+        if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(&ctx, argc - 1, argv + 1);
     return tool_usage_error("unknown command '%s' (amorph --help lists them)", argv[1]);
 }

@@ -11,17 +11,17 @@
 static float pic_pose[TOOL_REC_FLOATS];
 static long pic_step[TOOL_REC_MAX_FRAMES];
 
-int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
+int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
                        const char* what)
 {
     char err[AM_ERR_MAX];
     memset(mo, 0, sizeof *mo);
-    am_status st = am_model_build(&tool_work[0].model, lat, env, err, sizeof err);
+    am_status st = am_model_build(&c->work[0].model, lat, env, err, sizeof err);
     if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
     if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
     /* frames that fit: the float budget caps big bodies, the step list caps the count. Record as
      * many as fit over the longest the evaluation can take, then keep `want` of them */
-    long fit = TOOL_REC_FLOATS / ((long)tool_work[0].model.nv * 7);
+    long fit = TOOL_REC_FLOATS / ((long)c->work[0].model.nv * 7);
     if (fit > TOOL_REC_MAX_FRAMES) fit = TOOL_REC_MAX_FRAMES;
     if (want > fit) want = (int)fit;
     if (want < 2) want = 2;
@@ -37,7 +37,7 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
     rec.pose_cap = TOOL_REC_FLOATS;
     am_eval_def def = *eval;
     def.record = &rec;
-    am_evaluate(&tool_work[0].model, &tool_work[0].state, &def, &mo->res);
+    am_evaluate(&c->work[0].model, &c->work[0].state, &def, &mo->res);
     /* keep the frames before the first non-finite value (a diverged run) */
     int good = 0;
     for (; good < rec.frames; good++) {
@@ -47,7 +47,7 @@ int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_d
         if (!ok) break;
     }
     if (good < 1) return tool_usage_error("%s: the simulation diverged at once, nothing to draw", what);
-    mo->model = &tool_work[0].model;
+    mo->model = &c->work[0].model;
     mo->nv = rec.nv;
     mo->frames = good;
     mo->pose = pic_pose;
@@ -120,25 +120,10 @@ void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3])
         if (half[a] > L) half[a] = L; /* a torn-apart link must not draw a giant box */
 }
 
-int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* env, am_eval_def* eval,
-                      const char* cmd)
+int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd)
 {
     char err[AM_ERR_MAX];
-    *env = am_default_env();
-    *eval = am_default_eval();
-    if (!is_scene && tool_is_run_dir(name)) {
-        if (tool_load_run(name, lat, env, eval, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
-        return 0;
-    }
-    am_status st = tool_load_robot(name, is_scene, lat, err, sizeof err);
-    if (st != AM_OK) return tool_usage_error("%s: %s", cmd, err);
-    if (tool_vxa_loaded) {
-        /* a VXA file brings its environment (as amorph sim); its period in seconds becomes steps
-         * of this robot's time step */
-        *env = tool_vxa_info.env;
-        st = tool_resolve_env(lat, 0, tool_vxa_info.period_steps_given ? 0 : tool_vxa_info.temp_period, env, err, sizeof err);
-        if (st != AM_OK && st != AM_ERR_EMPTY) return tool_usage_error("%s: %s: %s", cmd, name, err);
-    }
+    if (tool_robot_load(c, a, &c->work[0].lattice, r, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
     return 0;
 }
 
@@ -157,30 +142,30 @@ static int not_built(const char* what)
 {
     return tool_not_in_build(what, "pictures");
 }
-int cmd_render(int argc, char** argv)
+int cmd_render(tool_ctx* c, int argc, char** argv)
 {
-    (void)argc, (void)argv;
+    (void)c, (void)argc, (void)argv;
     return not_built("render");
 }
-int cmd_plot(int argc, char** argv)
+int cmd_plot(tool_ctx* c, int argc, char** argv)
 {
-    (void)argc, (void)argv;
+    (void)c, (void)argc, (void)argv;
     return not_built("plot");
 }
-int cmd_view(int argc, char** argv)
+int cmd_view(tool_ctx* c, int argc, char** argv)
 {
-    (void)argc, (void)argv;
+    (void)c, (void)argc, (void)argv;
     return not_built("view");
 }
-int tool_write_filmstrip(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
 {
-    (void)lat, (void)env, (void)eval;
+    (void)c, (void)lat, (void)env, (void)eval;
     return not_built(path) ? 1 : 0;
 }
-int tool_write_viewer(const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
+int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
                       const char* path)
 {
-    (void)lat, (void)env, (void)eval, (void)title;
+    (void)c, (void)lat, (void)env, (void)eval, (void)title;
     return not_built(path) ? 1 : 0;
 }
 int tool_write_plot(int ndirs, char** dirs, const char* path)

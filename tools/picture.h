@@ -2,7 +2,7 @@
 #ifndef AMORPH_TOOLS_PICTURE_H
 #define AMORPH_TOOLS_PICTURE_H
 
-#include "cmd.h"
+#include "robot.h"
 
 /* the recording budget: poses of up to 128 frames of the largest body (more frames of smaller ones) */
 #define TOOL_REC_FLOATS (AM_MAX_VOXELS * 7L * 128L)
@@ -22,7 +22,7 @@ typedef struct tool_motion {
 
 /* evaluates the robot with recording, about `want` frames over the longest possible run (fewer
  * for a big body); returns 0, or an exit status after a one-line message naming `what` */
-int tool_record_motion(const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
+int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
                        const char* what);
 /* mass-weighted centre of frame `frame`, m */
 void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
@@ -30,10 +30,9 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
  * neighbours on each axis (so thermal expansion shows), m */
 void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3]);
 
-/* the robot argument of render and view: a scene or robot file (seed environment and evaluation)
- * or a run folder (its best robot, environment and evaluation); 0 or an exit status after a message */
-int tool_load_subject(const char* name, int is_scene, am_lattice* lat, am_env* env, am_eval_def* eval,
-                      const char* cmd);
+/* the robot of render and view (tools/robot.h) into c->work[0].lattice, with its environment and
+ * evaluation; 0 or an exit status after a message naming cmd */
+int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd);
 /* --out FILE present and not a folder name; 0 or 2 after a message */
 int tool_check_output(const char* path, const char* cmd, const char* ext);
 

@@ -1,76 +1,174 @@
-/* Loading robots for the commands: scenes, lattice files, genome files, VXA files; the workspaces
- * and the evolver the commands share. */
-#include "cmd.h"
+/* The robot a command names, loaded as one unit with its environment and evaluation, and the
+ * settings that change them (tools/robot.h). */
+#include "robot.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-am_evo_work tool_work[AM_MAX_WORKERS];
-am_evo tool_evo;
+/* ---- the option vocabulary ---- */
 
-int tool_usage_error(const char* fmt, ...)
+/* older spellings kept as aliases of the table's keys (after '-' became '_') */
+static const struct {
+    const char* old;
+    const char* key;
+} aliases[] = {{"repr", "representation"}, {"size", "workspace"}, {"relax_max", "relax_max_steps"}};
+
+int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val)
 {
-    va_list ap;
-    va_start(ap, fmt);
-    fputs("amorph: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return 2;
-}
-
-int tool_not_in_build(const char* what, const char* feature)
-{
-    return tool_usage_error("%s: not in this build: %s belong to the desktop profile (make PROFILE=desktop)", what, feature);
-}
-
-/* what a text is, from its first meaningful lines, as am_vxa_sniff and am_genome_sniff judge a
- * whole text: XML when the first non-blank character (after a byte order mark) is '<'; a genome
- * when the first line that is neither blank nor a comment starts with "amorph-genome"; else a
- * lattice. The source is left at its start. */
-static int is_vxa_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-static int is_geno_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-int tool_src_sniff(tool_src* s, char* err, int errsz)
-{
-    char* line;
-    long n;
-    int r, vxa_open = 1, kind = TOOL_TEXT_LATTICE;
-    while ((r = tool_src_next(s, &line, &n, err, errsz)) == 1) {
-        if (vxa_open) {
-            const char* q = line;
-            if (s->line == 1 && (unsigned char)q[0] == 0xEF && (unsigned char)q[1] == 0xBB && (unsigned char)q[2] == 0xBF) q += 3;
-            while (is_vxa_blank(*q)) q++;
-            if (*q) {
-                vxa_open = 0;
-                if (*q == '<') {
-                    kind = TOOL_TEXT_VXA;
-                    break;
-                }
-            }
-        }
-        const char* q = line;
-        while (is_geno_blank(*q)) q++;
-        if (!*q || *q == '#') continue;
-        kind = am_genome_sniff(line) ? TOOL_TEXT_GENOME : TOOL_TEXT_LATTICE;
-        break;
+    const char* a = argv[*i];
+    if (strncmp(a, "--", 2) != 0) return 0;
+    const char* name = a + 2;
+    const char* eq = strchr(name, '=');
+    char norm[64];
+    size_t n = eq ? (size_t)(eq - name) : strlen(name);
+    if (n == 0 || n >= sizeof norm) return 0;
+    memcpy(norm, name, n);
+    norm[n] = 0;
+    for (char* p = norm; *p; p++)
+        if (*p == '-') *p = '_';
+    const char* k = NULL;
+    for (size_t j = 0; j < sizeof aliases / sizeof aliases[0]; j++)
+        if (!strcmp(norm, aliases[j].old)) k = aliases[j].key;
+    for (int j = 0; !k && j < am_evo_key_count(); j++)
+        if (!strcmp(am_evo_key_name(j), norm)) k = am_evo_key_name(j);
+    if (!k) return 0;
+    const char* v = eq ? eq + 1 : *i + 1 < argc ? argv[*i + 1] : NULL;
+    if (!eq && !strcmp(k, "dt_search") && !(v && (!strcmp(v, "on") || !strcmp(v, "off")))) {
+        /* --dt-search alone, as amorph sim always took it */
+        *key = k, *val = "on";
+        return 1;
     }
-    if (r < 0) return -1;
-    if (tool_src_rewind(s, err, errsz) != AM_OK) return -1;
-    return kind;
+    if (!v || (!eq && !strncmp(v, "--", 2))) {
+        tool_usage_error("%s: --%.*s needs a value", cmd, (int)n, name);
+        return -1;
+    }
+    if (!strcmp(k, "cte") && (!strcmp(v, "linear") || !strcmp(v, "volume") || !strcmp(v, "volumetric"))) {
+        tool_usage_error("%s: --cte %s: the CTE convention is --cte_mode volumetric|linear (--cte is the expansion "
+                         "coefficient, a number)", cmd, v);
+        return -1;
+    }
+    if (!eq) (*i)++;
+    *key = k, *val = v;
+    return 1;
 }
 
-am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz)
+int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_args* a)
 {
-    char* line;
-    long n;
-    int r;
-    while ((r = tool_src_next(s, &line, &n, err, errsz)) == 1) {
-        am_status st = fn(ctx, s->line, line, n, err, errsz);
-        if (st != AM_OK) return st;
+    const char* arg = argv[*i];
+    const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
+    if (!strcmp(arg, "--scene")) {
+        if (!v) return tool_usage_error("%s: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)", cmd);
+        if (a->name) return tool_usage_error("%s: one robot at a time ('%s' and '%s')", cmd, a->name, v);
+        a->name = v, a->is_scene = 1, (*i)++;
+        return 1;
     }
-    if (r < 0) return s->binary ? tool_src_binary(s, err, errsz) : s->st;
+    if (!strcmp(arg, "--dt")) {
+        if (!tool_parse_real(v, 1e-12, 1e3, &a->dt_s)) return tool_usage_error("%s: --dt needs seconds in [1e-12, 1e3]", cmd);
+        (*i)++;
+        return 1;
+    }
+    if (arg[0] != '-' || !arg[1]) {
+        if (a->name) return tool_usage_error("%s: one robot at a time ('%s' and '%s')", cmd, a->name, arg);
+        a->name = arg;
+        return 1;
+    }
+    const char *key, *val;
+    int r = tool_setting_arg(cmd, argc, argv, i, &key, &val);
+    if (r < 0) return 2;
+    if (r == 0) return 0;
+    int g = am_evo_key_group(key);
+    if (g != AM_KEYS_ENV && g != AM_KEYS_EVAL && g != AM_KEYS_MATERIALS)
+        return tool_usage_error("%s: --%s is a setting of an evolution, not of one robot (the robot's settings: amorph %s "
+                                "--help)", cmd, key, cmd);
+    if (a->nset == TOOL_MAX_SETTINGS) return tool_usage_error("%s: more than %d settings", cmd, TOOL_MAX_SETTINGS);
+    /* the value is checked now, as amorph evolve checks it, so a bad one is told before any file is read */
+    am_evo_def d = am_default_evo();
+    char err[AM_ERR_MAX];
+    if (am_evo_set(&d, key, val, err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
+    a->key[a->nset] = key;
+    a->val[a->nset++] = val;
+    return 1;
+}
+
+/* ---- loading ---- */
+
+#if TOOL_VXA
+/* VXA text -> lattice; the reader's warnings on stderr */
+static am_status load_vxa(const char* text, const char* fname, am_lattice* lat, tool_robot* r, double* period_s, char* err,
+                          int errsz)
+{
+    static am_xml_doc doc;   /* the XML reader's workspace, used during this call only */
+    static am_vxa_info info; /* the file's environment and warnings, copied out below */
+    am_status st = am_vxa_parse(lat, &info, &doc, text, fname, err, errsz);
+    if (st != AM_OK) return st;
+    int kept = 0;
+    for (const char* p = info.warning; *p; p++) kept += *p == '\n';
+    fputs(info.warning, stderr);
+    if (info.warnings > kept) fprintf(stderr, "%s: warning: %d more warnings not shown\n", fname, info.warnings - kept);
+    r->env = info.env;
+    *period_s = info.period_steps_given ? 0 : info.temp_period;
+    return AM_OK;
+}
+#endif
+
+/* a genome's lines to the reader, noting the line of "materials" (for messages) */
+typedef struct genome_read {
+    am_genome_reader r;
+    int materials_line;       /* the first line that starts with "materials", 0 until seen */
+} genome_read;
+
+static am_status genome_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    genome_read* g = (genome_read*)ctx;
+    const char* p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    if (!g->materials_line && !strncmp(p, "materials", 9)) g->materials_line = lineno;
+    return am_genome_read_line(&g->r, line, n, err, errsz);
+}
+
+am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, char* err, int errsz)
+{
+    const char* fname = src->path;
+    am_genome* g = tool_genome(c);
+    genome_read gr;
+    gr.materials_line = 0;
+    am_genome_read_begin(&gr.r, g, fname);
+    am_status st = tool_src_each(src, genome_line, &gr, err, errsz);
+    if (st == AM_OK) st = am_genome_read_end(&gr.r, err, errsz);
+    if (st != AM_OK) return st;
+    /* the built-in palette, in the lattice about to be filled (none is built on the stack) */
+    am_default_palette_into(&lat->palette);
+    for (int m = 0; m < g->materials; m++)
+        if (am_palette_find(&lat->palette, g->mat[m]) < 0)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
+                           gr.materials_line ? gr.materials_line : 1, g->mat[m]);
+    char msg[AM_ERR_MAX];
+    st = am_genome_to_lattice(g, NULL, &c->work[0].geno, lat, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
+    return AM_OK;
+}
+
+/* a run folder's best robot, with the environment and evaluation it evolved in */
+static am_status load_run(tool_ctx* c, const char* dir, am_lattice* lat, tool_robot* r, char* err, int errsz)
+{
+    char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
+    am_evo_def d = am_default_evo();
+    /* a NUL byte ends these texts, as it ended them when they were parsed whole */
+    snprintf(path, sizeof path, "%s/config.txt", dir);
+    am_status st = tool_read_config(path, &d, 1, err, errsz);
+    if (st != AM_OK) return st;
+    snprintf(path, sizeof path, "%s/best.genome", dir);
+    tool_src src;
+    st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
+    if (st == AM_OK) st = tool_read_genome(&src, tool_genome(c), err, errsz);
+    tool_src_close(&src);
+    if (st != AM_OK) return st;
+    /* the run's palette, in the evolver's slot (idle: no run is going on) */
+    am_evo_palette_into(&d, &c->evo.palette);
+    st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, lat, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
+    r->env = d.env;
+    r->eval = d.eval;
     return AM_OK;
 }
 
@@ -80,10 +178,10 @@ static am_status lattice_line(void* ctx, int lineno, char* line, long n, char* e
     return am_lattice_read_line((am_lattice_reader*)ctx, line, n, err, errsz);
 }
 
-am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char* err, int errsz)
+/* a file in any format amorph reads: lattice text, genome text (expressed), VXA (desktop) */
+static am_status load_file(tool_ctx* c, const char* name, am_lattice* lat, tool_robot* r, double* period_s, char* err,
+                           int errsz)
 {
-    tool_vxa_loaded = 0;
-    if (is_scene) return am_scene_build(lat, name, err, errsz);
     tool_src src;
     am_status st = tool_src_open(&src, name, TOOL_FILE_MAX, 0, err, errsz);
     if (st != AM_OK) return src.binary ? tool_src_binary(&src, err, errsz) : st;
@@ -91,31 +189,95 @@ am_status tool_load_robot(const char* name, int is_scene, am_lattice* lat, char*
     if (kind < 0) {
         st = src.binary ? tool_src_binary(&src, err, errsz) : AM_ERR_PARSE;
     } else if (kind == TOOL_TEXT_VXA) {
+        r->kind = TOOL_ROBOT_VXA;
 #if TOOL_VXA
-        st = tool_vxa_text_to_lattice(tool_src_text(&src), name, lat, err, errsz);
+        st = load_vxa(tool_src_text(&src), name, lat, r, period_s, err, errsz);
 #else
+        (void)period_s;
         st = am_fail(err, errsz, AM_ERR_ARG, "%s: a VXA file: not in this build: VXA files belong to the desktop profile", name);
 #endif
     } else if (kind == TOOL_TEXT_GENOME) {
-        st = tool_genome_to_lattice(&src, lat, err, errsz);
+        r->kind = TOOL_ROBOT_GENOME;
+        st = tool_genome_to_lattice(c, &src, lat, err, errsz);
     } else {
-        am_lattice_reader r;
-        am_lattice_read_begin(&r, lat, name);
-        st = tool_src_each(&src, lattice_line, &r, err, errsz);
-        if (st == AM_OK) st = am_lattice_read_end(&r, err, errsz);
+        r->kind = TOOL_ROBOT_LATTICE;
+        am_lattice_reader lr;
+        am_lattice_read_begin(&lr, lat, name);
+        st = tool_src_each(&src, lattice_line, &lr, err, errsz);
+        if (st == AM_OK) st = am_lattice_read_end(&lr, err, errsz);
     }
     tool_src_close(&src);
     return st;
 }
 
-am_status tool_resolve_env(const am_lattice* lat, double dt_s, double period_s, am_env* env, char* err, int errsz)
+/* the settings of a over r and lat, in order; *period_set becomes 1 when one gave period_steps */
+static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_robot* r, int* period_set, char* err, int errsz)
 {
-    if (dt_s <= 0 && period_s <= 0) return AM_OK;
-    /* dt_rec depends on the materials and the voxel size only: a build with env as it is gives it */
-    am_status st = am_model_build(&tool_work[0].model, lat, env, err, errsz);
+    am_evo_def d = am_default_evo();
+    d.env = r->env;
+    d.eval = r->eval;
+    for (int k = 0; k < a->nset; k++) {
+        const char* key = a->key[k];
+        am_status st = am_evo_set(&d, key, a->val[k], err, errsz);
+        if (st != AM_OK) return st;
+        if (!strcmp(key, "period_steps")) *period_set = 1;
+        if (!strcmp(key, "relax_max_steps") && d.eval.relax_min_steps > d.eval.relax_max_steps)
+            d.eval.relax_min_steps = d.eval.relax_max_steps;
+        if (am_evo_key_group(key) != AM_KEYS_MATERIALS) continue;
+        if (!strcmp(key, "voxel_size")) lat->voxel_size = d.voxel_size;
+        for (int m = 0; m < lat->palette.count; m++) {
+            am_material* mt = &lat->palette.mat[m];
+            if (!strcmp(key, "cte") && mt->cte != AM_P(0)) mt->cte = d.cte;
+            if (!strcmp(key, "mu_static")) mt->mu_static = d.mu_static;
+            if (!strcmp(key, "mu_kinetic")) mt->mu_kinetic = d.mu_kinetic;
+        }
+    }
+    r->env = d.env;
+    r->eval = d.eval;
+    return AM_OK;
+}
+
+am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz)
+{
+    /* dt_rec depends on the materials and the voxel size only: an empty robot is timed as one
+     * voxel of its first material, set for the build and cleared again */
+    const int empty = am_lattice_count(lat) == 0 && lat->palette.count > 0;
+    if (empty) lat->cell[0] = 1;
+    am_status st = am_model_build(&c->work[0].model, lat, env, err, errsz);
+    if (empty) lat->cell[0] = 0;
     if (st != AM_OK) return st;
-    const am_model* m = &tool_work[0].model;
-    if (dt_s > 0) env->dt_frac = AM_PARAM_FROM_DOUBLE(dt_s / am_to_si(m, m->dt_rec, AM_DIM_TIME));
-    if (period_s > 0) env->period_steps = am_vxa_period_steps(period_s, am_dt_si(m, env->dt_frac));
+    *dt = am_dt_si(&c->work[0].model, env->dt_frac);
+    return AM_OK;
+}
+
+am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz)
+{
+    r->kind = TOOL_ROBOT_SCENE;
+    r->env = am_default_env();
+    r->eval = am_default_eval();
+    double period_s = 0; /* a VXA file's period in seconds, still to become steps */
+    am_status st;
+    if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
+    else if (tool_is_run_dir(a->name)) {
+        r->kind = TOOL_ROBOT_RUN;
+        st = load_run(c, a->name, lat, r, err, errsz);
+    } else st = load_file(c, a->name, lat, r, &period_s, err, errsz);
+    if (st != AM_OK) return st;
+    int period_set = 0;
+    st = apply_settings(a, lat, r, &period_set, err, errsz);
+    if (st != AM_OK) return st;
+    r->eval.record = NULL;
+    if (period_set) period_s = 0;
+    if (a->dt_s <= 0 && period_s <= 0) return AM_OK;
+    double dt;
+    st = tool_robot_dt(c, lat, &r->env, &dt, err, errsz);
+    if (st != AM_OK) return st;
+    if (a->dt_s > 0) {
+        /* dt_rec, of the model just built, does not depend on dt_frac */
+        const am_model* m = &c->work[0].model;
+        r->env.dt_frac = AM_PARAM_FROM_DOUBLE(a->dt_s / am_to_si(m, m->dt_rec, AM_DIM_TIME));
+        dt = am_dt_si(m, r->env.dt_frac);
+    }
+    if (period_s > 0) r->env.period_steps = am_vxa_period_steps(period_s, dt);
     return AM_OK;
 }

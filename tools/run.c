@@ -52,29 +52,3 @@ am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz)
     am_status st = tool_src_each(src, genome_line, &r, err, errsz);
     return st != AM_OK ? st : am_genome_read_end(&r, err, errsz);
 }
-
-am_status tool_load_run(const char* dir, am_lattice* lat, am_env* env, am_eval_def* eval, char* err, int errsz)
-{
-    char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
-    am_evo_def d = am_default_evo();
-    /* a NUL byte ends these texts, as it ended them when they were parsed whole */
-    snprintf(path, sizeof path, "%s/config.txt", dir);
-    am_status st = tool_read_config(path, &d, 1, err, errsz);
-    if (st != AM_OK) return st;
-    snprintf(path, sizeof path, "%s/best.genome", dir);
-    tool_src src;
-    st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
-    if (st == AM_OK) st = tool_read_genome(&src, &tool_genome, err, errsz);
-    tool_src_close(&src);
-    if (st != AM_OK) return st;
-    /* the run's palette, in the evolver's slot (idle: no run is going on) */
-    am_evo_palette_into(&d, &tool_evo.palette);
-    st = am_evo_lattice(&d, &tool_evo.palette, &tool_genome, &tool_work[0].geno, lat, msg, sizeof msg);
-    if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
-    if (env) *env = d.env;
-    if (eval) {
-        *eval = d.eval;
-        eval->record = NULL;
-    }
-    return AM_OK;
-}

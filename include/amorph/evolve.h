@@ -53,6 +53,12 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
 /* 1 when key is a configuration key */
 int am_evo_is_key(const char* key);
+/* what a key sets: the robot's environment (gravity, period_steps, ...), its evaluation (cycles,
+ * relax_max_steps, ...), the materials of the run's palette (cte, mu_static, mu_kinetic,
+ * voxel_size), the genotype (representation, workspace, ...), or the run itself (population,
+ * evaluations, seed, threads, checkpoint_seconds); -1 for an unknown key */
+typedef enum am_key_group { AM_KEYS_RUN, AM_KEYS_GENOTYPE, AM_KEYS_MATERIALS, AM_KEYS_ENV, AM_KEYS_EVAL } am_key_group;
+int am_evo_key_group(const char* key);
 /* the keys in their documented order: count, name and one-line help of key i (NULL past the end) */
 int am_evo_key_count(void);
 const char* am_evo_key_name(int i);

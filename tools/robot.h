@@ -1,0 +1,78 @@
+/* tools/robot.h: the robot a command names (a built-in scene, a lattice, genome or VXA file, or a
+ * run folder), loaded as one unit with the environment and evaluation it comes with, and the
+ * settings (--KEY VALUE, the configuration keys of amorph evolve) that change them.
+ *
+ * The order is "file first, then flags in order": the robot's own environment and evaluation (a
+ * VXA file's, a run folder's, else the seed's defaults), then each setting of the command line in
+ * the order given. Settings in seconds (a VXA file's period, --dt) become steps of this robot
+ * before anything builds its model, so no model is edited after am_model_build. */
+#ifndef AMORPH_TOOLS_ROBOT_H
+#define AMORPH_TOOLS_ROBOT_H
+
+#include "cmd.h"
+
+#define TOOL_MAX_SETTINGS 64
+
+/* what sim, render, view and export were told about the robot */
+typedef struct tool_robot_args {
+    const char* name;          /* the file or run folder, or the scene's name; NULL until given */
+    int is_scene;              /* 1: name is a scene (--scene NAME) */
+    double dt_s;               /* --dt SECONDS (a fixed time step), 0 when not given */
+    int nset;                  /* settings given, in order */
+    const char* key[TOOL_MAX_SETTINGS];  /* each as the configuration table spells its key */
+    const char* val[TOOL_MAX_SETTINGS];
+} tool_robot_args;
+
+/* the kinds of robot */
+enum { TOOL_ROBOT_SCENE = 1, TOOL_ROBOT_LATTICE, TOOL_ROBOT_GENOME, TOOL_ROBOT_VXA, TOOL_ROBOT_RUN };
+
+/* a loaded robot's environment and evaluation (the body goes into the caller's lattice) */
+typedef struct tool_robot {
+    int kind;                  /* TOOL_ROBOT_... */
+    am_env env;                /* ready to build the model with: every setting applied, seconds resolved */
+    am_eval_def eval;          /* record NULL */
+} tool_robot;
+
+/* The flag names every command shares (one vocabulary): "--KEY VALUE" or "--KEY=VALUE" for a key of
+ * the configuration table (amorph evolve --help-config), '-' standing for '_' anywhere in KEY, and
+ * these documented aliases of older spellings:
+ *   --repr R -> --representation R     --size N -> --workspace N
+ *   --relax-max N -> --relax_max_steps N     --dt-search (alone) -> --dt_search on
+ * Sets *key to the table's spelling and *val to the value (NULL for a bare --dt-search) and returns
+ * 1; 0 when argv[*i] is no setting. A setting that needs a value and has none, or an old spelling
+ * that now means something else (--cte linear|volume: the CTE convention is --cte_mode), prints a
+ * one-line message and returns -1. *i is left on the last token used. */
+int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val);
+
+/* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
+ * --scene NAME), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
+ * (tool_setting_arg). Returns 1 when consumed, 0 when it is none of these (the command's own
+ * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
+ * as --population, a value missing). */
+int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_args* a);
+
+/* the robot of a into lat, with its environment and evaluation in *r: the file's (a VXA file's
+ * environment, a run folder's environment, evaluation and materials), else the seed's; then the
+ * settings of a in order: environment and evaluation keys replace the values, materials keys
+ * (cte, mu_static, mu_kinetic, voxel_size) change every material of the robot's palette that they
+ * apply to (cte only the actuated ones, those of non-zero CTE) and the voxel size; relax_max_steps
+ * below relax_min_steps lowers that too. Then seconds become steps: --dt sets env.dt_frac, and a VXA
+ * file's period in seconds (unless the file or a setting gave period_steps) becomes period_steps of
+ * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
+am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz);
+
+/* the time step in seconds the simulator takes for lat in env (an empty robot is timed as one voxel
+ * of its first material); builds the model into c->work[0].model */
+am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz);
+
+/* the help lines of the robot commands' shared options */
+#define TOOL_ROBOT_HELP                                                                                 \
+    "Settings (file first, then the flags in order): every key of the robot's environment, evaluation\n" \
+    "and materials in amorph evolve's configuration (amorph evolve --help-config; '-' may stand for\n"   \
+    "'_'): --cycles N, --period_steps N, --amplitude DEG, --gravity G, --collisions on|off,\n"           \
+    "--floor on|off, --cte_mode volumetric|linear, --fitness horizontal|x|3d, --dt_frac F,\n"            \
+    "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
+    "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
+    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"
+
+#endif
