@@ -9,7 +9,6 @@
 # Run from the repository root: sh tests/cli_browser.sh
 . tests/shlib.sh
 PNG=${PNG_TOOL:-$BUILD/tests/test_image}
-check() { d=$1; shift; if "$@"; then ok; else ko "$d"; fi; }
 if ! "$AMORPH" render --help >/dev/null 2>&1; then
     # the board profile builds no pictures: the commands must say so in one line
     expect_fail 2 "render: not in this build" "$AMORPH" render --scene cube:2 --out "$TMPD/x.png"

@@ -6,7 +6,6 @@
 # field NAME FILE: the value of a numeric JSON field in the one-line object in FILE
 field() { sed -n "s/.*\"$1\": *\(-\{0,1\}[0-9][0-9.eE+-]*\).*/\1/p" "$2"; }
 # check DESCRIPTION CONDITION...: ok when the shell test succeeds
-check() { d=$1; shift; if "$@"; then ok; else ko "$d"; fi; }
 # tval NAME FILE: the value of a `name = value` line in FILE
 tval() { sed -n "s/^$1 = //p" "$2"; }
 # isnum V: V is one decimal number (sign, digits, point, exponent), as printf %g or %ld writes it

@@ -18,6 +18,8 @@ expect_ok() {
     "$@" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
     if [ $rc -eq 0 ]; then ok; else ko "$* -> exit $rc: $(head -c 300 "$TMPD/err")"; fi
 }
+# check DESCRIPTION COMMAND...: passes when COMMAND succeeds
+check() { d=$1; shift; if "$@"; then ok; else ko "$d"; fi; }
 summary() { echo "$1: $T_PASS passed, $T_FAIL failed"; [ "$T_FAIL" -eq 0 ]; }
 # nowall LOG: an evolution's log.csv without its wall-clock column (the one that differs between runs)
 nowall() { cut -d, -f1-7 "$1"; }

@@ -6,8 +6,11 @@
  * a signal (evolve, experiment). Any non-zero status has been told on stderr in one line before it
  * is returned, so callers pass it up unchanged (`if (rc) return rc;`). Helpers that cannot tell
  * the user (they hold no command name or are shared with the library) return an am_status with the
- * message in err instead, and the command prints it. Functions named tool_parse_* and tool_is_*
- * answer a question: 1 yes, 0 no.
+ * message in err instead, and the command prints it. Two kinds of function answer otherwise, each
+ * the same way: tool_parse_* and tool_is_* answer a question (1 yes, 0 no); an option parser
+ * (tool_*_arg, parse_common) returns 1 when it consumed argv[*i], 0 when that is not its option,
+ * and the exit status 2 after its message; a line source (tool_src_next) returns 1 for a line, 0
+ * at the end, -1 on a failure.
  *
  * State. The workspaces the commands share are one tool_ctx that main owns and passes down; no
  * tools/ file holds another global. A file's own scratch arrays (the pixels of a filmstrip, the

@@ -32,7 +32,7 @@ static const char evolve_help[] =
 
 /* ---- options shared by evolve and experiment ---- */
 
-/* one option at argv[*i]; returns 1 when consumed, 0 when unknown, -1 after an error message */
+/* one option at argv[*i]; returns 1 when consumed, 0 when unknown, 2 after an error message */
 int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
 {
     const char* a = argv[*i];
@@ -40,11 +40,11 @@ int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
     /* the settings: the configuration keys, as every command spells them (tools/robot.h) */
     const char *key, *val;
     int r = tool_setting_arg(cmd, argc, argv, i, &key, &val);
-    if (r < 0) return -1;
+    if (r == 2) return 2;
     if (r == 1) {
         if (o->nflags == 64) {
             tool_usage_error("%s: too many settings on the command line", cmd);
-            return -1;
+            return 2;
         }
         o->key[o->nflags] = key;
         o->val[o->nflags++] = val;
@@ -68,7 +68,7 @@ int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
     else if (!strcmp(norm, "config") || !strcmp(norm, "out") || !strcmp(norm, "resume")) {
         if (!v || (!eq && !strncmp(v, "--", 2))) {
             tool_usage_error("%s: --%s needs a value", cmd, norm);
-            return -1;
+            return 2;
         }
         if (!eq) (*i)++;
         if (!strcmp(norm, "config")) o->config = v;
@@ -377,7 +377,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
             return 0;
         }
         int r = parse_common(argc, argv, &i, &o, "evolve");
-        if (r < 0) return 2;
+        if (r == 2) return 2;
         if (r == 0) return tool_usage_error("evolve: unknown option '%s' (amorph evolve --help)", argv[i]);
     }
     if (o.resume && o.out) return tool_usage_error("evolve: --resume DIR continues in DIR; --out does not apply");

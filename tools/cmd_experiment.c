@@ -163,7 +163,7 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
             name = a;
         } else {
             int r = parse_common(argc, argv, &i, &o, "experiment");
-            if (r < 0) return 2;
+            if (r == 2) return 2;
             if (r == 0) return tool_usage_error("experiment: unknown option '%s' (amorph experiment --help)", a);
         }
     }

@@ -33,7 +33,7 @@ int cmd_random(tool_ctx* c, int argc, char** argv)
             continue;
         }
         int r = tool_setting_arg("random", argc, argv, &i, &key, &val);
-        if (r < 0) return 2;
+        if (r == 2) return 2;
         if (r == 0) return tool_usage_error("random: unknown option '%s' (amorph random --help)", a);
         if (am_evo_key_group(key) != AM_KEYS_GENOTYPE && strcmp(key, "seed") != 0)
             return tool_usage_error("random: --%s is not a setting of a genome (amorph random --help)", key);

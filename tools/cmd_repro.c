@@ -72,7 +72,7 @@ int cmd_repro(tool_ctx* c, int argc, char** argv)
         }
         const char* a = argv[i];
         int r = parse_common(argc, argv, &i, &o, "repro");
-        if (r < 0) return 2;
+        if (r == 2) return 2;
         if (r == 0 || o.config || o.out || o.resume || o.print_config)
             return tool_usage_error("repro: unknown option '%s' (amorph repro --help)", a);
     }

@@ -30,7 +30,7 @@ typedef struct evo_opts {
     const char* val[64];
 } evo_opts;
 
-/* one option at argv[*i]; 1 when consumed, 0 when unknown, -1 after an error message */
+/* one option at argv[*i]; 1 when consumed, 0 when unknown, 2 after an error message */
 int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd);
 /* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
  * `extra` more (keys and values, NULL-terminated; may be NULL) */

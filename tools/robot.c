@@ -40,12 +40,12 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
     }
     if (!v || (!eq && !strncmp(v, "--", 2))) {
         tool_usage_error("%s: --%.*s needs a value", cmd, (int)n, name);
-        return -1;
+        return 2;
     }
     if (!strcmp(k, "cte") && (!strcmp(v, "linear") || !strcmp(v, "volume") || !strcmp(v, "volumetric"))) {
         tool_usage_error("%s: --cte %s: the CTE convention is --cte_mode volumetric|linear (--cte is the expansion "
                          "coefficient, a number)", cmd, v);
-        return -1;
+        return 2;
     }
     if (!eq) (*i)++;
     *key = k, *val = v;
@@ -74,8 +74,7 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
     }
     const char *key, *val;
     int r = tool_setting_arg(cmd, argc, argv, i, &key, &val);
-    if (r < 0) return 2;
-    if (r == 0) return 0;
+    if (r != 1) return r;
     int g = am_evo_key_group(key);
     if (g != AM_KEYS_ENV && g != AM_KEYS_EVAL && g != AM_KEYS_MATERIALS)
         return tool_usage_error("%s: --%s is a setting of an evolution, not of one robot (the robot's settings: amorph %s "

@@ -38,10 +38,11 @@ typedef struct tool_robot {
  * these documented aliases of older spellings:
  *   --repr R -> --representation R     --size N -> --workspace N
  *   --relax-max N -> --relax_max_steps N     --dt-search (alone) -> --dt_search on
- * Sets *key to the table's spelling and *val to the value (NULL for a bare --dt-search) and returns
+ * Sets *key to the table's spelling and *val to the value ("on" for a bare --dt-search) and returns
  * 1; 0 when argv[*i] is no setting. A setting that needs a value and has none, or an old spelling
  * that now means something else (--cte linear|volume: the CTE convention is --cte_mode), prints a
- * one-line message and returns -1. *i is left on the last token used. */
+ * one-line message and returns 2 (cmd.h: an option parser's convention). *i is left on the last
+ * token used. */
 int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val);
 
 /* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
