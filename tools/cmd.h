@@ -54,10 +54,6 @@ int cmd_export(tool_ctx* c, int argc, char** argv);
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);
 
-/* prints name=value lines of the default experiment's evaluations per hour on 1 and 2 threads
- * (cmd_evolve.c); 0, or 1 when the two runs differ */
-int tool_bench_evolve(tool_ctx* c, long evaluations);
-
 /* keeps a helper's locals out of its caller's frame, so they take stack only while it runs, not
  * all through the long calls of the caller (the board's stack is small) */
 #if defined(__GNUC__)
@@ -187,9 +183,6 @@ int tool_parse_int(const char* s, int lo, int hi, int* out);
 int tool_parse_real(const char* s, double lo, double hi, double* out);
 int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 
-
-/* prints name=value lines of the genotype expression times (cmd_genome.c) */
-void tool_bench_express(tool_ctx* c);
 
 /* 1 when the picture commands are built in. Not in the board profile: a microcontroller shows no
  * pictures, and their buffers would be many times its RAM; there render, plot and view say so and

@@ -1,4 +1,4 @@
-/* amorph random, amorph express, genome files for amorph sim, and the expression benchmark. */
+/* amorph random and amorph express: genomes. */
 #include "robot.h"
 
 #include <stdio.h>
@@ -109,51 +109,4 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
     if (!out) return 0;
     printf("voxels=%d\n", c->work[0].geno.voxels);
     return 0;
-}
-
-void tool_bench_express(tool_ctx* c)
-{
-    enum { GENOMES = 8 };
-    /* the pool: the genomes of the evolver's population, idle while bench runs */
-    _Static_assert(GENOMES <= AM_MAX_POPULATION, "the expression pool borrows the evolver's population");
-    am_genome* pool[GENOMES];
-    for (int i = 0; i < GENOMES; i++) pool[i] = &c->evo.pop[i].genome;
-    char err[AM_ERR_MAX];
-    am_geno_def def = am_default_geno();
-    printf("express_workspace=%dx%dx%d\n", def.nx, def.ny, def.nz);
-    printf("genome_bytes=%d\n", (int)sizeof(am_genome));
-    for (int repr = 1; repr < AM_REPR_COUNT; repr++) {
-        def.repr = repr;
-        am_rng rng;
-        am_rng_seed(&rng, 2024);
-        for (int i = 0; i < GENOMES; i++)
-            if (am_genome_init(pool[i], &def, &rng, err, sizeof err) != AM_OK) {
-                printf("express_%s_error=%s\n", am_repr_name(repr), err);
-                return;
-            }
-        am_genome_express(pool[0], NULL, &c->work[0].geno, NULL, err, sizeof err); /* warm-up: tables */
-        long reps = 0, voxels = 0;
-        double t0 = am_port_now(), t = 0;
-        do {
-            for (int i = 0; i < GENOMES; i++) {
-                am_genome_express(pool[i], NULL, &c->work[0].geno, NULL, err, sizeof err);
-                voxels += c->work[0].geno.voxels;
-            }
-            reps += GENOMES;
-            t = am_port_now() - t0;
-        } while (t < 0.25);
-        /* the level set alone, on the last fields */
-        long lreps = 0;
-        double l0 = am_port_now(), lt = 0;
-        do {
-            for (int i = 0; i < GENOMES; i++)
-                am_levelset(&c->work[0].geno, def.materials, def.nx, def.ny, def.nz, AM_R(0), NULL);
-            lreps += GENOMES;
-            lt = am_port_now() - l0;
-        } while (lt < 0.1);
-        printf("express_%s_us=%.1f\n", am_repr_name(repr), 1e6 * t / (double)reps);
-        printf("express_%s_levelset_us=%.1f\n", am_repr_name(repr), 1e6 * lt / (double)lreps);
-        printf("express_%s_mean_voxels=%ld\n", am_repr_name(repr), voxels / reps);
-    }
-    fflush(stdout);
 }

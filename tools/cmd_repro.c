@@ -1,46 +1,10 @@
-/* amorph bench --evolve (evaluations per hour) and amorph repro (the reference evolution of
- * `make repro`): evolutions in memory, without a run folder. */
+/* amorph repro: the reference evolution of `make repro`, in memory, without a run folder. */
 #include "evolve_cmd.h"
 
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* ---- bench --evolve ---- */
-
-int tool_bench_evolve(tool_ctx* c, long evaluations)
-{
-    char err[AM_ERR_MAX];
-    am_evo_def d = am_default_evo();
-    d.evaluations = evaluations;
-    uint64_t hash[2] = {0, 0};
-    double rate[2] = {0, 0};
-    int cores = am_port_cores();
-    printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
-           d.population, evaluations, cores);
-    for (int t = 1; t <= 2; t++) {
-        if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-        double t0 = am_port_now();
-        long steps = 0, voxel_steps = 0;
-        while (!am_evo_done(&c->evo)) {
-            if (am_evo_generation(&c->evo, c->work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
-            steps += c->evo.last_steps;
-            voxel_steps += c->evo.last_voxel_steps;
-        }
-        double el = am_port_now() - t0;
-        rate[t - 1] = (double)c->evo.evaluations / el * 3600.0;
-        hash[t - 1] = am_evo_hash(&c->evo);
-        printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
-               "voxel_steps_per_s=%.0f run_hash=%016llx\n",
-               t, c->evo.evaluations, el, rate[t - 1], (double)steps / (double)c->evo.evaluations,
-               steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
-    }
-    printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
-           hash[0] == hash[1] ? "yes" : "NO");
-    return hash[0] == hash[1] ? 0 : 1;
-}
 
 /* ---- repro: the reference evolution of `make repro` ---- */
 
