@@ -207,11 +207,10 @@ static void series_means(void)
 }
 
 /* the bounded text buffer of amorph/text.h */
-typedef am_text svg_out;
 #define put am_text_put
 
 /* text with &, <, > and " escaped */
-static void put_text(svg_out* o, const char* s)
+static void put_text(am_text* o, const char* s)
 {
     for (; *s; s++) {
         if (*s == '&') put(o, "&amp;");
@@ -258,7 +257,7 @@ static int plot_svg_write(const char* title, const char* path)
     const int pw = W - ml - mr, ph = H - mt - mb;
 #define PX(x) (ml + ((x) - x0) / (x1 - x0) * pw)
 #define PY(y) (mt + ph - ((y) * unit - y0) / (y1 - y0) * ph)
-    svg_out o = {plot_svg, PLOT_SVG_MAX, 0, 0, NULL, NULL, 0};
+    am_text o = {plot_svg, PLOT_SVG_MAX, 0, 0, NULL, NULL, 0};
     put(&o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     put(&o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" "
             "font-family=\"sans-serif\" font-size=\"13\">\n", W, H, W, H);

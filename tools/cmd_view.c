@@ -16,10 +16,9 @@ static char view_html[VIEW_HTML_MAX];
 static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
 
 /* the bounded text buffer of amorph/text.h */
-typedef am_text text_out;
 #define out_fmt am_text_put
 
-static void out_str(text_out* o, const char* s)
+static void out_str(am_text* o, const char* s)
 {
     long n = (long)strlen(s);
     if (o->full || n >= o->cap - o->len) {
@@ -31,7 +30,7 @@ static void out_str(text_out* o, const char* s)
 }
 
 /* a JSON string safe inside a <script> element: <, >, & and controls as \u escapes */
-static void out_json_string(text_out* o, const char* s)
+static void out_json_string(am_text* o, const char* s)
 {
     out_str(o, "\"");
     for (; *s; s++) {
@@ -43,7 +42,7 @@ static void out_json_string(text_out* o, const char* s)
     out_str(o, "\"");
 }
 
-static void out_base64(text_out* o, const uint8_t* p, long n)
+static void out_base64(am_text* o, const uint8_t* p, long n)
 {
     static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     long need = (n + 2) / 3 * 4;
@@ -75,7 +74,7 @@ static double nice_step(double x)
 }
 
 /* the data of the page as one JSON object */
-static void view_data(text_out* o, const tool_motion* mo, const am_eval_def* eval, const char* title)
+static void view_data(am_text* o, const tool_motion* mo, const am_eval_def* eval, const char* title)
 {
     const am_model* m = mo->model;
     int nv = mo->nv, nf = mo->frames;
@@ -165,7 +164,7 @@ static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     static tool_motion mo;
     int rc = tool_record_motion(c, lat, env, eval, frames, &mo, what);
     if (rc) return rc;
-    text_out o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
+    am_text o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
     view_html[0] = 0;
     for (size_t k = 0; k < sizeof view_page_pre / sizeof view_page_pre[0]; k++) out_str(&o, view_page_pre[k]);
     view_data(&o, &mo, eval, title);

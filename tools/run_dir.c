@@ -31,9 +31,7 @@ TOOL_NOINLINE int write_text(const char* dir, const char* file, const char* text
 
 /* dir/file written through a stream by a writer of the library: 0, or 1 after a message
  * ("amorph: what: problem" for the writer's own failures) */
-typedef am_status (*text_writer)(const void* obj, am_text* out, char* err, int errsz);
-
-static TOOL_NOINLINE int write_stream(const char* dir, const char* file, text_writer fn, const void* obj, const char* what)
+static TOOL_NOINLINE int write_stream(const char* dir, const char* file, am_text_writer fn, const void* obj, const char* what)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, file);
