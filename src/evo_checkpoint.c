@@ -330,12 +330,14 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     if (r->line >= r->until) return AM_OK; /* the checksum line */
     if (r->in_genome) return read_genome_line(r, text, n, err, errsz);
     const char* fname = r->fname;
+    char qb[AM_QUOTE_BUF];
     if (r->line == 1) {
         long v;
         int ntok = split(text, tok, 12);
         if (ntok != 2 || strcmp(tok[0], "amorph-checkpoint") != 0) BAD("%s:1: not an amorph checkpoint", fname);
         if (!to_long(tok[1], 0, 1000, &v) || v < 1 || v > CHECKPOINT_VERSION)
-            BAD("%s:1: checkpoint version '%s': this build reads versions 1 to %d", fname, tok[1], CHECKPOINT_VERSION);
+            BAD("%s:1: checkpoint version '%s': this build reads versions 1 to %d", fname, am_quote(qb, sizeof qb, tok[1], -1),
+                CHECKPOINT_VERSION);
         r->version = (int)v;
         return AM_OK;
     }
@@ -388,7 +390,7 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     } else if (strcmp(tok[0], "individual") == 0) {
         return read_ind(r, tok, ntok, err, errsz);
     } else {
-        BAD("%s:%d: unexpected line '%s'", fname, r->line, tok[0]);
+        BAD("%s:%d: unexpected line '%s'", fname, r->line, am_quote(qb, sizeof qb, tok[0], -1));
     }
     return AM_OK;
 }

@@ -202,14 +202,18 @@ static int parse_double(const char* s, double* out)
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz)
 {
     const key_def* k = find_key(key);
-    if (!k) return am_fail(err, errsz, AM_ERR_ARG, "unknown key '%s' (amorph evolve --help-config lists them)", key);
+    char qv[AM_QUOTE_BUF]; /* the key, then the value, as messages show them */
+    if (!k)
+        return am_fail(err, errsz, AM_ERR_ARG, "unknown key '%s' (amorph evolve --help-config lists them)",
+                       am_quote(qv, sizeof qv, key, -1));
+    am_quote(qv, sizeof qv, value, -1);
     char* base = (char*)d + k->off;
     switch (k->kind) {
     case K_INT:
     case K_LONG: {
         long v;
         if (!parse_long(value, &v) || (double)v < k->lo || (double)v > k->hi)
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [%.0f, %.0f]", key, value, k->lo, k->hi);
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [%.0f, %.0f]", key, qv, k->lo, k->hi);
         if (k->kind == K_INT) *(int*)base = (int)v;
         else *(long*)base = v;
         return AM_OK;
@@ -217,7 +221,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     case K_U64: {
         uint64_t v;
         if (!parse_u64(value, &v))
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [0, 18446744073709551615]", key, value);
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [0, 18446744073709551615]", key, qv);
         *(uint64_t*)base = v;
         return AM_OK;
     }
@@ -225,7 +229,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     case K_PARAM: {
         double v;
         if (!parse_double(value, &v) || v < k->lo || v > k->hi)
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected a number in [%g, %g]", key, value, k->lo, k->hi);
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected a number in [%g, %g]", key, qv, k->lo, k->hi);
         if (k->kind == K_PARAM) *(am_param*)base = AM_PARAM_FROM_DOUBLE(v);
         else *(am_real*)base = AM_FROM_DOUBLE(v);
         return AM_OK;
@@ -242,12 +246,12 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
                 strncat(list, k->names[i], sizeof list - strlen(list) - 1);
                 if (i < (int)k->hi) strncat(list, i + 1 < (int)k->hi ? ", " : " or ", sizeof list - strlen(list) - 1);
             }
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected %s", key, value, list);
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected %s", key, qv, list);
         }
     case K_ONOFF:
         if (strcmp(value, "on") == 0) *(int*)base = 1;
         else if (strcmp(value, "off") == 0) *(int*)base = 0;
-        else return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected on or off", key, value);
+        else return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected on or off", key, qv);
         return AM_OK;
     case K_WORKSPACE: {
         long v[3];
@@ -269,11 +273,11 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
             s = x + 1;
         }
         if (s != NULL || (n != 1 && n != 3))
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected N or NxMxK cells", key, value);
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected N or NxMxK cells", key, qv);
         if (n == 1) v[1] = v[2] = v[0];
         for (int a = 0; a < 3; a++)
             if (v[a] < 1 || v[a] > AM_MAX_DIM)
-                return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': each side must be in [1, %d] (the %s profile)", key, value,
+                return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': each side must be in [1, %d] (the %s profile)", key, qv,
                                AM_MAX_DIM, AM_PROFILE_NAME);
         d->geno.nx = (int)v[0];
         d->geno.ny = (int)v[1];
@@ -419,12 +423,17 @@ am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char*
     char* s = trim(line);
     if (!*s) return AM_OK;
     char* eq = strchr(s, '=');
-    if (!eq) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno, s);
+    char qb[AM_QUOTE_BUF];
+    if (!eq)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno,
+                       am_quote(qb, sizeof qb, s, -1));
     *eq = 0;
     char* key = trim(s);
     char* value = trim(eq + 1);
     if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
-    if (!*value) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno, key);
+    if (!*value)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno,
+                       am_quote(qb, sizeof qb, key, -1));
     am_status st = am_evo_set(d, key, value, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
     return AM_OK;

@@ -80,9 +80,10 @@ static const char* const expected[] = {"'amorph-genome 1'", "'repr dct|cppn|gmx'
 static am_status header_line(am_genome* g, int state, int ntok, char** tok, char* msg, int msz)
 {
     const char* keyword[] = {GENOME_MAGIC, "repr", "materials", "workspace"};
+    char qb[AM_QUOTE_BUF];
     if (strcmp(tok[0], keyword[state]) != 0)
         return am_fail(msg, msz, AM_ERR_PARSE, state == S_MAGIC ? "not a genome: expected %s, found '%s'" : "expected %s, found '%s'",
-                       expected[state], tok[0]);
+                       expected[state], am_quote(qb, sizeof qb, tok[0], -1));
     switch (state) {
     case S_MAGIC: {
         int v = 0;
@@ -95,7 +96,9 @@ static am_status header_line(am_genome* g, int state, int ntok, char** tok, char
     case S_REPR:
         if (ntok != 2) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
         g->repr = am_repr_from_name(tok[1]);
-        if (g->repr == AM_REPR_NONE) return am_fail(msg, msz, AM_ERR_PARSE, "unknown representation '%s' (dct, cppn, gmx)", tok[1]);
+        if (g->repr == AM_REPR_NONE)
+            return am_fail(msg, msz, AM_ERR_PARSE, "unknown representation '%s' (dct, cppn, gmx)",
+                           am_quote(qb, sizeof qb, tok[1], -1));
         return AM_OK;
     case S_MATERIALS:
         if (ntok < 2) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
@@ -104,7 +107,8 @@ static am_status header_line(am_genome* g, int state, int ntok, char** tok, char
         g->materials = ntok - 1;
         for (int m = 0; m < g->materials; m++) {
             if (!valid_name(tok[1 + m]))
-                return am_fail(msg, msz, AM_ERR_PARSE, "material name '%s': 1 to %d letters, digits, '_' or '-'", tok[1 + m], AM_NAME_MAX - 1);
+                return am_fail(msg, msz, AM_ERR_PARSE, "material name '%s': 1 to %d letters, digits, '_' or '-'",
+                               am_quote(qb, sizeof qb, tok[1 + m], -1), AM_NAME_MAX - 1);
             for (int k = 0; k < m; k++)
                 if (strcmp(g->mat[k], tok[1 + m]) == 0) return am_fail(msg, msz, AM_ERR_PARSE, "material '%s' given twice", tok[1 + m]);
             snprintf(g->mat[m], AM_NAME_MAX, "%s", tok[1 + m]);
@@ -115,7 +119,8 @@ static am_status header_line(am_genome* g, int state, int ntok, char** tok, char
         if (ntok != 4) return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
         for (int a = 0; a < 3; a++) {
             if (!am_geno_tok_int(tok[1 + a], 1, 1000000, &d[a]))
-                return am_fail(msg, msz, AM_ERR_PARSE, "workspace side '%s' is not a positive integer", tok[1 + a]);
+                return am_fail(msg, msz, AM_ERR_PARSE, "workspace side '%s' is not a positive integer",
+                               am_quote(qb, sizeof qb, tok[1 + a], -1));
             if (d[a] > AM_MAX_DIM)
                 return am_fail(msg, msz, AM_ERR_CAPACITY, "workspace side %d exceeds the %s profile's %d", d[a], AM_PROFILE_NAME, AM_MAX_DIM);
         }

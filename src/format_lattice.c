@@ -24,7 +24,6 @@
 
 #define LAT_MAGIC "amorph-lattice"
 #define LAT_VERSION 1
-#define LAT_SHOW 40 /* longest piece of input quoted in a message */
 
 static const char cell_chars[] = ".123456789abcdefg"; /* cell value v is cell_chars[v] */
 
@@ -78,8 +77,11 @@ static int tok_is(const char* ts, const char* te, const char* word)
     return (size_t)(te - ts) == n && memcmp(ts, word, n) == 0;
 }
 
-/* length of a token for "%.*s", capped so messages stay one short line */
-static int show_len(const char* ts, const char* te) { return te - ts > LAT_SHOW ? LAT_SHOW : (int)(te - ts); }
+/* the token [ts, te) quoted for a message (am_quote: cut and escaped, one line) */
+static const char* shown(char qb[AM_QUOTE_BUF], const char* ts, const char* te)
+{
+    return am_quote(qb, AM_QUOTE_BUF, ts, (long)(te - ts));
+}
 
 /* a real: the whole token must be a finite number */
 static int parse_real(const char* ts, const char* te, am_param* out)
@@ -198,15 +200,16 @@ static const char* range_problem(int k, am_param v)
 static am_status parse_material(const pctx* c, am_palette* pal, const char* p, const char* end)
 {
     const char *ts = NULL, *te = NULL;
+    char qb[AM_QUOTE_BUF];
     if (!next_token(&p, end, &ts, &te)) return perr(c, AM_ERR_PARSE, "material: expected a name after 'material'");
     if (!name_ok(ts, (size_t)(te - ts)))
-        return perr(c, AM_ERR_PARSE, "material name '%.*s': use 1 to %d letters, digits, '_' or '-'", show_len(ts, te), ts,
+        return perr(c, AM_ERR_PARSE, "material name '%s': use 1 to %d letters, digits, '_' or '-'", shown(qb, ts, te),
                     AM_NAME_MAX - 1);
     for (int i = 0; i < pal->count; i++)
         if (tok_is(ts, te, pal->mat[i].name))
             return perr(c, AM_ERR_PARSE, "material '%s' defined twice (first as id %d)", pal->mat[i].name, i + 1);
     if (pal->count >= AM_MAX_MATERIALS)
-        return perr(c, AM_ERR_CAPACITY, "material '%.*s': more than %d materials (the palette's capacity)", show_len(ts, te), ts,
+        return perr(c, AM_ERR_CAPACITY, "material '%s': more than %d materials (the palette's capacity)", shown(qb, ts, te),
                     AM_MAX_MATERIALS);
     am_material* m = &pal->mat[pal->count];
     *m = am_default_material();
@@ -215,29 +218,29 @@ static am_status parse_material(const pctx* c, am_palette* pal, const char* p, c
     int seen[K_COUNT] = {0};
     while (next_token(&p, end, &ts, &te)) {
         const char* eq = memchr(ts, '=', (size_t)(te - ts));
-        if (!eq) return perr(c, AM_ERR_PARSE, "material '%s': expected key=value, found '%.*s'", m->name, show_len(ts, te), ts);
+        if (!eq) return perr(c, AM_ERR_PARSE, "material '%s': expected key=value, found '%s'", m->name, shown(qb, ts, te));
         int k = 0;
         while (k < K_COUNT && !tok_is(ts, eq, key_names[k])) k++;
         if (k == K_COUNT)
-            return perr(c, AM_ERR_PARSE, "material '%s': unknown key '%.*s' (keys: " KEY_LIST ")", m->name, show_len(ts, eq), ts);
+            return perr(c, AM_ERR_PARSE, "material '%s': unknown key '%s' (keys: " KEY_LIST ")", m->name, shown(qb, ts, eq));
         if (seen[k]) return perr(c, AM_ERR_PARSE, "material '%s': key '%s' given twice", m->name, key_names[k]);
         seen[k] = 1;
         const char* vs = eq + 1;
         if (k == K_COLOR) {
             if (!parse_color(vs, te, m->color))
-                return perr(c, AM_ERR_PARSE, "material '%s': bad color '%.*s' (expected #rrggbb or #rrggbbaa)", m->name,
-                            show_len(vs, te), vs);
+                return perr(c, AM_ERR_PARSE, "material '%s': bad color '%s' (expected #rrggbb or #rrggbbaa)", m->name,
+                            shown(qb, vs, te));
         } else if (k == K_FIXED) {
             if (!tok_is(vs, te, "0") && !tok_is(vs, te, "1"))
-                return perr(c, AM_ERR_PARSE, "material '%s': fixed must be 0 or 1, not '%.*s'", m->name, show_len(vs, te), vs);
+                return perr(c, AM_ERR_PARSE, "material '%s': fixed must be 0 or 1, not '%s'", m->name, shown(qb, vs, te));
             m->fixed = *vs == '1';
         } else {
             am_param v;
             if (!parse_real(vs, te, &v))
-                return perr(c, AM_ERR_PARSE, "material '%s': %s: '%.*s' is not a finite number", m->name, key_names[k],
-                            show_len(vs, te), vs);
+                return perr(c, AM_ERR_PARSE, "material '%s': %s: '%s' is not a finite number", m->name, key_names[k],
+                            shown(qb, vs, te));
             const char* why = range_problem(k, v);
-            if (why) return perr(c, AM_ERR_RANGE, "material '%s': %s = %.*s %s", m->name, key_names[k], show_len(vs, te), vs, why);
+            if (why) return perr(c, AM_ERR_RANGE, "material '%s': %s = %s %s", m->name, key_names[k], shown(qb, vs, te), why);
             set_real(m, k, v);
         }
     }
@@ -273,10 +276,11 @@ static int is_row(const char* ts, const char* te)
 static am_status parse_row(const pctx* c, am_lattice* lat, int z, int y, const char* p, const char* end)
 {
     const char *ts = p, *te = p, *xs = p, *xe = p;
+    char qb[AM_QUOTE_BUF];
     next_token(&p, end, &ts, &te);
     if (next_token(&p, end, &xs, &xe))
-        return perr(c, AM_ERR_PARSE, "layer %d row %d: unexpected '%.*s' after the row (a row is %d characters, no blanks)", z, y,
-                    show_len(xs, xe), xs, lat->nx);
+        return perr(c, AM_ERR_PARSE, "layer %d row %d: unexpected '%s' after the row (a row is %d characters, no blanks)", z, y,
+                    shown(qb, xs, xe), lat->nx);
     if (te - ts != lat->nx)
         return perr(c, AM_ERR_PARSE, "layer %d row %d has %ld cells, expected %d (size %d %d %d)", z, y, (long)(te - ts), lat->nx,
                     lat->nx, lat->ny, lat->nz);
@@ -301,19 +305,21 @@ static am_status parse_row(const pctx* c, am_lattice* lat, int z, int y, const c
 static am_status no_more(const pctx* c, const char* what, const char* p, const char* end)
 {
     const char *ts = NULL, *te = NULL;
+    char qb[AM_QUOTE_BUF];
     if (next_token(&p, end, &ts, &te))
-        return perr(c, AM_ERR_PARSE, "%s: unexpected '%.*s' at the end of the line", what, show_len(ts, te), ts);
+        return perr(c, AM_ERR_PARSE, "%s: unexpected '%s' at the end of the line", what, shown(qb, ts, te));
     return AM_OK;
 }
 
 static am_status parse_size_line(const pctx* c, am_lattice* lat, const char* p, const char* end)
 {
     long v[3];
+    char qb[AM_QUOTE_BUF];
     const char *ts = NULL, *te = NULL;
     for (int i = 0; i < 3; i++) {
         if (!next_token(&p, end, &ts, &te)) return perr(c, AM_ERR_PARSE, "size: expected three whole numbers NX NY NZ");
         if (!parse_int(ts, te, &v[i]))
-            return perr(c, AM_ERR_PARSE, "size: '%.*s' is not a whole number", show_len(ts, te), ts);
+            return perr(c, AM_ERR_PARSE, "size: '%s' is not a whole number", shown(qb, ts, te));
     }
     am_status st = no_more(c, "size", p, end);
     if (st != AM_OK) return st;
@@ -345,6 +351,7 @@ void am_lattice_read_begin(am_lattice_reader* r, am_lattice* lat, const char* fn
 static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* ls, const char* le)
 {
     am_lattice* lat = r->lat;
+    char qb[AM_QUOTE_BUF];
     am_status st;
     /* a '#' at the start of the line or after a blank starts a comment */
     const char* end = ls;
@@ -357,8 +364,8 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
         const char *vs = NULL, *ve = NULL;
         long version = 0;
         if (!tok_is(ts, te, LAT_MAGIC))
-            return perr(c, AM_ERR_PARSE, "not a lattice file: expected the header '" LAT_MAGIC " %d', found '%.*s'", LAT_VERSION,
-                        show_len(ts, te), ts);
+            return perr(c, AM_ERR_PARSE, "not a lattice file: expected the header '" LAT_MAGIC " %d', found '%s'", LAT_VERSION,
+                        shown(qb, ts, te));
         if (!next_token(&q, end, &vs, &ve) || !parse_int(vs, ve, &version))
             return perr(c, AM_ERR_PARSE, "header: expected '" LAT_MAGIC " %d' (a version number after the name)", LAT_VERSION);
         if (version != LAT_VERSION)
@@ -389,8 +396,8 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
         if (r->z >= 0) return perr(c, AM_ERR_PARSE, "voxel_size must come before the first layer");
         if (!next_token(&q, end, &ts, &te)) return perr(c, AM_ERR_PARSE, "voxel_size: expected a length in metres");
         if (!parse_real(ts, te, &v))
-            return perr(c, AM_ERR_PARSE, "voxel_size: '%.*s' is not a finite number", show_len(ts, te), ts);
-        if (!(v > AM_P(0))) return perr(c, AM_ERR_RANGE, "voxel_size %.*s must be greater than 0", show_len(ts, te), ts);
+            return perr(c, AM_ERR_PARSE, "voxel_size: '%s' is not a finite number", shown(qb, ts, te));
+        if (!(v > AM_P(0))) return perr(c, AM_ERR_RANGE, "voxel_size %s must be greater than 0", shown(qb, ts, te));
         if ((st = no_more(c, "voxel_size", q, end)) != AM_OK) return st;
         lat->voxel_size = v;
         r->have_voxel = 1;
@@ -416,7 +423,7 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
         if (r->z < 0) return perr(c, AM_ERR_PARSE, "row before any 'layer' line");
         return perr(c, AM_ERR_PARSE, "layer %d has more than %d rows (size %d %d %d)", r->z, lat->ny, lat->nx, lat->ny, lat->nz);
     } else {
-        return perr(c, AM_ERR_PARSE, "unknown keyword '%.*s' (expected size, voxel_size, material or layer)", show_len(ts, te), ts);
+        return perr(c, AM_ERR_PARSE, "unknown keyword '%s' (expected size, voxel_size, material or layer)", shown(qb, ts, te));
     }
     return AM_OK;
 }

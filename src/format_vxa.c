@@ -24,7 +24,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define VXA_SHOW 40 /* longest piece of input quoted in a message */
 #define VXA_VALUE_MAX 256
 #define VXA_LAYER_MAX (2L * AM_MAX_DIM * AM_MAX_DIM + 512L) /* decoded text of one <Layer> */
 #define VXA_TEMP_BASE 25.0                                 /* the reference temperature written (VoxCAD's default) */
@@ -81,9 +80,20 @@ static void warn(vctx* c, int n, const char* fmt, ...)
     }
 }
 
-#define NAME(c, n) (int)(c)->d->node[n].name_len, (c)->d->text + (c)->d->node[n].start + 1
+/* the name of element n quoted for a message (am_quote) into q */
+static const char* tag(const vctx* c, int n, char q[AM_QUOTE_BUF])
+{
+    return am_quote(q, AM_QUOTE_BUF, c->d->text + c->d->node[n].start + 1, c->d->node[n].name_len);
+}
 
-static void unsupported(vctx* c, int n) { warn(c, n, "unsupported tag <%.*s> ignored", NAME(c, n)); }
+/* a value quoted for a message (am_quote) into q */
+static const char* val(const char* v, char q[AM_QUOTE_BUF]) { return am_quote(q, AM_QUOTE_BUF, v, -1); }
+
+static void unsupported(vctx* c, int n)
+{
+    char qn[AM_QUOTE_BUF];
+    warn(c, n, "unsupported tag <%s> ignored", tag(c, n, qn));
+}
 
 /* ---- values ------------------------------------------------------------------------------ */
 
@@ -93,10 +103,11 @@ static int is_blank(char ch) { return ch == ' ' || ch == '\t' || ch == '\n' || c
  * not a value */
 static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
 {
-    if (c->d->node[n].child >= 0) return verr(c, n, AM_ERR_PARSE, "<%.*s> must hold a value, not elements", NAME(c, n));
+    char qn[AM_QUOTE_BUF];
+    if (c->d->node[n].child >= 0) return verr(c, n, AM_ERR_PARSE, "<%s> must hold a value, not elements", tag(c, n, qn));
     long k = 0;
     if (am_xml_text(c->d, n, buf, cap, &k) != AM_OK)
-        return verr(c, n, AM_ERR_CAPACITY, "<%.*s>: its text is longer than %ld bytes", NAME(c, n), cap - 1);
+        return verr(c, n, AM_ERR_CAPACITY, "<%s>: its text is longer than %ld bytes", tag(c, n, qn), cap - 1);
     long s = 0;
     while (s < k && is_blank(buf[s])) s++;
     while (k > s && is_blank(buf[k - 1])) k--;
@@ -106,23 +117,16 @@ static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
     return AM_OK;
 }
 
-/* a value quoted in a message stays on one line */
-static const char* flat(char* v)
-{
-    for (char* p = v; *p; p++)
-        if ((unsigned char)*p < 0x20) *p = ' ';
-    return v;
-}
-
 static am_status double_of(const vctx* c, int n, double* out)
 {
+    char qn[AM_QUOTE_BUF], qv[AM_QUOTE_BUF];
     char v[VXA_VALUE_MAX];
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
     char* end = NULL;
     double x = v[0] ? strtod(v, &end) : 0;
     if (!v[0] || *end || !(x - x == 0))
-        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
+        return verr(c, n, AM_ERR_PARSE, "<%s>: '%s' is not a finite number", tag(c, n, qn), val(v, qv));
     *out = x;
     return AM_OK;
 }
@@ -130,6 +134,7 @@ static am_status double_of(const vctx* c, int n, double* out)
 /* read as am_param the way the lattice format reads it (strtof in the float build) */
 static am_status real_of(const vctx* c, int n, am_param* out)
 {
+    char qn[AM_QUOTE_BUF], qv[AM_QUOTE_BUF];
     char v[VXA_VALUE_MAX];
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
@@ -140,7 +145,7 @@ static am_status real_of(const vctx* c, int n, am_param* out)
     am_param x = v[0] ? strtof(v, &end) : 0;
 #endif
     if (!v[0] || *end || !am_param_finite(x))
-        return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a finite number", NAME(c, n), VXA_SHOW, flat(v));
+        return verr(c, n, AM_ERR_PARSE, "<%s>: '%s' is not a finite number", tag(c, n, qn), val(v, qv));
     *out = x;
     return AM_OK;
 }
@@ -148,24 +153,26 @@ static am_status real_of(const vctx* c, int n, am_param* out)
 /* a real with a range: lo <= x (or lo < x when open) and x <= hi */
 static am_status real_in(const vctx* c, int n, am_param* out, double lo, int open, double hi, const char* what)
 {
+    char qn[AM_QUOTE_BUF];
     am_param x = AM_P(0);
     am_status st = real_of(c, n, &x);
     if (st != AM_OK) return st;
     if ((open ? !((double)x > lo) : !((double)x >= lo)) || (double)x > hi)
-        return verr(c, n, AM_ERR_RANGE, "<%.*s> %.9g %s", NAME(c, n), (double)x, what);
+        return verr(c, n, AM_ERR_RANGE, "<%s> %.9g %s", tag(c, n, qn), (double)x, what);
     *out = x;
     return AM_OK;
 }
 
 static am_status int_of(const vctx* c, int n, long lo, long hi, long* out)
 {
+    char qn[AM_QUOTE_BUF], qv[AM_QUOTE_BUF];
     char v[VXA_VALUE_MAX];
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
     char* end = NULL;
     long x = v[0] ? strtol(v, &end, 10) : 0;
-    if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not a whole number", NAME(c, n), VXA_SHOW, flat(v));
-    if (x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%.*s> %ld is outside %ld..%ld", NAME(c, n), x, lo, hi);
+    if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%s>: '%s' is not a whole number", tag(c, n, qn), val(v, qv));
+    if (x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%s> %ld is outside %ld..%ld", tag(c, n, qn), x, lo, hi);
     *out = x;
     return AM_OK;
 }
@@ -173,12 +180,13 @@ static am_status int_of(const vctx* c, int n, long lo, long hi, long* out)
 /* VoxCAD writes booleans as 0 or 1; "true" and "false" are read too */
 static am_status bool_of(const vctx* c, int n, int* out)
 {
+    char qn[AM_QUOTE_BUF], qv[AM_QUOTE_BUF];
     char v[VXA_VALUE_MAX];
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
     if (!strcmp(v, "1") || !strcmp(v, "true")) *out = 1;
     else if (!strcmp(v, "0") || !strcmp(v, "false")) *out = 0;
-    else return verr(c, n, AM_ERR_PARSE, "<%.*s>: '%.*s' is not 0 or 1", NAME(c, n), VXA_SHOW, flat(v));
+    else return verr(c, n, AM_ERR_PARSE, "<%s>: '%s' is not 0 or 1", tag(c, n, qn), val(v, qv));
     return AM_OK;
 }
 
@@ -191,13 +199,14 @@ enum { MAX_TAGS = 16 };
  * (those are left for the caller to walk) */
 static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
 {
+    char qn[AM_QUOTE_BUF];
     for (int i = 0; i < ntags; i++) at[i] = -1;
     for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
         int i = 0;
         while (i < ntags && !am_xml_is(c->d, k, tags[i])) i++;
         if (i < ntags) {
             if (at[i] >= 0)
-                return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%.*s> (first on line %d)", tags[i], NAME(c, n),
+                return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%s> (first on line %d)", tags[i], tag(c, n, qn),
                             (int)c->d->node[at[i]].line);
             at[i] = k;
         } else if (!repeat || !am_xml_is(c->d, k, repeat))
@@ -229,6 +238,7 @@ static am_status read_lattice(vctx* c, int n, am_lattice* lat)
 
 static am_status read_voxel(vctx* c, int n)
 {
+    char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"Vox_Name", "X_Squeeze", "Y_Squeeze", "Z_Squeeze"};
     int at[MAX_TAGS];
     am_status st = children(c, n, tags, 4, at, NULL);
@@ -236,7 +246,7 @@ static am_status read_voxel(vctx* c, int n)
     if (at[0] >= 0) {
         char v[VXA_VALUE_MAX];
         if ((st = text_of(c, at[0], v, sizeof v, NULL)) != AM_OK) return st;
-        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %.*s not supported (amorph voxels are boxes); BOX used", VXA_SHOW, flat(v));
+        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %s not supported (amorph voxels are boxes); BOX used", val(v, qv));
     }
     for (int i = 1; i < 4; i++) {
         double v;
@@ -262,6 +272,7 @@ static void clean_name(char* dst, const char* src)
 
 static am_status read_material(vctx* c, int n, am_material* m, int id)
 {
+    char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"MatType", "Name", "Display", "Mechanical"};
     static const char* const disp[] = {"Red", "Green", "Blue", "Alpha"};
     static const char* const mech[] = {"MatModel", "Elastic_Mod", "Plastic_Mod", "Yield_Stress", "FailModel", "Fail_Stress",
@@ -278,8 +289,8 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
         char idv[VXA_VALUE_MAX];
         char* end = NULL;
         if (am_xml_attr_text(c->d, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
-            warn(c, n, "<Material ID=\"%.*s\"> is material %d of the palette: materials are numbered by their order, as in VoxCAD",
-                 VXA_SHOW, idv, id);
+            warn(c, n, "<Material ID=\"%s\"> is material %d of the palette: materials are numbered by their order, as in VoxCAD",
+                 val(idv, qv), id);
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     if (at[0] >= 0) {
@@ -396,6 +407,7 @@ enum { COMP_ASCII, COMP_BASE64 };
 
 static am_status read_structure(vctx* c, int n, am_lattice* lat)
 {
+    char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data"};
     int at[MAX_TAGS];
     am_status st;
@@ -409,9 +421,9 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         else if (!strcmp(v, "ZLIB") || !strcmp(v, "QT_ZLIB"))
             return verr(c, n, AM_ERR_PARSE,
                         "Compression=\"%s\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64",
-                        v);
+                        val(v, qv));
         else
-            return verr(c, n, AM_ERR_PARSE, "Compression=\"%.*s\" is not supported (ASCII_READABLE or BASE64)", VXA_SHOW, flat(v));
+            return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE or BASE64)", val(v, qv));
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     long dim[3];
@@ -463,6 +475,7 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
 
 static am_status read_vxc(vctx* c, int n, am_lattice* lat)
 {
+    char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"Lattice", "Voxel", "Palette", "Structure"};
     int at[MAX_TAGS];
     am_status st;
@@ -472,8 +485,8 @@ static am_status read_vxc(vctx* c, int n, am_lattice* lat)
         if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         double ver = atof(v);
         if (ver < 0.925)
-            return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%.*s\">: only versions 0.93 and 0.94 are read", VXA_SHOW, flat(v));
-        if (ver > 0.945) warn(c, n, "<VXC Version=\"%.*s\"> is newer than 0.94: read as 0.94", VXA_SHOW, flat(v));
+            return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%s\">: only versions 0.93 and 0.94 are read", val(v, qv));
+        if (ver > 0.945) warn(c, n, "<VXC Version=\"%s\"> is newer than 0.94: read as 0.94", val(v, qv));
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     if (at[0] >= 0 && (st = read_lattice(c, at[0], lat)) != AM_OK) return st;
@@ -611,6 +624,7 @@ static am_status read_environment(vctx* c, int n)
 
 static am_status read_amorph(vctx* c, int n, am_lattice* lat)
 {
+    char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"CTEMode", "PeriodSteps", "TempOffset", "Lift", "ZetaInternalScale", "ZetaGlobalScale",
                                        "DtFrac"};
     static const char* const mtags[] = {"CTE", "ZetaInternal", "ZetaGlobal", "ZetaCollision", "Fixed"};
@@ -623,14 +637,14 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     char ver[VXA_VALUE_MAX] = "";
     if (a >= 0 && am_xml_attr_text(c->d, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
     if (strcmp(ver, "1") != 0)
-        return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%.*s\">: this build reads version 1", VXA_SHOW, ver);
+        return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%s\">: this build reads version 1", val(ver, qv));
     if ((st = children(c, n, tags, 7, at, "Material")) != AM_OK) return st;
     if (at[0] >= 0) {
         char m[VXA_VALUE_MAX];
         if ((st = text_of(c, at[0], m, sizeof m, NULL)) != AM_OK) return st;
         if (!strcmp(m, "volumetric")) env->cte_mode = AM_CTE_VOLUMETRIC;
         else if (!strcmp(m, "linear")) env->cte_mode = AM_CTE_LINEAR;
-        else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%.*s' is not volumetric or linear", VXA_SHOW, flat(m));
+        else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%s' is not volumetric or linear", val(m, qv));
     }
     if (at[1] >= 0) {
         if ((st = int_of(c, at[1], 1, 1000000000L, &v)) != AM_OK) return st;
@@ -650,8 +664,8 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
         char* end = NULL;
         long id = idv[0] ? strtol(idv, &end, 10) : 0;
         if (!idv[0] || *end || id < 1 || id > lat->palette.count)
-            return verr(c, k, AM_ERR_PARSE, "<Material ID=\"%.*s\"> in <Amorph>: the ID must be a material number 1..%d", VXA_SHOW,
-                        idv, lat->palette.count);
+            return verr(c, k, AM_ERR_PARSE, "<Material ID=\"%s\"> in <Amorph>: the ID must be a material number 1..%d",
+                        val(idv, qv), lat->palette.count);
         am_material* m = &lat->palette.mat[id - 1];
         if ((st = children(c, k, mtags, 5, mt, NULL)) != AM_OK) return st;
         if (mt[0] >= 0 && (st = real_of(c, mt[0], &m->cte)) != AM_OK) return st;
@@ -682,6 +696,7 @@ int am_vxa_sniff(const char* text)
 am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz)
 {
+    char qv[AM_QUOTE_BUF];
     if (!lat || !info || !work || !text) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
     memset(lat, 0, sizeof *lat);
     memset(info, 0, sizeof *info);
@@ -693,13 +708,13 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     if (st != AM_OK) return st;
     vctx c = {work, info, 0, err, errsz};
     if (!am_xml_is(work, 0, "VXA"))
-        return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%.*s>, expected <VXA>", NAME(&c, 0));
+        return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%s>, expected <VXA>", tag(&c, 0, qv));
     int a = am_xml_attr_find(work, 0, "Version");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
         if (am_xml_attr_text(work, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         if (strcmp(v, "1.0") != 0 && strcmp(v, "1.1") != 0)
-            warn(&c, 0, "<VXA Version=\"%.*s\">: this reader knows versions 1.0 and 1.1", VXA_SHOW, flat(v));
+            warn(&c, 0, "<VXA Version=\"%s\">: this reader knows versions 1.0 and 1.1", val(v, qv));
     }
     static const char* const tags[] = {"VXC", "Simulator", "Environment", "Amorph"};
     int at[MAX_TAGS];

@@ -433,12 +433,14 @@ static void cppn_format(const am_genome* g, am_text* s)
 /* reads count (flag, weight) pairs from tok */
 static am_status parse_conns(char** tok, int count, am_real* w, int wstride, uint8_t* on, int onstride, char* err, int errsz)
 {
+    char q1[AM_QUOTE_BUF];
     for (int i = 0; i < count; i++) {
         int f = 0;
         if (!am_geno_tok_int(tok[2 * i], 0, 1, &f))
-            return am_fail(err, errsz, AM_ERR_PARSE, "active flag '%s' is not 0 or 1", tok[2 * i]);
+            return am_fail(err, errsz, AM_ERR_PARSE, "active flag '%s' is not 0 or 1", am_quote(q1, sizeof q1, tok[2 * i], -1));
         if (!am_geno_tok_real(tok[2 * i + 1], -AM_CPPN_WEIGHT_MAX, AM_CPPN_WEIGHT_MAX, &w[i * wstride]))
-            return am_fail(err, errsz, AM_ERR_RANGE, "weight '%s' is not a number in [-2, 2]", tok[2 * i + 1]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "weight '%s' is not a number in [-2, 2]",
+                           am_quote(q1, sizeof q1, tok[2 * i + 1], -1));
         on[i * onstride] = (uint8_t)f;
     }
     return AM_OK;
@@ -447,12 +449,14 @@ static am_status parse_conns(char** tok, int count, am_real* w, int wstride, uin
 static am_status cppn_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz)
 {
     am_cppn_genome* c = &g->cppn;
+    char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
     if (!ps->shape) {
         int L = 0, n = 0;
         if (strcmp(tok[0], "cppn") != 0 || ntok != 3)
             return am_fail(err, errsz, AM_ERR_PARSE, "expected 'cppn LAYERS NODES'");
         if (!am_geno_tok_int(tok[1], 1, 1000000, &L) || !am_geno_tok_int(tok[2], 1, 1000000, &n))
-            return am_fail(err, errsz, AM_ERR_PARSE, "CPPN size '%s %s' is not two positive integers", tok[1], tok[2]);
+            return am_fail(err, errsz, AM_ERR_PARSE, "CPPN size '%s %s' is not two positive integers",
+                           am_quote(q1, sizeof q1, tok[1], -1), am_quote(q2, sizeof q2, tok[2], -1));
         if (L > AM_MAX_CPPN_LAYERS || n > AM_MAX_CPPN_NODES)
             return am_fail(err, errsz, AM_ERR_CAPACITY, "CPPN of %d x %d nodes exceeds the %s profile's %d x %d", L, n,
                            AM_PROFILE_NAME, AM_MAX_CPPN_LAYERS, AM_MAX_CPPN_NODES);
@@ -467,42 +471,53 @@ static am_status cppn_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char
     if (strcmp(tok[0], "node") == 0) {
         if (ntok != 7) return am_fail(err, errsz, AM_ERR_PARSE, "'node' needs LAYER J FUNCTION OFFSET XSCALE YSCALE");
         if (!am_geno_tok_int(tok[1], 0, L - 1, &l) || !am_geno_tok_int(tok[2], 0, n - 1, &j))
-            return am_fail(err, errsz, AM_ERR_RANGE, "node '%s %s' is not in the %d x %d network", tok[1], tok[2], L, n);
+            return am_fail(err, errsz, AM_ERR_RANGE, "node '%s %s' is not in the %d x %d network",
+                           am_quote(q1, sizeof q1, tok[1], -1), am_quote(q2, sizeof q2, tok[2], -1), L, n);
         int f = 0;
         while (f < AM_FN_COUNT && strcmp(tok[3], fn_names[f]) != 0) f++;
         if (f == AM_FN_COUNT)
-            return am_fail(err, errsz, AM_ERR_PARSE, "unknown function '%s' (sigmoid, gauss, sine, abs, linear)", tok[3]);
+            return am_fail(err, errsz, AM_ERR_PARSE, "unknown function '%s' (sigmoid, gauss, sine, abs, linear)",
+                           am_quote(q1, sizeof q1, tok[3], -1));
         am_cppn_node* nd = &c->node[l][j];
         nd->fn = (uint8_t)f;
         if (!am_geno_tok_real(tok[4], -AM_CPPN_OFFSET_MAX, AM_CPPN_OFFSET_MAX, &nd->offset))
-            return am_fail(err, errsz, AM_ERR_RANGE, "offset '%s' is not a number in [-1, 1]", tok[4]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "offset '%s' is not a number in [-1, 1]",
+                           am_quote(q1, sizeof q1, tok[4], -1));
         if (!am_geno_tok_real(tok[5], -AM_CPPN_XSCALE_MAX, AM_CPPN_XSCALE_MAX, &nd->xscale))
-            return am_fail(err, errsz, AM_ERR_RANGE, "x scaling '%s' is not a number in [-4, 4]", tok[5]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "x scaling '%s' is not a number in [-4, 4]",
+                           am_quote(q1, sizeof q1, tok[5], -1));
         if (!am_geno_tok_real(tok[6], -AM_CPPN_YSCALE_MAX, AM_CPPN_YSCALE_MAX, &nd->yscale))
-            return am_fail(err, errsz, AM_ERR_RANGE, "y scaling '%s' is not a number in [-2, 2]", tok[6]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "y scaling '%s' is not a number in [-2, 2]",
+                           am_quote(q1, sizeof q1, tok[6], -1));
         id = l * n + j;
     } else if (strcmp(tok[0], "in") == 0) {
         if (ntok != 10) return am_fail(err, errsz, AM_ERR_PARSE, "'in J' needs 4 pairs ACTIVE WEIGHT (x, y, z, bias)");
-        if (!am_geno_tok_int(tok[1], 0, n - 1, &j)) return am_fail(err, errsz, AM_ERR_RANGE, "node '%s' is not 0..%d", tok[1], n - 1);
+        if (!am_geno_tok_int(tok[1], 0, n - 1, &j))
+            return am_fail(err, errsz, AM_ERR_RANGE, "node '%s' is not 0..%d", am_quote(q1, sizeof q1, tok[1], -1), n - 1);
         if ((st = parse_conns(tok + 2, 4, c->w_in[j], 1, c->on_in[j], 1, err, errsz)) != AM_OK) return st;
         id = L * n + j;
     } else if (strcmp(tok[0], "link") == 0) {
         if (L < 2) return am_fail(err, errsz, AM_ERR_PARSE, "'link' in a one-layer network");
         if (ntok != 3 + 2 * n) return am_fail(err, errsz, AM_ERR_PARSE, "'link LAYER J' needs %d pairs ACTIVE WEIGHT", n);
         if (!am_geno_tok_int(tok[1], 1, L - 1, &l) || !am_geno_tok_int(tok[2], 0, n - 1, &j))
-            return am_fail(err, errsz, AM_ERR_RANGE, "link target '%s %s' is not a node of layers 1..%d", tok[1], tok[2], L - 1);
+            return am_fail(err, errsz, AM_ERR_RANGE, "link target '%s %s' is not a node of layers 1..%d",
+                           am_quote(q1, sizeof q1, tok[1], -1), am_quote(q2, sizeof q2, tok[2], -1), L - 1);
         if ((st = parse_conns(tok + 3, n, c->w[l - 1][j], 1, c->on[l - 1][j], 1, err, errsz)) != AM_OK) return st;
         id = L * n + n + (l - 1) * n + j;
     } else if (strcmp(tok[0], "out") == 0) {
         if (ntok != 2 + 2 * n) return am_fail(err, errsz, AM_ERR_PARSE, "'out MATERIAL' needs %d pairs ACTIVE WEIGHT", n);
         if (!am_geno_tok_int(tok[1], 0, g->materials - 1, &l))
-            return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d", tok[1], g->materials - 1);
+            return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
+                           am_quote(q1, sizeof q1, tok[1], -1), g->materials - 1);
         if ((st = parse_conns(tok + 2, n, c->w_out[l], 1, c->on_out[l], 1, err, errsz)) != AM_OK) return st;
         id = 2 * L * n + l;
     } else {
-        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a cppn genome (node, in, link, out or end)", tok[0]);
+        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a cppn genome (node, in, link, out or end)",
+                       am_quote(q1, sizeof q1, tok[0], -1));
     }
-    if (ps->seen[id]) return am_fail(err, errsz, AM_ERR_PARSE, "'%s %s' given twice", tok[0], tok[1]);
+    if (ps->seen[id])
+        return am_fail(err, errsz, AM_ERR_PARSE, "'%s %s' given twice", am_quote(q1, sizeof q1, tok[0], -1),
+                       am_quote(q2, sizeof q2, tok[1], -1));
     ps->seen[id] = 1;
     ps->lines++;
     return AM_OK;

@@ -107,12 +107,13 @@ static void dct_format(const am_genome* g, am_text* s)
 
 static am_status dct_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz)
 {
+    char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
     if (!ps->shape) {
         int k = 0;
         if (strcmp(tok[0], "dct") != 0 || ntok != 2)
             return am_fail(err, errsz, AM_ERR_PARSE, "expected 'dct K' (amplitudes per axis)");
         if (!am_geno_tok_int(tok[1], 1, 1000000, &k))
-            return am_fail(err, errsz, AM_ERR_PARSE, "DCT k '%s' is not a positive integer", tok[1]);
+            return am_fail(err, errsz, AM_ERR_PARSE, "DCT k '%s' is not a positive integer", am_quote(q1, sizeof q1, tok[1], -1));
         if (k > AM_MAX_DCT_K)
             return am_fail(err, errsz, AM_ERR_CAPACITY, "DCT k %d exceeds the %s profile's %d", k, AM_PROFILE_NAME, AM_MAX_DCT_K);
         if (k > g->nx || k > g->ny || k > g->nz)
@@ -124,18 +125,22 @@ static am_status dct_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
     const int k = g->dct.k;
     int m, v, w;
     if (strcmp(tok[0], "amp") != 0)
-        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a dct genome (expected 'amp' or 'end')", tok[0]);
+        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a dct genome (expected 'amp' or 'end')",
+                       am_quote(q1, sizeof q1, tok[0], -1));
     if (ntok != 4 + k)
         return am_fail(err, errsz, AM_ERR_PARSE, "'amp MATERIAL V W' needs %d amplitudes, found %d", k, ntok - 4 > 0 ? ntok - 4 : 0);
     if (!am_geno_tok_int(tok[1], 0, g->materials - 1, &m))
-        return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d", tok[1], g->materials - 1);
+        return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
+                       am_quote(q1, sizeof q1, tok[1], -1), g->materials - 1);
     if (!am_geno_tok_int(tok[2], 0, k - 1, &v) || !am_geno_tok_int(tok[3], 0, k - 1, &w))
-        return am_fail(err, errsz, AM_ERR_RANGE, "amplitude row '%s %s' is not 0..%d", tok[2], tok[3], k - 1);
+        return am_fail(err, errsz, AM_ERR_RANGE, "amplitude row '%s %s' is not 0..%d",
+                       am_quote(q1, sizeof q1, tok[2], -1), am_quote(q2, sizeof q2, tok[3], -1), k - 1);
     int id = m * k * k + v + k * w;
     if (ps->seen[id]) return am_fail(err, errsz, AM_ERR_PARSE, "'amp %d %d %d' given twice", m, v, w);
     for (int u = 0; u < k; u++)
         if (!am_geno_tok_real(tok[4 + u], -AM_DCT_AMP_MAX, AM_DCT_AMP_MAX, &g->dct.amp[m][u + k * (v + k * w)]))
-            return am_fail(err, errsz, AM_ERR_RANGE, "amplitude '%s' is not a number in [-1, 1]", tok[4 + u]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "amplitude '%s' is not a number in [-1, 1]",
+                           am_quote(q1, sizeof q1, tok[4 + u], -1));
     ps->seen[id] = 1;
     ps->lines++;
     return AM_OK;

@@ -266,11 +266,13 @@ static void gmx_format(const am_genome* g, am_text* s)
 static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char** tok, char* err, int errsz)
 {
     am_gmx_genome* x = &g->gmx;
+    char q1[AM_QUOTE_BUF];
     if (!ps->shape) {
         int n = 0;
         if (strcmp(tok[0], "gmx") != 0 || ntok != 2) return am_fail(err, errsz, AM_ERR_PARSE, "expected 'gmx COUNT'");
         if (!am_geno_tok_int(tok[1], 0, 1000000000, &n))
-            return am_fail(err, errsz, AM_ERR_PARSE, "GMX point count '%s' is not a non-negative integer", tok[1]);
+            return am_fail(err, errsz, AM_ERR_PARSE, "GMX point count '%s' is not a non-negative integer",
+                           am_quote(q1, sizeof q1, tok[1], -1));
         if (n > AM_MAX_GMX_POINTS)
             return am_fail(err, errsz, AM_ERR_CAPACITY, "%d GMX points exceed the %s profile's %d", n, AM_PROFILE_NAME, AM_MAX_GMX_POINTS);
         x->count = n;
@@ -278,7 +280,8 @@ static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
         return AM_OK;
     }
     if (strcmp(tok[0], "point") != 0)
-        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a gmx genome (expected 'point' or 'end')", tok[0]);
+        return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a gmx genome (expected 'point' or 'end')",
+                       am_quote(q1, sizeof q1, tok[0], -1));
     if (ntok != 7) return am_fail(err, errsz, AM_ERR_PARSE, "'point' needs X Y Z WEIGHT RADIUS MATERIAL");
     if (ps->lines >= x->count) return am_fail(err, errsz, AM_ERR_PARSE, "more 'point' lines than the %d announced", x->count);
     am_gmx_point* p = &x->pt[ps->lines];
@@ -286,14 +289,17 @@ static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
     am_real* c[3] = {&p->x, &p->y, &p->z};
     for (int a = 0; a < 3; a++)
         if (!am_geno_tok_real(tok[1 + a], AM_R(0), hi[a], c[a]))
-            return am_fail(err, errsz, AM_ERR_RANGE, "coordinate '%s' is not a number in [0, %d]", tok[1 + a], (int)hi[a]);
+            return am_fail(err, errsz, AM_ERR_RANGE, "coordinate '%s' is not a number in [0, %d]",
+                           am_quote(q1, sizeof q1, tok[1 + a], -1), (int)hi[a]);
     if (!am_geno_tok_real(tok[4], -AM_GMX_WEIGHT_MAX, AM_GMX_WEIGHT_MAX, &p->weight))
-        return am_fail(err, errsz, AM_ERR_RANGE, "weight '%s' is not a number in [-1, 1]", tok[4]);
+        return am_fail(err, errsz, AM_ERR_RANGE, "weight '%s' is not a number in [-1, 1]", am_quote(q1, sizeof q1, tok[4], -1));
     if (!am_geno_tok_real(tok[5], AM_GMX_RADIUS_MIN, radius_max(g), &p->radius))
-        return am_fail(err, errsz, AM_ERR_RANGE, "radius '%s' is not a number in [1, %g]", tok[5], (double)radius_max(g));
+        return am_fail(err, errsz, AM_ERR_RANGE, "radius '%s' is not a number in [1, %g]",
+                       am_quote(q1, sizeof q1, tok[5], -1), (double)radius_max(g));
     int m = 0;
     if (!am_geno_tok_int(tok[6], 0, g->materials - 1, &m))
-        return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d", tok[6], g->materials - 1);
+        return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
+                       am_quote(q1, sizeof q1, tok[6], -1), g->materials - 1);
     p->mat = (uint8_t)m;
     ps->lines++;
     return AM_OK;

@@ -132,8 +132,10 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
     const char* colon = strchr(name, ':');
     int n = 0;
     size_t kind_len = colon ? (size_t)(colon - name) : strlen(name);
+    char qb[AM_QUOTE_BUF];
     if (!colon || !parse_size(colon + 1, &n) || n < 1)
-        return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': expected NAME:N with N >= 1 (cube:N, sphere:D, cantilever:N, chain:N)", name);
+        return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': expected NAME:N with N >= 1 (cube:N, sphere:D, cantilever:N, chain:N)",
+                       am_quote(qb, sizeof qb, name, -1));
     const am_param L = AM_P(0.01);
     am_status st;
     if (kind_len == 4 && strncmp(name, "cube", 4) == 0) {
@@ -166,5 +168,6 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
         memset(lat->cell, 1, (size_t)n);
         return AM_OK;
     }
-    return am_fail(err, errsz, AM_ERR_ARG, "unknown scene '%.*s' (cube:N, sphere:D, cantilever:N, chain:N)", (int)kind_len, name);
+    return am_fail(err, errsz, AM_ERR_ARG, "unknown scene '%s' (cube:N, sphere:D, cantilever:N, chain:N)",
+                   am_quote(qb, sizeof qb, name, (long)kind_len));
 }

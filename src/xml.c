@@ -184,6 +184,12 @@ static am_status check_text(xctx* c, long p, long e, int attr)
     return AM_OK;
 }
 
+/* the name at t[s..e) quoted for a message (am_quote) */
+static const char* qname(char q[AM_QUOTE_BUF], const char* t, long s, long e)
+{
+    return am_quote(q, AM_QUOTE_BUF, t + s, e - s);
+}
+
 /* a byte for a message: printable ASCII as itself, the rest as a hex code */
 static const char* show_byte(char ch, char buf[8])
 {
@@ -214,7 +220,7 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
     }
 
     const char* t = text;
-    char b8[8];
+    char b8[8], qn[AM_QUOTE_BUF], qa[AM_QUOTE_BUF]; /* a byte, an element and an attribute name for messages */
     long p = 0;
     if (starts(t, len, 0, "\xEF\xBB\xBF")) p = 3; /* UTF-8 byte order mark */
     if (starts(t, len, p, "<?xml") && p + 5 < len && (is_ws(t[p + 5]) || t[p + 5] == '?')) {
@@ -281,16 +287,15 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
             /* end tag */
             long ns = p + 2, ne = scan_name(t, len, ns);
             if (ne == ns) return xerr(&c, p, AM_ERR_PARSE, "'</' must be followed by an element name");
-            int nl = ne - ns > 64 ? 64 : (int)(ne - ns);
             long q = ne;
             while (q < len && is_ws(t[q])) q++;
             if (q >= len || t[q] != '>')
-                return xerr(&c, q < len ? q : p, AM_ERR_PARSE, "end tag </%.*s> not closed with '>'", nl, t + ns);
-            if (depth == 0) return xerr(&c, p, AM_ERR_PARSE, "end tag </%.*s> without a start tag", nl, t + ns);
+                return xerr(&c, q < len ? q : p, AM_ERR_PARSE, "end tag </%s> not closed with '>'", qname(qn, t, ns, ne));
+            if (depth == 0) return xerr(&c, p, AM_ERR_PARSE, "end tag </%s> without a start tag", qname(qn, t, ns, ne));
             am_xml_node* open = &doc->node[stack[depth - 1]];
             if (open->name_len != ne - ns || memcmp(t + open->start + 1, t + ns, (size_t)(ne - ns)) != 0)
-                return xerr(&c, p, AM_ERR_PARSE, "</%.*s> does not close <%.*s> (opened on line %d)", nl, t + ns,
-                            (int)open->name_len, t + open->start + 1, (int)open->line);
+                return xerr(&c, p, AM_ERR_PARSE, "</%s> does not close <%s> (opened on line %d)", qname(qn, t, ns, ne),
+                            qname(qa, t, open->start + 1, open->start + 1 + open->name_len), (int)open->line);
             open->content_end = (int32_t)p;
             open->end = (int32_t)(q + 1);
             depth--;
@@ -305,11 +310,11 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
             return xerr(&c, p, AM_ERR_PARSE, "'<' followed by %s does not start a tag (write &lt; for a literal '<')",
                         show_byte(t[ns], b8));
         }
-        int nl = ne - ns > 64 ? 64 : (int)(ne - ns);
         if (ne - ns > XML_NAME_MAX)
-            return xerr(&c, p, AM_ERR_CAPACITY, "element name '%.*s...' longer than %d bytes", nl, t + ns, XML_NAME_MAX);
+            return xerr(&c, p, AM_ERR_CAPACITY, "element name '%s' longer than %d bytes", qname(qn, t, ns, ne), XML_NAME_MAX);
         if (depth == 0 && root_seen)
-            return xerr(&c, p, AM_ERR_PARSE, "a second root element <%.*s> (an XML document has exactly one)", nl, t + ns);
+            return xerr(&c, p, AM_ERR_PARSE, "a second root element <%s> (an XML document has exactly one)",
+                        qname(qn, t, ns, ne));
         if (doc->nnodes >= AM_XML_MAX_NODES)
             return xerr(&c, p, AM_ERR_CAPACITY, "more than %d elements (the XML reader's capacity, %s profile)",
                         AM_XML_MAX_NODES, AM_PROFILE_NAME);
@@ -338,7 +343,7 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
         for (;;) {
             long ws = q;
             while (q < len && is_ws(t[q])) q++;
-            if (q >= len) return xerr(&c, p, AM_ERR_PARSE, "start tag <%.*s> not closed (the file ends)", nl, t + ns);
+            if (q >= len) return xerr(&c, p, AM_ERR_PARSE, "start tag <%s> not closed (the file ends)", qname(qn, t, ns, ne));
             if (t[q] == '>') {
                 q++;
                 break;
@@ -349,39 +354,43 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
                     empty = 1;
                     break;
                 }
-                return xerr(&c, q, AM_ERR_PARSE, "expected '/>' after '/' in <%.*s>", nl, t + ns);
+                return xerr(&c, q, AM_ERR_PARSE, "expected '/>' after '/' in <%s>", qname(qn, t, ns, ne));
             }
             long as = q, ae = scan_name(t, len, as);
             if (ae == as)
-                return xerr(&c, q, AM_ERR_PARSE, "unexpected %s in the start tag <%.*s>", show_byte(t[q], b8), nl, t + ns);
-            int al = ae - as > 64 ? 64 : (int)(ae - as);
-            if (q == ws) return xerr(&c, q, AM_ERR_PARSE, "expected a blank before attribute '%.*s' in <%.*s>", al, t + as, nl, t + ns);
+                return xerr(&c, q, AM_ERR_PARSE, "unexpected %s in the start tag <%s>", show_byte(t[q], b8),
+                            qname(qn, t, ns, ne));
+            if (q == ws)
+                return xerr(&c, q, AM_ERR_PARSE, "expected a blank before attribute '%s' in <%s>", qname(qa, t, as, ae),
+                            qname(qn, t, ns, ne));
             if (ae - as > XML_NAME_MAX)
-                return xerr(&c, q, AM_ERR_CAPACITY, "attribute name '%.*s...' longer than %d bytes", al, t + as, XML_NAME_MAX);
+                return xerr(&c, q, AM_ERR_CAPACITY, "attribute name '%s' longer than %d bytes", qname(qa, t, as, ae),
+                            XML_NAME_MAX);
             q = ae;
             while (q < len && is_ws(t[q])) q++;
             if (q >= len || t[q] != '=')
-                return xerr(&c, q < len ? q : as, AM_ERR_PARSE, "attribute '%.*s' of <%.*s> has no '=' and value", al, t + as, nl,
-                            t + ns);
+                return xerr(&c, q < len ? q : as, AM_ERR_PARSE, "attribute '%s' of <%s> has no '=' and value",
+                            qname(qa, t, as, ae), qname(qn, t, ns, ne));
             q++;
             while (q < len && is_ws(t[q])) q++;
             if (q >= len || (t[q] != '"' && t[q] != '\''))
-                return xerr(&c, q < len ? q : as, AM_ERR_PARSE, "the value of attribute '%.*s' must be quoted (\" or ')", al,
-                            t + as);
+                return xerr(&c, q < len ? q : as, AM_ERR_PARSE, "the value of attribute '%s' must be quoted (\" or ')",
+                            qname(qa, t, as, ae));
             char quote = t[q];
             long vs = ++q;
             while (q < len && t[q] != quote) {
                 if (t[q] == '<')
-                    return xerr(&c, q, AM_ERR_PARSE, "'<' in the value of attribute '%.*s' (write &lt;)", al, t + as);
+                    return xerr(&c, q, AM_ERR_PARSE, "'<' in the value of attribute '%s' (write &lt;)", qname(qa, t, as, ae));
                 q++;
             }
-            if (q >= len) return xerr(&c, vs, AM_ERR_PARSE, "the value of attribute '%.*s' is not closed", al, t + as);
+            if (q >= len) return xerr(&c, vs, AM_ERR_PARSE, "the value of attribute '%s' is not closed", qname(qa, t, as, ae));
             am_status st = check_text(&c, vs, q, 1);
             if (st != AM_OK) return st;
             for (int a = nd->attr; a < nd->attr + nd->nattr; a++) {
                 const am_xml_attr* o = &doc->attr[a];
                 if (o->name_len == ae - as && memcmp(t + o->name, t + as, (size_t)(ae - as)) == 0)
-                    return xerr(&c, as, AM_ERR_PARSE, "attribute '%.*s' given twice in <%.*s>", al, t + as, nl, t + ns);
+                    return xerr(&c, as, AM_ERR_PARSE, "attribute '%s' given twice in <%s>", qname(qa, t, as, ae),
+                                qname(qn, t, ns, ne));
             }
             if (doc->nattrs >= AM_XML_MAX_ATTRS || nd->nattr >= 255)
                 return xerr(&c, as, AM_ERR_CAPACITY, "more than %d attributes (the XML reader's capacity, %s profile)",
@@ -407,7 +416,8 @@ am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* 
     if (depth > 0) {
         const am_xml_node* o = &doc->node[stack[depth - 1]];
         return xerr(&c, len > 0 && t[len - 1] == '\n' ? len - 1 : len, AM_ERR_PARSE,
-                    "the file ends inside <%.*s> (opened on line %d)", (int)o->name_len, t + o->start + 1, (int)o->line);
+                    "the file ends inside <%s> (opened on line %d)", qname(qn, t, o->start + 1, o->start + 1 + o->name_len),
+                    (int)o->line);
     }
     if (!root_seen)
         return xerr(&c, len > 0 && t[len - 1] == '\n' ? len - 1 : len, AM_ERR_PARSE,

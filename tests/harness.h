@@ -58,6 +58,14 @@ static int t_selected_(const char* name)
     } while (0)
 #define SUMMARY() (printf("%s: %d passed, %d failed\n", __FILE__, t_pass_, t_fail_), t_fail_ ? 1 : 0)
 
+/* 1 when s is one line of printable ASCII, as every message must be (no control byte, no newline) */
+static inline int printable_line(const char* s)
+{
+    for (; *s; s++)
+        if ((unsigned char)*s < 0x20 || (unsigned char)*s > 0x7e) return 0;
+    return 1;
+}
+
 static int test_quick(void)
 {
     const char* q = getenv("AM_TEST_QUICK");

@@ -129,6 +129,45 @@ static void test_config_text_round_trip(void)
     CHECK(am_evo_parse(&f, "amplitude = 1e9\n", "x.cfg", err, sizeof err) == AM_ERR_RANGE && strstr(err, "x.cfg:1: amplitude"), "%s", err);
 }
 
+/* the configuration's message for text (file "x.cfg"): exactly want, one line of printable ASCII */
+static void expect_config_message(const char* text, const char* want)
+{
+    am_evo_def d = am_default_evo();
+    char err[AM_ERR_MAX] = "";
+    CHECK(am_evo_parse(&d, text, "x.cfg", err, sizeof err) != AM_OK && !strcmp(err, want), "message '%s', want '%s'", err, want);
+    CHECK(printable_line(err), "'%s' is not one line of printable ASCII", err);
+}
+
+/* a bad key, value or line shows cut and escaped (am_quote) */
+static void test_config_bad_tokens_quoted(void)
+{
+    char t[512], want[AM_ERR_MAX], tok[301], err[AM_ERR_MAX];
+    expect_config_message("\x1b[31mpopulation = 4\n",
+                          "x.cfg:1: unknown key '\\x1b[31mpopulation' (amorph evolve --help-config lists them)");
+    expect_config_message("seed = \x01x\n", "x.cfg:1: seed = '\\x01x': expected an integer in [0, 18446744073709551615]");
+    expect_config_message("representation = d\x7fna\n", "x.cfg:1: representation = 'd\\x7fna': expected dct, cppn or gmx");
+    expect_config_message("\x07" "bell's\n", "x.cfg:1: expected 'key = value', got '\\x07bell\\'s'");
+    expect_config_message("\x1b =\n", "x.cfg:1: \\x1b: missing value after '='");
+    /* the key-value call itself (command-line flags go through it) */
+    am_evo_def d = am_default_evo();
+    CHECK(am_evo_set(&d, "collisions", "\x1b[31m", err, sizeof err) == AM_ERR_RANGE &&
+              !strcmp(err, "collisions = '\\x1b[31m': expected on or off"), "%s", err);
+    /* 300-character tokens: their first 40 characters and "..." */
+    memset(tok, 'k', 300);
+    tok[300] = 0;
+    snprintf(t, sizeof t, "%s = 1\n", tok);
+    snprintf(want, sizeof want, "x.cfg:1: unknown key '%.40s...' (amorph evolve --help-config lists them)", tok);
+    expect_config_message(t, want);
+    snprintf(t, sizeof t, "# a comment\n%s\n", tok);
+    snprintf(want, sizeof want, "x.cfg:2: expected 'key = value', got '%.40s...'", tok);
+    expect_config_message(t, want);
+    memset(tok, '7', 300);
+    tok[1] = '\t';
+    snprintf(t, sizeof t, "seed = %s\n", tok);
+    snprintf(want, sizeof want, "x.cfg:1: seed = '7\\t%.38s...': expected an integer in [0, 18446744073709551615]", tok + 2);
+    expect_config_message(t, want);
+}
+
 /* every slot after a generation holds its old member or one of the two offspring of its pair,
  * and an offspring only ever replaces a worse member */
 static void test_crowding_rule(void)
@@ -369,6 +408,43 @@ static void test_checkpoint_members_checked(void)
           "version 3: %s", err);
 }
 
+/* the checkpoint's message for text (sealed with a matching checksum first): exactly want, one
+ * line of printable ASCII */
+static void expect_checkpoint_message(const char* text, const char* want)
+{
+    char err[AM_ERR_MAX] = "";
+    snprintf(g_text2, sizeof g_text2, "%schecksum 0\n", text);
+    reseal(g_text2);
+    CHECK(am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && !strcmp(err, want),
+          "message '%s', want '%s'", err, want);
+    CHECK(printable_line(err), "'%s' is not one line of printable ASCII", err);
+}
+
+/* a bad token in a checkpoint shows cut and escaped (am_quote) */
+static void test_checkpoint_bad_tokens_quoted(void)
+{
+    static char t[1024];
+    char want[AM_ERR_MAX], tok[301];
+    const char* head = "amorph-checkpoint 2\nconfig-begin\nseed = 1\nconfig-end\n";
+    expect_checkpoint_message("amorph-checkpoint \x1b[31m\n",
+                              "ck.txt:1: checkpoint version '\\x1b[31m': this build reads versions 1 to 2");
+    snprintf(t, sizeof t, "%s\x01rng\t1 2\n", head);
+    expect_checkpoint_message(t, "ck.txt:5: unexpected line '\\x01rng\\t1'");
+    /* the configuration inside goes through the configuration's reader */
+    expect_checkpoint_message("amorph-checkpoint 2\nconfig-begin\nseed = \x7f\nconfig-end\n",
+                              "ck.txt:1: seed = '\\x7f': expected an integer in [0, 18446744073709551615] "
+                              "(checkpoint configuration, after line 2)");
+    /* 300-character tokens: their first 40 characters and "..." */
+    memset(tok, 'v', 300);
+    tok[300] = 0;
+    snprintf(t, sizeof t, "amorph-checkpoint %s\n", tok);
+    snprintf(want, sizeof want, "ck.txt:1: checkpoint version '%.40s...': this build reads versions 1 to 2", tok);
+    expect_checkpoint_message(t, want);
+    snprintf(t, sizeof t, "%s%s 1\n", head, tok);
+    snprintf(want, sizeof want, "ck.txt:5: unexpected line '%.40s...'", tok);
+    expect_checkpoint_message(t, want);
+}
+
 /* evals.csv's view of a run: every evaluation once, in index order */
 typedef struct seen_evals {
     long next;                /* the index expected next */
@@ -473,6 +549,7 @@ int main(int argc, char** argv)
     RUN(test_config_defaults_are_the_seed);
     RUN(test_config_set_and_errors);
     RUN(test_config_text_round_trip);
+    RUN(test_config_bad_tokens_quoted);
     RUN(test_log_row);
     RUN(test_crowding_rule);
     RUN(test_workers_give_identical_runs);
@@ -480,6 +557,7 @@ int main(int argc, char** argv)
     RUN(test_checkpoint_damage_is_refused);
     RUN(test_cancel_leaves_the_run_unchanged);
     RUN(test_checkpoint_members_checked);
+    RUN(test_checkpoint_bad_tokens_quoted);
     RUN(test_evaluations_are_reported);
     return SUMMARY();
 }

@@ -471,6 +471,40 @@ static void test_format_errors(void)
     CHECK(am_lattice_format(&lat_a, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
 }
 
+/* parse t; the message must be exactly want, one line of printable ASCII */
+static void expect_message(const char* t, const char* want)
+{
+    char err[AM_ERR_MAX] = "";
+    am_status st = am_lattice_parse(&lat_a, t, "t.lattice", err, sizeof err);
+    CHECK(st != AM_OK && !strcmp(err, want), "message '%s', want '%s'", err, want);
+    CHECK(printable_line(err), "'%s' is not one line of printable ASCII", err);
+}
+
+/* a bad token shows cut and escaped (am_quote): control bytes never reach the message */
+static void test_bad_tokens_quoted(void)
+{
+    static char t[1024], want[AM_ERR_MAX];
+    char tok[301];
+    expect_message(HDR "\x1b[31mred 1\n",
+                   "t.lattice:2: unknown keyword '\\x1b[31mred' (expected size, voxel_size, material or layer)");
+    expect_message("\x01" "amorph-lattice 1\n",
+                   "t.lattice:1: not a lattice file: expected the header 'amorph-lattice 1', found '\\x01amorph-lattice'");
+    expect_message(HDR "material m E=\x01\x7f\n", "t.lattice:2: material 'm': E: '\\x01\\x7f' is not a finite number");
+    expect_message(HDR "voxel_size 1'\\\n", "t.lattice:2: voxel_size: '1\\'\\\\' is not a finite number");
+    expect_message(HDR "size 3 2 2\nlayer 0\n1.. \x1b\n",
+                   "t.lattice:4: layer 0 row 0: unexpected '\\x1b' after the row (a row is 3 characters, no blanks)");
+    /* a 300-character token: its first 40 characters and "..." */
+    memset(tok, 'k', 300);
+    tok[300] = 0;
+    snprintf(t, sizeof t, HDR "%s 1\n", tok);
+    snprintf(want, sizeof want, "t.lattice:2: unknown keyword '%.40s...' (expected size, voxel_size, material or layer)", tok);
+    expect_message(t, want);
+    tok[0] = '\x01';
+    snprintf(t, sizeof t, HDR "material m color=%s\n", tok);
+    snprintf(want, sizeof want, "t.lattice:2: material 'm': bad color '\\x01%.39s...' (expected #rrggbb or #rrggbbaa)", tok + 1);
+    expect_message(t, want);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -484,5 +518,6 @@ int main(int argc, char** argv)
     RUN(test_long_lines);
     RUN(test_truncation_and_noise);
     RUN(test_format_errors);
+    RUN(test_bad_tokens_quoted);
     return SUMMARY();
 }

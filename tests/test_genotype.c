@@ -698,6 +698,48 @@ static void expect_parse_error(const char* text, am_status want, const char* whe
     CHECK(!strchr(err, '\n'), "message on more than one line");
 }
 
+/* parse text; the message must be exactly want, one line of printable ASCII */
+static void expect_parse_message(const char* text, const char* want)
+{
+    char err[AM_ERR_MAX] = "";
+    am_status st = am_genome_parse(&gb, text, "f.genome", err, sizeof err);
+    CHECK(st != AM_OK && !strcmp(err, want), "message '%s', want '%s'", err, want);
+    CHECK(printable_line(err), "'%s' is not one line of printable ASCII", err);
+}
+
+/* a bad token shows cut and escaped (am_quote), in the header and in each representation's lines */
+static void test_parse_bad_tokens_quoted(void)
+{
+    static char t[2048], want[AM_ERR_MAX];
+    char tok[301];
+    expect_parse_message("\x01" "amorph-genome 1\n",
+                         "f.genome:1: not a genome: expected 'amorph-genome 1', found '\\x01amorph-genome'");
+    expect_parse_message("amorph-genome 1\nrepr \x1b[31mdct\n",
+                         "f.genome:2: unknown representation '\\x1b[31mdct' (dct, cppn, gmx)");
+    expect_parse_message("amorph-genome 1\nrepr dct\nmaterials a b\nworkspace 8 \x7f 8\n",
+                         "f.genome:4: workspace side '\\x7f' is not a positive integer");
+    expect_parse_message("amorph-genome 1\nrepr dct\nmaterials a b\nworkspace 8 8 8\ndct 2\namp 0 0 0 0.5 \x7f\x01\n",
+                         "f.genome:6: amplitude '\\x7f\\x01' is not a number in [-1, 1]");
+    expect_parse_message("amorph-genome 1\nrepr gmx\nmaterials a b\nworkspace 8 8 8\ngmx 1\npoint 1 1 1 0.5 2 \x1b\n",
+                         "f.genome:6: material '\\x1b' is not 0..1");
+    expect_parse_message("amorph-genome 1\nrepr cppn\nmaterials a b\nworkspace 8 8 8\ncppn 1 2\nnode 0 0 it's\\ 0 1 1\n",
+                         "f.genome:6: unknown function 'it\\'s\\\\' (sigmoid, gauss, sine, abs, linear)");
+    /* a 300-character token: its first 40 characters and "..." */
+    memset(tok, 'r', 300);
+    tok[300] = 0;
+    snprintf(t, sizeof t, "amorph-genome 1\nrepr %s\n", tok);
+    snprintf(want, sizeof want, "f.genome:2: unknown representation '%.40s...' (dct, cppn, gmx)", tok);
+    expect_parse_message(t, want);
+    tok[0] = '\x01';
+    snprintf(t, sizeof t, "amorph-genome 1\nrepr dct\nmaterials %s b\n", tok);
+    snprintf(want, sizeof want, "f.genome:3: material name '\\x01%.39s...': 1 to %d letters, digits, '_' or '-'", tok + 1,
+             AM_NAME_MAX - 1);
+    expect_parse_message(t, want);
+    snprintf(t, sizeof t, "amorph-genome 1\nrepr dct\nmaterials a b\nworkspace 8 8 8\ndct 2\n%s\n", tok);
+    snprintf(want, sizeof want, "f.genome:6: unknown line '\\x01%.39s...' in a dct genome (expected 'amp' or 'end')", tok + 1);
+    expect_parse_message(t, want);
+}
+
 static void test_parse_errors(void)
 {
     const char* head = "amorph-genome 1\nrepr dct\nmaterials passive active\nworkspace 8 8 8\n";
@@ -840,6 +882,7 @@ int main(int argc, char** argv)
     RUN(test_lattice_palette);
     RUN(test_text_round_trip_is_exact);
     RUN(test_parse_errors);
+    RUN(test_parse_bad_tokens_quoted);
     RUN(test_capacity_is_a_status);
     RUN(test_memory_budget);
     return SUMMARY();

@@ -1,5 +1,6 @@
 /* Tests of the numbers layer: the deterministic elementary functions (src/util_math.c) against
- * libm, and the seeded random stream and hashes (src/util_rng.c).
+ * libm, and the seeded random stream and hashes (src/util_rng.c); and of the text buffer
+ * (src/util_text.c) and the quoting of input in messages (am_quote, src/util_status.c).
  *
  * Tolerances, in units in the last place of am_real at the libm (double) reference value:
  *   float build:  1 ulp for every function (they compute in double and round once);
@@ -506,6 +507,56 @@ static void test_text_buffer_and_stream(void)
     CHECK(n.done + n.len == 13 && !n.full, "counted %ld", n.done + n.len);
 }
 
+/* am_quote: the one way a token of input shows in a message */
+static void test_quote(void)
+{
+    char q[AM_QUOTE_BUF], in[400], want[AM_QUOTE_BUF];
+    /* printable ASCII as itself, blanks and double quotes too */
+    CHECK(!strcmp(am_quote(q, sizeof q, "size 3\"x\"", -1), "size 3\"x\""), "'%s'", q);
+    /* control bytes, DEL and bytes from 0x80 up escaped; backslash and single quote too */
+    CHECK(!strcmp(am_quote(q, sizeof q, "\x1b[31m", -1), "\\x1b[31m"), "'%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "a\nb\tc\rd", -1), "a\\nb\\tc\\rd"), "'%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "\x01\x1f\x7f\x80\xff", -1), "\\x01\\x1f\\x7f\\x80\\xff"), "'%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "\xc3\xa9", -1), "\\xc3\\xa9"), "UTF-8: '%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "it's a\\b", -1), "it\\'s a\\\\b"), "'%s'", q);
+    CHECK(printable_line(am_quote(q, sizeof q, "\x01\x02\n\x7f", -1)), "'%s' is not printable", q);
+    /* n bytes: a NUL inside is a byte like any other; a shorter n stops early */
+    CHECK(!strcmp(am_quote(q, sizeof q, "ab\0c", 4), "ab\\x00c"), "'%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "abcdef", 3), "abc"), "'%s'", q);
+    /* the empty token, and none, show as nothing */
+    CHECK(am_quote(q, sizeof q, "", -1) == q && q[0] == 0, "empty: '%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, "abc", 0), ""), "n = 0: '%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, NULL, 5), ""), "NULL: '%s'", q);
+    /* cut after exactly AM_QUOTE_MAX (40) bytes, marked by "..." only when something was cut */
+    CHECK(AM_QUOTE_MAX == 40, "AM_QUOTE_MAX %d", AM_QUOTE_MAX);
+    memset(in, 'x', sizeof in);
+    in[40] = 0;
+    CHECK(!strcmp(am_quote(q, sizeof q, in, -1), in) && strlen(q) == 40, "40 bytes: '%s'", q);
+    in[40] = 'y';
+    in[41] = 0;
+    memset(want, 'x', 40);
+    strcpy(want + 40, "...");
+    CHECK(!strcmp(am_quote(q, sizeof q, in, -1), want), "41 bytes: '%s'", q);
+    CHECK(!strcmp(am_quote(q, sizeof q, in, 300), want), "300 bytes: '%s'", q);
+    in[41] = 'x';
+    in[300] = 0;
+    CHECK(!strcmp(am_quote(q, sizeof q, in, -1), want), "300 bytes to a NUL: '%s'", q);
+    /* the longest result, 40 escapes and the marker, fits AM_QUOTE_BUF exactly */
+    memset(in, 0x01, 41);
+    in[41] = 0;
+    am_quote(q, sizeof q, in, -1);
+    CHECK(strlen(q) == AM_QUOTE_BUF - 1 && !strncmp(q, "\\x01\\x01", 8) && !strcmp(q + 160, "..."), "%d bytes: '%s'",
+          (int)strlen(q), q);
+    /* a smaller buffer: whole escapes, then "..." when it fits; never a byte past cap */
+    char s8[12];
+    memset(s8, '#', sizeof s8);
+    CHECK(!strcmp(am_quote(s8, 10, "abcdefghijklmnop", -1), "abcdef...") && s8[10] == '#', "cap 10: '%s'", s8);
+    CHECK(!strcmp(am_quote(s8, 10, "abcdefghi", -1), "abcdefghi"), "cap 10, 9 bytes: '%s'", s8);
+    CHECK(!strcmp(am_quote(s8, 10, "ab\x01\x02", -1), "ab\\x01..."), "cap 10, escapes: '%s'", s8);
+    CHECK(!strcmp(am_quote(s8, 1, "abc", -1), "") && !strcmp(am_quote(NULL, 5, "abc", -1), "") &&
+              !strcmp(am_quote(s8, 0, "abc", -1), ""), "no room");
+}
+
 static void test_hash(void)
 {
     /* FNV-1a 64 of "a" (the published test vector) */
@@ -550,5 +601,6 @@ int main(int argc, char** argv)
     RUN(test_rng_unit_normal);
     RUN(test_hash);
     RUN(test_text_buffer_and_stream);
+    RUN(test_quote);
     return SUMMARY();
 }

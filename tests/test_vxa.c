@@ -452,7 +452,7 @@ static void test_vxa_errors(void)
     expect_vxa(vxa(0, MAT("<CTE>nan</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'nan' is not a finite number");
     expect_vxa(vxa(0, MAT("<CTE></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '' is not a finite number");
     /* a quoted value keeps the message on one line */
-    expect_vxa(vxa(0, MAT("<CTE><![CDATA[1\n2]]></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '1 2' is not a finite number");
+    expect_vxa(vxa(0, MAT("<CTE><![CDATA[1\n2]]></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '1\\n2' is not a finite number");
     expect_vxa(vxa(0, MAT("<Density>1e999</Density>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <Density>: '1e999' is not a finite number");
     expect_vxa(vxa(0, "<Material><Display><Red>1.5</Red></Display></Material>", 0, 0), AM_ERR_RANGE, "t.vxa:5: <Red> 1.5 must be in [0, 1]");
     expect_vxa(vxa(0, MAT("<CTE>1</CTE><CTE>2</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE> given twice in <Mechanical> (first on line 5)");
@@ -486,6 +486,42 @@ static void test_vxa_errors(void)
     char longv[4200];
     snprintf(longv, sizeof longv, "<Material><Name>%s</Name></Material>", mats);
     expect_vxa(vxa(0, longv, 0, 0), AM_ERR_CAPACITY, "t.vxa:5: <Name>: its text is longer than 255 bytes");
+}
+
+/* a bad name or value shows cut and escaped (am_quote): one line of printable ASCII */
+static void test_vxa_bad_tokens_quoted(void)
+{
+    static char t[2048];
+    char err[AM_ERR_MAX], want[AM_ERR_MAX], tok[301];
+    /* a newline (CDATA), DEL and UTF-8 in a value */
+    expect_vxa(vxa(0, MAT("<CTE><![CDATA[1\n2\x7f\xc3\xa9]]></CTE>"), 0, 0), AM_ERR_PARSE,
+               "t.vxa:5: <CTE>: '1\\n2\\x7f\\xc3\\xa9' is not a finite number");
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, vxa(0, MAT("<CTE><![CDATA[1\n2\x7f]]></CTE>"), 0, 0), "t.vxa", err, sizeof err) ==
+                  AM_ERR_PARSE && printable_line(err), "'%s' is not one line of printable ASCII", err);
+    /* character references to a tab and a single quote */
+    expect_vxa(vxa("<Amorph Version=\"1\"><CTEMode>lin&#9;ear&apos;</CTEMode></Amorph>", 0, 0, 0), AM_ERR_PARSE,
+               "t.vxa:2: <CTEMode>: 'lin\\tear\\'' is not volumetric or linear");
+    expect_vxa(vxa("<Amorph Version=\"&#127;[31m\"/>", 0, 0, 0), AM_ERR_PARSE,
+               "t.vxa:2: <Amorph Version=\"\\x7f[31m\">: this build reads version 1");
+    /* element names: bytes from 0x80 up escaped */
+    expect_vxa("<R\xc3\xa9" "bot/>", AM_ERR_PARSE,
+               "t.vxa:1: not a VXA file: the root element is <R\\xc3\\xa9bot>, expected <VXA>");
+    /* long values and names: their first 40 bytes and "..." */
+    memset(tok, 'x', 300);
+    tok[300] = 0;
+    snprintf(t, sizeof t, "<Material><Mechanical><CTE>x&#10;%.250s</CTE></Mechanical></Material>", tok);
+    snprintf(want, sizeof want, "t.vxa:5: <CTE>: 'x\\n%.38s...' is not a finite number", tok);
+    expect_vxa(vxa(0, t, 0, 0), AM_ERR_PARSE, want);
+    snprintf(t, sizeof t, "<VXA><\xc3\xa9%.200s/><VXC/></VXA>", tok);
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "t.vxa", err, sizeof err) == AM_ERR_PARSE, "%s", err);
+    snprintf(want, sizeof want, "t.vxa:1: warning: unsupported tag <\\xc3\\xa9%.38s...> ignored\n", tok);
+    CHECK(!strcmp(info_a.warning, want), "warning '%s', want '%s'", info_a.warning, want);
+    snprintf(t, sizeof t, "<a>\n<%s/></a>", tok);
+    snprintf(want, sizeof want, "t.xml:2: element name '%.40s...' longer than 255 bytes", tok);
+    expect_xml(t, AM_ERR_CAPACITY, want);
+    snprintf(t, sizeof t, "<a %s=\"1\"/>", tok);
+    snprintf(want, sizeof want, "t.xml:1: attribute name '%.40s...' longer than 255 bytes", tok);
+    expect_xml(t, AM_ERR_CAPACITY, want);
 }
 
 static void test_vxa_format_errors(void)
@@ -614,6 +650,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_voxcad_conventions);
     RUN(test_vxa_warnings);
     RUN(test_vxa_errors);
+    RUN(test_vxa_bad_tokens_quoted);
     RUN(test_vxa_format_errors);
     return SUMMARY();
 }

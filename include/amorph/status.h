@@ -1,5 +1,6 @@
 /* amorph/status.h: status codes. Functions that can fail return am_status and write a one-line,
- * human-readable message (for files: "file:line: problem") into a caller's buffer. */
+ * human-readable message (for files: "file:line: problem") into a caller's buffer; a piece of input
+ * in a message goes through am_quote (below). */
 #ifndef AMORPH_STATUS_H
 #define AMORPH_STATUS_H
 
@@ -39,5 +40,23 @@ am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, in
     __attribute__((format(printf, 6, 7)))
 #endif
     ;
+
+/* ---- input quoted in messages ----
+ * am_quote writes the input token s (its first n bytes; n < 0: up to its NUL; NULL: empty) into
+ * out (capacity cap) the one way every reader quotes input in a message, "... '%s' ...":
+ *   - at most AM_QUOTE_MAX (40) bytes of s are shown; when s is longer, "..." follows them;
+ *   - printable ASCII (0x20..0x7e) stands for itself, except a backslash, written \\, and a single
+ *     quote, written \';
+ *   - newline, tab and carriage return are written \n, \t and \r; every other byte below 0x20,
+ *     0x7f (DEL) and every byte from 0x80 up (so UTF-8 too) is written \xNN, two lowercase hex
+ *     digits;
+ * so the result is one line of printable ASCII whatever the input (the bytes ESC [ 3 1 m show as
+ * \x1b[31m, the empty token as nothing). A cap of AM_QUOTE_BUF always holds the whole result; a
+ * smaller cap holds whole escapes up to what fits, then "..." when that fits too. out is always
+ * NUL-terminated (when cap >= 1). Returns out, or "" when out is NULL or cap < 1, for use as a
+ * printf argument. */
+#define AM_QUOTE_MAX 40
+#define AM_QUOTE_BUF (4 * AM_QUOTE_MAX + 4) /* 40 escapes of 4 characters, "...", the NUL */
+const char* am_quote(char* out, int cap, const char* s, long n);
 
 #endif
