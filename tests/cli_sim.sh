@@ -232,4 +232,16 @@ expect_ok "$AMORPH" evolve --print-config --repr dct --size 4 --relax-max 3000 -
 check "evolve: --repr/--size/--relax-max/--dt-search are aliases: $(grep -E '^(representation|workspace|relax_max_steps|dt_search) ' "$TMPD/out" | tr '\n' ' ')" \
     [ "$(grep -cxE 'representation = dct|workspace = 4|relax_max_steps = 3000|dt_search = on' "$TMPD/out")" = 4 ]
 
+# tokens in the commands' messages are quoted as the readers quote them (am_quote): control bytes
+# escaped, cut at 40 characters with "..."
+long=$(printf 'x%.0s' $(seq 1 300))
+for cmd in sim render view export random express evolve experiment plot bench repro; do
+    "$AMORPH" $cmd "--bo$(printf '\033')[31mgus" >/dev/null 2>"$TMPD/err"
+    check "$cmd: an escape byte in an unknown option is escaped: $(od -c "$TMPD/err" | head -3)" grep -q "unknown option '--bo\\\\x1b\[31mgus'" "$TMPD/err"
+    check "$cmd: no raw control byte in the message" sh -c "! LC_ALL=C grep -q '[[:cntrl:]]' \"\$1\"" _ "$(tr -d '\n' <"$TMPD/err" >"$TMPD/err1"; echo "$TMPD/err1")"
+done
+expect_fail 2 "^amorph: sim: unknown option '--x{38}\.\.\.' \(amorph sim --help\)$" "$AMORPH" sim "--$long"
+expect_fail 2 "^amorph: sim: one robot at a time \('a' and 'b\\\\tc'\)$" "$AMORPH" sim a "$(printf 'b\tc')"
+expect_fail 2 "^amorph: unknown command 'x{40}\.\.\.' " "$AMORPH" "$long"
+
 summary cli_sim

@@ -18,6 +18,12 @@ int tool_usage_error(const char* fmt, ...)
     return 2;
 }
 
+int tool_unknown_option(const char* cmd, const char* arg)
+{
+    char q[AM_QUOTE_BUF];
+    return tool_usage_error("%s: unknown option '%s' (amorph %s --help)", cmd, am_quote(q, sizeof q, arg, -1), cmd);
+}
+
 int tool_not_in_build(const char* what, const char* feature)
 {
     return tool_usage_error("%s: not in this build: %s belong to the desktop profile (make PROFILE=desktop)", what, feature);

@@ -69,6 +69,10 @@ int tool_usage_error(const char* fmt, ...)
 #endif
     ;
 
+/* "amorph: CMD: unknown option 'ARG' (amorph CMD --help)", ARG quoted as every reader quotes
+ * input (am_quote); returns 2 */
+int tool_unknown_option(const char* cmd, const char* arg);
+
 /* ---- results as key = value lines or one JSON object (tools/record.c) ---- */
 
 /* in as the contents of a JSON string: quotes, backslashes and control bytes escaped, cut to cap */

@@ -269,7 +269,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--evals")) {
             if (!tool_parse_long(v, 2, 1000000, &n)) return tool_usage_error("bench: --evals needs a whole number >= 2");
             evolve_evals = n, i++;
-        } else return tool_usage_error("bench: unknown option '%s' (amorph bench --help)", a);
+        } else return tool_unknown_option("bench", a);
     }
     if (kernels) {
 #if defined(AM_PROFILE_BOARD)

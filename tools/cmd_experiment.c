@@ -164,7 +164,7 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
         } else {
             int r = parse_common(argc, argv, &i, &o, "experiment");
             if (r == 2) return 2;
-            if (r == 0) return tool_usage_error("experiment: unknown option '%s' (amorph experiment --help)", a);
+            if (r == 0) return tool_unknown_option("experiment", a);
         }
     }
     if (o.resume) return tool_usage_error("experiment: run the same command with the same --out again to resume");
@@ -173,7 +173,11 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
     const experiment* x = NULL;
     for (int k = 0; k < EXPERIMENTS; k++)
         if (!strcmp(experiments[k].name, name)) x = &experiments[k];
-    if (!x) return tool_usage_error("experiment: unknown experiment '%s' (representations, three-materials, dynamic, friction)", name);
+    if (!x) {
+        char q[AM_QUOTE_BUF];
+        return tool_usage_error("experiment: unknown experiment '%s' (representations, three-materials, dynamic, friction)",
+                                am_quote(q, sizeof q, name, -1));
+    }
     am_evo_def base;
     if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
     if (evals) base.evaluations = evals;

@@ -405,7 +405,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
             if (!v) return tool_usage_error("plot: --title needs a text");
             title = v, i++;
         } else if (a[0] == '-' && a[1]) {
-            return tool_usage_error("plot: unknown option '%s' (amorph plot --help)", a);
+            return tool_unknown_option("plot", a);
         } else {
             if (nd >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d folders", PLOT_MAX_RUNS);
             dirs[nd++] = argv[i];

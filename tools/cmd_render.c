@@ -320,7 +320,7 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
         } else {
             int r = tool_robot_arg("render", argc, argv, &i, &ra);
             if (r == 2) return 2;
-            if (r == 0) return tool_usage_error("render: unknown option '%s' (amorph render --help)", a);
+            if (r == 0) return tool_unknown_option("render", a);
         }
     }
     if (!ra.name) return tool_usage_error("render: name a robot file, a run folder or --scene NAME (amorph render --help)");

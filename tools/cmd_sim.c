@@ -76,7 +76,7 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
         }
         int r = tool_robot_arg("sim", argc, argv, &i, &ra);
         if (r == 2) return 2;
-        if (r == 0) return tool_usage_error("sim: unknown option '%s' (amorph sim --help)", a);
+        if (r == 0) return tool_unknown_option("sim", a);
     }
     if (!ra.name) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
 

@@ -49,5 +49,6 @@ int main(int argc, char** argv)
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(&ctx, argc - 1, argv + 1);
-    return tool_usage_error("unknown command '%s' (amorph --help lists them)", argv[1]);
+    char q[AM_QUOTE_BUF];
+    return tool_usage_error("unknown command '%s' (amorph --help lists them)", am_quote(q, sizeof q, argv[1], -1));
 }

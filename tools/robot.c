@@ -52,13 +52,20 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
     return 1;
 }
 
+static int two_robots(const char* cmd, const char* one, const char* two)
+{
+    char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
+    return tool_usage_error("%s: one robot at a time ('%s' and '%s')", cmd, am_quote(q1, sizeof q1, one, -1),
+                            am_quote(q2, sizeof q2, two, -1));
+}
+
 int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_args* a)
 {
     const char* arg = argv[*i];
     const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
     if (!strcmp(arg, "--scene")) {
         if (!v) return tool_usage_error("%s: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)", cmd);
-        if (a->name) return tool_usage_error("%s: one robot at a time ('%s' and '%s')", cmd, a->name, v);
+        if (a->name) return two_robots(cmd, a->name, v);
         a->name = v, a->is_scene = 1, (*i)++;
         return 1;
     }
@@ -68,7 +75,7 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
         return 1;
     }
     if (arg[0] != '-' || !arg[1]) {
-        if (a->name) return tool_usage_error("%s: one robot at a time ('%s' and '%s')", cmd, a->name, arg);
+        if (a->name) return two_robots(cmd, a->name, arg);
         a->name = arg;
         return 1;
     }
