@@ -253,6 +253,35 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
 /* the log.csv header line (no newline) and one row for s; returns the characters written */
 const char* am_evo_log_header(void);
 int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
+
+/* log.csv read back line by line (a file streamed through a small buffer, or held whole): begin,
+ * one call per line, end. The header is the first line that is not blank; the reader finds its
+ * columns there by name, so a log with its columns in another order, or with columns it does not
+ * know, still reads. generation, evaluations and best are required; mean, median, diverged,
+ * empty and wall_s fill their fields when the header has them, else they are left NAN (mean,
+ * median, wall_s) or -1 (diverged, empty). Blank lines are skipped and a CR before the newline is
+ * dropped. Messages are "fname:line: problem": a header without a required column (or naming one
+ * twice), a row without as many fields as the header, a field that is not a finite number (or, for
+ * generation, evaluations, diverged and empty, not a whole number from 0). */
+#define AM_EVO_LOG_COLUMNS 8          /* the columns of am_evo_log_header */
+typedef struct am_evo_log_reader {
+    const char* fname;                /* for messages; must stay valid while reading */
+    int line;                         /* lines read */
+    int header;                       /* 1 once the header was read */
+    int columns;                      /* columns the header names */
+    int col[AM_EVO_LOG_COLUMNS];      /* the column (from 0) of each name of am_evo_log_header, in
+                                       * its order; -1 when the header has none */
+    long rows;                        /* rows read */
+    am_status st;                     /* the first failure: every later call returns it */
+} am_evo_log_reader;
+void am_evo_log_read_begin(am_evo_log_reader* r, const char* fname);
+/* one line of n characters without its newline (nothing past them is read): a row is parsed into
+ * *row and *is_row set to 1; the header and blank lines set *is_row to 0 and leave *row alone
+ * (is_row may be NULL: r->rows counts the rows) */
+am_status am_evo_log_read_line(am_evo_log_reader* r, const char* text, long n, am_evo_stats* row, int* is_row, char* err,
+                               int errsz);
+/* after the last line: AM_OK when the header was read (a log may have no rows yet) */
+am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
 /* the evals.csv header line of a run with `materials` materials (no newline), and one row for an
  * evaluation; both return the characters written (cut to cap - 1). docs/evolve.md gives the
  * columns. AM_EVO_EVALS_ROW_MAX: a capacity every header and row fits. */
