@@ -283,6 +283,12 @@ if [ "$m" = "$got" ]; then ok; else ko "gmx mean/stderr at 12 evaluations: want 
 before=$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)
 expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp" --quiet
 if [ "$(cat "$TMPD"/exp/*/log.csv | cut -d, -f1-7 | cksum)" = "$before" ]; then ok; else ko "re-running a finished experiment changed it"; fi
+# a damaged row in a run's log is refused with its file and line (the library's log reader), not
+# taken for the end of the log (which made a shorter table)
+cp -r "$TMPD/exp" "$TMPD/expbad"
+sed -i '3s/^\([0-9]*,[0-9]*\),[^,]*,/\1,zero,/' "$TMPD/expbad/gmx-1/log.csv"
+expect_fail 2 "gmx-1/log.csv:3: best \\(column 3\\): not a number: 'zero'" \
+    "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/expbad" --quiet
 # an experiment interrupted in its first run (Ctrl-C at evaluation 9) and run again ends the same
 env AMORPH_TEST_INTERRUPT=INT:9 "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp2" --quiet \
     >"$TMPD/out" 2>"$TMPD/err"; rc=$?

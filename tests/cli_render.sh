@@ -73,6 +73,13 @@ check "plot: legend" grep -q '>dct, 3 runs<' "$TMPD/exp.svg"
 check "plot: legend" grep -q '>gmx, 3 runs<' "$TMPD/exp.svg"
 check "plot: title" grep -q '>representations</text>' "$TMPD/exp.svg"
 check "plot: unbalanced tags" [ "$(grep -c '<svg' "$TMPD/exp.svg")" -eq 1 ] && tail -n 1 "$TMPD/exp.svg" | grep -q '^</svg>$'
+# the log is read by column name (the library's reader): reordered columns, one it does not know,
+# and CRLF line ends give the same line
+mkdir -p "$TMPD/reordered/plot-run"
+awk -F, 'BEGIN { OFS = "," } { printf "%s,%s,%s,%s,%s\r\n", $8, (NR == 1 ? "note" : "n" NR), $3, $2, $1 }' \
+    tests/data/plot-run/log.csv >"$TMPD/reordered/plot-run/log.csv"
+expect_ok "$AMORPH" plot "$TMPD/reordered/plot-run" --out "$TMPD/reordered.svg"
+check "plot: a log with reordered columns and CRLF line ends plots differently" cmp -s "$TMPD/one.svg" "$TMPD/reordered.svg"
 
 # bad input: exit 2 (bad files and flags) or 1 (cannot write), one line, no output left behind
 expect_fail 2 "no-such-robot" "$AMORPH" render "$TMPD/no-such-robot.lattice" --out "$TMPD/x.png"
@@ -92,9 +99,11 @@ mkdir -p "$TMPD/notrun"
 expect_fail 2 "neither a run folder" "$AMORPH" plot "$TMPD/notrun" --out "$TMPD/x.svg"
 mkdir -p "$TMPD/badrun"
 printf 'generation,evaluations,best\n0,20,0.001\n1,40,zero\n' >"$TMPD/badrun/log.csv"
-expect_fail 2 "badrun/log.csv:3: column 3 is not a number" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
+expect_fail 2 "badrun/log.csv:3: best \\(column 3\\): not a number: 'zero'" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
+printf 'generation,evaluations,best\n0,20,0.001\n1,40\n' >"$TMPD/badrun/log.csv"
+expect_fail 2 "badrun/log.csv:3: 2 fields, the header has 3 columns" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
 printf 'generation,evals,fitness\n0,20,0.001\n' >"$TMPD/badrun/log.csv"
-expect_fail 2 "log.csv:1: the header" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
+expect_fail 2 "log.csv:1: not a log.csv header: no 'evaluations' column" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
 check "failed commands left an output file" [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.html" ] && [ ! -e "$TMPD/x.svg" ]
 # unwritable outputs: a folder that does not exist, a file in place of a folder; an older file stays whole
 expect_fail 1 "nodir" "$AMORPH" render "$W" $QUICK --out "$TMPD/nodir/x.png"

@@ -68,28 +68,53 @@ static int apply_settings(am_evo_def* d, const char* settings)
     return 0;
 }
 
-/* reads the best-fitness column of dir/log.csv: evals[i] (when evals is not NULL), best[i] for up
- * to cap rows after the header; the rows read, -1 when the file cannot be read */
+/* the rows read_log keeps: evaluations (when evals is not NULL) and best of the first cap rows */
+typedef struct log_rows {
+    am_evo_log_reader rd;
+    long* evals;
+    double* best;
+    int cap, n;
+} log_rows;
+
+static am_status log_rows_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    log_rows* lr = (log_rows*)ctx;
+    am_evo_stats row;
+    int is_row = 0;
+    (void)lineno;
+    am_status st = am_evo_log_read_line(&lr->rd, line, n, &row, &is_row, err, errsz);
+    if (st == AM_OK && is_row && lr->n < lr->cap) {
+        if (lr->evals) lr->evals[lr->n] = row.evaluations;
+        lr->best[lr->n++] = row.best;
+    }
+    return st;
+}
+
+/* reads the best-fitness column of dir/log.csv (the library's reader, am_evo_log_read_line):
+ * evals[i] (when evals is not NULL), best[i] for up to cap rows after the header; the rows read,
+ * or -1 after a one-line message (a file that cannot be read, a damaged log) */
 static TOOL_NOINLINE int read_log(const char* dir, long* evals, double* best, int cap)
 {
-    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
-    long len;
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, "log.csv");
+    log_rows lr;
+    memset(&lr, 0, sizeof lr);
+    lr.evals = evals;
+    lr.best = best;
+    lr.cap = cap;
+    am_evo_log_read_begin(&lr.rd, path);
     tool_src src;
-    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return -1;
-    int n = 0;
-    /* the header must end with a newline; every row after it until one does not read */
-    if (tool_src_next(&src, &line, &len, err, sizeof err) == 1 && src.newline)
-        while (n < cap && tool_src_next(&src, &line, &len, err, sizeof err) == 1) {
-            long g, e;
-            double b;
-            if (sscanf(line, "%ld,%ld,%lf", &g, &e, &b) != 3) break;
-            if (evals) evals[n] = e;
-            best[n] = b;
-            n++;
-        }
-    tool_src_close(&src);
-    return n;
+    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err);
+    if (st == AM_OK) {
+        st = tool_src_each(&src, log_rows_line, &lr, err, sizeof err);
+        if (st == AM_OK) st = am_evo_log_read_end(&lr.rd, err, sizeof err);
+        tool_src_close(&src);
+    }
+    if (st != AM_OK) {
+        tool_usage_error("%s", err);
+        return -1;
+    }
+    return lr.n;
 }
 
 /* the table: evaluations of each row (from the last run read), one run's best fitness, and per
@@ -247,7 +272,8 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
             if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k) >= (int)sizeof rdir)
                 return tool_usage_error("experiment: folder name too long");
             int n = read_log(rdir, g_exp_evals, g_exp_tmp, EXP_ROWS);
-            if (n <= 0) return tool_usage_error("%s/log.csv: no rows", rdir);
+            if (n < 0) return 2;
+            if (n == 0) return tool_usage_error("%s/log.csv: no rows", rdir);
             if (n < rows) rows = n;
         }
     double mean_at[6][8], se_at[6][8];
@@ -269,9 +295,10 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
                 for (long k = 1; k <= runs; k++) {
                     char rdir[EXP_RUN_DIR_MAX];
                     snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, x->v[v].name, k);
-                    if (read_log(rdir, NULL, g_exp_tmp, rows) < rows) {
+                    int got = read_log(rdir, NULL, g_exp_tmp, rows);
+                    if (got < rows) {
                         tool_out_close(&out, 0);
-                        return tool_usage_error("%s/log.csv: changed while the table was made", rdir);
+                        return got < 0 ? 2 : tool_usage_error("%s/log.csv: changed while the table was made", rdir);
                     }
                     for (int r = 0; r < rows; r++) {
                         if (!pass) g_exp_sum[r] += g_exp_tmp[r];

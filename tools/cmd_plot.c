@@ -54,68 +54,65 @@ static const char* base_name(const char* path, char* buf, int n)
     return buf;
 }
 
-/* reads dir/log.csv into a new run of series `series`; 0 or 2 after a message */
+/* one run being read from its log.csv: the library's reader, and the best fitness so far */
+typedef struct plot_reading {
+    am_evo_log_reader rd;
+    plot_run* r;
+    double best;
+} plot_reading;
+
+/* one line of a log.csv: a row becomes a point (evaluations, best so far) of the run */
+static am_status plot_log_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    plot_reading* pr = (plot_reading*)ctx;
+    plot_run* r = pr->r;
+    am_evo_stats row;
+    int is_row = 0;
+    am_status st = am_evo_log_read_line(&pr->rd, line, n, &row, &is_row, err, errsz);
+    if (st != AM_OK || !is_row) return st;
+    double e = (double)row.evaluations;
+    if (r->n > 0 && e < plot_x[plot_used - 1])
+        return am_fail_at(err, errsz, AM_ERR_PARSE, pr->rd.fname, lineno, "evaluations go backwards (%ld after %.17g)", row.evaluations,
+                          plot_x[plot_used - 1]);
+    if (plot_used >= PLOT_MAX_POINTS) return am_fail(err, errsz, AM_ERR_CAPACITY, "more than %ld rows in all", PLOT_MAX_POINTS);
+    /* the best so far: a generation's best may fall back under crowding */
+    if (row.best > pr->best) pr->best = row.best;
+    plot_x[plot_used] = e;
+    plot_y[plot_used] = pr->best;
+    plot_used++;
+    r->n++;
+    return AM_OK;
+}
+
+/* reads dir/log.csv (the library's reader, am_evo_log_read_line) into a new run of series
+ * `series`; 0 or 2 after a message */
 static int load_run(const char* dir, int series)
 {
     char path[PLOT_PATH_MAX + 16], err[AM_ERR_MAX];
     if (plot_nruns >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d runs", PLOT_MAX_RUNS);
     if (strlen(dir) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dir);
     snprintf(path, sizeof path, "%s/log.csv", dir);
-    tool_src src;
-    if (tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err) != AM_OK) return tool_usage_error("plot: %s", err);
-    /* the header names the columns; evaluations and best are found by name */
-    char* line = (char*)(uintptr_t)tool_src_text(&src); /* its own buffer, free to edit */
-    char* nl = strchr(line, '\n');
-    if (nl) *nl = 0;
-    if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
-    int ce = -1, cb = -1, col = 0;
-    for (char* p = line; p; col++) {
-        char* comma = strchr(p, ',');
-        size_t n = comma ? (size_t)(comma - p) : strlen(p);
-        if (n == 11 && !strncmp(p, "evaluations", n)) ce = col;
-        if (n == 4 && !strncmp(p, "best", n)) cb = col;
-        p = comma ? comma + 1 : NULL;
-    }
-    if (ce < 0 || cb < 0) return tool_usage_error("%s:1: the header has no 'evaluations' and 'best' columns", path);
     plot_run* r = &plot_runs[plot_nruns];
     snprintf(r->dir, sizeof r->dir, "%s", dir);
     base_name(dir, r->name, sizeof r->name);
     r->first = plot_used;
     r->n = 0;
     r->series = series;
-    int lineno = 1;
-    double best = -HUGE_VAL;
-    while (nl) {
-        line = nl + 1;
-        lineno++;
-        nl = strchr(line, '\n');
-        if (nl) *nl = 0;
-        if (nl && nl > line && nl[-1] == '\r') nl[-1] = 0;
-        if (!*line) continue;
-        double e = (double)NAN, b = (double)NAN;
-        col = 0;
-        for (char* p = line; p; col++) {
-            char* comma = strchr(p, ',');
-            if (comma) *comma = 0;
-            if (col == ce || col == cb) {
-                double v;
-                if (!tool_parse_real(p, -1e300, 1e300, &v))
-                    return tool_usage_error("%s:%d: column %d is not a number: '%.40s'", path, lineno, col + 1, p);
-                if (col == ce) e = v;
-                else b = v;
-            }
-            p = comma ? comma + 1 : NULL;
-        }
-        if (e != e || b != b) return tool_usage_error("%s:%d: too few columns", path, lineno);
-        if (r->n > 0 && e < plot_x[plot_used - 1])
-            return tool_usage_error("%s:%d: evaluations go backwards (%.17g after %.17g)", path, lineno, e, plot_x[plot_used - 1]);
-        if (plot_used >= PLOT_MAX_POINTS) return tool_usage_error("plot: more than %ld rows in all", PLOT_MAX_POINTS);
-        /* the best so far: a generation's best may fall back under crowding */
-        if (b > best) best = b;
-        plot_x[plot_used] = e;
-        plot_y[plot_used] = best;
-        plot_used++;
-        r->n++;
+    plot_reading pr;
+    am_evo_log_read_begin(&pr.rd, path);
+    pr.r = r;
+    pr.best = -HUGE_VAL;
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err);
+    if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, sizeof err);
+    if (st == AM_OK) {
+        st = tool_src_each(&src, plot_log_line, &pr, err, sizeof err);
+        if (st == AM_OK) st = am_evo_log_read_end(&pr.rd, err, sizeof err);
+        tool_src_close(&src);
+    }
+    if (st != AM_OK) {
+        plot_used = r->first; /* the points of a run that failed are not kept */
+        return tool_usage_error("plot: %s", err);
     }
     if (r->n == 0) return tool_usage_error("%s: no generations logged yet", path);
     plot_nruns++;
