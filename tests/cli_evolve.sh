@@ -144,6 +144,23 @@ if [ "$(snap "$TMPD/r")" = "$before" ]; then ok; else ko "a refused resume chang
 cp -r "$TMPD/a" "$TMPD/crlf" && sed -i 's/$/\r/' "$TMPD/crlf/checkpoint.txt"
 expect_ok "$AMORPH" evolve --resume "$TMPD/crlf" --quiet --no-pictures
 if [ "$(sumval "$TMPD/crlf" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ]; then ok; else ko "a CRLF checkpoint resumed differently: $(cat "$TMPD/err")"; fi
+# what a kill during an atomic write leaves (NAME.tmp.PID beside the file) is removed by --resume,
+# once the folder is locked and the run accepted; nothing else is touched, and a refused resume
+# removes nothing
+cp -r "$TMPD/a" "$TMPD/stale"
+printf 'checkpoint v2 (partial' >"$TMPD/stale/checkpoint.txt.tmp.12345"
+printf '4,30,0.1' >"$TMPD/stale/log.csv.tmp.7"
+printf 'my notes\n' >"$TMPD/stale/notes.tmp.txt"
+printf 'x\n' >"$TMPD/stale/x.tmp."
+expect_fail 2 "configuration changed: population" "$AMORPH" evolve --resume "$TMPD/stale" --population 8 --quiet
+if [ -f "$TMPD/stale/checkpoint.txt.tmp.12345" ] && [ -f "$TMPD/stale/log.csv.tmp.7" ]; then ok
+else ko "a refused resume removed the temporaries: $(ls "$TMPD/stale" | tr '\n' ' ')"; fi
+expect_ok "$AMORPH" evolve --resume "$TMPD/stale" --quiet --no-pictures
+if [ ! -e "$TMPD/stale/checkpoint.txt.tmp.12345" ] && [ ! -e "$TMPD/stale/log.csv.tmp.7" ]; then ok
+else ko "--resume left stale temporaries: $(ls "$TMPD/stale" | tr '\n' ' ')"; fi
+if [ "$(cat "$TMPD/stale/notes.tmp.txt")" = "my notes" ] && [ "$(cat "$TMPD/stale/x.tmp.")" = "x" ] &&
+   [ "$(sumval "$TMPD/stale" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ]; then ok
+else ko "--resume touched other files or changed the run: $(ls "$TMPD/stale" | tr '\n' ' ')"; fi
 expect_fail 2 "cannot open" "$AMORPH" evolve --resume "$TMPD/nothere" --quiet
 expect_fail 2 "--out does not apply" "$AMORPH" evolve --resume "$TMPD/r" --out "$TMPD/x"
 # a finished run resumed with more evaluations goes on; the result equals a longer run from scratch

@@ -1,7 +1,8 @@
 /* Tests of the POSIX port (port/posix): the parallel map hands every item out exactly once on
  * 1, 2, 3 and 8 workers, with worker ids in range and never two calls at once for one worker id;
  * files are replaced atomically, appended to, and directories made and found; the progress line
- * is silent when stderr is not a terminal. Scratch files go to $BUILD/tests/port_scratch. */
+ * is silent when stderr is not a terminal; the stale temporaries of atomic writes are removed from
+ * a folder, and nothing else. Scratch files go to $BUILD/tests/port_scratch. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph.h"
 #include "harness.h"
@@ -202,6 +203,74 @@ static void test_streams(void)
     CHECK(am_port_open_write(q, &w, err, sizeof err) == AM_ERR_IO && err[0], "open_write into a missing directory");
 }
 
+/* the temporaries a killed writer left (NAME.tmp.DIGITS) are removed from a folder; nothing else
+ * is: other names, this process's own temporary, a folder or a link of that form, a subfolder's */
+static void test_remove_stale(void)
+{
+    char err[AM_ERR_MAX], dir[600], p[700], own[64];
+    if (!scratch[0]) return;
+    snprintf(dir, sizeof dir, "%s/stale-%ld", scratch, (long)getpid());
+    snprintf(own, sizeof own, "mine.txt.tmp.%ld", (long)getpid());
+    static const char* const stale[] = {"checkpoint.txt.tmp.12345", "log.csv.tmp.7", "a.tmp.1.tmp.2"};
+    const char* kept[] = {"notes.tmp.txt", "x.tmp.", ".tmp.5", "a.tmp.12x", "b.tmp", "tmp.3", "log.csv", "c.tmp.-1", own};
+    const int nstale = 3, nkept = (int)(sizeof kept / sizeof kept[0]);
+    /* a folder of this process's own: no file of an earlier run of the test is in it */
+    CHECK(am_port_make_dir(dir, err, sizeof err) == AM_OK, "make_dir %s: %s", dir, err);
+    for (int i = 0; i < nstale; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, stale[i]);
+        CHECK(am_port_append_file(p, "partial", 7, err, sizeof err) == AM_OK, "%s", err);
+    }
+    for (int i = 0; i < nkept; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, kept[i]);
+        CHECK(am_port_append_file(p, "kept", 4, err, sizeof err) == AM_OK, "%s", err);
+    }
+    snprintf(p, sizeof p, "%s/folder.tmp.9", dir);
+    CHECK(am_port_make_dir(p, err, sizeof err) == AM_OK, "%s", err);
+    snprintf(p, sizeof p, "%s/sub", dir);
+    CHECK(am_port_make_dir(p, err, sizeof err) == AM_OK, "%s", err);
+    snprintf(p, sizeof p, "%s/sub/d.tmp.3", dir);
+    CHECK(am_port_append_file(p, "kept", 4, err, sizeof err) == AM_OK, "%s", err);
+    snprintf(p, sizeof p, "%s/link.tmp.5", dir); /* a link to log.csv beside it */
+    CHECK(symlink("log.csv", p) == 0, "symlink %s", p);
+
+    int removed = -1;
+    CHECK(am_port_remove_stale(dir, &removed, err, sizeof err) == AM_OK, "remove_stale: %s", err);
+    CHECK(removed == nstale, "removed %d, want %d", removed, nstale);
+    for (int i = 0; i < nstale; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, stale[i]);
+        CHECK(am_port_exists(p) == 0, "stale temporary %s left", stale[i]);
+    }
+    for (int i = 0; i < nkept; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, kept[i]);
+        CHECK(am_port_exists(p) == 1, "%s removed", kept[i]);
+    }
+    struct stat sb;
+    snprintf(p, sizeof p, "%s/link.tmp.5", dir);
+    CHECK(lstat(p, &sb) == 0 && S_ISLNK(sb.st_mode), "a link named like a temporary was removed");
+    snprintf(p, sizeof p, "%s/folder.tmp.9", dir);
+    CHECK(am_port_exists(p) == 1, "a folder named like a temporary was removed");
+    snprintf(p, sizeof p, "%s/sub/d.tmp.3", dir);
+    CHECK(am_port_exists(p) == 1, "a subfolder's file was removed");
+    /* again: nothing left to remove; removed may be NULL */
+    removed = -1;
+    CHECK(am_port_remove_stale(dir, &removed, err, sizeof err) == AM_OK && removed == 0, "second pass removed %d", removed);
+    CHECK(am_port_remove_stale(dir, NULL, err, sizeof err) == AM_OK, "removed NULL: %s", err);
+    /* a folder that is not there: an error naming it, 0 removed */
+    snprintf(p, sizeof p, "%s/no-such-folder", dir);
+    removed = -1;
+    err[0] = 0;
+    CHECK(am_port_remove_stale(p, &removed, err, sizeof err) == AM_ERR_IO && strstr(err, "no-such-folder") && removed == 0,
+          "a missing folder: %s, %d removed", err, removed);
+    /* the folder goes */
+    static const char* const extra[] = {"link.tmp.5", "sub/d.tmp.3", "folder.tmp.9", "sub"};
+    for (int i = 0; i < nkept + 4; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, i < nkept ? kept[i] : extra[i - nkept]);
+        if (i < nkept + 2) unlink(p);
+        else rmdir(p);
+    }
+    CHECK(rmdir(dir) == 0, "%s: not empty after the test", dir);
+}
+
 static void test_progress_is_silent_off_a_terminal(void)
 {
     char err[AM_ERR_MAX], p[600];
@@ -236,6 +305,7 @@ int main(int argc, char** argv)
     RUN(test_parallel_map_rejects_bad_arguments);
     RUN(test_files);
     RUN(test_streams);
+    RUN(test_remove_stale);
     RUN(test_progress_is_silent_off_a_terminal);
     return SUMMARY();
 }

@@ -342,6 +342,8 @@ int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* cons
     if (am_port_exists(dir) && lock_run(dir)) return 2;
     int rc = resume_load(c, dir, o, extra);
     if (rc == 0) {
+        /* what a kill during a write left: the run's files are whole, their temporaries go */
+        remove_stale(dir);
         run_io io = {dir, quiet, pictures, label};
         rc = run_loop(c, &io);
         if (rc == 0 && pictures) rc = finish_pictures(c, dir);

@@ -85,6 +85,8 @@ int default_out(char* out, size_t cap);
 int start_prepare(tool_ctx* c, const am_evo_def* d, const char* dir);
 /* the folder's lock (one process at a time) */
 int lock_run(const char* dir);
+/* the stale temporaries of atomic writes in dir removed (a warning when one cannot be); no status */
+void remove_stale(const char* dir);
 /* the checkpoint at path read into e */
 int read_checkpoint(const char* path, am_evo* e);
 

@@ -283,6 +283,16 @@ TOOL_NOINLINE int lock_run(const char* dir)
 }
 
 
+/* removes the temporaries that a process killed during an atomic write left in dir (the port's
+ * am_port_remove_stale; the caller holds the folder's lock). One that cannot be removed is only a
+ * warning: it is never read, and the run goes on. */
+TOOL_NOINLINE void remove_stale(const char* dir)
+{
+    char err[AM_ERR_MAX];
+    if (am_port_remove_stale(dir, NULL, err, sizeof err) != AM_OK) fprintf(stderr, "amorph: warning: %s\n", err);
+}
+
+
 /* reads the checkpoint at path into e, in the two passes of the library (the checksum over the
  * bytes, then the lines): 0, or 2 after a message */
 TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)

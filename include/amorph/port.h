@@ -73,6 +73,16 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz);
 am_status am_port_make_dir(const char* path, char* err, int errsz);
 /* 1 when path exists (file or directory), 0 otherwise */
 int am_port_exists(const char* path);
+/* removes the temporaries of atomic replaces (above) that a process left in the folder dir when
+ * it died before renaming them (a kill during a write), and sets *removed (may be NULL) to their
+ * count. The POSIX port's temporaries are path.tmp.PID: it removes the regular files directly in
+ * dir named NAME.tmp.DIGITS (NAME not empty), except this process's own, and touches nothing
+ * else. Call it only while no other process writes files in dir (the caller holds the folder's
+ * lock, am_port_lock). AM_ERR_IO when dir cannot be listed or a temporary cannot be removed (the
+ * others are removed all the same). A port that cannot list a folder returns AM_OK with 0
+ * removed: port/baremetal, whose one temporary per file, path.tmp, is reused and renamed by the
+ * next write of path. */
+am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz);
 
 /* ---- parallel map ---- */
 

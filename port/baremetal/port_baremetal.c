@@ -385,6 +385,18 @@ am_status am_port_make_dir(const char* path, char* err, int errsz)
 #endif
 }
 
+/* ---- stale temporaries: semihosting cannot list a folder ---- */
+
+/* nothing to find and nothing to remove: a temporary here is path.tmp, one per file, which the
+ * next atomic write of path truncates, fills and renames, so none outlives a file that is written
+ * again (a run's checkpoint, rewritten every generation) */
+am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
+{
+    (void)dir, (void)err, (void)errsz;
+    if (removed) *removed = 0;
+    return AM_OK;
+}
+
 /* ---- parallel map: one core, one worker ---- */
 
 int am_port_cores(void)

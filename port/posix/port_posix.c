@@ -1,9 +1,10 @@
-/* POSIX port: clock, console and progress line, files with atomic replace, a parallel map on
- * POSIX threads, Ctrl-C / SIGTERM caught into a flag, and the environment and a signal to
- * itself for tests of interruptions. */
+/* POSIX port: clock, console and progress line, files with atomic replace (and the removal of
+ * the temporaries a killed process left), a parallel map on POSIX threads, Ctrl-C / SIGTERM
+ * caught into a flag, and the environment and a signal to itself for tests of interruptions. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph/port.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -344,6 +345,55 @@ int am_port_exists(const char* path)
 {
     struct stat st;
     return stat(path, &st) == 0;
+}
+
+/* the PID of a temporary's name NAME.tmp.PID (NAME not empty, PID digits: what tmp_name makes),
+ * or NULL for any other name */
+static const char* tmp_pid(const char* name)
+{
+    const char* t = NULL;
+    for (const char* p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p;
+    if (!t || t == name) return NULL;
+    const char* pid = t + 5;
+    return *pid && strspn(pid, "0123456789") == strlen(pid) ? pid : NULL;
+}
+
+am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
+{
+    if (removed) *removed = 0;
+    DIR* d = opendir(dir);
+    if (!d) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
+    char own[32];
+    snprintf(own, sizeof own, "%ld", (long)getpid());
+    am_status st = AM_OK;
+    int n = 0;
+    for (;;) {
+        errno = 0;
+        struct dirent* e = readdir(d);
+        if (!e) {
+            if (errno != 0 && st == AM_OK) st = am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
+            break;
+        }
+        const char* pid = tmp_pid(e->d_name);
+        if (!pid || strcmp(pid, own) == 0) continue; /* not a temporary, or one of this process's writes */
+        char path[4096];
+        int k = snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (k < 0 || (size_t)k >= sizeof path) {
+            if (st == AM_OK) st = am_fail(err, errsz, AM_ERR_IO, "%s/%s: path too long", dir, e->d_name);
+            continue;
+        }
+        /* regular files only: a folder or a link of that name is not ours */
+        struct stat sb;
+        if (lstat(path, &sb) != 0 || !S_ISREG(sb.st_mode)) continue;
+        if (unlink(path) != 0) {
+            if (st == AM_OK) st = am_fail(err, errsz, AM_ERR_IO, "%s: cannot remove a stale temporary: %s", path, strerror(errno));
+            continue;
+        }
+        n++;
+    }
+    closedir(d);
+    if (removed) *removed = n;
+    return st;
 }
 
 /* ---- parallel map ---- */
