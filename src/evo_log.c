@@ -7,7 +7,7 @@
  * where each one it knows stands and skips the others, so it reads a log written by a build that
  * added, dropped (beyond the required three) or reordered columns. A field is copied into a small
  * buffer before it is converted, so a number never runs past its comma, and accepted only when the
- * whole field is consumed and the value is finite.
+ * whole field is consumed and the value is finite; a field a message shows goes through am_quote.
  */
 #include "amorph/evolve.h"
 
@@ -79,7 +79,6 @@ static const char* const log_names[AM_EVO_LOG_COLUMNS] = {"generation", "evaluat
                                                           "median",     "diverged",    "empty", "wall_s"};
 enum { LOG_GENERATION, LOG_EVALUATIONS, LOG_BEST, LOG_MEAN, LOG_MEDIAN, LOG_DIVERGED, LOG_EMPTY, LOG_WALL_S };
 #define LOG_REQUIRED 3
-#define LOG_SHOW 40       /* longest piece of a field quoted in a message */
 #define LOG_FIELD_MAX 64  /* a longer field is not a number this reader takes */
 
 /* "fname:line: problem" for the line being read; it is the reader's status from now on */
@@ -138,15 +137,20 @@ static am_status log_header(am_evo_log_reader* r, const char* s, const char* end
     return AM_OK;
 }
 
+/* "NAME (column C): WHAT: 'FIELD'" for field [s, s + n) of the header's name k in column c */
+static am_status log_bad(am_evo_log_reader* r, int k, int c, const char* what, const char* s, size_t n, char* err, int errsz)
+{
+    char q[AM_QUOTE_BUF];
+    return log_fail(r, err, errsz, "%s (column %d): %s: '%s'", log_names[k], c + 1, what, am_quote(q, (int)sizeof q, s, (long)n));
+}
+
 /* field [s, e) in column c, the header's column of name k: a count into *w (generation,
  * evaluations, diverged, empty) or a finite number into *v */
 static am_status log_field(am_evo_log_reader* r, int k, int c, const char* s, const char* e, double* v, long* w, char* err,
                            int errsz)
 {
-    char buf[LOG_FIELD_MAX];
+    char buf[LOG_FIELD_MAX], what[64];
     size_t n = (size_t)(e - s);
-    int show = n > LOG_SHOW ? LOG_SHOW : (int)n;
-    const char* more = n > LOG_SHOW ? "..." : "";
     if (n == 0) return log_fail(r, err, errsz, "%s (column %d): empty, expected a number", log_names[k], c + 1);
     if (k == LOG_GENERATION || k == LOG_EVALUATIONS || k == LOG_DIVERGED || k == LOG_EMPTY) {
         long hi = k == LOG_DIVERGED || k == LOG_EMPTY ? INT_MAX : LONG_MAX;
@@ -163,22 +167,23 @@ static am_status log_field(am_evo_log_reader* r, int k, int c, const char* s, co
             x = strtol(buf, &end, 10);
             ok = end == buf + n && errno != ERANGE && x <= hi;
         }
-        if (!ok)
-            return log_fail(r, err, errsz, "%s (column %d): not a whole number from 0 to %ld: '%.*s%s'", log_names[k], c + 1, hi,
-                            show, s, more);
+        if (!ok) {
+            snprintf(what, sizeof what, "not a whole number from 0 to %ld", hi);
+            return log_bad(r, k, c, what, s, n, err, errsz);
+        }
         *w = x;
         return AM_OK;
     }
-    if (n >= sizeof buf) return log_fail(r, err, errsz, "%s (column %d): not a number: '%.*s%s'", log_names[k], c + 1, show, s, more);
+    if (n >= sizeof buf) return log_bad(r, k, c, "not a number", s, n, err, errsz);
     memcpy(buf, s, n);
     buf[n] = 0;
     char* end = NULL;
     double x = strtod(buf, &end);
-    if (end != buf + n) return log_fail(r, err, errsz, "%s (column %d): not a number: '%.*s%s'", log_names[k], c + 1, show, s, more);
-    if (!isfinite(x)) return log_fail(r, err, errsz, "%s (column %d): not a finite number: '%.*s%s'", log_names[k], c + 1, show, s, more);
+    if (end != buf + n) return log_bad(r, k, c, "not a number", s, n, err, errsz);
+    if (!isfinite(x)) return log_bad(r, k, c, "not a finite number", s, n, err, errsz);
     /* decimal only: strtod would take hexadecimal too, which no writer of a log makes */
     if (strspn(buf, "0123456789+-.eE") != n)
-        return log_fail(r, err, errsz, "%s (column %d): not a number: '%.*s%s'", log_names[k], c + 1, show, s, more);
+        return log_bad(r, k, c, "not a number", s, n, err, errsz);
     *v = x;
     return AM_OK;
 }

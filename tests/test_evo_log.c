@@ -1,8 +1,8 @@
 /* tests/test_evo_log.c: reading log.csv back (src/evo_log.c, am_evo_log_read_*): rows written by
  * am_evo_log_row read back exactly; columns are found by name (reordered, unknown ones skipped,
  * optional ones missing); a missing required column, a short or long row, a field that is not a
- * number, not finite or not whole are refused with "file:line: problem"; CRLF line ends, blank
- * lines and an empty file. */
+ * number, not finite or not whole are refused with "file:line: problem" (the field quoted by
+ * am_quote); CRLF line ends, blank lines and an empty file. */
 #include "harness.h"
 
 #include "amorph.h"
@@ -144,6 +144,8 @@ static void test_bad_rows(void)
         {"0,20,0.5x,0.25,0.25,0,0,1.5", "t.csv:3: best (column 3): not a number: '0.5x'"},
         {"0,20,0.5,0.25,0.25,0,0, 1.5", "t.csv:3: wall_s (column 8): not a number: ' 1.5'"},
         {"0,20,0x10,0.25,0.25,0,0,1.5", "t.csv:3: best (column 3): not a number: '0x10'"},
+        {"0,20,\x1b[31m,0.25,0.25,0,0,1.5", "t.csv:3: best (column 3): not a number: '\\x1b[31m'"}, /* quoted by am_quote */
+        {"0,20,0.5,0.25,0.25,2\t0,0,1.5", "t.csv:3: diverged (column 6): not a whole number from 0 to 2147483647: '2\\t0'"},
         {"0,20,,0.25,0.25,0,0,1.5", "t.csv:3: best (column 3): empty, expected a number"},
         {"0,20,inf,0.25,0.25,0,0,1.5", "t.csv:3: best (column 3): not a finite number: 'inf'"},
         {"0,20,0.5,nan,0.25,0,0,1.5", "t.csv:3: mean (column 4): not a finite number: 'nan'"},
