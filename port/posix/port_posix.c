@@ -2,6 +2,10 @@
  * the temporaries a killed process left), a parallel map on POSIX threads, Ctrl-C / SIGTERM
  * caught into a flag, and the environment and a signal to itself for tests of interruptions. */
 #define _POSIX_C_SOURCE 200809L
+/* 64-bit file offsets on 32-bit systems (glibc): readdir would otherwise fail with EOVERFLOW on a
+ * file system whose directory offsets or inode numbers do not fit 32 bits (ext4, btrfs, a 64-bit
+ * host under qemu-user) */
+#define _FILE_OFFSET_BITS 64
 #include "amorph/port.h"
 
 #include <dirent.h>
