@@ -244,4 +244,12 @@ expect_fail 2 "^amorph: sim: unknown option '--x{38}\.\.\.' \(amorph sim --help\
 expect_fail 2 "^amorph: sim: one robot at a time \('a' and 'b\\\\tc'\)$" "$AMORPH" sim a "$(printf 'b\tc')"
 expect_fail 2 "^amorph: unknown command 'x{40}\.\.\.' " "$AMORPH" "$long"
 
+# the material mix: the materials the body holds and their voxels, adding up to the body
+expect_ok "$AMORPH" sim --scene sphere:6 --cycles 1 --relax-max 100
+check "sphere:6 is half passive, half active: $(grep material "$TMPD/out" | tr '\n' ' ')" \
+    [ "$(sed -n 's/^materials = //p' "$TMPD/out")/$(sed -n 's/^material_voxels = //p' "$TMPD/out")" = "passive active/68 68" ]
+expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json
+check "a run's best robot: material voxels add up to its voxels: $(head -c 400 "$TMPD/out")" awk -v v="$(field voxels "$TMPD/out")" \
+    -v m="$(sed -n 's/.*"material_voxels": \[\([^]]*\)\].*/\1/p' "$TMPD/out")" 'BEGIN { n = split(m, a, ", "); s = 0; for (i = 1; i <= n; i++) s += a[i]; exit !(n >= 1 && s == v && v > 0) }'
+
 summary cli_sim

@@ -18,8 +18,17 @@ static const char sim_help[] =
     "kinetic_resets (the relaxation's kinetic damping stops; docs/physics.md, Evaluation).\n";
 
 /* the result and the gait of the movement segment (docs/results.md, Gaits), on the standard output */
-static int print_result(const char* robot, const am_result* r, double wall, const am_gait* g, int fitness, double voxel_size, int json)
+static int print_result(const char* robot, const am_lattice* lat, const am_result* r, double wall, const am_gait* g, int fitness, int json)
 {
+    /* the material mix: the voxels of each material the body holds, in palette order */
+    const char* names[AM_MAX_MATERIALS];
+    double count[AM_MAX_MATERIALS] = {0}, used[AM_MAX_MATERIALS];
+    int nused = 0;
+    for (long i = 0; i < (long)lat->nx * lat->ny * lat->nz; i++)
+        if (lat->cell[i] > 0 && lat->cell[i] <= lat->palette.count) count[lat->cell[i] - 1] += 1;
+    for (int m = 0; m < lat->palette.count; m++)
+        if (count[m] > 0) names[nused] = lat->palette.mat[m].name, used[nused++] = count[m];
+    const double voxel_size = AM_PARAM_TO_DOUBLE(lat->voxel_size);
     am_gait_summary gs;
     am_gait_summarize(g, fitness, voxel_size, &gs);
     double travel[AM_GAIT_MAX_CYCLES];
@@ -34,6 +43,8 @@ static int print_result(const char* robot, const am_result* r, double wall, cons
     tool_rec_num(q, "dy", r->dy);
     tool_rec_num(q, "dz", r->dz);
     tool_rec_int(q, "voxels", r->voxels);
+    tool_rec_strs(q, "materials", names, nused);
+    tool_rec_nums(q, "material_voxels", used, nused);
     tool_rec_int(q, "links", r->links);
     tool_rec_num(q, "dt", r->dt);
     tool_rec_int(q, "steps", r->steps);
@@ -112,7 +123,7 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     double t0 = am_port_now();
     am_evaluate(&c->work[0].model, &c->work[0].state, &def, &res);
     double wall = am_port_now() - t0;
-    if (print_result(file, &res, wall, &gait, def.fitness, AM_PARAM_TO_DOUBLE(lat->voxel_size), json)) return 1;
+    if (print_result(file, lat, &res, wall, &gait, def.fitness, json)) return 1;
     fflush(stdout);
     /* a run that diverged or did not settle is a result (exit status 0), with one line of warning */
     if (res.diverged) {
