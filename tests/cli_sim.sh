@@ -228,9 +228,9 @@ check "--mu_static/--mu_kinetic over a run folder change its result" [ "$(hash_o
 expect_ok "$AMORPH" sim "$TMPD/run" --cycles 1 --json --mu_static 1 --mu_kinetic 0.3
 check "the run's own friction as flags: the run's result" [ "$(hash_of "$TMPD/out")" = "$(hash_of "$TMPD/def.json")" ]
 # evolve takes the same aliases
-expect_ok "$AMORPH" evolve --print-config --repr dct --size 4 --relax-max 3000 --dt-search
-check "evolve: --repr/--size/--relax-max/--dt-search are aliases: $(grep -E '^(representation|workspace|relax_max_steps|dt_search) ' "$TMPD/out" | tr '\n' ' ')" \
-    [ "$(grep -cxE 'representation = dct|workspace = 4|relax_max_steps = 3000|dt_search = on' "$TMPD/out")" = 4 ]
+expect_ok "$AMORPH" evolve --print-config --repr dct --size 4 --relax-max 3000 --dt-search --evals 30
+check "evolve: --repr/--size/--relax-max/--dt-search/--evals are aliases: $(grep -E '^(representation|workspace|relax_max_steps|dt_search|evaluations) ' "$TMPD/out" | tr '\n' ' ')" \
+    [ "$(grep -cxE 'representation = dct|workspace = 4|relax_max_steps = 3000|dt_search = on|evaluations = 30' "$TMPD/out")" = 5 ]
 
 # tokens in the commands' messages are quoted as the readers quote them (am_quote): control bytes
 # escaped, cut at 40 characters with "..."

@@ -48,7 +48,7 @@ static const char experiment_help[] =
     "ranking), and prints the table. Running the same command again\n"
     "resumes unfinished runs and skips finished ones. Other flags set configuration keys of every\n"
     "run (amorph evolve --help-config).\n"
-    "  --evals N     evaluations per run (the configuration's, 200)\n"
+    "  --evals N     evaluations per run: an alias of --evaluations N (the configuration's, 200)\n"
     "  --runs R      runs per variant (3)\n"
     "  --out DIR     experiment folder (default runs/NAME-NNN)\n"
     "  --json        the summary as one JSON line instead of the table (summary.json holds it too)\n"
@@ -169,7 +169,7 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
     memset(&o, 0, sizeof o);
     o.pictures = 1;
     const char* name = NULL;
-    long evals = 0, runs = 3;
+    long runs = 3;
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -177,9 +177,6 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
             fputs(experiment_help, stdout);
             for (int k = 0; k < EXPERIMENTS; k++) printf("  %-16s %s\n", experiments[k].name, experiments[k].about);
             return 0;
-        } else if (!strcmp(a, "--evals")) {
-            if (!tool_parse_long(v, 2, 1000000000L, &evals)) return tool_usage_error("experiment: --evals needs a whole number >= 2");
-            i++;
         } else if (!strcmp(a, "--runs")) {
             if (!tool_parse_long(v, 1, EXP_MAX_RUNS, &runs))
                 return tool_usage_error("experiment: --runs needs a whole number in [1, %d]", EXP_MAX_RUNS);
@@ -205,7 +202,6 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
     }
     am_evo_def base;
     if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
-    if (evals) base.evaluations = evals;
     if (test_interrupt_setup()) return 2;
     char dir[EXP_DIR_MAX], err[AM_ERR_MAX];
     if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");

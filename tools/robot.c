@@ -11,7 +11,7 @@
 static const struct {
     const char* old;
     const char* key;
-} aliases[] = {{"repr", "representation"}, {"size", "workspace"}, {"relax_max", "relax_max_steps"}};
+} aliases[] = {{"repr", "representation"}, {"size", "workspace"}, {"relax_max", "relax_max_steps"}, {"evals", "evaluations"}};
 
 int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val)
 {

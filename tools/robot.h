@@ -38,6 +38,7 @@ typedef struct tool_robot {
  * these documented aliases of older spellings:
  *   --repr R -> --representation R     --size N -> --workspace N
  *   --relax-max N -> --relax_max_steps N     --dt-search (alone) -> --dt_search on
+ *   --evals N -> --evaluations N
  * Sets *key to the table's spelling and *val to the value ("on" for a bare --dt-search) and returns
  * 1; 0 when argv[*i] is no setting. A setting that needs a value and has none, or an old spelling
  * that now means something else (--cte linear|volume: the CTE convention is --cte_mode), prints a
