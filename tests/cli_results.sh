@@ -28,6 +28,17 @@ for ck in results/*/*/checkpoint.txt; do
         got=$(sed -n 's/.*"fitness": \([-0-9.e+]*\).*/\1/p' "$TMPD/out")
         if [ "$got" = "$fit" ]; then ok; else ko "$d: best robot's fitness $got, the run recorded $fit"; fi
     fi
+    # evals.csv, shipped compressed (results/ship.sh): a row per evaluation of the checkpoint, and
+    # the fittest row is the best robot, with its state hash
+    if [ -f "$d/evals.csv.gz" ]; then
+        gzip -dc "$d/evals.csv.gz" >"$TMPD/evals.csv"
+        rows=$(($(wc -l <"$TMPD/evals.csv") - 1))
+        done_evals=$(awk '$1 == "evaluations" && NF == 2 { print $2; exit }' "$ck")
+        if [ "$rows" = "$done_evals" ]; then ok; else ko "$d: evals.csv.gz holds $rows evaluations, the checkpoint $done_evals"; fi
+        best_row=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "fitness") f = i; if ($i == "state_hash") h = i } next }
+            f && (NR == 2 || $f + 0 > best) { best = $f + 0; hash = $h } END { print hash }' "$TMPD/evals.csv")
+        if [ -n "$want" ] && [ "$best_row" = "$want" ]; then ok; else ko "$d: the fittest row of evals.csv.gz has state $best_row, the best robot $want"; fi
+    fi
 done
 if [ $n -gt 0 ]; then ok; else ko "results/: no run folder found"; fi
 summary cli_results
