@@ -156,49 +156,6 @@ const char* am_evo_key_help(int i)
     return i >= 0 && i < KEY_COUNT ? keys[i].help : NULL;
 }
 
-/* strict decimal integer (optional '-'), whole token */
-static int parse_long(const char* s, long* out)
-{
-    int neg = 0;
-    long v = 0;
-    if (*s == '-') {
-        neg = 1;
-        s++;
-    }
-    if (!*s) return 0;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9') return 0;
-        if (v > (LONG_MAX - 9) / 10) return 0;
-        v = v * 10 + (*s - '0');
-    }
-    *out = neg ? -v : v;
-    return 1;
-}
-
-static int parse_u64(const char* s, uint64_t* out)
-{
-    uint64_t v = 0;
-    if (!*s) return 0;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9') return 0;
-        unsigned dgt = (unsigned)(*s - '0');
-        if (v > (UINT64_MAX - dgt) / 10) return 0;
-        v = v * 10 + dgt;
-    }
-    *out = v;
-    return 1;
-}
-
-static int parse_double(const char* s, double* out)
-{
-    char* end = NULL;
-    if (!*s || *s == ' ' || *s == '\t' || *s == '+') return 0;
-    double v = strtod(s, &end);
-    if (!end || *end || !(v == v) || v > 1e300 || v < -1e300) return 0;
-    *out = v;
-    return 1;
-}
-
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz)
 {
     const key_def* k = find_key(key);
@@ -212,7 +169,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     case K_INT:
     case K_LONG: {
         long v;
-        if (!parse_long(value, &v) || (double)v < k->lo || (double)v > k->hi)
+        if (!am_parse_long(value, &v) || (double)v < k->lo || (double)v > k->hi)
             return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [%.0f, %.0f]", key, qv, k->lo, k->hi);
         if (k->kind == K_INT) *(int*)base = (int)v;
         else *(long*)base = v;
@@ -220,7 +177,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     }
     case K_U64: {
         uint64_t v;
-        if (!parse_u64(value, &v))
+        if (!am_parse_u64(value, &v))
             return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [0, 18446744073709551615]", key, qv);
         *(uint64_t*)base = v;
         return AM_OK;
@@ -228,7 +185,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     case K_REAL:
     case K_PARAM: {
         double v;
-        if (!parse_double(value, &v) || v < k->lo || v > k->hi)
+        if (!am_parse_double(value, &v) || v < k->lo || v > k->hi)
             return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected a number in [%g, %g]", key, qv, k->lo, k->hi);
         if (k->kind == K_PARAM) *(am_param*)base = AM_PARAM_FROM_DOUBLE(v);
         else *(am_real*)base = AM_FROM_DOUBLE(v);
@@ -264,7 +221,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
             if (len == 0 || len >= sizeof part) break;
             memcpy(part, s, len);
             part[len] = 0;
-            if (!parse_long(part, &v[n])) break;
+            if (!am_parse_long(part, &v[n])) break;
             n++;
             if (!x) {
                 s = NULL;

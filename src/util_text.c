@@ -1,8 +1,10 @@
-/* The bounded text buffer of include/amorph/text.h. */
+/* The bounded text buffer of include/amorph/text.h, and the strict number parsers. */
 #include "amorph/text.h"
 
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* hands the buffer to flush and empties it; 0, or -1 (full 2) when flush failed */
@@ -112,4 +114,49 @@ am_status am_text_format(am_text_writer write, const void* ctx, const char* what
         return am_fail(err, errsz, st, "%s needs %ld bytes, the buffer holds %ld", what, c.done + c.len + 1, cap);
     }
     return st;
+}
+
+/* ---- strict numbers ---- */
+
+int am_parse_long(const char* s, long* out)
+{
+    int neg = 0;
+    long v = 0;
+    if (!s) return 0;
+    if (*s == '-') {
+        neg = 1;
+        s++;
+    }
+    if (!*s) return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9') return 0;
+        if (v > (LONG_MAX - 9) / 10) return 0;
+        v = v * 10 + (*s - '0');
+    }
+    *out = neg ? -v : v;
+    return 1;
+}
+
+int am_parse_u64(const char* s, uint64_t* out)
+{
+    uint64_t v = 0;
+    if (!s || !*s) return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9') return 0;
+        unsigned dgt = (unsigned)(*s - '0');
+        if (v > (UINT64_MAX - dgt) / 10) return 0;
+        v = v * 10 + dgt;
+    }
+    *out = v;
+    return 1;
+}
+
+int am_parse_double(const char* s, double* out)
+{
+    char* end = NULL;
+    if (!s || !*s || *s == ' ' || *s == '\t' || *s == '+') return 0;
+    double v = strtod(s, &end);
+    if (!end || *end || !(v == v) || v > 1e300 || v < -1e300) return 0;
+    *out = v;
+    return 1;
 }

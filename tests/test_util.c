@@ -582,9 +582,39 @@ static void test_hash(void)
 #endif
 }
 
+/* the strict number parsers every reader and flag uses: the whole token, nothing else */
+static void test_parse_numbers(void)
+{
+    long l = 7;
+    uint64_t u = 7;
+    double d = 7;
+    CHECK(am_parse_long("12", &l) && l == 12, "12");
+    CHECK(am_parse_long("-3", &l) && l == -3, "-3");
+    CHECK(am_parse_long("0", &l) && l == 0, "0");
+    const char* bad_long[] = {"+3", " 3", "3 ", "3x", "", "-", "1e3", "0x10", "99999999999999999999"};
+    for (size_t k = 0; k < sizeof bad_long / sizeof bad_long[0]; k++) {
+        l = 7;
+        CHECK(!am_parse_long(bad_long[k], &l) && l == 7, "'%s' is no long, *out untouched", bad_long[k]);
+    }
+    CHECK(!am_parse_long(NULL, &l), "NULL");
+    CHECK(am_parse_u64("18446744073709551615", &u) && u == UINT64_MAX, "2^64 - 1");
+    const char* bad_u64[] = {"18446744073709551616", "-1", "+1", "", " 1", "1.0"};
+    for (size_t k = 0; k < sizeof bad_u64 / sizeof bad_u64[0]; k++) CHECK(!am_parse_u64(bad_u64[k], &u), "'%s' is no u64", bad_u64[k]);
+    CHECK(am_parse_double("1e3", &d) && d == 1000, "1e3");
+    CHECK(am_parse_double("-0.25", &d) && d == -0.25, "-0.25");
+    CHECK(am_parse_double(".5", &d) && d == 0.5, ".5");
+    const char* bad_double[] = {"nan", "inf", "-inf", "1e301", "+1", " 1", "1 ", "1x", "", "--1"};
+    for (size_t k = 0; k < sizeof bad_double / sizeof bad_double[0]; k++) {
+        d = 7;
+        CHECK(!am_parse_double(bad_double[k], &d) && d == 7, "'%s' is no number, *out untouched", bad_double[k]);
+    }
+    CHECK(!am_parse_double(NULL, &d), "NULL");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
+    RUN(test_parse_numbers);
 #if defined(AM_REAL_FIXED_POINT)
     RUN(test_fixed_functions);
     RUN(test_fixed_special_values);

@@ -1,5 +1,5 @@
-/* Strict parsing of command-line values, shared by every subcommand: the whole token must be the
- * number (no blanks, no sign where none is allowed, no trailing text), and it must lie in range. */
+/* Messages, and command-line values: the library's strict number parsers (amorph/text.h) with a
+ * range, shared by every subcommand. */
 #include "cmd.h"
 
 #include <stdarg.h>
@@ -29,27 +29,10 @@ int tool_not_in_build(const char* what, const char* feature)
     return tool_usage_error("%s: not in this build: %s belong to the desktop profile (make PROFILE=desktop)", what, feature);
 }
 
-int tool_parse_u64(const char* s, uint64_t* out)
-{
-    uint64_t v = 0;
-    if (!s || !*s) return 0;
-    for (; *s; s++) {
-        if (*s < '0' || *s > '9') return 0;
-        uint64_t d = (uint64_t)(*s - '0');
-        if (v > (UINT64_MAX - d) / 10) return 0;
-        v = v * 10 + d;
-    }
-    *out = v;
-    return 1;
-}
-
 int tool_parse_long(const char* s, long lo, long hi, long* out)
 {
-    uint64_t mag;
-    int neg = s && *s == '-';
-    if (!s || !tool_parse_u64(s + neg, &mag) || mag > (uint64_t)1 << 62) return 0;
-    long v = neg ? -(long)mag : (long)mag;
-    if (v < lo || v > hi) return 0;
+    long v;
+    if (!am_parse_long(s, &v) || v < lo || v > hi) return 0;
     *out = v;
     return 1;
 }
@@ -64,10 +47,8 @@ int tool_parse_int(const char* s, int lo, int hi, int* out)
 
 int tool_parse_real(const char* s, double lo, double hi, double* out)
 {
-    char* end;
-    if (!s || !*s || *s == ' ' || *s == '\t') return 0;
-    double v = strtod(s, &end);
-    if (*end || !(v >= lo && v <= hi)) return 0; /* NaN fails the range test */
+    double v;
+    if (!am_parse_double(s, &v) || !(v >= lo && v <= hi)) return 0;
     *out = v;
     return 1;
 }

@@ -180,8 +180,8 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
 #define TOOL_DESKTOP_ONLY ""
 #endif
 
-/* strict value parsers (tools/args.c): 1 when the whole token is a number in [lo, hi] */
-int tool_parse_u64(const char* s, uint64_t* out);
+/* strict value parsers (tools/args.c): 1 when the whole token is a number (am_parse_long,
+ * am_parse_double) in [lo, hi] */
 int tool_parse_long(const char* s, long lo, long hi, long* out);
 int tool_parse_int(const char* s, int lo, int hi, int* out);
 int tool_parse_real(const char* s, double lo, double hi, double* out);

@@ -10,6 +10,8 @@
 #ifndef AMORPH_TEXT_H
 #define AMORPH_TEXT_H
 
+#include <stdint.h>
+
 #include "amorph/status.h"
 
 typedef struct am_text {
@@ -51,5 +53,13 @@ am_status am_text_format(am_text_writer write, const void* ctx, const char* what
 /* hands the buffered bytes to flush (a whole-text buffer keeps them). AM_OK while nothing was
  * dropped, else AM_ERR_CAPACITY (full 1) or AM_ERR_IO (full 2: the flush function's message) */
 am_status am_text_flush(am_text* t);
+
+/* Strict numbers, as every reader and command-line flag takes them: the whole token is the number
+ * (no blank, no '+', nothing after it); 1 with *out set, else 0 (NULL counts as no number).
+ * am_parse_long: decimal digits after an optional '-', within long. am_parse_u64: decimal digits
+ * only, within 64 bits. am_parse_double: strtod's syntax, finite, and within +-1e300. */
+int am_parse_long(const char* s, long* out);
+int am_parse_u64(const char* s, uint64_t* out);
+int am_parse_double(const char* s, double* out);
 
 #endif
