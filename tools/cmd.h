@@ -51,6 +51,23 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv);
 int cmd_repro(tool_ctx* c, int argc, char** argv);
 int cmd_export(tool_ctx* c, int argc, char** argv);
 
+/* a run folder of amorph evolve (README, "Run folders"; tools/run_dir.c writes and reads them) */
+#define RUN_CONFIG "config.txt"         /* the settings, key = value */
+#define RUN_LOG "log.csv"               /* a row per generation */
+#define RUN_EVALS "evals.csv"           /* a row per evaluation */
+#define RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
+#define RUN_BEST_GENOME "best.genome"
+#define RUN_BEST_LATTICE "best.lattice"
+#define RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
+#define RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
+#define RUN_LOCK "lock"                 /* held while a process runs the folder */
+#define RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
+#define RUN_BEST_HTML "best.html"       /* its viewer page */
+#define RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
+/* an experiment folder (amorph experiment): its run folders <variant>-<k>, and */
+#define EXP_ABOUT "experiment.txt"      /* what the experiment is */
+#define EXP_RESULTS "results.csv"       /* mean and standard error per variant */
+
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);
 
@@ -162,7 +179,7 @@ int tool_src_sniff(tool_src* s, char* err, int errsz);
  * or the source's with its message */
 typedef am_status (*tool_line_fn)(void* ctx, int lineno, char* line, long n, char* err, int errsz);
 am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz);
-/* a configuration file over d (am_evo_parse_line per line); nul_ends as tool_src_open */
+/* a configuration file over d (am_evo_parse_line per line); nul_ends as tool_src_open (run_dir.c) */
 am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz);
 /* a genome from the lines of src (its start) */
 am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);

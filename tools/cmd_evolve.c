@@ -267,13 +267,13 @@ static int finish_pictures(tool_ctx* c, const char* dir)
     am_eval_def ev = e->def.eval;
     ev.record = NULL;
     if (am_lattice_count(&c->work[0].lattice) > 0) {
-        path_join(path, sizeof path, dir, "best.png");
+        path_join(path, sizeof path, dir, RUN_BEST_PNG);
         if (tool_write_filmstrip(c, &c->work[0].lattice, &e->def.env, &ev, path)) return 1;
-        path_join(path, sizeof path, dir, "best.html");
+        path_join(path, sizeof path, dir, RUN_BEST_HTML);
         snprintf(title, sizeof title, "amorph: best of %s (%.4f m)", dir, e->best.fitness);
         if (tool_write_viewer(c, &c->work[0].lattice, &e->def.env, &ev, title, path)) return 1;
     }
-    path_join(path, sizeof path, dir, "fitness.svg");
+    path_join(path, sizeof path, dir, RUN_FITNESS_SVG);
     char* dirs[1] = {(char*)(uintptr_t)dir};
     return tool_write_plot(1, dirs, path);
 #endif
@@ -302,9 +302,9 @@ int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int 
 static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
-    path_join(path, sizeof path, dir, "config.txt");
+    path_join(path, sizeof path, dir, RUN_CONFIG);
     const int has_config = am_port_exists(path);
-    path_join(path, sizeof path, dir, "checkpoint.txt");
+    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
     if (has_config && !am_port_exists(path))
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
@@ -312,7 +312,7 @@ static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opt
     int rc = read_checkpoint(path, &c->evo);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
-    path_join(path, sizeof path, dir, "config.txt");
+    path_join(path, sizeof path, dir, RUN_CONFIG);
     am_evo_def d;
     if (build_def(o, path, extra, &d, "resume")) return 2;
     if (!am_evo_same_run(&c->evo.def, &d, what, sizeof what))
@@ -322,16 +322,16 @@ static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opt
     c->evo.def.checkpoint_seconds = d.checkpoint_seconds;
     if (c->evo.def.evaluations < c->evo.evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, c->evo.def.evaluations, c->evo.evaluations);
-    if (trim_table(dir, "log.csv", am_evo_log_header(), c->evo.generation, "generation")) return 2;
+    if (trim_table(dir, RUN_LOG, am_evo_log_header(), c->evo.generation, "generation")) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&c->evo.def, hdr, (int)sizeof hdr);
-    path_join(path, sizeof path, dir, "evals.csv");
+    path_join(path, sizeof path, dir, RUN_EVALS);
     if (!am_port_exists(path)) {
         /* a run begun by a build without evals.csv: the table starts at the checkpoint's evaluation */
-        if (write_text(dir, "evals.csv", hdr, n)) return 1;
+        if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, "evals.csv", hdr, c->evo.evaluations, "evaluation")) return 2;
+        if (trim_table(dir, RUN_EVALS, hdr, c->evo.evaluations, "evaluation")) return 2;
     }
     if (write_config(dir, &c->evo.def)) return 1;
     return 0;

@@ -96,7 +96,7 @@ static am_status log_rows_line(void* ctx, int lineno, char* line, long n, char* 
 static TOOL_NOINLINE int read_log(const char* dir, long* evals, double* best, int cap)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
-    path_join(path, sizeof path, dir, "log.csv");
+    path_join(path, sizeof path, dir, RUN_LOG);
     log_rows lr;
     memset(&lr, 0, sizeof lr);
     lr.evals = evals;
@@ -128,14 +128,14 @@ static TOOL_NOINLINE int write_about(const experiment* x, long runs, long evalua
     char about[512];
     int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
                      evaluations);
-    return write_text(dir, "experiment.txt", about, n);
+    return write_text(dir, EXP_ABOUT, about, n);
 }
 
 /* 1 when the run folder holds a checkpoint */
 static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
 {
     char ck[TOOL_PATH_MAX];
-    path_join(ck, sizeof ck, rdir, "checkpoint.txt");
+    path_join(ck, sizeof ck, rdir, RUN_CHECKPOINT);
     return am_port_exists(ck);
 }
 
@@ -281,7 +281,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
     }
     {
         char path[TOOL_PATH_MAX];
-        path_join(path, sizeof path, dir, "results.csv");
+        path_join(path, sizeof path, dir, EXP_RESULTS);
         tool_out out;
         if (tool_out_open(&out, path)) return 1;
         am_text_put(&out.text, "variant,evaluations,mean_best,stderr_best,runs\n");
@@ -320,7 +320,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
     if (TOOL_PICTURES && pictures) {
         char svg[2048];
         char* dirs[1] = {(char*)(uintptr_t)dir};
-        if (snprintf(svg, sizeof svg, "%s/fitness.svg", dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
+        if (snprintf(svg, sizeof svg, "%s/" RUN_FITNESS_SVG, dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
     /* the summary: the final row per variant, and the variants ranked by it */
     exp_summary sum;

@@ -91,7 +91,7 @@ static int load_run(const char* dir, int series)
     char path[PLOT_PATH_MAX + 16], err[AM_ERR_MAX];
     if (plot_nruns >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d runs", PLOT_MAX_RUNS);
     if (strlen(dir) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dir);
-    snprintf(path, sizeof path, "%s/log.csv", dir);
+    snprintf(path, sizeof path, "%s/" RUN_LOG, dir);
     plot_run* r = &plot_runs[plot_nruns];
     snprintf(r->dir, sizeof r->dir, "%s", dir);
     base_name(dir, r->name, sizeof r->name);
@@ -141,7 +141,7 @@ static int load_experiment(const char* dir)
         char sub[PLOT_PATH_MAX + 128], csv[PLOT_PATH_MAX + 160];
         if (e->d_name[0] == '.' || strlen(e->d_name) >= sizeof names[0]) continue;
         snprintf(sub, sizeof sub, "%s/%s", dir, e->d_name);
-        snprintf(csv, sizeof csv, "%s/log.csv", sub);
+        snprintf(csv, sizeof csv, "%s/" RUN_LOG, sub);
         if (!am_port_exists(csv) || !strrchr(e->d_name, '-')) continue;
         if (n >= PLOT_MAX_RUNS) {
             closedir(d);
@@ -347,8 +347,8 @@ static int plot_load(int ndirs, char** dirs)
     for (int i = 0; i < ndirs; i++) {
         char csv[PLOT_PATH_MAX + 16], exp[PLOT_PATH_MAX + 24];
         if (strlen(dirs[i]) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dirs[i]);
-        snprintf(csv, sizeof csv, "%s/log.csv", dirs[i]);
-        snprintf(exp, sizeof exp, "%s/experiment.txt", dirs[i]);
+        snprintf(csv, sizeof csv, "%s/" RUN_LOG, dirs[i]);
+        snprintf(exp, sizeof exp, "%s/" EXP_ABOUT, dirs[i]);
         if (!am_port_exists(dirs[i])) return tool_usage_error("plot: %s: no such folder", dirs[i]);
         if (am_port_exists(csv)) {
             char name[96];

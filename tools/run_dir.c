@@ -69,24 +69,24 @@ static am_status lattice_writer(const void* obj, am_text* out, char* err, int er
 
 int write_config(const char* dir, const am_evo_def* d)
 {
-    return write_stream(dir, "config.txt", config_writer, d, NULL);
+    return write_stream(dir, RUN_CONFIG, config_writer, d, NULL);
 }
 
 int write_checkpoint(const char* dir, const am_evo* e)
 {
-    return write_stream(dir, "checkpoint.txt", checkpoint_writer, e, "checkpoint");
+    return write_stream(dir, RUN_CHECKPOINT, checkpoint_writer, e, "checkpoint");
 }
 
 TOOL_NOINLINE int write_best(tool_ctx* c, const char* dir)
 {
     const am_evo* e = &c->evo;
     char err[AM_ERR_MAX];
-    if (write_stream(dir, "best.genome", genome_writer, &e->best.genome, "best genome")) return 1;
+    if (write_stream(dir, RUN_BEST_GENOME, genome_writer, &e->best.genome, "best genome")) return 1;
     if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &c->work[0].geno, &c->work[0].lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
     }
-    return write_stream(dir, "best.lattice", lattice_writer, &c->work[0].lattice, "best lattice");
+    return write_stream(dir, RUN_BEST_LATTICE, lattice_writer, &c->work[0].lattice, "best lattice");
 }
 
 /* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
@@ -117,7 +117,7 @@ TOOL_NOINLINE int write_summaries(const char* dir, const char* comment, void (*p
 {
     for (int json = 0; json < 2; json++) {
         char path[TOOL_PATH_MAX];
-        path_join(path, sizeof path, dir, json ? "summary.json" : "summary.txt");
+        path_join(path, sizeof path, dir, json ? RUN_SUMMARY_JSON : RUN_SUMMARY_TXT);
         tool_out o;
         if (tool_out_open(&o, path)) return 1;
         if (!json) am_text_put(&o.text, "# %s\n", comment);
@@ -153,7 +153,7 @@ TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
     char row[256], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     int n = am_evo_log_row(s, row, (int)sizeof row - 1);
     row[n++] = '\n';
-    path_join(path, sizeof path, dir, "log.csv");
+    path_join(path, sizeof path, dir, RUN_LOG);
     if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s\n", err);
         return 1;
@@ -220,7 +220,7 @@ void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
     if (o->failed) return;
     int n = am_evo_evals_row(o->def, ind, ev, row, (int)sizeof row - 1);
     row[n++] = '\n';
-    path_join(path, sizeof path, o->dir, "evals.csv");
+    path_join(path, sizeof path, o->dir, RUN_EVALS);
     if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s\n", err);
         o->failed = 1;
@@ -256,15 +256,15 @@ int default_out(char* out, size_t cap)
 TOOL_NOINLINE int start_prepare(tool_ctx* c, const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
-    path_join(path, sizeof path, dir, "checkpoint.txt");
+    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
     if (am_evo_init(&c->evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
-    if (write_text(dir, "log.csv", hdr, n)) return 1;
+    if (write_text(dir, RUN_LOG, hdr, n)) return 1;
     n = evals_header(d, hdr, (int)sizeof hdr);
-    if (write_text(dir, "evals.csv", hdr, n)) return 1;
+    if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
     if (write_checkpoint(dir, &c->evo)) return 1;
     return 0;
@@ -276,7 +276,7 @@ TOOL_NOINLINE int start_prepare(tool_ctx* c, const am_evo_def* d, const char* di
 TOOL_NOINLINE int lock_run(const char* dir)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
-    path_join(path, sizeof path, dir, "lock");
+    path_join(path, sizeof path, dir, RUN_LOCK);
     if (am_port_lock(path, err, sizeof err) != AM_OK)
         return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
     return 0;
@@ -332,3 +332,52 @@ TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
     return st == AM_OK ? 0 : tool_usage_error("%s", err);
 }
 
+/* ---- reading a run folder (amorph sim, render, view, export of its best robot; --resume) ---- */
+
+int tool_is_run_dir(const char* path)
+{
+    char p[TOOL_PATH_MAX];
+    if (snprintf(p, sizeof p, "%s/" RUN_CONFIG, path) >= (int)sizeof p) return 0;
+    if (!am_port_exists(p)) return 0;
+    if (snprintf(p, sizeof p, "%s/" RUN_BEST_GENOME, path) >= (int)sizeof p) return 0;
+    return am_port_exists(p);
+}
+
+typedef struct config_ctx {
+    am_evo_def* d;
+    const char* fname;
+} config_ctx;
+
+static am_status config_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    config_ctx* c = (config_ctx*)ctx;
+    return am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
+}
+
+am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz)
+{
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, nul_ends, err, errsz);
+    if (st == AM_OK) {
+        config_ctx c = {d, path};
+        st = tool_src_each(&src, config_line, &c, err, errsz);
+    } else if (src.binary) {
+        st = tool_src_binary(&src, err, errsz);
+    }
+    tool_src_close(&src);
+    return st;
+}
+
+static am_status genome_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    (void)lineno;
+    return am_genome_read_line((am_genome_reader*)ctx, line, n, err, errsz);
+}
+
+am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz)
+{
+    am_genome_reader r;
+    am_genome_read_begin(&r, g, src->path);
+    am_status st = tool_src_each(src, genome_line, &r, err, errsz);
+    return st != AM_OK ? st : am_genome_read_end(&r, err, errsz);
+}
