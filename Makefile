@@ -27,6 +27,8 @@ TARGET_cortex-m4     := baremetal arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfl
 TARGET_aarch64-linux := posix aarch64-linux-gnu-gcc -static
 TARGET_armhf-linux   := posix arm-linux-gnueabihf-gcc -static
 TARGET_riscv64-linux := posix riscv64-linux-gnu-gcc -static
+TARGET_s390x-linux   := posix s390x-linux-gnu-gcc -static -fexcess-precision=fast
+TARGET_i686-linux    := posix i686-linux-gnu-gcc -static -msse2 -mfpmath=sse
 TARGET  ?=
 TARGET_CFLAGS :=
 TARGET_LDFLAGS :=

@@ -2,7 +2,8 @@
 # tools/repro.sh (make repro): one reference computation, built and run on every target we claim
 # bit-identical results on, must print the same 64-bit hash everywhere, equal to the pinned one.
 #   x86-64: gcc -O0, gcc -O3 -march=native, clang -O2 (native)
-#   aarch64, armhf, riscv64 Linux: Debian cross compilers, static, under qemu-user
+#   aarch64, armhf, riscv64, s390x (big-endian) and i686 (32-bit x86, SSE2 arithmetic) Linux:
+#   Debian cross compilers, static, under qemu-user
 #   Cortex-M3 (soft float) and Cortex-M4F (hard float): bare metal under qemu-system-arm
 #   (mps2-an385 / mps2-an386) with semihosting
 # Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
@@ -34,7 +35,9 @@ x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=na
 x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
 aarch64-linux|TARGET=aarch64-linux|qemu-aarch64
 armhf-linux|TARGET=armhf-linux|qemu-arm
-riscv64-linux|TARGET=riscv64-linux|qemu-riscv64"
+riscv64-linux|TARGET=riscv64-linux|qemu-riscv64
+s390x-linux|TARGET=s390x-linux|qemu-s390x
+i686-linux|TARGET=i686-linux|qemu-i386"
 
 TARGETS=$(echo "$TARGETS" | sed "s/-REAL /-$REAL /")
 mkdir -p build/repro
@@ -121,6 +124,31 @@ for name in cortex-m3 cortex-m4; do
     if [ "$ram" -gt $RAM_MAX ] || [ "$flash" -gt $FLASH_MAX ]; then mark="  OVER BUDGET"; bad=$((bad + 1)); fi
     printf 'memory %-15s RAM %7d of %d bytes, flash %7d of %d%s\n' "$name" "$ram" $RAM_MAX "$flash" $FLASH_MAX "$mark"
 done
+# byte order: a run checkpointed by the x86-64 build resumes on the big-endian s390x build (and on
+# 32-bit i686) to the run the x86-64 build makes uninterrupted: same run hash, same best genome
+SMALL="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 150 --relax_min_steps 50 --quiet --no-pictures --threads 1"
+native=$(build_of "BUILD=build/repro/gcc-O3-native-$REAL")/amorph
+cross_resume() {
+    name=$1 runner=$2
+    bin=$(build_of "TARGET=$name")/amorph
+    [ -x "$native" ] && [ -x "$bin" ] && command -v "$runner" >/dev/null 2>&1 || return 0
+    d=build/repro/resume-$name-$REAL
+    rm -rf "$d" && mkdir -p "$d"
+    # shellcheck disable=SC2086
+    "$native" evolve $SMALL --evaluations 32 --out "$d/whole" >/dev/null 2>&1 &&
+        "$native" evolve $SMALL --evaluations 16 --out "$d/half" >/dev/null 2>&1 &&
+        "$runner" "$bin" evolve --resume "$d/half" --evaluations 32 --quiet --no-pictures >/dev/null 2>>"$d/err"
+    a=$(sed -n 's/^run_hash = //p' "$d/whole/summary.txt" 2>/dev/null)
+    b=$(sed -n 's/^run_hash = //p' "$d/half/summary.txt" 2>/dev/null)
+    mark=""
+    if [ -z "$a" ] || [ "$a" != "$b" ] || ! cmp -s "$d/whole/best.genome" "$d/half/best.genome"; then
+        mark="  DIFFERS ($d)"
+        bad=$((bad + 1))
+    fi
+    printf 'resume on %-13s x86-64 checkpoint: run %s, uninterrupted %s%s\n' "$name" "${b:-(none)}" "${a:-(none)}" "$mark"
+}
+cross_resume s390x-linux qemu-s390x
+cross_resume i686-linux qemu-i386
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
 if [ "$bad" -ne 0 ]; then

@@ -19,8 +19,17 @@
 #ifndef AMORPH_REAL_H
 #define AMORPH_REAL_H
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
+
+/* Bit-identical results need floating-point arithmetic done in the types the code names: float in
+ * float, double in double (FLT_EVAL_METHOD 0). A compiler that evaluates in wider registers (the
+ * x87 unit of 32-bit x86: 2; s390x under -std=c11: 1) rounds differently and gives other results,
+ * so such a build is refused; docs/porting.md gives the flags that make it 0. */
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "amorph needs FLT_EVAL_METHOD 0: build x86-32 with -msse2 -mfpmath=sse, s390x with -fexcess-precision=fast (docs/porting.md)"
+#endif
 
 #if defined(AM_REAL_FIXED)
 /* Q7.24: value = raw / 2^24, range [-128, 128), resolution 6.0e-8. Products and quotients go
