@@ -89,7 +89,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h port/$(PORT)/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board
 all: $(BUILD)/libamorph.a $(BUILD)/amorph
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -165,6 +165,11 @@ check-fixed:
 
 bench: all
 	$(BUILD)/amorph bench
+
+# what a board costs: instructions per voxel-step and per evaluation on the Cortex-M3 (fixed and
+# soft float) and Cortex-M4F builds under QEMU with -icount (tools/bench_board.sh states the method)
+bench-board:
+	@sh tools/bench_board.sh
 
 asan:
 	$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1" CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" unit
