@@ -1,5 +1,5 @@
 # port/baremetal/port.mk: how the bare-metal port links (included by the Makefile for PORT=baremetal).
-# Our own start-up and linker script (no crt0), newlib for the C library, unused sections dropped.
+# Our own start-up and linker script (no crt0), the toolchain's C library, unused sections dropped.
 # The profile is board unless given otherwise, which is refused: the desktop one needs ~9 MiB.
 ifeq ($(TARGET),)
 $(error PORT=baremetal is a cross build: name the CPU with TARGET=cortex-m3 or TARGET=cortex-m4)
@@ -11,10 +11,15 @@ else
 $(error PORT=baremetal needs PROFILE=board, not '$(PROFILE)')
 endif
 endif
-TARGET_CFLAGS  += -ffunction-sections -fdata-sections
+# the instruction set's folder (start-up, semihosting trap, memory map, the C library's system
+# calls), from the TARGET line's compiler: cortex-m/ for arm-none-eabi-gcc
+BAREMETAL_ISA := cortex-m
+BAREMETAL_LD  := mps2.ld
+PORT_DIRS     += port/baremetal/$(BAREMETAL_ISA)
+TARGET_CFLAGS  += -ffunction-sections -fdata-sections -Iport/baremetal
 TARGET_LDFLAGS += -nostartfiles -Wl,--gc-sections
-# the memory map: mps2.ld (QEMU's mps2-an385/an386) unless the TARGET line names another with -T
+# the memory map: the folder's linker script unless the TARGET line names another with -T
 ifeq ($(filter -T,$(TARGET_CFLAGS)),)
-TARGET_LDFLAGS += -T port/baremetal/mps2.ld
+TARGET_LDFLAGS += -T port/baremetal/$(BAREMETAL_ISA)/$(BAREMETAL_LD)
 endif
 LDLIBS         := -lm
