@@ -24,6 +24,7 @@ endif
 #   TARGET_<name> := <port> <compiler> <CPU flags...>
 TARGET_cortex-m3     := baremetal arm-none-eabi-gcc -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 TARGET_cortex-m4     := baremetal arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+TARGET_rv32          := baremetal riscv64-unknown-elf-gcc -march=rv32imafc -mabi=ilp32f
 TARGET_aarch64-linux := posix aarch64-linux-gnu-gcc -static
 TARGET_armhf-linux   := posix arm-linux-gnueabihf-gcc -static
 TARGET_riscv64-linux := posix riscv64-linux-gnu-gcc -static
