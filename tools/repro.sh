@@ -6,6 +6,8 @@
 #   Debian cross compilers, static, under qemu-user
 #   Cortex-M3 (soft float) and Cortex-M4F (hard float): bare metal under qemu-system-arm
 #   (mps2-an385 / mps2-an386) with semihosting
+#   RISC-V 32-bit (rv32imafc, single-precision FPU): bare metal under qemu-system-riscv32 (virt)
+#   with semihosting
 # Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
 # hash equals REPRO_EXPECT. Builds log to build/repro/<target>.log.
 # REPRO_ARGS is the reference computation: the amorph command line (without "amorph"); its
@@ -27,9 +29,10 @@ MAKE=${MAKE:-make}
 TIMEOUT=${REPRO_TIMEOUT:-600}
 
 # name | make variables (besides PROFILE=board) | how to run (native, a qemu-user binary, or
-# board:<qemu-system-arm machine>)
+# board:<qemu-system-arm machine>, board-riscv32:<qemu-system-riscv32 machine>)
 TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
 cortex-m4|TARGET=cortex-m4|board:mps2-an386
+rv32|TARGET=rv32|board-riscv32:virt
 x86_64-gcc-O0|BUILD=build/repro/gcc-O0-REAL CC=gcc OPT=-O0 ARCH=|native
 x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=native|native
 x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
@@ -61,6 +64,11 @@ run_one() {
         sh_args="arg=amorph"
         for a in $REPRO_ARGS; do sh_args="$sh_args,arg=$(echo "$a" | sed 's/,/,,/g')"; done
         timeout "$TIMEOUT" qemu-system-arm -M "${how#board:}" -nographic -monitor none -serial none \
+            -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null ;;
+    board-riscv32:*)
+        sh_args="arg=amorph"
+        for a in $REPRO_ARGS; do sh_args="$sh_args,arg=$(echo "$a" | sed 's/,/,,/g')"; done
+        timeout "$TIMEOUT" qemu-system-riscv32 -M "${how#board-riscv32:}" -bios none -nographic -monitor none -serial none \
             -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null ;;
     *) timeout "$TIMEOUT" "$how" "$bin" $REPRO_ARGS ;;
     esac
@@ -113,12 +121,15 @@ for name in $(echo "$TARGETS" | cut -d'|' -f1); do
 done
 # the board budget: with the board profile's population of 20, at most 192 KiB of RAM (data + bss,
 # stack and heap arena included) and 256 KiB of flash (text + data), from arm-none-eabi-size
+# (riscv64-unknown-elf-size for rv32)
 RAM_MAX=196608
 FLASH_MAX=262144
-for name in cortex-m3 cortex-m4; do
+for name in cortex-m3 cortex-m4 rv32; do
     bin=$(build_of "TARGET=$name")/amorph
-    [ -f "$bin" ] && command -v arm-none-eabi-size >/dev/null 2>&1 || continue
-    sizes=$(arm-none-eabi-size "$bin" | awk 'NR == 2 { print $1 + $2, $2 + $3 }')
+    size=arm-none-eabi-size
+    [ "$name" = rv32 ] && size=riscv64-unknown-elf-size
+    [ -f "$bin" ] && command -v $size >/dev/null 2>&1 || continue
+    sizes=$($size "$bin" | awk 'NR == 2 { print $1 + $2, $2 + $3 }')
     flash=${sizes% *} ram=${sizes#* }
     mark=""
     if [ "$ram" -gt $RAM_MAX ] || [ "$flash" -gt $FLASH_MAX ]; then mark="  OVER BUDGET"; bad=$((bad + 1)); fi
