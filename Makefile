@@ -24,6 +24,7 @@ endif
 #   TARGET_<name> := <port> <compiler> <CPU flags...>
 TARGET_cortex-m3     := baremetal arm-none-eabi-gcc -mcpu=cortex-m3 -mthumb -mfloat-abi=soft
 TARGET_cortex-m4     := baremetal arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
+TARGET_rv32          := baremetal riscv64-unknown-elf-gcc -march=rv32imafc -mabi=ilp32f
 TARGET_aarch64-linux := posix aarch64-linux-gnu-gcc -static
 TARGET_armhf-linux   := posix arm-linux-gnueabihf-gcc -static
 TARGET_riscv64-linux := posix riscv64-linux-gnu-gcc -static
@@ -60,6 +61,8 @@ endif
 TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
 LDLIBS  := -lm -lpthread
+# the port's source folders: port/<port>/, and any its port.mk adds
+PORT_DIRS := port/$(PORT)
 -include port/$(PORT)/port.mk
 
 ifeq ($(filter $(REAL),float double fixed),)
@@ -80,14 +83,14 @@ ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off
            -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*.c))
-PORT_SRC := $(sort $(wildcard port/$(PORT)/*.c))
+PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)))
 TOOL_SRC := $(sort $(wildcard tools/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h port/$(PORT)/*.h)
+HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h))
 
 .PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board
 all: $(BUILD)/libamorph.a $(BUILD)/amorph

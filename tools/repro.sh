@@ -6,6 +6,8 @@
 #   Debian cross compilers, static, under qemu-user
 #   Cortex-M3 (soft float) and Cortex-M4F (hard float): bare metal under qemu-system-arm
 #   (mps2-an385 / mps2-an386) with semihosting
+#   RISC-V 32-bit (rv32imafc, single-precision FPU): bare metal under qemu-system-riscv32 (virt)
+#   with semihosting
 # Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
 # hash equals REPRO_EXPECT. Builds log to build/repro/<target>.log.
 # REPRO_ARGS is the reference computation: the amorph command line (without "amorph"); its
@@ -27,9 +29,10 @@ MAKE=${MAKE:-make}
 TIMEOUT=${REPRO_TIMEOUT:-600}
 
 # name | make variables (besides PROFILE=board) | how to run (native, a qemu-user binary, or
-# board:<qemu-system-arm machine>)
+# board:<qemu-system-arm machine>, or riscv32_board: qemu-system-riscv32 -M virt, below)
 TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
 cortex-m4|TARGET=cortex-m4|board:mps2-an386
+rv32|TARGET=rv32|riscv32_board
 x86_64-gcc-O0|BUILD=build/repro/gcc-O0-REAL CC=gcc OPT=-O0 ARCH=|native
 x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=native|native
 x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
@@ -52,6 +55,15 @@ build_of() {
     *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')$([ "$REAL" = float ] || echo "-$REAL")" ;;
     esac
 }
+# runs a bare-metal RISC-V build under qemu-system-riscv32 (virt, semihosting) the way a
+# qemu-user binary runs: riscv32_board BIN ARGS... (an argument cannot contain a space)
+riscv32_board() {
+    kernel=$1 && shift
+    rv_args="arg=amorph"
+    for x in "$@"; do rv_args="$rv_args,arg=$(echo "$x" | sed 's/,/,,/g')"; done
+    timeout "$TIMEOUT" qemu-system-riscv32 -M virt -bios none -nographic -monitor none -serial none \
+        -semihosting-config "enable=on,target=native,$rv_args" -kernel "$kernel" </dev/null
+}
 # runs one built amorph with REPRO_ARGS, output on stdout
 run_one() {
     bin=$1 how=$2
@@ -62,6 +74,7 @@ run_one() {
         for a in $REPRO_ARGS; do sh_args="$sh_args,arg=$(echo "$a" | sed 's/,/,,/g')"; done
         timeout "$TIMEOUT" qemu-system-arm -M "${how#board:}" -nographic -monitor none -serial none \
             -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null ;;
+    riscv32_board) riscv32_board "$bin" $REPRO_ARGS ;;
     *) timeout "$TIMEOUT" "$how" "$bin" $REPRO_ARGS ;;
     esac
 }
@@ -113,12 +126,15 @@ for name in $(echo "$TARGETS" | cut -d'|' -f1); do
 done
 # the board budget: with the board profile's population of 20, at most 192 KiB of RAM (data + bss,
 # stack and heap arena included) and 256 KiB of flash (text + data), from arm-none-eabi-size
+# (riscv64-unknown-elf-size for rv32)
 RAM_MAX=196608
 FLASH_MAX=262144
-for name in cortex-m3 cortex-m4; do
+for name in cortex-m3 cortex-m4 rv32; do
     bin=$(build_of "TARGET=$name")/amorph
-    [ -f "$bin" ] && command -v arm-none-eabi-size >/dev/null 2>&1 || continue
-    sizes=$(arm-none-eabi-size "$bin" | awk 'NR == 2 { print $1 + $2, $2 + $3 }')
+    size=arm-none-eabi-size
+    [ "$name" = rv32 ] && size=riscv64-unknown-elf-size
+    [ -f "$bin" ] && command -v $size >/dev/null 2>&1 || continue
+    sizes=$($size "$bin" | awk 'NR == 2 { print $1 + $2, $2 + $3 }')
     flash=${sizes% *} ram=${sizes#* }
     mark=""
     if [ "$ram" -gt $RAM_MAX ] || [ "$flash" -gt $FLASH_MAX ]; then mark="  OVER BUDGET"; bad=$((bad + 1)); fi
@@ -149,6 +165,8 @@ cross_resume() {
 }
 cross_resume s390x-linux qemu-s390x
 cross_resume i686-linux qemu-i386
+# and on the rv32 board, whose C library (picolibc) reads the checkpoint's numbers
+command -v qemu-system-riscv32 >/dev/null 2>&1 && cross_resume rv32 riscv32_board
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
 if [ "$bad" -ne 0 ]; then

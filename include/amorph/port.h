@@ -2,8 +2,8 @@
  *
  * The library in src/ never calls the OS: everything platform-bound (time, console, files,
  * threads, signals) goes through these functions, implemented once per platform in
- * port/<name>/ (port/posix: Linux and other POSIX systems; port/baremetal: Cortex-M boards
- * with semihosting). A port is selected at build time with `make PORT=name`; docs/porting.md
+ * port/<name>/ (port/posix: Linux and other POSIX systems; port/baremetal: Cortex-M and
+ * RISC-V boards with semihosting). A port is selected at build time with `make PORT=name`; docs/porting.md
  * says how to add one.
  *
  * Rules every port keeps:

@@ -1,6 +1,6 @@
-/* Bare-metal port (Cortex-M boards, Arm semihosting): the clock, the console and the files are
- * the host's, reached through semihosting; one core, so the parallel map runs every item in
- * order on worker 0; nothing can interrupt a run.
+/* Bare-metal port (Cortex-M and RISC-V boards, semihosting): the clock, the console and the
+ * files are the host's, reached through semihosting; one core, so the parallel map runs every
+ * item in order on worker 0; nothing can interrupt a run.
  *
  * Directories: semihosting has no mkdir. am_port_make_dir succeeds when the directory already
  * exists on the host (opening "path/." succeeds only for a directory) and otherwise fails with
@@ -159,7 +159,8 @@ double am_port_now(void)
 
 /* ---- console and progress ---- */
 
-/* the C library's streams are unbuffered (startup.c), so these keep the order of printf output */
+/* the C library's streams are unbuffered (cortex-m/startup.c, riscv/picolibc.c), so these keep the
+ * order of printf output */
 void am_port_out(const char* text)
 {
     sh_write_console(0, text, (uint32_t)strlen(text));

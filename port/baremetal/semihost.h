@@ -1,10 +1,13 @@
-/* port/baremetal/semihost.h: Arm semihosting, the debugger's (or QEMU's) services to a board.
+/* port/baremetal/semihost.h: semihosting, the debugger's (or QEMU's) services to a board.
  *
- * A semihosting call is a BKPT 0xAB instruction on M-profile cores with the operation number in
- * r0 and one argument (a word, or the address of a block of words) in r1; the answer comes back
- * in r0. The operation numbers are those of Arm's "Semihosting for AArch32 and AArch64"
- * specification, release 2.0. Files are host files, named relative to the host's working
- * directory; ":tt" is the host console. */
+ * A semihosting call passes an operation number and one argument (a word, or the address of a
+ * block of words) and gets one word back. Only the trap differs between instruction sets
+ * (sh_call, in the instruction set's startup.c): BKPT 0xAB with r0 and r1 on M-profile Arm
+ * cores, the sequence slli x0,x0,0x1f; ebreak; srai x0,x0,7 with a0 and a1 on RISC-V. The
+ * operation numbers are those of Arm's "Semihosting for AArch32 and AArch64" specification,
+ * release 2.0, which the RISC-V semihosting specification adopts as they are (words of 32 bits
+ * on a 32-bit core). Files are host files, named relative to the host's working directory;
+ * ":tt" is the host console. */
 #ifndef AMORPH_PORT_SEMIHOST_H
 #define AMORPH_PORT_SEMIHOST_H
 
@@ -42,14 +45,9 @@ enum { SH_MODE_RB = 1, SH_MODE_WB = 5, SH_MODE_AB = 9 };
 #define SH_EXT_EXIT_EXTENDED 0x01
 #define SH_EXT_STDOUT_STDERR 0x02
 
-/* one semihosting call */
-static inline int32_t sh_call(uint32_t op, uintptr_t arg)
-{
-    register uint32_t r0 __asm__("r0") = op;
-    register uintptr_t r1 __asm__("r1") = arg;
-    __asm__ volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
-    return (int32_t)r0;
-}
+/* one semihosting call: the operation, its argument; the host's answer (the instruction set's
+ * startup.c) */
+int32_t sh_call(uint32_t op, uintptr_t arg);
 
 /* the port's own helpers (port_baremetal.c) */
 int32_t sh_open(const char* name, int mode);          /* handle, or -1 */

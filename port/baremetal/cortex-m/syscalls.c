@@ -1,10 +1,12 @@
-/* The system calls newlib's C library makes (printf, fopen, exit...), on semihosting.
+/* The system calls newlib's C library makes (printf, fopen, exit...), on semihosting: the C
+ * library of the Cortex-M builds (Debian's libnewlib-arm-none-eabi).
  *
  * File descriptors 0, 1, 2 are the host console (stdin is empty); open() hands out descriptors
  * 3 and up for host files, at most SYS_FILES at once. There is no heap growth beyond a fixed
  * static arena: _sbrk serves newlib's malloc from HEAP_ARENA bytes and then fails. Only newlib
  * mallocs, never amorph: its floating-point printf (dtoa's big numbers) and the buffer of a
  * stream opened with fopen (the standard streams are unbuffered, see startup.c). */
+#include "boot.h"
 #include "semihost.h"
 
 #include <errno.h>
@@ -176,15 +178,7 @@ int _kill(int pid, int sig)
 
 _Noreturn void _exit(int status)
 {
-#if defined(AM_BAREMETAL_STACK_REPORT)
-    {
-        unsigned long am_baremetal_stack_used(void);
-        char line[96];
-        snprintf(line, sizeof line, "baremetal: stack_used=%lu heap_used=%lu\n", am_baremetal_stack_used(),
-                 am_baremetal_heap_used());
-        sh_write_console(1, line, (uint32_t)strlen(line));
-    }
-#endif
+    am_boot_report(am_baremetal_heap_used());
     sh_exit(status);
 }
 

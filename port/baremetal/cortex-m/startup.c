@@ -1,22 +1,26 @@
-/* Start-up of a Cortex-M board: the vector table, the reset handler (copy .data, clear .bss,
- * switch the FPU on when there is one), the command line from the host, and main().
+/* Start-up of a Cortex-M board: the vector table, the reset handler (switch the FPU on when
+ * there is one, then boot.c's steps: .data, .bss, the stack's paint, the command line, main()),
+ * and the semihosting trap.
  *
  * mps2.ld places the table at address 0, where the core reads the initial stack pointer (entry
  * 0) and the reset handler (entry 1) on reset. The stack sits at the bottom of RAM, below .data,
  * so an overflow runs off the RAM instead of into the program's data. */
+#include "boot.h"
 #include "semihost.h"
 
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
-int main(int argc, char** argv);
 void am_reset(void);
 
-/* symbols of the linker script (mps2.ld) */
-extern uint32_t __stack_limit[], __stack_top[];
-extern uint32_t __data_start[], __data_end[], __data_load[];
-extern uint32_t __bss_start[], __bss_end[];
+/* one semihosting call: BKPT 0xAB with the operation in r0 and its argument in r1, the answer
+ * back in r0 (M-profile cores) */
+int32_t sh_call(uint32_t op, uintptr_t arg)
+{
+    register uint32_t r0 __asm__("r0") = op;
+    register uintptr_t r1 __asm__("r1") = arg;
+    __asm__ volatile("bkpt 0xab" : "+r"(r0) : "r"(r1) : "memory");
+    return (int32_t)r0;
+}
 
 typedef void (*am_handler)(void);
 
@@ -71,42 +75,6 @@ void _fini(void)
 {
 }
 
-#define STACK_PAINT 0xa5a5a5a5u /* stack words never written keep this value */
-
-/* highest stack use so far, bytes: the painted words the stack has not reached stay painted */
-unsigned long am_baremetal_stack_used(void);
-unsigned long am_baremetal_stack_used(void)
-{
-    const volatile uint32_t* p = __stack_limit;
-    while (p < __stack_top && *p == STACK_PAINT) p++;
-    return (unsigned long)((uintptr_t)__stack_top - (uintptr_t)p);
-}
-
-/* the host's command line split at spaces (semihosting passes one string: an argument cannot
- * contain a space) */
-#define CMDLINE_MAX 1024
-#define ARGV_MAX 64
-static char cmdline[CMDLINE_MAX];
-static char* argv_buf[ARGV_MAX + 1];
-
-static int split_cmdline(void)
-{
-    uintptr_t a[2] = {(uintptr_t)cmdline, CMDLINE_MAX};
-    int argc = 0;
-    if (sh_call(SH_SYS_GET_CMDLINE, (uintptr_t)a) != 0) cmdline[0] = 0;
-    cmdline[CMDLINE_MAX - 1] = 0;
-    char* p = cmdline;
-    while (*p && argc < ARGV_MAX) {
-        while (*p == ' ') *p++ = 0;
-        if (!*p) break;
-        argv_buf[argc++] = p;
-        while (*p && *p != ' ') p++;
-    }
-    if (argc == 0) argv_buf[argc++] = (char*)"amorph"; /* no command line: the program name only */
-    argv_buf[argc] = 0;
-    return argc;
-}
-
 /* the FPU (CP10, CP11) is off after reset; floating-point code before this would fault */
 static void fpu_on(void)
 {
@@ -117,24 +85,13 @@ static void fpu_on(void)
 #endif
 }
 
-/* paints the unused stack below the current frame, for am_baremetal_stack_used */
-__attribute__((noinline)) static void stack_paint(void)
-{
-    volatile uint32_t* p = __stack_limit;
-    volatile uint32_t* end = (volatile uint32_t*)((uintptr_t)&p - 256);
-    while (p < end) *p++ = STACK_PAINT;
-}
-
 void am_reset(void)
 {
     fpu_on();
-    for (uint32_t *s = __data_load, *d = __data_start; d < __data_end;) *d++ = *s++;
-    for (uint32_t* d = __bss_start; d < __bss_end;) *d++ = 0;
-    stack_paint();
+    am_boot_memory();
     /* unbuffered standard streams: the C library allocates no stream buffer and output keeps
      * its order across printf, am_port_out and the two streams */
     setvbuf(stdout, 0, _IONBF, 0);
     setvbuf(stderr, 0, _IONBF, 0);
-    int argc = split_cmdline();
-    exit(main(argc, argv_buf));
+    am_boot_main();
 }
