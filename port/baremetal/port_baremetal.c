@@ -120,29 +120,7 @@ _Noreturn void sh_exit(int status)
 
 /* ---- clock ---- */
 
-#if defined(AM_BAREMETAL_ICOUNT)
-/* The clock of `make bench-board`: the MPS2 FPGA I/O block's COUNTER (0x40028018), which counts
- * at 25 MHz of the board's time once PRESCALE (0x4002801C) is 0. Under QEMU with -icount shift=0
- * the board's time advances 1 ns per instruction executed, so a second of this clock is 1e9
- * instructions (read to 40 instructions). The 32-bit counter wraps every 171 s of board time;
- * a read after a wrap carries it, so no two reads may be further apart than that. */
-#define FPGAIO_COUNTER (*(volatile uint32_t*)0x40028018u)
-#define FPGAIO_PRESCALE (*(volatile uint32_t*)0x4002801Cu)
-double am_port_now(void)
-{
-    static int started;
-    static uint32_t last;
-    static uint64_t high;
-    if (!started) {
-        FPGAIO_PRESCALE = 0;
-        started = 1;
-    }
-    const uint32_t c = FPGAIO_COUNTER;
-    if (c < last) high += (uint64_t)1 << 32;
-    last = c;
-    return (double)(high + c) / 25e6;
-}
-#else
+#if !defined(AM_BAREMETAL_ICOUNT) /* else the instruction set folder's clock (cortex-m/icount.c) */
 double am_port_now(void)
 {
     static int32_t freq; /* SYS_TICKFREQ, 0 until asked, -1 when the host has no SYS_ELAPSED */
