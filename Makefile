@@ -30,6 +30,7 @@ TARGET_armhf-linux   := posix arm-linux-gnueabihf-gcc -static
 TARGET_riscv64-linux := posix riscv64-linux-gnu-gcc -static
 TARGET_s390x-linux   := posix s390x-linux-gnu-gcc -static -fexcess-precision=fast
 TARGET_i686-linux    := posix i686-linux-gnu-gcc -static -msse2 -mfpmath=sse
+TARGET_win64         := win32 x86_64-w64-mingw32-gcc -static
 TARGET  ?=
 TARGET_CFLAGS :=
 TARGET_LDFLAGS :=
@@ -63,6 +64,7 @@ endif
 LDLIBS  := -lm -lpthread
 # the port's source folders: port/<port>/, and any its port.mk adds
 PORT_DIRS := port/$(PORT)
+EXE     :=
 -include port/$(PORT)/port.mk
 
 ifeq ($(filter $(REAL),float double fixed),)
@@ -93,7 +95,7 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h))
 
 .PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board
-all: $(BUILD)/libamorph.a $(BUILD)/amorph
+all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
 	@mkdir -p $(dir $@)
@@ -107,8 +109,14 @@ $(BUILD)/libamorph_port.a: $(PORT_OBJ)
 	@mkdir -p $(dir $@)
 	rm -f $@ && ar rcs $@ $^
 
-$(BUILD)/amorph: $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
+$(BUILD)/amorph$(EXE): $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -o $@ $(TOOL_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+# a port whose programs have a suffix (EXE, from its port.mk: win32's .exe) builds them for the
+# goal $(BUILD)/amorph too, the name tools/repro.sh asks every target for
+ifneq ($(EXE),)
+.PHONY: $(BUILD)/amorph
+$(BUILD)/amorph: $(BUILD)/amorph$(EXE)
+endif
 
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))

@@ -1,0 +1,8 @@
+# port/win32/port.mk: how the Windows port links (included by the Makefile for PORT=win32).
+# The program is amorph.exe (the compiler names a Windows program so whatever -o says); the C
+# runtime's threads need no library of their own (no -lpthread).
+ifeq ($(TARGET),)
+$(error PORT=win32 is a cross build: name it with TARGET=win64)
+endif
+EXE    := .exe
+LDLIBS := -lm
