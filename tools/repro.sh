@@ -8,6 +8,7 @@
 #   (mps2-an385 / mps2-an386) with semihosting
 #   RISC-V 32-bit (rv32imafc, single-precision FPU): bare metal under qemu-system-riscv32 (virt)
 #   with semihosting
+#   Windows x86-64: mingw-w64, static, port/win32, under wine (tools/wine.sh: prefix build/wine)
 # Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
 # hash equals REPRO_EXPECT. Builds log to build/repro/<target>.log.
 # REPRO_ARGS is the reference computation: the amorph command line (without "amorph"); its
@@ -30,12 +31,14 @@ TIMEOUT=${REPRO_TIMEOUT:-600}
 
 # name | make variables (besides PROFILE=board) | how to run (native, a qemu-user binary, or
 # board:<qemu-system-arm machine>, or riscv32_board: qemu-system-riscv32 -M virt, below)
+# (a runner script is given the program's path: tools/wine.sh runs a Windows build's amorph.exe)
 TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
 cortex-m4|TARGET=cortex-m4|board:mps2-an386
 rv32|TARGET=rv32|riscv32_board
 x86_64-gcc-O0|BUILD=build/repro/gcc-O0-REAL CC=gcc OPT=-O0 ARCH=|native
 x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=native|native
 x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
+win64|TARGET=win64|tools/wine.sh
 aarch64-linux|TARGET=aarch64-linux|qemu-aarch64
 armhf-linux|TARGET=armhf-linux|qemu-arm
 riscv64-linux|TARGET=riscv64-linux|qemu-riscv64
@@ -147,6 +150,7 @@ native=$(build_of "BUILD=build/repro/gcc-O3-native-$REAL")/amorph
 cross_resume() {
     name=$1 runner=$2
     bin=$(build_of "TARGET=$name")/amorph
+    [ -x "$bin" ] || [ ! -f "$bin.exe" ] || bin=$bin.exe
     [ -x "$native" ] && [ -x "$bin" ] && command -v "$runner" >/dev/null 2>&1 || return 0
     d=build/repro/resume-$name-$REAL
     rm -rf "$d" && mkdir -p "$d"
@@ -167,6 +171,7 @@ cross_resume s390x-linux qemu-s390x
 cross_resume i686-linux qemu-i386
 # and on the rv32 board, whose C library (picolibc) reads the checkpoint's numbers
 command -v qemu-system-riscv32 >/dev/null 2>&1 && cross_resume rv32 riscv32_board
+cross_resume win64 tools/wine.sh
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
 if [ "$bad" -ne 0 ]; then
