@@ -147,7 +147,9 @@ test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
-	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board
+	@if command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 && command -v wine >/dev/null 2>&1; then \
+	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
