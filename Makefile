@@ -125,8 +125,9 @@ $(BUILD)/tests/%: tests/%.c $(HEADERS) $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BU
 	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
 # no object of src/ or port/ may reference an allocator
+NM ?= nm
 check-alloc: $(LIB_OBJ) $(PORT_OBJ)
-	@bad=$$(for o in $(LIB_OBJ) $(PORT_OBJ); do nm -u $$o | awk -v o=$$o '$$2 ~ /^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|alloca|strdup|strndup)$$/ {print o": "$$2}'; done); \
+	@bad=$$(for o in $(LIB_OBJ) $(PORT_OBJ); do $(NM) -u $$o | awk -v o=$$o '$$2 ~ /^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|alloca|strdup|strndup)$$/ {print o": "$$2}'; done); \
 	if [ -n "$$bad" ]; then echo "check-alloc: allocation found:"; echo "$$bad"; echo "check-alloc: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-alloc: no allocator referenced by $(words $(LIB_OBJ) $(PORT_OBJ)) objects of src/ and port/"
 
@@ -148,7 +149,7 @@ test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
 	@if command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 && command -v wine >/dev/null 2>&1; then \
-	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
+	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all check-alloc; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
 	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
