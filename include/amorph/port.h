@@ -2,9 +2,9 @@
  *
  * The library in src/ never calls the OS: everything platform-bound (time, console, files,
  * threads, signals) goes through these functions, implemented once per platform in
- * port/<name>/ (port/posix: Linux and other POSIX systems; port/baremetal: Cortex-M and
- * RISC-V boards with semihosting). A port is selected at build time with `make PORT=name`; docs/porting.md
- * says how to add one.
+ * port/<name>/ (port/posix: Linux and other POSIX systems; port/win32: Windows;
+ * port/baremetal: Cortex-M and RISC-V boards with semihosting). A port is selected at build
+ * time with `make PORT=name`; docs/porting.md says how to add one.
  *
  * Rules every port keeps:
  * - no allocation (static storage only), no recursion;
@@ -75,9 +75,9 @@ am_status am_port_make_dir(const char* path, char* err, int errsz);
 int am_port_exists(const char* path);
 /* removes the temporaries of atomic replaces (above) that a process left in the folder dir when
  * it died before renaming them (a kill during a write), and sets *removed (may be NULL) to their
- * count. The POSIX port's temporaries are path.tmp.PID: it removes the regular files directly in
- * dir named NAME.tmp.DIGITS (NAME not empty), except this process's own, and touches nothing
- * else. Call it only while no other process writes files in dir (the caller holds the folder's
+ * count. The POSIX and Windows ports' temporaries are path.tmp.PID: they remove the regular
+ * files directly in dir named NAME.tmp.DIGITS (NAME not empty), except this process's own, and
+ * touch nothing else. Call it only while no other process writes files in dir (the caller holds the folder's
  * lock, am_port_lock). AM_ERR_IO when dir cannot be listed or a temporary cannot be removed (the
  * others are removed all the same). A port that cannot list a folder returns AM_OK with 0
  * removed: port/baremetal, whose one temporary per file, path.tmp, is reused and renamed by the
@@ -107,9 +107,9 @@ int am_port_interrupted(void);
 
 /* ---- owning a folder ---- */
 
-/* takes the exclusive lock of the file path (created if missing; the POSIX port writes its process
- * id into it), held until am_port_unlock or the end of the process, however it ends (kill -9
- * included: no stale lock is left). One lock at a time. AM_ERR_IO when another process holds it
+/* takes the exclusive lock of the file path (created if missing; the POSIX and Windows ports
+ * write the process id into it), held until am_port_unlock or the end of the process, however it
+ * ends (kill -9 included: no stale lock is left). One lock at a time. AM_ERR_IO when another process holds it
  * (the message names it) or the file cannot be made. A port with one process does nothing. */
 am_status am_port_lock(const char* path, char* err, int errsz);
 void am_port_unlock(void);
