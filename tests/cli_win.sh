@@ -1,8 +1,8 @@
 #!/bin/sh
 # tests/cli_win.sh: the Windows build (port/win32, make TARGET=win64) under wine, against the Linux
-# build $BUILD/amorph of the same number type and profile. `make test` builds it into
-# $BUILD/windows and sets WIN_BUILD when x86_64-w64-mingw32-gcc and wine are installed; skipped
-# otherwise. Checked: the reference computation and a small evolution give the Linux build's
+# build $BUILD/amorph of the same number type, both of the desktop profile. `make test` builds it
+# into $BUILD/windows and sets WIN_BUILD when x86_64-w64-mingw32-gcc and wine are installed;
+# skipped otherwise. Checked: the reference computation and a small evolution give the Linux build's
 # results on 2 and 3 Windows threads; a run interrupted at a counted evaluation (Ctrl-C's path,
 # and TerminateProcess as kill -9) resumes to the uninterrupted run, removing the temporaries a
 # killed writer left; a run held (every thread suspended) keeps its folder locked against a
@@ -37,6 +37,12 @@ L="$AMORPH"
 bw=$(W --help 2>/dev/null | grep '^build:')
 bl=$("$L" --help 2>/dev/null | grep '^build:')
 if [ -n "$bw" ] && [ "$bw" = "$bl" ]; then ok; else ko "the Windows build is '$bw', the Linux build '$bl': build both with the same REAL and PROFILE"; fi
+# the desktop profile: several threads, and a generation evaluated in one batch, so that a point
+# inside it interrupts it half done (docs/evolve.md, Testing interruptions)
+case "$bw" in
+*profile=desktop*) ok ;;
+*) ko "$WEXE: '$bw': these tests need desktop-profile builds"; summary cli_win; exit $? ;;
+esac
 hw=$(W repro | sed -n 's/^repro_hash=//p')
 hl=$("$L" repro | sed -n 's/^repro_hash=//p')
 if [ -n "$hl" ] && [ "$hw" = "$hl" ]; then ok; else ko "amorph repro: Windows $hw, Linux $hl"; fi
@@ -90,14 +96,16 @@ else ko "stale temporaries after the resume: $(ls "$d" | tr '\n' ' ')"; fi
 if [ -z "$(ls "$d" | grep '\.tmp\.[0-9]*$' | grep -v folder)" ]; then ok; else ko "temporaries left: $(ls "$d" | tr '\n' ' ')"; fi
 same "$d" "$TMPD/whole" "resumed after KILL:20"
 
-# --- one process per run folder: the first holds itself just before evaluation 21 (STOP: every
+# --- one process per run folder: the first holds itself just before evaluation 17 (STOP: every
 # thread suspended), a second is refused naming the owner's process id (the lock file's text);
-# then the first is killed from outside and its folder resumes to the uninterrupted run ---
+# then the first is killed from outside and its folder resumes to the uninterrupted run. The
+# checkpoint at 16 is the last file the first process writes before it holds: once it is there,
+# the folder stays as it is until the kill, wherever the kill lands ---
 d="$TMPD/two"
-AMORPH_TEST_INTERRUPT=STOP:20 tools/wine.sh "$WEXE" evolve $S --out "$d" >"$TMPD/out1" 2>"$TMPD/err1" &
+AMORPH_TEST_INTERRUPT=STOP:16 tools/wine.sh "$WEXE" evolve $S --out "$d" >"$TMPD/out1" 2>"$TMPD/err1" &
 pid=$!
 k=0
-while [ ! -s "$d/lock" ] && kill -0 $pid 2>/dev/null && [ $k -lt 600 ]; do sleep 0.1; k=$((k + 1)); done
+while ! grep -qx "evaluations 16" "$d/checkpoint.txt" 2>/dev/null && kill -0 $pid 2>/dev/null && [ $k -lt 600 ]; do sleep 0.1; k=$((k + 1)); done
 owner=$(tr -d '\r\n' <"$d/lock" 2>/dev/null)
 if [ -n "$owner" ]; then ok; else ko "the first process wrote no owner into its lock"; fi
 expect_fail 2 "two/lock: in use by process $owner \(another amorph is working in" W evolve --resume "$d" --quiet
