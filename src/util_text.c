@@ -160,3 +160,14 @@ int am_parse_double(const char* s, double* out)
     *out = v;
     return 1;
 }
+
+/* ---- the temporaries of atomic writes ---- */
+
+const char* am_temp_name_pid(const char* name)
+{
+    const char* t = NULL;
+    for (const char* p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p;
+    if (!t || t == name) return NULL;
+    const char* pid = t + 5;
+    return *pid && strspn(pid, "0123456789") == strlen(pid) ? pid : NULL;
+}

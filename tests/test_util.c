@@ -14,6 +14,7 @@
 
 #include <float.h>
 #include <stdint.h>
+#include <string.h>
 
 #if defined(AM_REAL_FIXED_POINT)
 /* the fixed-point build (docs/fixed.md) has its own tests of the functions below */
@@ -611,10 +612,22 @@ static void test_parse_numbers(void)
     CHECK(!am_parse_double(NULL, &d), "NULL");
 }
 
+/* the temporaries' names the ports remove on resume */
+static void test_temp_name_pid(void)
+{
+    const char* pid = am_temp_name_pid("log.csv.tmp.123");
+    CHECK(pid && !strcmp(pid, "123"), "log.csv.tmp.123");
+    pid = am_temp_name_pid("a.tmp.b.tmp.7");
+    CHECK(pid && !strcmp(pid, "7"), "the last .tmp. counts");
+    const char* no[] = {".tmp.5", "x.tmp.", "a.tmp.12x", "c.tmp.-1", "notes.tmp.txt", "plain"};
+    for (size_t k = 0; k < sizeof no / sizeof no[0]; k++) CHECK(!am_temp_name_pid(no[k]), "'%s' is no temporary", no[k]);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     RUN(test_parse_numbers);
+    RUN(test_temp_name_pid);
 #if defined(AM_REAL_FIXED_POINT)
     RUN(test_fixed_functions);
     RUN(test_fixed_special_values);

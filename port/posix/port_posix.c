@@ -7,6 +7,7 @@
  * host under qemu-user) */
 #define _FILE_OFFSET_BITS 64
 #include "amorph/port.h"
+#include "amorph/text.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -351,17 +352,6 @@ int am_port_exists(const char* path)
     return stat(path, &st) == 0;
 }
 
-/* the PID of a temporary's name NAME.tmp.PID (NAME not empty, PID digits: what tmp_name makes),
- * or NULL for any other name */
-static const char* tmp_pid(const char* name)
-{
-    const char* t = NULL;
-    for (const char* p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p;
-    if (!t || t == name) return NULL;
-    const char* pid = t + 5;
-    return *pid && strspn(pid, "0123456789") == strlen(pid) ? pid : NULL;
-}
-
 am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
 {
     if (removed) *removed = 0;
@@ -378,7 +368,7 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
             if (errno != 0 && st == AM_OK) st = am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
             break;
         }
-        const char* pid = tmp_pid(e->d_name);
+        const char* pid = am_temp_name_pid(e->d_name);
         if (!pid || strcmp(pid, own) == 0) continue; /* not a temporary, or one of this process's writes */
         char path[4096];
         int k = snprintf(path, sizeof path, "%s/%s", dir, e->d_name);

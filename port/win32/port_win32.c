@@ -16,6 +16,7 @@
  * code page like argv; '/' and '\' both separate folders. */
 #define WIN32_LEAN_AND_MEAN
 #include "amorph/port.h"
+#include "amorph/text.h"
 
 #include <windows.h>
 #include <process.h>
@@ -436,17 +437,6 @@ int am_port_exists(const char* path)
     return GetFileAttributesA(path) != INVALID_FILE_ATTRIBUTES;
 }
 
-/* the PID of a temporary's name NAME.tmp.PID (NAME not empty, PID digits: what tmp_name makes),
- * or NULL for any other name */
-static const char* tmp_pid(const char* name)
-{
-    const char* t = NULL;
-    for (const char* p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p;
-    if (!t || t == name) return NULL;
-    const char* pid = t + 5;
-    return *pid && strspn(pid, "0123456789") == strlen(pid) ? pid : NULL;
-}
-
 am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
 {
     if (removed) *removed = 0;
@@ -466,7 +456,7 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     am_status st = AM_OK;
     int n = 0;
     do {
-        const char* pid = tmp_pid(fd.cFileName);
+        const char* pid = am_temp_name_pid(fd.cFileName);
         if (!pid || strcmp(pid, own) == 0) continue; /* not a temporary, or one of this process's writes */
         /* regular files only: a folder, a link (reparse point) or a device of that name is not ours */
         if (fd.dwFileAttributes & (FILE_ATTRIBUTE_DIRECTORY | FILE_ATTRIBUTE_REPARSE_POINT | FILE_ATTRIBUTE_DEVICE)) continue;
