@@ -24,52 +24,66 @@ am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_ge
     return am_genome_to_lattice(g, &ex, w, lat, err, errsz);
 }
 
-void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
-                     am_record* rec, am_evo_ind* out, am_evo_eval* detail)
+/* one evaluation of g on the workspace w into *r and *detail (rec may be NULL) */
+static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w, am_record* rec,
+                     am_evo_result* r)
 {
     char err[AM_ERR_MAX];
-    am_evo_eval scratch;
-    if (!detail) detail = &scratch;
-    if (&out->genome != g) out->genome = *g;
-    out->fitness = 0.0;
-    out->voxels = 0;
-    out->diverged = 0;
-    out->empty = 0;
-    out->steps = 0;
-    out->state_hash = 0;
-    memset(detail, 0, sizeof *detail);
+    am_evo_eval* detail = &r->detail;
+    memset(r, 0, sizeof *r);
     detail->parent[0] = detail->parent[1] = -1;
     if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
-        out->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
+        r->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
         return;
     }
-    out->voxels = w->geno.voxels;
+    r->voxels = w->geno.voxels;
     /* the expressed body holds 1 + the genome's material index in each filled cell */
     const int cells = g->nx * g->ny * g->nz;
     for (int c = 0; c < cells; c++)
         if (w->geno.cell[c] > 0 && w->geno.cell[c] <= AM_MAX_GENO_MATERIALS) detail->material_voxels[w->geno.cell[c] - 1]++;
     am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, sizeof err);
     if (st == AM_ERR_EMPTY) {
-        out->empty = 1; /* a valid body that goes nowhere */
+        r->empty = 1; /* a valid body that goes nowhere */
         return;
     }
     if (st != AM_OK) {
-        out->diverged = 1;
+        r->diverged = 1;
         return;
     }
     am_eval_def ev = d->eval;
     ev.record = rec;
     am_result res;
     am_evaluate(&w->model, &w->state, &ev, &res);
-    out->fitness = res.diverged ? -1.0 : res.fitness;
+    r->fitness = res.diverged ? -1.0 : res.fitness;
     detail->dx = res.dx;
     detail->dy = res.dy;
     detail->dz = res.dz;
     detail->settled = res.settled;
     detail->relax_steps = res.relax_steps;
-    out->diverged = res.diverged;
-    out->steps = res.steps;
-    out->state_hash = res.hash;
+    r->diverged = res.diverged;
+    r->steps = res.steps;
+    r->state_hash = res.hash;
+}
+
+/* the individual's fields from a result (its genome is set by the caller) */
+static void take_result(am_evo_ind* out, const am_evo_result* r)
+{
+    out->fitness = r->fitness;
+    out->voxels = r->voxels;
+    out->diverged = r->diverged;
+    out->empty = r->empty;
+    out->steps = r->steps;
+    out->state_hash = r->state_hash;
+}
+
+void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
+                     am_record* rec, am_evo_ind* out, am_evo_eval* detail)
+{
+    am_evo_result r;
+    evaluate(d, pal, g, w, rec, &r);
+    if (&out->genome != g) out->genome = *g;
+    take_result(out, &r);
+    if (detail) *detail = r.detail;
 }
 
 am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
@@ -104,67 +118,6 @@ static int better(const am_evo_ind* a, const am_evo_ind* b)
 }
 
 _Static_assert(AM_EVO_BATCH >= 2 && AM_EVO_BATCH % 2 == 0, "offspring come in pairs");
-
-/* ---- parallel evaluation ---- */
-
-typedef struct eval_job {
-    const am_evo* e;
-    am_evo_ind* items;
-    am_evo_eval* details;
-    const int* order;        /* item i of the map evaluates items[order[i]] */
-    am_evo_work* work;
-    const am_evo_hooks* hooks; /* with a cancel callback, or NULL */
-    int skipped[AM_EVO_BATCH];
-} eval_job;
-
-static void eval_task(void* ctx, int item, int worker)
-{
-    eval_job* job = (eval_job*)ctx;
-    int idx = job->order[item];
-    if (job->hooks && job->hooks->cancel(job->hooks->ctx)) {
-        job->skipped[idx] = 1;
-        return;
-    }
-    am_evo_ind* it = &job->items[idx];
-    am_evo_evaluate(&job->e->def, &job->e->palette, &it->genome, &job->work[worker], NULL, it, &job->details[idx]);
-}
-
-/* evaluates items[0..n) on the workers, the largest bodies first (they take longest), and
- * returns 1 when every item was evaluated */
-static int evaluate_all(am_evo* e, am_evo_ind* items, int n, am_evo_work* w, int workers, const am_evo_hooks* hooks,
-                        char* err, int errsz, am_status* st)
-{
-    eval_job job;
-    int* order = e->order;
-    int voxels[AM_EVO_BATCH];
-    am_express_def ex = express_def(&e->def, &e->palette);
-    char msg[AM_ERR_MAX];
-    for (int i = 0; i < n; i++) {
-        order[i] = i;
-        voxels[i] = am_genome_express(&items[i].genome, &ex, &w[0].geno, NULL, msg, sizeof msg) == AM_OK ? w[0].geno.voxels : 0;
-    }
-    /* insertion sort: most voxels first, ties by index (the order changes speed, never results) */
-    for (int i = 1; i < n; i++) {
-        int k = order[i], j = i;
-        while (j > 0 && voxels[order[j - 1]] < voxels[k]) {
-            order[j] = order[j - 1];
-            j--;
-        }
-        order[j] = k;
-    }
-    memset(&job, 0, sizeof job);
-    job.e = e;
-    job.items = items;
-    job.details = e->eval;
-    job.order = order;
-    job.work = w;
-    job.hooks = hooks && hooks->cancel ? hooks : NULL;
-    *st = am_port_parallel_map(n, workers, eval_task, &job, err, errsz);
-    if (*st != AM_OK) return 0;
-    for (int i = 0; i < n; i++)
-        if (job.skipped[i]) return 0;
-    return 1;
-}
 
 /* ---- crowding ---- */
 
@@ -258,91 +211,191 @@ uint64_t am_evo_hash(const am_evo* e)
     return h;
 }
 
-/* ---- one generation ---- */
+/* ---- one generation, in steps ---- */
 
-am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz)
+void am_evo_gen_begin(am_evo* e)
 {
     const int n = e->def.population;
-    const double t0 = am_port_now();
-    const am_rng saved = e->rng;
-    am_status st = AM_OK;
-    if (workers < 1) workers = 1;
-    if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
-    int parent[AM_MAX_POPULATION]; /* offspring 2k and 2k + 1 come from parent[2k] and parent[2k + 1] */
-    for (int i = 0; i < n; i++) parent[i] = i;
+    e->gen_t0 = am_port_now();
+    e->gen_saved = e->rng;
+    e->gen_b = 0;
+    e->gen_m = 0;
+    e->gen_steps = e->gen_voxel_steps = 0;
+    e->gen_diverged = e->gen_empty = 0;
+    for (int i = 0; i < n; i++) e->gen_parent[i] = i;
     if (e->generation > 0) {
         /* random pairs: a Fisher-Yates shuffle of the population */
         for (int i = n - 1; i > 0; i--) {
             int j = (int)am_rng_below(&e->rng, (uint32_t)(i + 1));
-            int t = parent[i];
-            parent[i] = parent[j];
-            parent[j] = t;
+            int t = e->gen_parent[i];
+            e->gen_parent[i] = e->gen_parent[j];
+            e->gen_parent[j] = t;
         }
     }
-    am_evo_stats s;
-    memset(&s, 0, sizeof s);
-    long steps = 0, voxel_steps = 0;
-    for (int b = 0; b < n; b += AM_EVO_BATCH) {
-        const int m = n - b < AM_EVO_BATCH ? n - b : AM_EVO_BATCH;
-        if (e->generation == 0) {
-            /* the initial population: evaluated as it is */
-            for (int j = 0; j < m; j++) e->child[j] = e->pop[b + j];
-        } else {
-            for (int k = 0; k + 1 < m; k += 2) {
-                am_evo_ind* c1 = &e->child[k];
-                am_evo_ind* c2 = &e->child[k + 1];
-                st = am_genome_crossover(&e->pop[parent[b + k]].genome, &e->pop[parent[b + k + 1]].genome, &c1->genome, &c2->genome,
-                                         &e->def.geno, &e->rng, err, errsz);
-                if (st != AM_OK) {
-                    e->rng = saved; /* the shapes of a run's genomes never differ: not after a placed batch */
-                    return st;
-                }
-                am_genome_mutate(&c1->genome, &e->def.geno, &e->rng);
-                am_genome_mutate(&c2->genome, &e->def.geno, &e->rng);
+}
+
+am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m_out, char* err, int errsz)
+{
+    const int n = e->def.population;
+    const int b = e->gen_b + e->gen_m; /* after the batch placed last */
+    const int* parent = e->gen_parent;
+    *m_out = 0;
+    if (b >= n) return AM_OK;
+    const int m = n - b < AM_EVO_BATCH ? n - b : AM_EVO_BATCH;
+    if (e->generation == 0) {
+        /* the initial population: evaluated as it is */
+        for (int j = 0; j < m; j++) e->child[j] = e->pop[b + j];
+    } else {
+        for (int k = 0; k + 1 < m; k += 2) {
+            am_evo_ind* c1 = &e->child[k];
+            am_evo_ind* c2 = &e->child[k + 1];
+            am_status st = am_genome_crossover(&e->pop[parent[b + k]].genome, &e->pop[parent[b + k + 1]].genome, &c1->genome,
+                                               &c2->genome, &e->def.geno, &e->rng, err, errsz);
+            if (st != AM_OK) {
+                e->rng = e->gen_saved; /* the shapes of a run's genomes never differ: not after a placed batch */
+                return st;
             }
+            am_genome_mutate(&c1->genome, &e->def.geno, &e->rng);
+            am_genome_mutate(&c2->genome, &e->def.geno, &e->rng);
         }
-        /* cancelling is possible while nothing of the run has changed: in the first batch */
-        if (!evaluate_all(e, e->child, m, w, workers, b == 0 ? hooks : NULL, err, errsz, &st)) {
-            e->rng = saved;
-            if (st != AM_OK) return st;
+    }
+    /* the evaluation order: most voxels first (they take longest), ties by index; the order
+     * changes speed, never results */
+    int voxels[AM_EVO_BATCH];
+    am_express_def ex = express_def(&e->def, &e->palette);
+    char msg[AM_ERR_MAX];
+    for (int i = 0; i < m; i++) {
+        e->order[i] = i;
+        voxels[i] = am_genome_express(&e->child[i].genome, &ex, w, NULL, msg, sizeof msg) == AM_OK ? w->voxels : 0;
+    }
+    for (int i = 1; i < m; i++) {
+        int k = e->order[i], j = i;
+        while (j > 0 && voxels[e->order[j - 1]] < voxels[k]) {
+            e->order[j] = e->order[j - 1];
+            j--;
+        }
+        e->order[j] = k;
+    }
+    e->gen_b = b;
+    e->gen_m = m;
+    *m_out = m;
+    return AM_OK;
+}
+
+void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r)
+{
+    evaluate(&e->def, &e->palette, &e->child[e->order[i]].genome, w, NULL, r);
+}
+
+int am_evo_batch_cancellable(const am_evo* e)
+{
+    return e->gen_b == 0;
+}
+
+am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w, const am_evo_hooks* hooks, char* err, int errsz)
+{
+    const int b = e->gen_b, m = e->gen_m;
+    const int* parent = e->gen_parent;
+    for (int i = 0; i < m; i++)
+        if (res[i].skipped) {
+            if (b != 0) return am_fail(err, errsz, AM_ERR_ARG, "evaluation skipped after a placed batch");
+            e->rng = e->gen_saved; /* nothing of the run has changed: the generation is abandoned */
+            e->gen_m = 0;
             return am_fail(err, errsz, AM_ERR_CANCELLED, "interrupted");
         }
-        for (int j = 0; j < m; j++) {
-            am_evo_ind* c = &e->child[j];
-            c->id = e->evaluations + b + j;
-            e->history = ind_hash(e->history, c);
-            s.diverged += c->diverged;
-            s.empty += c->empty;
-            steps += c->steps;
-            voxel_steps += c->steps * c->voxels;
-            if (!e->has_best || better(c, &e->best)) {
-                e->best = *c;
-                e->has_best = 1;
-            }
-        }
-        for (int j = 0; j < m; j++) {
-            am_evo_eval* ev = &e->eval[j];
-            ev->generation = e->generation;
-            ev->parent[0] = e->generation == 0 ? -1 : e->pop[parent[b + (j & ~1)]].id;
-            ev->parent[1] = e->generation == 0 ? -1 : e->pop[parent[b + (j | 1)]].id;
-            ev->placed = 1; /* generation 0; crowding decides for the others */
-        }
-        if (e->generation == 0) {
-            for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];
-        } else {
-            for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, &w[0].geno);
-        }
-        if (hooks && hooks->evaluated)
-            for (int j = 0; j < m; j++) hooks->evaluated(hooks->ctx, &e->child[j], &e->eval[j]);
+    for (int i = 0; i < m; i++) {
+        const int j = e->order[i];
+        take_result(&e->child[j], &res[i]);
+        e->eval[j] = res[i].detail;
     }
-    e->evaluations += n;
+    for (int j = 0; j < m; j++) {
+        am_evo_ind* c = &e->child[j];
+        c->id = e->evaluations + b + j;
+        e->history = ind_hash(e->history, c);
+        e->gen_diverged += c->diverged;
+        e->gen_empty += c->empty;
+        e->gen_steps += c->steps;
+        e->gen_voxel_steps += c->steps * c->voxels;
+        if (!e->has_best || better(c, &e->best)) {
+            e->best = *c;
+            e->has_best = 1;
+        }
+    }
+    for (int j = 0; j < m; j++) {
+        am_evo_eval* ev = &e->eval[j];
+        ev->generation = e->generation;
+        ev->parent[0] = e->generation == 0 ? -1 : e->pop[parent[b + (j & ~1)]].id;
+        ev->parent[1] = e->generation == 0 ? -1 : e->pop[parent[b + (j | 1)]].id;
+        ev->placed = 1; /* generation 0; crowding decides for the others */
+    }
+    if (e->generation == 0) {
+        for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];
+    } else {
+        for (int k = 0; k + 1 < m; k += 2) crowd_pair(e, parent[b + k], parent[b + k + 1], k, w);
+    }
+    if (hooks && hooks->evaluated)
+        for (int j = 0; j < m; j++) hooks->evaluated(hooks->ctx, &e->child[j], &e->eval[j]);
+    return AM_OK;
+}
+
+void am_evo_gen_end(am_evo* e)
+{
+    am_evo_stats s;
+    memset(&s, 0, sizeof s);
+    e->evaluations += e->def.population;
     s.generation = e->generation;
     s.evaluations = e->evaluations;
+    s.diverged = e->gen_diverged;
+    s.empty = e->gen_empty;
     population_stats(e, &s);
-    s.wall_s = am_port_now() - t0;
+    s.wall_s = am_port_now() - e->gen_t0;
     e->last = s;
-    e->last_steps = steps;
-    e->last_voxel_steps = voxel_steps;
+    e->last_steps = e->gen_steps;
+    e->last_voxel_steps = e->gen_voxel_steps;
     e->generation++;
+    e->gen_b = e->gen_m = 0;
+}
+
+/* ---- one generation on one run ---- */
+
+typedef struct eval_job {
+    const am_evo* e;
+    am_evo_result* res;
+    am_evo_work* work;
+    const am_evo_hooks* hooks; /* with a cancel callback, or NULL */
+} eval_job;
+
+static void eval_task(void* ctx, int item, int worker)
+{
+    eval_job* job = (eval_job*)ctx;
+    if (job->hooks && job->hooks->cancel(job->hooks->ctx)) {
+        memset(&job->res[item], 0, sizeof job->res[item]);
+        job->res[item].skipped = 1;
+        return;
+    }
+    am_evo_batch_eval(job->e, item, &job->work[worker], &job->res[item]);
+}
+
+am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz)
+{
+    if (workers < 1) workers = 1;
+    if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
+    am_evo_gen_begin(e);
+    for (;;) {
+        int m = 0;
+        am_status st = am_evo_batch_begin(e, &w[0].geno, &m, err, errsz);
+        if (st != AM_OK) return st;
+        if (m == 0) break;
+        /* cancelling is possible while nothing of the run has changed: in the first batch */
+        eval_job job = {e, e->res, w, hooks && hooks->cancel && am_evo_batch_cancellable(e) ? hooks : NULL};
+        st = am_port_parallel_map(m, workers, eval_task, &job, e->res, (long)sizeof e->res[0], err, errsz);
+        if (st != AM_OK) {
+            e->rng = e->gen_saved;
+            return st;
+        }
+        st = am_evo_batch_end(e, e->res, &w[0].geno, hooks, err, errsz);
+        if (st != AM_OK) return st;
+    }
+    am_evo_gen_end(e);
     return AM_OK;
 }

@@ -65,7 +65,7 @@ static void test_parallel_map_covers_each_item_once(void)
         for (size_t c = 0; c < counts; c++) {
             int workers = worker_counts[w], n = item_counts[c];
             reset_probe(workers);
-            am_status st = am_port_parallel_map(n, workers, probe_task, &probe, err, sizeof err);
+            am_status st = am_port_parallel_map(n, workers, probe_task, &probe, NULL, 0, err, sizeof err);
             CHECK(st == AM_OK, "%d items on %d workers: status %d (%s)", n, workers, (int)st, err);
             int once = 1;
             for (int i = 0; i < n; i++) once &= atomic_load(&probe.calls[i]) == 1;
@@ -85,12 +85,12 @@ static void test_parallel_map_rejects_bad_arguments(void)
 {
     char err[AM_ERR_MAX];
     reset_probe(1);
-    CHECK(am_port_parallel_map(3, 0, probe_task, &probe, err, sizeof err) == AM_ERR_ARG, "0 workers accepted");
-    CHECK(am_port_parallel_map(-1, 2, probe_task, &probe, err, sizeof err) == AM_ERR_ARG, "-1 items accepted");
+    CHECK(am_port_parallel_map(3, 0, probe_task, &probe, NULL, 0, err, sizeof err) == AM_ERR_ARG, "0 workers accepted");
+    CHECK(am_port_parallel_map(-1, 2, probe_task, &probe, NULL, 0, err, sizeof err) == AM_ERR_ARG, "-1 items accepted");
     CHECK(atomic_load(&probe.ticket) == 0, "a rejected map called the task");
     /* more workers than the port starts, or than items: still every item once */
     reset_probe(MAP_MAX_WORKERS);
-    CHECK(am_port_parallel_map(5, 1000, probe_task, &probe, err, sizeof err) == AM_OK, "1000 workers: %s", err);
+    CHECK(am_port_parallel_map(5, 1000, probe_task, &probe, NULL, 0, err, sizeof err) == AM_OK, "1000 workers: %s", err);
     CHECK(atomic_load(&probe.ticket) == 5, "1000 workers on 5 items: %d calls", atomic_load(&probe.ticket));
     CHECK(am_port_cores() >= 1, "cores = %d", am_port_cores());
 }

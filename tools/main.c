@@ -37,7 +37,8 @@ static void usage(FILE* f)
 /* the commands' workspaces: large, so static storage rather than main's stack */
 static tool_ctx ctx;
 
-int main(int argc, char** argv)
+/* the command named by argv[1]; its exit status */
+static int run_command(int argc, char** argv)
 {
     if (argc < 2) {
         usage(stderr);
@@ -51,4 +52,13 @@ int main(int argc, char** argv)
         if (!strcmp(argv[1], commands[i].name)) return commands[i].fn(&ctx, argc - 1, argv + 1);
     char q[AM_QUOTE_BUF];
     return tool_usage_error("unknown command '%s' (amorph --help lists them)", am_quote(q, sizeof q, argv[1], -1));
+}
+
+int main(int argc, char** argv)
+{
+    am_port_start(&argc, &argv);
+    int status = run_command(argc, argv);
+    fflush(stdout);
+    fflush(stderr);
+    return am_port_end(status);
 }

@@ -110,6 +110,18 @@ typedef struct am_evo_eval {
     int material_voxels[AM_MAX_GENO_MATERIALS]; /* voxels of each material (the genome's order) */
 } am_evo_eval;
 
+/* what one evaluation gives back: an individual's fields without its genome, and its measurements.
+ * A port whose workers do not share memory (port/mpi) copies these bytes, and nothing else, between
+ * processes (am_port_parallel_map's out). */
+typedef struct am_evo_result {
+    double fitness;           /* as am_evo_ind */
+    long steps;
+    uint64_t state_hash;
+    int voxels, diverged, empty;
+    int skipped;              /* 1: not evaluated (the caller cancelled it; am_evo_batch_end then cancels) */
+    am_evo_eval detail;       /* the measurements (generation, parents and placed are am_evo_batch_end's) */
+} am_evo_result;
+
 /* what a caller of am_evo_generation may watch; every member may be NULL */
 typedef struct am_evo_hooks {
     /* on the workers, before each evaluation of the generation's first batch: non-zero stops the
@@ -150,9 +162,18 @@ typedef struct am_evo {
     long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
     long last_voxel_steps;                    /* the same, each step times the body's voxels */
     am_evo_eval eval[AM_EVO_BATCH];           /* what the evaluations of the current batch measured */
-    int order[AM_EVO_BATCH];                  /* scratch: evaluation order (largest body first) */
+    am_evo_result res[AM_EVO_BATCH];          /* am_evo_generation's results of the batch's map items */
+    int order[AM_EVO_BATCH];                  /* the current batch's evaluation order: item i of its
+                                                 map evaluates child[order[i]] (largest body first) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
                                                  (the second's is in w[0].geno.other) */
+    /* the generation under way (am_evo_gen_begin .. am_evo_gen_end; never in a checkpoint) */
+    int gen_parent[AM_MAX_POPULATION];        /* offspring 2k, 2k + 1 come from these two members */
+    int gen_b, gen_m;                         /* the current batch: individuals [gen_b, gen_b + gen_m) */
+    am_rng gen_saved;                         /* the stream before the generation (a cancel restores it) */
+    double gen_t0;                            /* am_port_now() at its start */
+    long gen_steps, gen_voxel_steps;          /* its time steps so far */
+    int gen_diverged, gen_empty;              /* its diverged and empty evaluations so far */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */
@@ -178,6 +199,33 @@ int am_evo_done(const am_evo* e);
  * before the call (AM_ERR_CANCELLED, "interrupted"); once a batch has been placed the generation
  * runs to its end. hooks->evaluated sees each evaluation as its batch is placed. Fills e->last. */
 am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz);
+/* A generation in steps, for a caller that evaluates the offspring of several runs in one parallel
+ * map (amorph experiment): am_evo_generation is these steps over one run.
+ *   am_evo_gen_begin(e);
+ *   while (am_evo_batch_begin(e, &w[0].geno, &m, ...) == AM_OK && m > 0) {
+ *       item i in [0, m), on any worker, in any order, in any process: am_evo_batch_eval(e, i, &w[k], &res[i]);
+ *       am_evo_batch_end(e, res, &w[0].geno, hooks, ...);
+ *   }
+ *   am_evo_gen_end(e);
+ * Evaluating is the only step that may run on workers; the others run on the calling thread. An
+ * item's whole result is its am_evo_result. */
+/* starts a generation (the random pairing of parents, generation > 0) */
+void am_evo_gen_begin(am_evo* e);
+/* makes the next batch's offspring (e->child) and their evaluation order (e->order, the largest
+ * body first) with the workspace w; *m gets its size, 0 when every batch of the generation is
+ * placed. On a failure e is as before am_evo_gen_begin. */
+am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m, char* err, int errsz);
+/* evaluates item i of the batch (child[order[i]]) on the workspace w into *r (skipped = 0) */
+void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r);
+/* 1 while the batch under way may be cancelled: the generation's first, before it is placed */
+int am_evo_batch_cancellable(const am_evo* e);
+/* places the batch (res[i]: item i's result): history, best, crowding, hooks->evaluated (hooks may be
+ * NULL). When a result is skipped, nothing is placed and e is left as before am_evo_gen_begin:
+ * AM_ERR_CANCELLED ("interrupted") in the first batch, AM_ERR_ARG in a later one */
+am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w, const am_evo_hooks* hooks, char* err, int errsz);
+/* ends the generation: e->last, e->last_steps, e->last_voxel_steps, e->generation + 1 */
+void am_evo_gen_end(am_evo* e);
+
 /* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec and detail
  * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,

@@ -18,6 +18,16 @@
 
 #include "amorph/status.h"
 
+/* ---- the program ---- */
+
+/* the first call of a program (main's), before any other function here: a port that runs the
+ * program as several processes (port/mpi) joins them; the others do nothing */
+void am_port_start(int* argc, char*** argv);
+/* the last call of a program, with its exit status; returns the status main returns. A port of
+ * several processes ends them together there (every process reaches it with the same status: they
+ * run the same program on the same inputs, the port's). */
+int am_port_end(int status);
+
 /* ---- clock ---- */
 
 /* monotonic wall clock, seconds since an arbitrary origin (only differences are meaningful) */
@@ -94,8 +104,13 @@ int am_port_cores(void);
 /* calls task(ctx, item, worker) exactly once for every item in [0, n), in items' order of
  * hand-out (item 0 first) on up to `workers` workers, and returns when all are done. A port may
  * use fewer workers than asked (port/baremetal uses one); results must not depend on how many.
- * AM_ERR_ARG for workers < 1 or n < 0, AM_ERR_IO if the platform cannot start a worker. */
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, char* err, int errsz);
+ * Item i's result is the `size` bytes at (char*)out + i * size: the task writes nothing else that
+ * the caller reads after the map. A port whose workers share the caller's memory (posix, win32,
+ * baremetal) ignores out and size; one whose workers are other processes (port/mpi) runs each item
+ * in one of them and copies its result bytes to every process, so all hold the same results.
+ * AM_ERR_ARG for workers < 1, n < 0 or size < 0, AM_ERR_IO if the platform cannot start a worker or
+ * lost one. */
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz);
 
 /* ---- interruption ---- */
 
@@ -109,9 +124,13 @@ int am_port_interrupted(void);
 
 /* takes the exclusive lock of the file path (created if missing; the POSIX and Windows ports
  * write the process id into it), held until am_port_unlock or the end of the process, however it
- * ends (kill -9 included: no stale lock is left). One lock at a time. AM_ERR_IO when another process holds it
- * (the message names it) or the file cannot be made. A port with one process does nothing. */
+ * ends (kill -9 included: no stale lock is left). Up to AM_PORT_LOCKS locks at a time (an
+ * experiment holds one per run folder it runs). AM_ERR_IO when another process holds it (the
+ * message names it) or the file cannot be made; AM_ERR_CAPACITY past AM_PORT_LOCKS. A port with
+ * one process does nothing. */
+#define AM_PORT_LOCKS 64
 am_status am_port_lock(const char* path, char* err, int errsz);
+/* releases every lock this process holds */
 void am_port_unlock(void);
 
 /* ---- testing interruptions ---- */

@@ -400,6 +400,18 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     return AM_OK;
 }
 
+/* ---- the program: one process ---- */
+
+void am_port_start(int* argc, char*** argv)
+{
+    (void)argc, (void)argv;
+}
+
+int am_port_end(int status)
+{
+    return status;
+}
+
 /* ---- parallel map: one core, one worker ---- */
 
 int am_port_cores(void)
@@ -407,9 +419,10 @@ int am_port_cores(void)
     return 1;
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, char* err, int errsz)
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
 {
-    if (workers < 1 || n < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
+    (void)out;
+    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
     for (int i = 0; i < n; i++) task(ctx, i, 0);
     return AM_OK;
 }

@@ -23,6 +23,18 @@
 
 #define PORT_MAX_THREADS 64 /* workers a parallel map can start */
 
+/* ---- the program: one process ---- */
+
+void am_port_start(int* argc, char*** argv)
+{
+    (void)argc, (void)argv;
+}
+
+int am_port_end(int status)
+{
+    return status;
+}
+
 double am_port_now(void)
 {
     struct timespec ts;
@@ -304,11 +316,12 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
 
 /* ---- owning a folder: an fcntl lock, released by the kernel when the process ends ---- */
 
-static int lock_fd = -1;
+static int lock_fd[AM_PORT_LOCKS];
+static int locks;
 
 am_status am_port_lock(const char* path, char* err, int errsz)
 {
-    if (lock_fd >= 0) return am_fail(err, errsz, AM_ERR_ARG, "%s: a lock is held already", path);
+    if (locks >= AM_PORT_LOCKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: more than %d folder locks at once", path, AM_PORT_LOCKS);
     int fd = open(path, O_RDWR | O_CREAT, 0644);
     if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
     struct flock fl;
@@ -326,14 +339,13 @@ am_status am_port_lock(const char* path, char* err, int errsz)
     char text[32];
     int n = snprintf(text, sizeof text, "%ld\n", (long)getpid());
     if (ftruncate(fd, 0) == 0) (void)write_all(fd, text, n); /* the owner, for people: the lock is what counts */
-    lock_fd = fd;
+    lock_fd[locks++] = fd;
     return AM_OK;
 }
 
 void am_port_unlock(void)
 {
-    if (lock_fd >= 0) close(lock_fd); /* closing releases the lock */
-    lock_fd = -1;
+    while (locks > 0) close(lock_fd[--locks]); /* closing releases the lock */
 }
 
 am_status am_port_make_dir(const char* path, char* err, int errsz)
@@ -423,9 +435,10 @@ static void* map_thread(void* arg)
     return NULL;
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, char* err, int errsz)
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
 {
-    if (workers < 1 || n < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
+    (void)out; /* the workers share this memory: each result is in place */
+    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
     if (workers > PORT_MAX_THREADS) workers = PORT_MAX_THREADS;
     if (workers > n) workers = n > 0 ? n : 1;
     map_job job;

@@ -48,6 +48,18 @@ static am_status fail_last(char* err, int errsz, am_status code, const char* wha
     return am_fail(err, errsz, code, "%s: %s: %s", path, what, msg);
 }
 
+/* ---- the program: one process ---- */
+
+void am_port_start(int* argc, char*** argv)
+{
+    (void)argc, (void)argv;
+}
+
+int am_port_end(int status)
+{
+    return status;
+}
+
 double am_port_now(void)
 {
     LARGE_INTEGER freq, t; /* counts per second (fixed at boot), counts since boot */
@@ -364,7 +376,8 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
 
 #define LOCK_OFFSET_HIGH 0x40000000UL /* the locked byte: offset 2^62 */
 
-static HANDLE lock_h = INVALID_HANDLE_VALUE;
+static HANDLE lock_h[AM_PORT_LOCKS];
+static int locks;
 
 /* the process id written in the lock file open as h, or 0 when it holds none yet */
 static unsigned long lock_owner(HANDLE h)
@@ -380,7 +393,7 @@ static unsigned long lock_owner(HANDLE h)
 
 am_status am_port_lock(const char* path, char* err, int errsz)
 {
-    if (lock_h != INVALID_HANDLE_VALUE) return am_fail(err, errsz, AM_ERR_ARG, "%s: a lock is held already", path);
+    if (locks >= AM_PORT_LOCKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: more than %d folder locks at once", path, AM_PORT_LOCKS);
     HANDLE h = CreateFileA(path, GENERIC_READ | GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, NULL, OPEN_ALWAYS,
                            FILE_ATTRIBUTE_NORMAL, NULL);
     if (h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot open", path);
@@ -405,20 +418,20 @@ am_status am_port_lock(const char* path, char* err, int errsz)
     LARGE_INTEGER zero;
     zero.QuadPart = 0;
     if (SetFilePointerEx(h, zero, NULL, FILE_BEGIN) && SetEndOfFile(h)) (void)write_all(h, text, n);
-    lock_h = h;
+    lock_h[locks++] = h;
     return AM_OK;
 }
 
 void am_port_unlock(void)
 {
-    if (lock_h != INVALID_HANDLE_VALUE) {
+    while (locks > 0) {
+        HANDLE h = lock_h[--locks];
         OVERLAPPED ov;
         memset(&ov, 0, sizeof ov);
         ov.OffsetHigh = LOCK_OFFSET_HIGH;
-        UnlockFileEx(lock_h, 0, 1, 0, &ov); /* at once: a lock left to the closing goes when the system gets to it */
-        CloseHandle(lock_h);
+        UnlockFileEx(h, 0, 1, 0, &ov); /* at once: a lock left to the closing goes when the system gets to it */
+        CloseHandle(h);
     }
-    lock_h = INVALID_HANDLE_VALUE;
 }
 
 am_status am_port_make_dir(const char* path, char* err, int errsz)
@@ -518,9 +531,10 @@ static unsigned __stdcall map_thread(void* arg)
     return 0;
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, char* err, int errsz)
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
 {
-    if (workers < 1 || n < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
+    (void)out; /* the workers share this memory: each result is in place */
+    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
     if (workers > PORT_MAX_THREADS) workers = PORT_MAX_THREADS;
     if (workers > n) workers = n > 0 ? n : 1;
     map_job job;

@@ -1,0 +1,446 @@
+/* MPI port (make PORT=mpi; run under mpirun): one program as N processes that act as one.
+ *
+ * Every rank runs the same program on the same inputs, and the port makes sure the inputs are the
+ * same: rank 0 alone touches the outside world (clock, console, files, folder lock, environment,
+ * terminal, interruptions) and every call made on the main thread outside a parallel map is
+ * collective: rank 0 does the work (with the POSIX port, posix_base.c) and broadcasts what the
+ * program sees (a status, a message, the bytes read, the time, a flag). The ranks therefore take
+ * the same branches and reach the same calls in the same order, and the only thing a rank does on
+ * its own is its share of each parallel map: items are dealt out over the ranks (in snake order,
+ * so that the largest bodies, first in the caller's order, spread evenly), each rank runs its items
+ * on its own threads (the POSIX map: hybrid MPI + threads), and the items' result bytes (the map's
+ * out) are gathered to every rank with one MPI_Allgatherv. Nothing else travels: every rank makes
+ * the same offspring from the same random stream, so no genome is ever sent.
+ *
+ * Results (run hash, log.csv, checkpoints, best genome) equal those of one process with any number
+ * of threads, for any number of ranks. Only rank 0 writes files and prints; the other ranks' standard
+ * streams go to /dev/null (a rank's own MPI failure is still reported on its stderr).
+ *
+ * Interruptions are agreed: a signal sets a rank's own flag, and am_port_interrupted (on the main
+ * thread, outside a map) returns the OR over the ranks, reduced there. Inside a map the agreed value
+ * of the last reduction is used, so cancel callbacks decide alike everywhere; an interruption that
+ * arrives during a map is therefore seen when the map has ended (under mpirun, a Ctrl-C or SIGTERM
+ * reaches every rank; mpirun kills the job a few seconds later in any case, and the run resumes
+ * from its last checkpoint). A rank that dies makes mpirun end the job (it notices the lost process);
+ * an MPI call that fails ends the job with MPI_Abort after a one-line message.
+ *
+ * Test hooks: AMORPH_TEST_RANK=r (read by every rank from its own environment; default 0) names the
+ * one rank on which am_port_raise acts, so a test's AMORPH_TEST_INTERRUPT stops or kills that rank. */
+#define _POSIX_C_SOURCE 200809L
+#include "posix_base.h"
+
+#include "amorph/status.h"
+
+#include <mpi.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+/* the bytes of one map's results a rank sends and receives (am_evo_result is under 200 bytes: an
+ * experiment's 16 runs of 256 offspring fit) */
+#define MPI_MAP_BYTES (4L << 20)
+#define MPI_MAP_ITEMS 8192       /* items of one map */
+#define MPI_ENV_NAMES 8          /* environment variables am_port_getenv keeps */
+#define MPI_ENV_MAX 1024         /* the longest value kept */
+
+static int on;                   /* 1 after MPI_Init: collectives apply */
+static int rank, ranks;
+static pthread_t main_thread;
+static volatile int in_map;      /* the main thread runs map items: no collective */
+static volatile int agreed;      /* the interruption flag agreed at the last reduction */
+static int raise_rank;           /* AMORPH_TEST_RANK */
+static int node_ranks = 1;       /* ranks on this rank's machine */
+static int err_fd = 2;           /* this rank's own stderr (rank > 0: kept before /dev/null) */
+
+/* ---- collectives ---- */
+
+/* 1 when a call must be collective: MPI is on, on the main thread, outside a map */
+static int collective(void)
+{
+    return on && !in_map && pthread_equal(pthread_self(), main_thread);
+}
+
+/* one line on this rank's own stderr, then the job ends (an MPI call failed: the ranks may no
+ * longer agree, so nothing else is safe) */
+static void fatal(const char* what, int code)
+{
+    char msg[MPI_MAX_ERROR_STRING], line[MPI_MAX_ERROR_STRING + 160];
+    int len = 0;
+    msg[0] = 0;
+    MPI_Error_string(code, msg, &len);
+    int n = snprintf(line, sizeof line, "amorph: rank %d of %d: %s failed: %s; the job ends (resume the run from its last checkpoint)\n",
+                     rank, ranks, what, msg);
+    if (n > 0) (void)!write(err_fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1));
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    _exit(1);
+}
+
+/* rank 0's n bytes at p on every rank */
+static void bcast(void* p, long n)
+{
+    char* c = (char*)p;
+    while (n > 0) {
+        int k = n > (1L << 30) ? 1 << 30 : (int)n;
+        int rc = MPI_Bcast(c, k, MPI_BYTE, 0, MPI_COMM_WORLD);
+        if (rc != MPI_SUCCESS) fatal("MPI_Bcast", rc);
+        c += k;
+        n -= k;
+    }
+}
+
+/* rank 0's status (and its message when it failed) on every rank */
+static am_status bcast_status(am_status st, char* err, int errsz)
+{
+    int v = (int)st;
+    bcast(&v, sizeof v);
+    if (v != AM_OK && err && errsz > 0) bcast(err, errsz);
+    return (am_status)v;
+}
+
+/* ---- the program ---- */
+
+void am_port_start(int* argc, char*** argv)
+{
+    int provided = 0;
+    int rc = MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    if (rc != MPI_SUCCESS) {
+        fprintf(stderr, "amorph: MPI_Init_thread failed (error %d): run under mpirun, or use the POSIX build\n", rc);
+        exit(1);
+    }
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    main_thread = pthread_self();
+    on = 1;
+    /* ranks sharing this machine share its cores (am_port_cores) */
+    MPI_Comm node;
+    if (MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node) == MPI_SUCCESS) {
+        MPI_Comm_size(node, &node_ranks);
+        MPI_Comm_free(&node);
+    }
+    const char* r = getenv("AMORPH_TEST_RANK");
+    raise_rank = r ? atoi(r) : 0;
+    if (rank > 0) {
+        /* the console is rank 0's: the others' output (the same as rank 0's) goes nowhere */
+        fflush(stdout);
+        fflush(stderr);
+        err_fd = dup(2);
+        int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) {
+            dup2(null, 1);
+            dup2(null, 2);
+            close(null);
+        }
+    }
+}
+
+int am_port_end(int status)
+{
+    if (!on) return status;
+    fflush(stdout);
+    fflush(stderr);
+    /* every rank arrives here with the same status (same program, same inputs) */
+    MPI_Finalize();
+    on = 0;
+    return status;
+}
+
+/* ---- clock ---- */
+
+double am_port_now(void)
+{
+    double t = am_posix_now();
+    if (collective()) bcast(&t, sizeof t);
+    return t;
+}
+
+/* ---- console ---- */
+
+void am_port_out(const char* text)
+{
+    if (rank == 0) am_posix_out(text);
+}
+
+void am_port_err(const char* text)
+{
+    if (rank == 0) am_posix_err(text);
+}
+
+int am_port_is_terminal(void)
+{
+    int v = rank == 0 ? am_posix_is_terminal() : 0;
+    if (collective()) bcast(&v, sizeof v);
+    return v;
+}
+
+void am_port_progress(const char* line)
+{
+    if (rank == 0) am_posix_progress(line);
+}
+
+/* ---- files: rank 0's, its results broadcast ---- */
+
+am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz)
+{
+    if (!collective()) return am_posix_read_file(path, buf, cap, len, err, errsz);
+    am_status st = AM_OK;
+    long n = 0;
+    if (rank == 0) st = am_posix_read_file(path, buf, cap, &n, err, errsz);
+    st = bcast_status(st, err, errsz);
+    if (st != AM_OK) return st;
+    bcast(&n, sizeof n);
+    bcast(buf, n + 1); /* with its NUL */
+    *len = n;
+    return AM_OK;
+}
+
+am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
+{
+    if (!collective()) return am_posix_append_file(path, data, n, err, errsz);
+    am_status st = rank == 0 ? am_posix_append_file(path, data, n, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
+am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
+{
+    if (!collective()) return am_posix_open_write(path, s, err, errsz);
+    am_status st = rank == 0 ? am_posix_open_write(path, s, err, errsz) : AM_OK;
+    st = bcast_status(st, err, errsz);
+    if (st == AM_OK) bcast(s, sizeof *s);
+    return st;
+}
+
+am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz)
+{
+    if (!collective()) return am_posix_write(s, data, n, err, errsz);
+    am_status st = rank == 0 ? am_posix_write(s, data, n, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
+am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
+{
+    if (!collective()) return am_posix_open_read(path, s, err, errsz);
+    am_status st = rank == 0 ? am_posix_open_read(path, s, err, errsz) : AM_OK;
+    st = bcast_status(st, err, errsz);
+    if (st == AM_OK) bcast(s, sizeof *s);
+    return st;
+}
+
+am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
+{
+    if (!collective()) return am_posix_read(s, buf, cap, got, err, errsz);
+    long n = 0;
+    am_status st = rank == 0 ? am_posix_read(s, buf, cap, &n, err, errsz) : AM_OK;
+    st = bcast_status(st, err, errsz);
+    if (st != AM_OK) return st;
+    bcast(&n, sizeof n);
+    bcast(buf, n);
+    *got = n;
+    return AM_OK;
+}
+
+am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
+{
+    if (!collective()) return am_posix_close(s, commit, err, errsz);
+    am_status st = rank == 0 ? am_posix_close(s, commit, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
+am_status am_port_make_dir(const char* path, char* err, int errsz)
+{
+    if (!collective()) return am_posix_make_dir(path, err, errsz);
+    am_status st = rank == 0 ? am_posix_make_dir(path, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
+int am_port_exists(const char* path)
+{
+    int v = rank == 0 || !collective() ? am_posix_exists(path) : 0;
+    if (collective()) bcast(&v, sizeof v);
+    return v;
+}
+
+am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
+{
+    if (!collective()) return am_posix_remove_stale(dir, removed, err, errsz);
+    int n = 0;
+    am_status st = rank == 0 ? am_posix_remove_stale(dir, &n, err, errsz) : AM_OK;
+    st = bcast_status(st, err, errsz);
+    bcast(&n, sizeof n);
+    if (removed) *removed = n;
+    return st;
+}
+
+/* ---- owning a folder: rank 0 holds the locks ---- */
+
+am_status am_port_lock(const char* path, char* err, int errsz)
+{
+    if (!collective()) return am_posix_lock(path, err, errsz);
+    am_status st = rank == 0 ? am_posix_lock(path, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
+void am_port_unlock(void)
+{
+    if (rank == 0) am_posix_unlock();
+}
+
+/* ---- parallel map: items dealt over the ranks, results gathered to all ---- */
+
+/* the rank that runs item i of n: snake order (0 1 2 2 1 0 0 1 2 ...), so each rank's share of the
+ * caller's order (the largest bodies first) is as even as a fixed deal can make it */
+static int owner(int i)
+{
+    int round = i / ranks, k = i % ranks;
+    return round % 2 ? ranks - 1 - k : k;
+}
+
+typedef struct local_job {
+    am_port_task task;
+    void* ctx;
+    const int* items;            /* this rank's items, in the caller's order */
+} local_job;
+
+static void local_task(void* ctx, int k, int worker)
+{
+    local_job* j = (local_job*)ctx;
+    j->task(j->ctx, j->items[k], worker);
+}
+
+static int g_items[MPI_MAP_ITEMS];
+static char g_send[MPI_MAP_BYTES], g_recv[MPI_MAP_BYTES];
+static int g_counts[1024], g_displs[1024];
+
+am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
+{
+    if (!collective() || ranks == 1) return am_posix_parallel_map(n, workers, task, ctx, out, size, err, errsz);
+    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
+    if (ranks > (int)(sizeof g_counts / sizeof g_counts[0]))
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "parallel map: %d ranks, at most %d", ranks, (int)(sizeof g_counts / sizeof g_counts[0]));
+    if (n > MPI_MAP_ITEMS || (long)n * size > MPI_MAP_BYTES || !out)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "parallel map: %d items of %ld bytes: at most %d items and %ld bytes across ranks",
+                       n, size, MPI_MAP_ITEMS, MPI_MAP_BYTES);
+    int mine = 0;
+    for (int i = 0; i < n; i++)
+        if (owner(i) == rank) g_items[mine++] = i;
+    /* this rank's items on its threads; calls from them (and from this thread while it runs items)
+     * are local */
+    local_job job = {task, ctx, g_items};
+    in_map = 1;
+    am_status st = am_posix_parallel_map(mine, workers, local_task, &job, NULL, 0, err, errsz);
+    in_map = 0;
+    /* a rank that could not start its threads still ran every item (the POSIX map runs them all on
+     * this thread): the status is a warning every rank would give, so it is agreed below */
+    int bad = st != AM_OK, any_bad = 0;
+    int rc = MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (rc != MPI_SUCCESS) fatal("MPI_Allreduce", rc);
+    /* the results: each rank's items packed in order, gathered to all, put in place */
+    char* o = (char*)out;
+    for (int k = 0; k < mine; k++) memcpy(g_send + (long)k * size, o + (long)g_items[k] * size, (size_t)size);
+    int at = 0;
+    for (int r = 0; r < ranks; r++) {
+        int c = 0;
+        for (int i = 0; i < n; i++) c += owner(i) == r;
+        g_counts[r] = c * (int)size;
+        g_displs[r] = at;
+        at += g_counts[r];
+    }
+    rc = MPI_Allgatherv(g_send, mine * (int)size, MPI_BYTE, g_recv, g_counts, g_displs, MPI_BYTE, MPI_COMM_WORLD);
+    if (rc != MPI_SUCCESS) fatal("MPI_Allgatherv", rc);
+    int next[1024];
+    for (int r = 0; r < ranks; r++) next[r] = g_displs[r];
+    for (int i = 0; i < n; i++) {
+        int r = owner(i);
+        memcpy(o + (long)i * size, g_recv + next[r], (size_t)size);
+        next[r] += (int)size;
+    }
+    if (any_bad && !bad) return am_fail(err, errsz, AM_ERR_IO, "parallel map: a rank could not start its threads");
+    return bad ? st : AM_OK;
+}
+
+int am_port_cores(void)
+{
+    int c = am_posix_cores();
+    if (!on) return c;
+    c /= node_ranks; /* the ranks on this machine share its cores */
+    return c < 1 ? 1 : c;
+}
+
+/* ---- interruption: each rank's flag, agreed by a reduction ---- */
+
+static struct sigaction g_old_int, g_old_term;
+static volatile sig_atomic_t g_told;
+
+/* rank 0's handler of SIGINT and SIGTERM under MPI: the POSIX port's (a flag; the second request
+ * ends the process), after one line the first time. Under mpirun these signals are mpirun's: it
+ * sends SIGTERM to every rank when a rank has died or mpirun itself was interrupted, and SIGKILL a
+ * few seconds later; a rank waiting for a dead one would end silently. */
+static void on_stop(int sig)
+{
+    static const char line[] = "amorph: mpirun is stopping the job (a rank ended, or the job was interrupted); the run folder's last "
+                               "checkpoint stands: resume with --resume, under mpirun or on one machine\n";
+    if (!g_told) {
+        g_told = 1;
+        (void)!write(err_fd, line, sizeof line - 1);
+    }
+    const struct sigaction* old = sig == SIGINT ? &g_old_int : &g_old_term;
+    if (old->sa_handler != SIG_DFL && old->sa_handler != SIG_IGN) old->sa_handler(sig);
+}
+
+void am_port_catch_interrupt(void)
+{
+    am_posix_catch_interrupt();
+    if (!on || rank != 0) return;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, &g_old_int);
+    sigaction(SIGTERM, &sa, &g_old_term);
+}
+
+int am_port_interrupted(void)
+{
+    if (!on) return am_posix_interrupted();
+    if (collective()) {
+        int mine = am_posix_interrupted(), all = 0;
+        int rc = MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+        if (rc != MPI_SUCCESS) fatal("MPI_Allreduce", rc);
+        agreed = all;
+    }
+    return agreed;
+}
+
+/* ---- testing interruptions ---- */
+
+const char* am_port_getenv(const char* name)
+{
+    if (!collective()) return am_posix_getenv(name);
+    /* rank 0's value, kept per name (at most MPI_ENV_NAMES names; a value is cut to MPI_ENV_MAX - 1) */
+    static char names[MPI_ENV_NAMES][64], values[MPI_ENV_NAMES][MPI_ENV_MAX];
+    static int used;
+    int k = 0;
+    while (k < used && strcmp(names[k], name) != 0) k++;
+    if (k == used) k = used < MPI_ENV_NAMES ? used++ : MPI_ENV_NAMES - 1;
+    snprintf(names[k], sizeof names[k], "%s", name);
+    int set = 0;
+    if (rank == 0) {
+        const char* v = am_posix_getenv(name);
+        set = v != NULL;
+        snprintf(values[k], sizeof values[k], "%s", v ? v : "");
+    }
+    bcast(&set, sizeof set);
+    bcast(values[k], sizeof values[k]);
+    return set ? values[k] : NULL;
+}
+
+void am_port_raise(am_port_signal sig)
+{
+    if (!on || rank == raise_rank) am_posix_raise(sig);
+}
