@@ -88,11 +88,21 @@ check "the clock at frame 0 should read relaxing: '$(clock relax)'" [ "$(clock r
 dom "frame=1&paused=1" frame1
 check "#frame=1 should show frame 1 with the relaxation: '$(attr frame1 data-frame)', relax '$(attr frame1 data-relax)'" \
     [ "$(attr frame1 data-frame)" = 1 ] && [ "$(attr frame1 data-relax)" = 1 ]
-# time in seconds from 1 s on: 50 cycles of 500 steps are over 1 s
-expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 50 --relax-max 400 --frames 60 --out "$TMPD/long.html"
+# cycles count from the relaxation's last step: the last frame is the end of the 2 cycles
+dom "t=1&paused=1" end
+check "the clock at the end should read cycle 2.00: '$(clock end)'" sh -c "echo '$(clock end)' | grep -qE '^t = [0-9.]+ ms, cycle 2\.00$'"
+# time in seconds from 1 s on: 50 cycles of 500 steps are over 1 s. The cycles count from the
+# relaxation's last step (423), not from the settled frame's (recorded every 25 steps: 400)
+expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 50 --relax-max 423 --frames 60 --out "$TMPD/long.html"
 URL0=$URL; URL="file://$(cd "$TMPD" && pwd)/long.html"
 dom "t=1&paused=1" long
-check "the clock past 1 s should read seconds: '$(clock long)'" sh -c "echo '$(clock long)' | grep -qE '^t = 1\.[0-9]{3} s, cycle [0-9]+\.[0-9]{2}$'"
+st=$(sed -n 's/.*"steps": \[\([0-9,]*\)\].*/\1/p' "$TMPD/long.html" | tr ',' '\n')
+lsf=$(sed -n 's/.*"settled_frame": \([0-9]*\).*/\1/p' "$TMPD/long.html")
+sstep=$(echo "$st" | sed -n "$((lsf + 1))p"); last=$(echo "$st" | tail -n 1)
+want=$(awk -v l="$last" 'BEGIN { printf "%.2f", (l - 423) / 500 }')
+check "long page: the settled frame's step '$sstep' should not be the relaxation's 423" [ -n "$sstep" ] && [ "$sstep" != 423 ]
+check "the clock past 1 s should read seconds and cycle $want (last step $last): '$(clock long)'" \
+    sh -c "echo '$(clock long)' | grep -qE '^t = 1\.[0-9]{3} s, cycle $want\$'"
 # no relaxation recorded: nothing to skip, the check box stays on
 expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 2 --relax-max 0 --frames 60 --out "$TMPD/norelax.html"
 URL="file://$(cd "$TMPD" && pwd)/norelax.html"

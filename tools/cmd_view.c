@@ -129,6 +129,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_eval_def* eval
             m->env.period_steps, eval->cycles);
     out_fmt(o, "\"settled_frame\": %d, \"fitness\": %.9g, \"diverged\": %d, \"voxel_size\": %.9g,\n", mo->settled_frame,
             mo->res.fitness, mo->res.diverged, L);
+    out_fmt(o, "\"relax_steps\": %ld,\n", mo->res.relax_steps);
     out_fmt(o, "\"size\": [%d, %d, %d], \"center\": [%.7g, %.7g, %.7g], \"extent\": %.7g, \"grid\": %.7g, \"follow\": %d,\n",
             m->nx, m->ny, m->nz, mean[0], mean[1], mean[2], extent, nice_step(extent / 8), follow);
     out_fmt(o, "\"origin\": [%.9g, %.9g, %.9g], \"quantum\": [%.9g, %.9g, %.9g],\n", lo[0], lo[1], lo[2], q[0], q[1], q[2]);
