@@ -121,6 +121,11 @@ void am_record_frame(const am_model* m, const am_state* s, am_record* rec)
 {
     if (!rec || rec->every < 1 || s->step % rec->every != 0) return;
     rec->nv = m->nv;
+    if (rec->sink) {
+        rec->sink(rec->sink_ctx, m, s);
+        rec->frames++;
+        return;
+    }
     long need = (long)(rec->frames + 1) * m->nv * 7;
     if (rec->frames >= rec->max_frames || need > rec->pose_cap || !rec->pose) {
         rec->truncated = 1;
@@ -132,6 +137,14 @@ void am_record_frame(const am_model* m, const am_state* s, am_record* rec)
         for (int c = 0; c < 4; c++) f[7 * i + 3 + c] = (float)AM_TO_DOUBLE(s->q[c][i]);
     }
     if (rec->step) rec->step[rec->frames] = s->step;
+    rec->frames++;
+}
+
+/* a sink's frame at a step that is not a multiple of rec->every (the ends of the segments) */
+static void record_extra(const am_model* m, const am_state* s, am_record* rec)
+{
+    if (!rec || !rec->sink || rec->every < 1 || s->step % rec->every == 0) return;
+    rec->sink(rec->sink_ctx, m, s);
     rec->frames++;
 }
 
@@ -367,6 +380,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->residual_speed = out->settled ? worst : speed;
     s->glob_scale = AM_R(1); /* the movement segment: the model's damping */
     out->relax_steps = s->step;
+    record_extra(m, s, rec);
     double c0[3], c1[3];
     am_com(m, s, c0);
 
@@ -381,6 +395,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
         am_record_frame(m, s, rec);
         if (gait) gait_step(m, s, gait, k);
     }
+    if (s->step != out->relax_steps) record_extra(m, s, rec);
     out->move_steps = s->step - out->relax_steps;
     out->steps = s->step;
     out->sim_seconds = (double)s->step * am_to_si(m, s->dt, AM_DIM_TIME);

@@ -4,7 +4,9 @@
 #   (a) the robot is drawn: many pixels in shades of each of its materials' colours,
 #   (b) it moved: those pixels differ between the two moments,
 #   (c) the page reported no error: its DOM (--dump-dom) carries the "ok" marker the script sets
-#       after drawing, and a page with damaged data carries the "error" marker instead.
+#       after drawing, and a page with damaged data carries the "error" marker instead;
+# and that the page opens at the settled frame (the relaxation hidden) unless told otherwise, and
+# its clock reads seconds from 1 s on.
 # Without chromium (or with AM_NO_BROWSER=1) the test prints SKIPPED; CI installs it (.ci/run).
 # Run from the repository root: sh tests/cli_browser.sh
 . tests/shlib.sh
@@ -64,6 +66,50 @@ f2=$(sed -n 's/.*data-frame="\([0-9]*\)".*/\1/p' "$TMPD/dom2.html")
 check "the two moments show frames '$f1' and '$f2'" [ -n "$f1" ] && [ -n "$f2" ] && [ "$f1" -lt "$f2" ]
 diff=$("$PNG" --png-diff "$TMPD/shot1.png" "$TMPD/shot2.png" $COLS 2>&1)
 check "robot pixels changed between t=0.25 and t=0.75: $diff (want >= 300)" [ "${diff:-0}" -ge 300 ] 2>/dev/null
+
+# the relaxation is skipped by default: the page opens at the settled frame (the relaxation's
+# last, where the movement starts); #relax=1 opens at frame 0, and a frame of the relaxation
+# (#frame=1) shows the relaxation too
+sf=$(sed -n 's/.*"settled_frame": \([0-9]*\).*/\1/p' "$TMPD/walker.html")
+# dom HASH NAME: the page at URL#HASH, its DOM in $TMPD/dom-NAME.html; attr NAME KEY: a status
+# attribute of it; clock NAME: its clock text
+dom() { chrome "$URL#$1" --dump-dom >"$TMPD/dom-$2.html"; }
+attr() { sed -n "s/.*id=\"status\"[^>]* $2=\"\([^\"]*\)\".*/\1/p" "$TMPD/dom-$1.html"; }
+clock() { sed -n 's/.*<span id="clock">\([^<]*\)<.*/\1/p' "$TMPD/dom-$1.html"; }
+dom "paused=1" start
+check "settled frame '$sf' should be past frame 0" [ "${sf:-0}" -gt 0 ]
+check "the page should open at the settled frame $sf, opened at '$(attr start data-frame)'" [ "$(attr start data-frame)" = "$sf" ]
+check "the relaxation should be hidden by default: data-relax '$(attr start data-relax)'" [ "$(attr start data-relax)" = 0 ]
+check "the clock at the start should read cycle 0.00: '$(clock start)'" sh -c "echo '$(clock start)' | grep -qE '^t = [0-9]+\.[0-9]{2} ms, cycle 0\.00$'"
+dom "relax=1&paused=1" relax
+check "#relax=1 should open at frame 0: '$(attr relax data-frame)', relax '$(attr relax data-relax)'" \
+    [ "$(attr relax data-frame)" = 0 ] && [ "$(attr relax data-relax)" = 1 ]
+check "the clock at frame 0 should read relaxing: '$(clock relax)'" [ "$(clock relax)" = "t = 0.00 ms, relaxing" ]
+dom "frame=1&paused=1" frame1
+check "#frame=1 should show frame 1 with the relaxation: '$(attr frame1 data-frame)', relax '$(attr frame1 data-relax)'" \
+    [ "$(attr frame1 data-frame)" = 1 ] && [ "$(attr frame1 data-relax)" = 1 ]
+# cycles count from the relaxation's last step: the last frame is the end of the 2 cycles
+dom "t=1&paused=1" end
+check "the clock at the end should read cycle 2.00: '$(clock end)'" sh -c "echo '$(clock end)' | grep -qE '^t = [0-9.]+ ms, cycle 2\.00$'"
+# time in seconds from 1 s on: 50 cycles of 500 steps are over 1 s. The cycles count from the
+# relaxation's last step (423), not from the settled frame's (recorded every 25 steps: 400)
+expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 50 --relax-max 423 --frames 60 --out "$TMPD/long.html"
+URL0=$URL; URL="file://$(cd "$TMPD" && pwd)/long.html"
+dom "t=1&paused=1" long
+st=$(sed -n 's/.*"steps": \[\([0-9,]*\)\].*/\1/p' "$TMPD/long.html" | tr ',' '\n')
+lsf=$(sed -n 's/.*"settled_frame": \([0-9]*\).*/\1/p' "$TMPD/long.html")
+sstep=$(echo "$st" | sed -n "$((lsf + 1))p"); last=$(echo "$st" | tail -n 1)
+want=$(awk -v l="$last" 'BEGIN { printf "%.2f", (l - 423) / 500 }')
+check "long page: the settled frame's step '$sstep' should not be the relaxation's 423" [ -n "$sstep" ] && [ "$sstep" != 423 ]
+check "the clock past 1 s should read seconds and cycle $want (last step $last): '$(clock long)'" \
+    sh -c "echo '$(clock long)' | grep -qE '^t = 1\.[0-9]{3} s, cycle $want\$'"
+# no relaxation recorded: nothing to skip, the check box stays on
+expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 2 --relax-max 0 --frames 60 --out "$TMPD/norelax.html"
+URL="file://$(cd "$TMPD" && pwd)/norelax.html"
+dom "paused=1" norelax
+check "no relaxation: frame 0 and relax 1, got '$(attr norelax data-frame)' and '$(attr norelax data-relax)'" \
+    [ "$(attr norelax data-frame)" = 0 ] && [ "$(attr norelax data-relax)" = 1 ]
+URL=$URL0
 
 # (c) the error marker works: damaged pose data is reported, not silently drawn
 sed 's/"pose": "/"pose": "!!/' "$TMPD/walker.html" >"$TMPD/broken.html"

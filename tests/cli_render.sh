@@ -73,6 +73,40 @@ check "plot: legend" grep -q '>dct, 3 runs<' "$TMPD/exp.svg"
 check "plot: legend" grep -q '>gmx, 3 runs<' "$TMPD/exp.svg"
 check "plot: title" grep -q '>representations</text>' "$TMPD/exp.svg"
 check "plot: unbalanced tags" [ "$(grep -c '<svg' "$TMPD/exp.svg")" -eq 1 ] && tail -n 1 "$TMPD/exp.svg" | grep -q '^</svg>$'
+# steps per generation: the best so far holds its value until the next logged generation, so a
+# curve is "Mx,y" then one "Hx Vy" (across, then up or down) per further row, x rising
+# dpath FILE CLASS N: the d of the N-th path of that class
+dpath() { grep "class=\"$2\"" "$1" | sed -n "$3{s/.* d=\"\([^\"]*\)\".*/\1/p;}"; }
+# steps D ROWS: D is a step curve through ROWS points, its x rising
+steps() { echo "$1" | awk -v n="$2" '{ if ($1 !~ /^M[0-9.]+,[0-9.]+$/ || NF != 2 * n - 1) exit 1; split(substr($1, 2), a, ","); x = a[1]
+    for (i = 2; i < NF; i += 2) { if ($i !~ /^H[0-9.]+$/ || $(i + 1) !~ /^V[0-9.]+$/ || substr($i, 2) + 0 <= x + 0) exit 1; x = substr($i, 2) } }'; }
+pth=$(dpath "$TMPD/one.svg" run 1)
+check "plot: a run should be steps through its 8 rows: '$pth'" steps "$pth" 8
+check "plot: an experiment's mean should be steps through its 10 rows: '$(dpath "$TMPD/exp.svg" mean 1)'" steps "$(dpath "$TMPD/exp.svg" mean 1)" 10
+check "plot: an experiment's run should be steps through its 10 rows: '$(dpath "$TMPD/exp.svg" run 1)'" steps "$(dpath "$TMPD/exp.svg" run 1)" 10
+# the band: the upper edge as steps, then back along the lower edge ("Vy Hx" pairs), closed
+check "plot: the band should be steps out and back: '$(dpath "$TMPD/exp.svg" band 1)'" \
+    sh -c "echo '$(dpath "$TMPD/exp.svg" band 1)' | grep -qE '^M[0-9.]+,[0-9.]+( H[0-9.]+ V[0-9.]+){9} L[0-9.]+,[0-9.]+( V[0-9.]+ H[0-9.]+){9} Z$'"
+# one x axis: a run folder and an experiment folder are labelled alike
+expect_ok "$AMORPH" plot tests/data/plot-exp --out "$TMPD/exp-only.svg"
+for l in xlabel ylabel; do
+    a=$(sed -n "s/.*class=\"$l\"[^>]*>\([^<]*\)<.*/\1/p" "$TMPD/one.svg"); b=$(sed -n "s/.*class=\"$l\"[^>]*>\([^<]*\)<.*/\1/p" "$TMPD/exp-only.svg")
+    check "plot: the $l of a run ('$a') and of an experiment ('$b') should be equal" [ -n "$a" ] && [ "$a" = "$b" ]
+done
+check "plot: the x axis should be evaluations" grep -q 'class="xlabel"[^>]*>evaluations<' "$TMPD/exp-only.svg"
+# runs logging at different evaluations (populations of 20 and 30): the mean steps wherever one
+# of them does, from 30 (both have a value) to 60 (both still logged): at 30, 40 and 60
+mkdir -p "$TMPD/mixed/a-1" "$TMPD/mixed/a-2"
+echo "experiment = mixed" >"$TMPD/mixed/experiment.txt"
+printf 'generation,evaluations,best\n0,20,0.001\n1,40,0.002\n2,60,0.003\n3,80,0.004\n' >"$TMPD/mixed/a-1/log.csv"
+printf 'generation,evaluations,best\n0,30,0.002\n1,60,0.004\n' >"$TMPD/mixed/a-2/log.csv"
+expect_ok "$AMORPH" plot "$TMPD/mixed" --out "$TMPD/mixed.svg"
+pth=$(dpath "$TMPD/mixed.svg" mean 1)
+check "plot: the mean of runs with different populations should step at 30, 40 and 60: '$pth'" steps "$pth" 3
+xs=$(echo "$pth" | tr ' ' '\n' | sed -n 's/^M\([0-9.]*\),.*/\1/p; s/^H//p' | tr '\n' ' ')
+# the x axis runs from 0 to 80 over the 592 px from x = 78: 30, 40, 60 are at 300, 374, 522
+check "plot: the mean's steps should be at evaluations 30, 40, 60 (px 300, 374, 522): '$xs' in '$pth'" [ "$xs" = "300.00 374.00 522.00 " ]
+check "plot: the x axis should start at 0 evaluations" grep -q '<text x="78.00" y="[0-9]*" text-anchor="middle">0</text>' "$TMPD/mixed.svg"
 # the log is read by column name (the library's reader): reordered columns, one it does not know,
 # and CRLF line ends give the same line
 mkdir -p "$TMPD/reordered/plot-run"

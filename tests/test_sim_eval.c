@@ -50,6 +50,56 @@ static void test_recording(void)
     CHECK(rec.frames == 3 && rec.truncated, "frames %d truncated %d with room for 3", rec.frames, rec.truncated);
 }
 
+/* a sink's steps: what it was handed, in order */
+typedef struct sink_log {
+    long step[256];
+    int actuate[256];
+    int n;
+} sink_log;
+
+static void sink_count(void* ctx, const am_model* m, const struct am_state* s)
+{
+    sink_log* lg = (sink_log*)ctx;
+    (void)m;
+    if (lg->n < 256) lg->step[lg->n] = s->step, lg->actuate[lg->n] = s->actuate;
+    lg->n++;
+}
+
+/* a sink is handed every multiple of `every`, the relaxation's last step and the last step, each
+ * once, stores nothing, and changes nothing of the result */
+static void test_recording_sink(void)
+{
+    build("sphere:4");
+    am_eval_def def = am_default_eval();
+    def.cycles = 2;
+    am_result plain, r;
+    am_evaluate(&g_m, &g_s, &def, &plain);
+    static sink_log lg;
+    am_record rec = {0};
+    rec.every = 70;
+    rec.sink = sink_count;
+    rec.sink_ctx = &lg;
+    def.record = &rec;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(r.hash == plain.hash && r.fitness == plain.fitness, "the sink changed the run: hash %016llx against %016llx",
+          (unsigned long long)r.hash, (unsigned long long)plain.hash);
+    long expect = r.steps / 70 + 1 + (r.relax_steps % 70 != 0) + (r.steps % 70 != 0);
+    CHECK(lg.n == expect && rec.frames == lg.n, "sink handed %d frames (frames %d), expected %ld (relax %ld, steps %ld)", lg.n,
+          rec.frames, expect, r.relax_steps, r.steps);
+    CHECK(r.relax_steps % 70 != 0 || r.steps % 70 != 0, "the test wants a segment end off the multiples of 70 (relax %ld, steps %ld)",
+          r.relax_steps, r.steps);
+    int seen_relax = 0;
+    for (int i = 0; i < lg.n && i < 256; i++) {
+        long st = lg.step[i];
+        CHECK(st % 70 == 0 || st == r.relax_steps || st == r.steps, "sink handed step %ld", st);
+        CHECK(i == 0 || st > lg.step[i - 1], "steps not rising: %ld after %ld", st, i ? lg.step[i - 1] : -1L);
+        CHECK(lg.actuate[i] == (st > r.relax_steps), "step %ld actuate %d (relaxation to %ld)", st, lg.actuate[i], r.relax_steps);
+        seen_relax |= st == r.relax_steps;
+    }
+    CHECK(lg.step[0] == 0 && seen_relax && lg.step[(lg.n < 256 ? lg.n : 256) - 1] == r.steps, "first %ld, relaxation's end %d, last %ld",
+          lg.step[0], seen_relax, lg.step[(lg.n < 256 ? lg.n : 256) - 1]);
+}
+
 /* the three fitness measures are views of one displacement */
 static void test_fitness_modes(void)
 {
@@ -269,6 +319,7 @@ int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     RUN(test_recording);
+    RUN(test_recording_sink);
     RUN(test_fitness_modes);
     RUN(test_model_errors);
     RUN(test_link_layout);

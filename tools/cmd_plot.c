@@ -169,36 +169,47 @@ static int load_experiment(const char* dir)
     return 0;
 }
 
-/* mean and standard error of each series over the rows all its runs have */
+/* The mean of each variant's runs, on the x axis of a single run. A run's best fitness so far is a
+ * step function of evaluations: it holds from the evaluations of one logged generation up to the
+ * next. The mean is one too: at every x where some run of the variant steps, from the largest first
+ * x (where every run has a value) to the smallest last x (while every run has logged), the mean of
+ * the runs' values there and its standard error. Runs that log at the same evaluations (one
+ * population size) give the row-by-row mean. */
 static void series_means(void)
 {
+    static long at[PLOT_MAX_RUNS]; /* per run of the series: its row holding at x */
     for (int s = 0; s < plot_nser; s++) {
         plot_series* S = &plot_ser[s];
-        long rows = -1;
-        for (int k = 0; k < S->nruns; k++) {
-            long n = plot_runs[S->runs[k]].n;
-            if (rows < 0 || n < rows) rows = n;
-        }
+        const int m = S->nruns;
         S->first = plot_mused;
         S->n = 0;
-        for (long r = 0; r < rows && plot_mused < PLOT_MAX_POINTS; r++) {
-            double sx = 0, sy = 0, s2 = 0;
-            int m = S->nruns;
+        if (m == 0) continue;
+        double x = -HUGE_VAL, hi = HUGE_VAL;
+        for (int k = 0; k < m; k++) {
+            const plot_run* R = &plot_runs[S->runs[k]];
+            x = fmax(x, plot_x[R->first]);
+            hi = fmin(hi, plot_x[R->first + R->n - 1]);
+            at[k] = 0;
+        }
+        while (x <= hi && plot_mused < PLOT_MAX_POINTS) {
+            double sy = 0, s2 = 0, next = HUGE_VAL;
             for (int k = 0; k < m; k++) {
                 const plot_run* R = &plot_runs[S->runs[k]];
-                sx += plot_x[R->first + r];
-                sy += plot_y[R->first + r];
+                while (at[k] + 1 < R->n && plot_x[R->first + at[k] + 1] <= x) at[k]++;
+                sy += plot_y[R->first + at[k]];
+                if (at[k] + 1 < R->n) next = fmin(next, plot_x[R->first + at[k] + 1]);
             }
-            double my = sy / m;
+            const double my = sy / m;
             for (int k = 0; k < m; k++) {
-                double d = plot_y[plot_runs[S->runs[k]].first + r] - my;
+                double d = plot_y[plot_runs[S->runs[k]].first + at[k]] - my;
                 s2 += d * d;
             }
-            plot_mx[plot_mused] = sx / m;
+            plot_mx[plot_mused] = x;
             plot_my[plot_mused] = my;
             plot_se[plot_mused] = m > 1 ? sqrt(s2 / (m - 1)) / sqrt((double)m) : 0;
             plot_mused++;
             S->n++;
+            x = next; /* HUGE_VAL past the last row: the loop ends */
         }
     }
 }
@@ -226,6 +237,35 @@ static double tick_step(double lo, double hi, int want)
     return (f <= 1 ? 1 : f <= 2 ? 2 : f <= 2.5 ? 2.5 : f <= 5 ? 5 : 10) * p;
 }
 
+/* where the plot's data lands on the picture */
+typedef struct plot_frame {
+    double x0, x1, y0, y1; /* the axes' ranges (y in the shown unit) */
+    double unit;           /* shown unit per metre (1000 for mm, 1 for m) */
+    int ml, mt, pw, ph;    /* the plot area: left, top, width, height (px) */
+} plot_frame;
+
+static double frame_x(const plot_frame* f, double x) { return f->ml + (x - f->x0) / (f->x1 - f->x0) * f->pw; }
+static double frame_y(const plot_frame* f, double y) { return f->mt + f->ph - (y * f->unit - f->y0) / (f->y1 - f->y0) * f->ph; }
+
+/* a best-so-far curve as steps: each value holds until the next point's x, then the curve rises
+ * (or falls) there: "Mx0,y0 Hx1 Vy1 Hx2 Vy2 ...". The y values are y[i] + sign * e[i] (e may be
+ * NULL); reverse 1 walks from the last point back to the first ("Vy(n-2) Hx(n-2) ..."), for the
+ * lower edge of a band, continuing a path with its first command a line to the last point */
+static void put_steps(am_text* o, const plot_frame* f, const double* x, const double* y, const double* e, double sign, long n,
+                      int reverse)
+{
+#define VAL(i) (y[i] + (e ? sign * e[i] : 0))
+    if (n <= 0) return;
+    if (!reverse) {
+        put(o, "M%.2f,%.2f", frame_x(f, x[0]), frame_y(f, VAL(0)));
+        for (long i = 1; i < n; i++) put(o, " H%.2f V%.2f", frame_x(f, x[i]), frame_y(f, VAL(i)));
+    } else {
+        put(o, " L%.2f,%.2f", frame_x(f, x[n - 1]), frame_y(f, VAL(n - 1)));
+        for (long i = n - 2; i >= 0; i--) put(o, " V%.2f H%.2f", frame_y(f, VAL(i)), frame_x(f, x[i]));
+    }
+#undef VAL
+}
+
 static void fmt_num(char* buf, int n, double v)
 {
     if (fabs(v) < 1e-12) v = 0;
@@ -245,6 +285,7 @@ static int plot_svg_write(const char* title, const char* path)
     const char* uname = unit == 1000 ? "mm" : "m";
     y0 *= unit, y1 *= unit;
     if (y0 > 0) y0 = 0; /* fitness from zero, as the seed's figure */
+    if (x0 > 0) x0 = 0; /* and evaluations from zero, for runs and experiments alike */
     if (!(y1 > y0)) y1 = y0 + 1;
     if (!(x1 > x0)) x1 = x0 + 1;
     double xs = tick_step(x0, x1, 6), ys = tick_step(y0, y1, 6);
@@ -252,8 +293,9 @@ static int plot_svg_write(const char* title, const char* path)
     y0 = floor(y0 / ys) * ys, y1 = ceil(y1 / ys) * ys;
     const int W = 860, H = 520, ml = 78, mr = 190, mt = 46, mb = 58;
     const int pw = W - ml - mr, ph = H - mt - mb;
-#define PX(x) (ml + ((x) - x0) / (x1 - x0) * pw)
-#define PY(y) (mt + ph - ((y) * unit - y0) / (y1 - y0) * ph)
+    const plot_frame fr = {x0, x1, y0, y1, unit, ml, mt, pw, ph};
+#define PX(x) frame_x(&fr, (x))
+#define PY(y) frame_y(&fr, (y))
     am_text o = {plot_svg, PLOT_SVG_MAX, 0, 0, NULL, NULL, 0};
     put(&o, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     put(&o, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" "
@@ -280,39 +322,35 @@ static int plot_svg_write(const char* title, const char* path)
         put(&o, "<text x=\"%d\" y=\"%.2f\" text-anchor=\"end\">%s</text>\n", ml - 8, PY(y / unit) + 4, num);
     }
     put(&o, "</g>\n<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"#333333\"/>\n", ml, mt, pw, ph);
-    put(&o, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">evaluations</text>\n", ml + pw / 2, H - 14);
-    put(&o, "<text transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">best fitness so far (%s)</text>\n",
+    /* one x axis for runs and experiments: evaluations done (log.csv's evaluations column) */
+    put(&o, "<text class=\"xlabel\" x=\"%d\" y=\"%d\" text-anchor=\"middle\">evaluations</text>\n", ml + pw / 2, H - 14);
+    put(&o, "<text class=\"ylabel\" transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">best fitness so far (%s)</text>\n",
         mt + ph / 2, uname);
-    /* the lines: each run alone, or each variant's mean with its standard-error band */
+    /* the curves, as steps: each run alone, or each variant's mean with its standard-error band */
     int ly = mt + 8, any_band = 0;
     for (int s = 0; s < plot_nser; s++) {
         const plot_series* S = &plot_ser[s];
         const char* col = plot_colours[s % 8];
         int grouped = S->experiment;
         if (grouped && S->n > 0) {
+            const long k = S->first;
             put(&o, "<path class=\"band\" fill=\"%s\" fill-opacity=\"0.18\" stroke=\"none\" d=\"", col);
-            for (long i = 0; i < S->n; i++) {
-                long k = S->first + i;
-                put(&o, "%s%.2f,%.2f", i ? " L" : "M", PX(plot_mx[k]), PY(plot_my[k] + plot_se[k]));
-            }
-            for (long i = S->n - 1; i >= 0; i--) {
-                long k = S->first + i;
-                put(&o, " L%.2f,%.2f", PX(plot_mx[k]), PY(plot_my[k] - plot_se[k]));
-            }
+            put_steps(&o, &fr, plot_mx + k, plot_my + k, plot_se + k, 1, S->n, 0);
+            put_steps(&o, &fr, plot_mx + k, plot_my + k, plot_se + k, -1, S->n, 1);
             put(&o, " Z\"/>\n");
             for (int r = 0; r < S->nruns; r++) {
                 const plot_run* R = &plot_runs[S->runs[r]];
-                put(&o, "<polyline class=\"run\" fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.35\" stroke-width=\"1\" points=\"", col);
-                for (long i = 0; i < R->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
+                put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.35\" stroke-width=\"1\" d=\"", col);
+                put_steps(&o, &fr, plot_x + R->first, plot_y + R->first, NULL, 0, R->n, 0);
                 put(&o, "\"/>\n");
             }
-            put(&o, "<polyline class=\"mean\" fill=\"none\" stroke=\"%s\" stroke-width=\"2.5\" points=\"", col);
-            for (long i = 0; i < S->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_mx[S->first + i]), PY(plot_my[S->first + i]));
+            put(&o, "<path class=\"mean\" fill=\"none\" stroke=\"%s\" stroke-width=\"2.5\" d=\"", col);
+            put_steps(&o, &fr, plot_mx + k, plot_my + k, NULL, 0, S->n, 0);
             put(&o, "\"/>\n");
         } else {
             const plot_run* R = &plot_runs[S->runs[0]];
-            put(&o, "<polyline class=\"run\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"", col);
-            for (long i = 0; i < R->n; i++) put(&o, "%s%.2f,%.2f", i ? " " : "", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
+            put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" d=\"", col);
+            put_steps(&o, &fr, plot_x + R->first, plot_y + R->first, NULL, 0, R->n, 0);
             put(&o, "\"/>\n");
         }
         /* legend entry */

@@ -1,5 +1,6 @@
 /* amorph sim: one robot's evaluation, its fitness and gait. */
 #include "robot.h"
+#include "trajectory.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -12,6 +13,12 @@ static const char sim_help[] =
     "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N), in the seed's environment.\n"
     TOOL_ROBOT_HELP
     "  --json             one JSON object instead of name = value lines\n"
+    "  --trajectory FILE  writes the trajectory: a row every K steps and at the ends of the relaxation\n"
+    "                     and of the evaluation (step, time, segment, centre of mass, each voxel's\n"
+    "                     position and quaternion; docs/formats.md), as CSV, or as JSON lines when\n"
+    "                     FILE ends in .jsonl\n"
+    "  --every K          a trajectory row every K steps, 1..1000000000 (period_steps / 10: 10 a cycle)\n"
+    "  --trajectory-format csv|jsonl   the trajectory's format, whatever FILE's name\n"
     "A run that diverged or did not settle prints one warning line on stderr; the exit status is\n"
     "still 0 (it is a result). Besides the fitness: residual_speed (m/s, the largest RMS voxel speed\n"
     "through the release window, or the last one when the relaxation ran out first) and\n"
@@ -72,11 +79,13 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
 
 int cmd_sim(tool_ctx* c, int argc, char** argv)
 {
-    int json = 0;
+    int json = 0, every = 0, format = -1;
+    const char* traj = NULL;
     tool_robot_args ra;
     memset(&ra, 0, sizeof ra);
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
+        const char* v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             fputs(sim_help, stdout);
             return 0;
@@ -85,11 +94,33 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
             json = 1;
             continue;
         }
+        if (!strcmp(a, "--trajectory")) {
+            size_t n = v ? strlen(v) : 0;
+            if (!n) return tool_usage_error("sim: --trajectory needs a file name");
+            if (v[n - 1] == '/') return tool_usage_error("sim: --trajectory %s is a folder, not a file", v);
+            traj = v, i++;
+            continue;
+        }
+        if (!strcmp(a, "--every")) {
+            if (!tool_parse_int(v, 1, 1000000000, &every))
+                return tool_usage_error("sim: --every needs a whole number of steps, 1..1000000000");
+            i++;
+            continue;
+        }
+        if (!strcmp(a, "--trajectory-format")) {
+            if (v && !strcmp(v, "csv")) format = TOOL_TRAJ_CSV;
+            else if (v && !strcmp(v, "jsonl")) format = TOOL_TRAJ_JSONL;
+            else return tool_usage_error("sim: --trajectory-format needs csv or jsonl");
+            i++;
+            continue;
+        }
         int r = tool_robot_arg("sim", argc, argv, &i, &ra);
         if (r == 2) return 2;
         if (r == 0) return tool_unknown_option("sim", a);
     }
     if (!ra.name) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
+    if (!traj && (every || format >= 0))
+        return tool_usage_error("sim: %s needs --trajectory FILE", every ? "--every" : "--trajectory-format");
 
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
@@ -98,6 +129,7 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     if (tool_robot_load(c, &ra, lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (rob.eval.dt_search && ra.dt_s > 0) return tool_usage_error("sim: --dt and dt_search exclude each other");
     am_status st = am_model_build(&c->work[0].model, lat, &rob.env, err, sizeof err);
+    if (st == AM_ERR_EMPTY && traj) return tool_usage_error("sim: %s: the robot has no voxel, no trajectory to write", file);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */
         tool_out out;
@@ -120,9 +152,15 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     am_result res;
     am_gait gait;
     def.gait = &gait;
+    static tool_traj tr;
+    if (traj) {
+        if (!every) every = rob.env.period_steps >= 10 ? rob.env.period_steps / 10 : 1;
+        if (tool_traj_open(&tr, traj, format >= 0 ? format : tool_traj_format_of(traj), every, &def)) return 1;
+    }
     double t0 = am_port_now();
     am_evaluate(&c->work[0].model, &c->work[0].state, &def, &res);
     double wall = am_port_now() - t0;
+    if (traj && tool_traj_close(&tr, 1)) return 1;
     if (print_result(file, lat, &res, wall, &gait, def.fitness, json)) return 1;
     fflush(stdout);
     /* a run that diverged or did not settle is a result (exit status 0), with one line of warning */

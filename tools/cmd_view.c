@@ -129,6 +129,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_eval_def* eval
             m->env.period_steps, eval->cycles);
     out_fmt(o, "\"settled_frame\": %d, \"fitness\": %.9g, \"diverged\": %d, \"voxel_size\": %.9g,\n", mo->settled_frame,
             mo->res.fitness, mo->res.diverged, L);
+    out_fmt(o, "\"relax_steps\": %ld,\n", mo->res.relax_steps);
     out_fmt(o, "\"size\": [%d, %d, %d], \"center\": [%.7g, %.7g, %.7g], \"extent\": %.7g, \"grid\": %.7g, \"follow\": %d,\n",
             m->nx, m->ny, m->nz, mean[0], mean[1], mean[2], extent, nice_step(extent / 8), follow);
     out_fmt(o, "\"origin\": [%.9g, %.9g, %.9g], \"quantum\": [%.9g, %.9g, %.9g],\n", lo[0], lo[1], lo[2], q[0], q[1], q[2]);
@@ -186,8 +187,9 @@ static const char view_help[] =
     "usage: amorph view ROBOT | --scene NAME --out FILE.html [options]\n"
     "Simulates the robot (relaxation, then actuation cycles, as amorph sim) and writes one\n"
     "self-contained HTML file that plays the recorded motion in a browser: drag to orbit, wheel to\n"
-    "zoom, play/pause, speed, a time slider, the centre-of-mass trail. URL hash parameters pick a\n"
-    "moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
+    "zoom, play/pause, speed, a time slider, the centre-of-mass trail. It opens where the movement\n"
+    "starts, the relaxation skipped (its check box, or #relax=1, shows it). URL hash parameters pick\n"
+    "a moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
     "genome or VXA file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
     "chain:N).\n"
     "  --out FILE.html    the page (written atomically); required\n"

@@ -150,16 +150,23 @@ am_real am_from_si(const am_model* m, double v, int dim);
 /* the time step dt_frac * dt_rec, s (rounded to am_real first in the float and double builds) */
 double am_dt_si(const am_model* m, am_param dt_frac);
 
-/* recording of voxel poses every `every` steps into a caller's fixed buffer */
+/* recording of voxel poses every `every` steps into a caller's fixed buffer, or handed to a sink */
+struct am_state;
 typedef struct am_record {
     int every;           /* record every this many steps (>= 1) */
     int max_frames;      /* capacity in frames */
     int nv;              /* voxels per frame (set by the simulator) */
-    int frames;          /* frames written so far */
+    int frames;          /* frames written (or handed to the sink) so far */
     int truncated;       /* 1 when a frame was dropped for lack of room */
     float* pose;         /* max_frames * nv * 7 floats: x, y, z (m), qw, qx, qy, qz */
     long* step;          /* max_frames step numbers (may be NULL) */
     long pose_cap;       /* capacity of pose in floats */
+    /* optional (NULL: frames are stored in pose): each frame is handed to sink(sink_ctx, m, s)
+     * instead, nothing is stored and max_frames does not apply, so a recording of any length
+     * streams; am_evaluate then also hands it the last step of the relaxation and the last step
+     * of the evaluation when they are not multiples of every (each step at most once) */
+    void (*sink)(void* sink_ctx, const am_model* m, const struct am_state* s);
+    void* sink_ctx;
 } am_record;
 
 /* the mutable state of one simulation */
@@ -348,7 +355,8 @@ void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait
 /* "still", "flop", "scoot", "bounce" */
 const char* am_gait_mode_name(am_gait_mode mode);
 
-/* recording helper used by am_evaluate: stores a frame if s->step is a multiple of rec->every */
+/* recording helper used by am_evaluate: stores a frame (or hands it to rec->sink) if s->step is a
+ * multiple of rec->every */
 void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
 
 #endif
