@@ -35,10 +35,10 @@ am_status am_mesh_write_stl(const am_mesh* m, const double* pos, const am_palett
             double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
             double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
             for (int j = 0; j < 3; j++) n[j] = len > 0 ? n[j] / len : 0;
-            am_text_put(out, "  facet normal %.7g %.7g %.7g\n    outer loop\n", n[0], n[1], n[2]);
+            am_text_put(out, "  facet normal %.7g %.7g %.7g\n    outer loop\n", n[0] + 0.0, n[1] + 0.0, n[2] + 0.0);
             for (int j = 0; j < 3; j++) {
                 const double* p = pos + 3 * m->tri[t][j];
-                am_text_put(out, "      vertex %.9g %.9g %.9g\n", p[0] * MM, p[1] * MM, p[2] * MM);
+                am_text_put(out, "      vertex %.7g %.7g %.7g\n", p[0] * MM, p[1] * MM, p[2] * MM);
             }
             am_text_put(out, "    endloop\n  endfacet\n");
         }
@@ -80,7 +80,7 @@ am_status am_mesh_write_amf(const am_mesh* m, const double* pos, const am_palett
     }
     am_text_put(out, "  <object id=\"1\">\n    <mesh>\n      <vertices>\n");
     for (long v = 0; v < m->nvert && !out->full; v++)
-        am_text_put(out, "        <vertex><coordinates><x>%.9g</x><y>%.9g</y><z>%.9g</z></coordinates></vertex>\n",
+        am_text_put(out, "        <vertex><coordinates><x>%.7g</x><y>%.7g</y><z>%.7g</z></coordinates></vertex>\n",
                     pos[3 * v] * MM, pos[3 * v + 1] * MM, pos[3 * v + 2] * MM);
     am_text_put(out, "      </vertices>\n");
     for (int k = 0; k < pal->count && !out->full; k++) {
