@@ -1,6 +1,6 @@
 /* amorph export: a robot in another format (VXA for VoxCAD / Voxelyze, the lattice text format,
  * and printable surfaces: STL and AMF, at rest or at a simulated moment). */
-#include "robot.h"
+#include "picture.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,8 +12,6 @@ static char g_out[AM_VXA_TEXT_MAX]; /* the VXA text, during one call */
 
 #if TOOL_PICTURES
 /* the printable surfaces (desktop profile: the mesh is many times a board's RAM) */
-static am_mesh g_mesh;
-static double g_pos[3 * AM_MESH_MAX_VERTS];
 static float g_pose[2 * 7 * AM_MAX_VOXELS];
 static long g_pose_step[2];
 
@@ -63,8 +61,8 @@ static int write_printable(const char* path, const am_palette* pal, const char* 
     char err[AM_ERR_MAX];
     tool_out o;
     if (tool_out_open(&o, strcmp(path, "-") ? path : NULL)) return 1;
-    am_status st = amf ? am_mesh_write_amf(&g_mesh, g_pos, pal, title, &o.text, err, sizeof err)
-                       : am_mesh_write_stl(&g_mesh, g_pos, pal, &o.text, err, sizeof err);
+    am_status st = amf ? am_mesh_write_amf(tool_mesh(), tool_mesh_pos(), pal, title, &o.text, err, sizeof err)
+                       : am_mesh_write_stl(tool_mesh(), tool_mesh_pos(), pal, &o.text, err, sizeof err);
     if (st != AM_OK) {
         fprintf(stderr, "amorph: %s\n", o.err[0] ? o.err : err);
         tool_out_close(&o, 0);
@@ -170,13 +168,13 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
 #endif
 #if TOOL_PICTURES
     if (stl || amf) {
-        st = am_mesh_build(&g_mesh, lat, AM_MESH_MATERIALS, err, sizeof err);
+        st = am_mesh_build(tool_mesh(), lat, AM_MESH_MATERIALS, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", ra.name, err);
-        if (step < 0 && time_s < 0) am_mesh_rest(&g_mesh, g_pos);
+        if (step < 0 && time_s < 0) am_mesh_rest(tool_mesh(), tool_mesh_pos());
         else {
             int rc = simulate_to(c, lat, &rob, ra.name, step, time_s);
             if (rc) return rc;
-            am_mesh_place(&g_mesh, g_pose, g_pos);
+            am_mesh_place(tool_mesh(), g_pose, tool_mesh_pos());
         }
         if (stl && write_printable(stl, &lat->palette, ra.name, 0)) return 1;
         if (amf && write_printable(amf, &lat->palette, ra.name, 1)) return 1;
