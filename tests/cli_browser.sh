@@ -65,6 +65,21 @@ check "the two moments show frames '$f1' and '$f2'" [ -n "$f1" ] && [ -n "$f2" ]
 diff=$("$PNG" --png-diff "$TMPD/shot1.png" "$TMPD/shot2.png" $COLS 2>&1)
 check "robot pixels changed between t=0.25 and t=0.75: $diff (want >= 300)" [ "${diff:-0}" -ge 300 ] 2>/dev/null
 
+# (d) the continuous surface (on by default) against the boxes at one moment: no light background
+# pixel enclosed by the robot's with the surface on, and the two pictures differ on the robot
+chrome "$URL#t=0.5&paused=1&surface=0" --screenshot="$TMPD/boxes.png" >/dev/null
+chrome "$URL#t=0.5&paused=1" --screenshot="$TMPD/surface.png" >/dev/null
+check "chromium took no screenshots of surface and boxes" [ -s "$TMPD/boxes.png" ] && [ -s "$TMPD/surface.png" ]
+holes=$("$PNG" --png-holes "$TMPD/surface.png" $COLS 2>&1)
+set -- $holes
+check "surface: $1 background pixels inside the robot ($holes; want 0 of >= 20000 robot pixels)" [ "$1" = 0 ] && [ "${2:-0}" -ge 20000 ]
+diff=$("$PNG" --png-diff "$TMPD/surface.png" "$TMPD/boxes.png" $COLS 2>&1)
+check "surface and boxes differ in $diff robot pixels (want >= 2000)" [ "${diff:-0}" -ge 2000 ] 2>/dev/null
+chrome "$URL#t=0.5&paused=1&surface=0" --dump-dom >"$TMPD/dom4.html"
+check "boxes page: no ok marker" grep -q 'id="status" data-status="ok"' "$TMPD/dom4.html"
+check "boxes page: not marked data-surface=0" grep -q 'data-surface="0"' "$TMPD/dom4.html"
+check "default page: not marked data-surface=1" grep -q 'data-surface="1"' "$TMPD/dom1.html"
+
 # (c) the error marker works: damaged pose data is reported, not silently drawn
 sed 's/"pose": "/"pose": "!!/' "$TMPD/walker.html" >"$TMPD/broken.html"
 chrome "file://$(cd "$TMPD" && pwd)/broken.html#paused=1" --dump-dom >"$TMPD/dom3.html"
@@ -72,5 +87,5 @@ check "damaged page did not report an error: $(grep -o '<title>[^<]*' "$TMPD/dom
     grep -q '<title>amorph viewer: error' "$TMPD/dom3.html"
 check "damaged page: no error marker" grep -q 'data-status="error"' "$TMPD/dom3.html"
 
-[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$KEEP"
+[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$TMPD"/surface.png "$TMPD"/boxes.png "$KEEP"
 summary "cli_browser.sh"
