@@ -111,6 +111,21 @@ check "no relaxation: frame 0 and relax 1, got '$(attr norelax data-frame)' and 
     [ "$(attr norelax data-frame)" = 0 ] && [ "$(attr norelax data-relax)" = 1 ]
 URL=$URL0
 
+# (e) the continuous surface (on by default) against the boxes at one moment: no light background
+# pixel enclosed by the robot's with the surface on, and the two pictures differ on the robot
+chrome "$URL#t=0.5&paused=1&surface=0" --screenshot="$TMPD/boxes.png" >/dev/null
+chrome "$URL#t=0.5&paused=1" --screenshot="$TMPD/surface.png" >/dev/null
+check "chromium took no screenshots of surface and boxes" [ -s "$TMPD/boxes.png" ] && [ -s "$TMPD/surface.png" ]
+holes=$("$PNG" --png-holes "$TMPD/surface.png" $COLS 2>&1)
+set -- $holes
+check "surface: $1 background pixels inside the robot ($holes; want 0 of >= 20000 robot pixels)" [ "$1" = 0 ] && [ "${2:-0}" -ge 20000 ]
+diff=$("$PNG" --png-diff "$TMPD/surface.png" "$TMPD/boxes.png" $COLS 2>&1)
+check "surface and boxes differ in $diff robot pixels (want >= 2000)" [ "${diff:-0}" -ge 2000 ] 2>/dev/null
+chrome "$URL#t=0.5&paused=1&surface=0" --dump-dom >"$TMPD/dom4.html"
+check "boxes page: no ok marker" grep -q 'id="status" data-status="ok"' "$TMPD/dom4.html"
+check "boxes page: not marked data-surface=0" grep -q 'data-surface="0"' "$TMPD/dom4.html"
+check "default page: not marked data-surface=1" grep -q 'data-surface="1"' "$TMPD/dom1.html"
+
 # (c) the error marker works: damaged pose data is reported, not silently drawn
 sed 's/"pose": "/"pose": "!!/' "$TMPD/walker.html" >"$TMPD/broken.html"
 chrome "file://$(cd "$TMPD" && pwd)/broken.html#paused=1" --dump-dom >"$TMPD/dom3.html"
@@ -118,5 +133,5 @@ check "damaged page did not report an error: $(grep -o '<title>[^<]*' "$TMPD/dom
     grep -q '<title>amorph viewer: error' "$TMPD/dom3.html"
 check "damaged page: no error marker" grep -q 'data-status="error"' "$TMPD/dom3.html"
 
-[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$KEEP"
+[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$TMPD"/surface.png "$TMPD"/boxes.png "$KEEP"
 summary "cli_browser.sh"

@@ -24,6 +24,15 @@ set -- $info
 check "render: size $1 x $2, want 1600 x 400" [ "$1" = 1600 ] && [ "$2" = 400 ]
 check "render: too few passive/active/active90 pixels: $info" [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ] && [ "${5:-0}" -gt 1000 ]
 
+# the continuous surface (the default) against --boxes: no light background pixel enclosed by the
+# robot's (the surface has no gap), and the two pictures differ on the robot
+expect_ok "$AMORPH" render "$W" $QUICK --boxes --out "$TMPD/wb.png"
+holes=$("$PNG" --png-holes "$TMPD/w.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
+set -- $holes
+check "render: $1 background pixels inside the surface ($holes)" [ "$1" = 0 ] && [ "${2:-0}" -gt 50000 ]
+diff=$("$PNG" --png-diff "$TMPD/w.png" "$TMPD/wb.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
+check "render: surface and --boxes differ in $diff robot pixels (want >= 5000)" [ "${diff:-0}" -ge 5000 ] 2>/dev/null
+
 # options: size and frames; a scene
 expect_ok "$AMORPH" render --scene sphere:6 --cycles 1 --relax-max 300 --frames 4 --width 800 --height 260 --out "$TMPD/s.png"
 info=$("$PNG" --png-info "$TMPD/s.png" $PASSIVE $ACTIVE 2>&1)

@@ -7,6 +7,11 @@
  *   test_image --png-info FILE [RRGGBB ...]    prints "W H N1 N2 ..." (pixels in shades of each colour)
  *   test_image --png-diff A B RRGGBB ...       prints the pixels shaded like one of the colours in
  *                                              A or B that differ between A and B
+ *   test_image --png-holes FILE RRGGBB ...     prints "HOLES ROBOT": HOLES the light grey pixels
+ *                                              (background, floor, grid, shadow) enclosed by pixels
+ *                                              shaded like the colours (not reachable from the
+ *                                              picture's border without crossing one), ROBOT the
+ *                                              pixels shaded like them
  * Both exit 1 with a message when a file is not a valid PNG. */
 #define _POSIX_C_SOURCE 200809L /* mkstemp, close */
 #include "amorph.h"
@@ -331,7 +336,42 @@ static int inspector(int argc, char** argv)
         png_free(&b);
         return 0;
     }
-    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB...\n");
+    if (!strcmp(argv[1], "--png-holes") && argc >= 4 && argc - 3 <= 16) {
+        png_image img;
+        if (parse_colours(argc - 3, argv + 3, col)) return 2;
+        if (png_read_file(argv[2], &img, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        long n = (long)img.w * img.h, robot = 0, holes = 0, top = 0;
+        uint8_t* mark = calloc((size_t)n, 1); /* 1 robot, 2 reached from the border */
+        long* stack = malloc(sizeof(long) * (size_t)n);
+        if (!mark || !stack) return fprintf(stderr, "out of memory\n"), 1;
+        for (long i = 0; i < n; i++)
+            for (int k = 0; k < argc - 3; k++)
+                if (png_shade_of(img.rgb + 3 * i, col[k], 8)) mark[i] = 1;
+        /* flood from every border pixel through pixels that are not the robot's */
+        for (long i = 0; i < n; i++) {
+            long x = i % img.w, y = i / img.w;
+            if ((x == 0 || y == 0 || x == img.w - 1 || y == img.h - 1) && !mark[i]) mark[i] = 2, stack[top++] = i;
+        }
+        while (top > 0) {
+            long i = stack[--top], x = i % img.w, y = i / img.w;
+            long nb[4] = {x > 0 ? i - 1 : -1, x < img.w - 1 ? i + 1 : -1, y > 0 ? i - img.w : -1, y < img.h - 1 ? i + img.w : -1};
+            for (int k = 0; k < 4; k++)
+                if (nb[k] >= 0 && !mark[nb[k]]) mark[nb[k]] = 2, stack[top++] = nb[k];
+        }
+        for (long i = 0; i < n; i++) {
+            const uint8_t* p = img.rgb + 3 * i;
+            int lo = p[0] < p[1] ? p[0] : p[1], hi = p[0] > p[1] ? p[0] : p[1];
+            lo = p[2] < lo ? p[2] : lo, hi = p[2] > hi ? p[2] : hi;
+            robot += mark[i] == 1;
+            holes += mark[i] == 0 && lo >= 180 && hi - lo <= 12;
+        }
+        printf("%ld %ld\n", holes, robot);
+        free(mark);
+        free(stack);
+        png_free(&img);
+        return 0;
+    }
+    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB...\n");
     return 2;
 }
 

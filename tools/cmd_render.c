@@ -21,6 +21,7 @@ static uint8_t film_png[FILM_MAX_PIXELS * 3 + FILM_MAX_H * 4 + (FILM_MAX_PIXELS 
 typedef struct film_opts {
     int panels;         /* pictures side by side, >= 3 */
     int width, height;  /* pixels of the whole strip */
+    int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body) */
 } film_opts;
 
 static const uint8_t col_floor[3] = {236, 236, 230}, col_grid[3] = {206, 206, 198}, col_shadow[3] = {196, 196, 190},
@@ -69,9 +70,38 @@ static void arrow_head(am_canvas* c, const am_camera* cam, double x0, double y0,
     am_raster_triangle(c, cam, t, rgb, 0);
 }
 
+/* the body's surface in frame fr: each triangle turned to the viewer flat-shaded as a box face */
+static void draw_surface(am_canvas* c, const am_camera* cam, const tool_motion* mo, int fr, const double light[3])
+{
+    const am_mesh* mesh = tool_mesh();
+    double* pos = tool_mesh_pos();
+    am_mesh_place(mesh, mo->pose + (long)fr * mo->nv * 7, pos);
+    for (long t = 0; t < mesh->ntri; t++) {
+        const double *a = pos + 3 * mesh->tri[t][0], *b = pos + 3 * mesh->tri[t][1], *d = pos + 3 * mesh->tri[t][2];
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        double len = sqrt(dot3(n, n));
+        if (!(len > 0)) continue;
+        for (int k = 0; k < 3; k++) n[k] /= len;
+        if (dot3(n, cam->fwd) >= 0) continue; /* turned away from the viewer */
+        double lit = dot3(n, light), shade = 0.35 + 0.65 * (lit > 0 ? lit : 0);
+        const uint8_t* rgb = mo->model->palette.mat[mesh->tmat[t]].color;
+        uint8_t col[3];
+        for (int j = 0; j < 3; j++) {
+            double x = rgb[j] * shade + 0.5;
+            col[j] = (uint8_t)(x > 255 ? 255 : x);
+        }
+        double s[9];
+        am_camera_project(cam, a, s);
+        am_camera_project(cam, b, s + 3);
+        am_camera_project(cam, d, s + 6);
+        am_raster_triangle(c, cam, s, col, 1);
+    }
+}
+
 /* one panel: floor, grid, shadows, the centre-of-mass trail and the voxels of frame fr */
 static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo, int fr, int trail_from,
-                       double view_w)
+                       double view_w, int boxes)
 {
     const double light[3] = {-0.26, -0.43, 0.865}; /* unit: up, towards the viewer's left */
     double R = 2.5 * view_w / sin(FILM_EL) + 0.1;
@@ -128,7 +158,11 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
             memcpy(a, b, sizeof a);
         }
     }
-    /* the voxels */
+    /* the voxels: the surface over them, or each a box */
+    if (!boxes) {
+        draw_surface(c, cam, mo, fr, light);
+        return;
+    }
     for (int i = 0; i < mo->nv; i++) {
         double h[3], p[3] = {(double)f[7 * i], (double)f[7 * i + 1], (double)f[7 * i + 2]},
                q[4] = {(double)f[7 * i + 3], (double)f[7 * i + 4], (double)f[7 * i + 5], (double)f[7 * i + 6]};
@@ -197,7 +231,7 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
         for (int j = 0; j < 3; j++) target[j] = base[j] + um * cam.right[j] + vm * cam.up[j];
         am_camera panel;
         am_camera_look(&panel, target, FILM_AZ, FILM_EL, ph / scale, k * pw, label_h, pw, ph);
-        draw_panel(c, &panel, mo, frame[k], k >= 2 ? frame[1] : -1, view_w);
+        draw_panel(c, &panel, mo, frame[k], k >= 2 ? frame[1] : -1, view_w, o->boxes);
         double t = (double)mo->step[frame[k]] * mo->dt;
         char tt[48];
         fmt_time(tt, sizeof tt, t);
@@ -247,7 +281,7 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
 
 static film_opts film_defaults(void)
 {
-    film_opts o = {6, 1600, 400};
+    film_opts o = {6, 1600, 400, 0};
     return o;
 }
 
@@ -258,10 +292,12 @@ static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     static tool_motion mo;
     int rc = tool_record_motion(c, lat, env, eval, 400, &mo, what);
     if (rc) return rc;
+    char err[AM_ERR_MAX];
+    if (!o->boxes && am_mesh_build(tool_mesh(), lat, AM_MESH_BODY, err, sizeof err) != AM_OK)
+        return tool_usage_error("%s: %s", what, err);
     am_canvas cv = {o->width, o->height, film_rgb, film_depth};
     film_draw(&mo, o, &cv);
     long n = 0;
-    char err[AM_ERR_MAX];
     if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_FIXED, film_png, (long)sizeof film_png, &n, err,
                       sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s: %s\n", path, err);
@@ -291,6 +327,8 @@ static const char render_help[] =
     "  --frames N         pictures side by side, 3..16 (6: initial, settled, 4 of the motion)\n"
     "  --width W          pixels, 200..4096 (1600)\n"
     "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
+    "  --boxes            each voxel as a box (turned and sized as simulated) instead of the\n"
+    "                     continuous surface over the voxels (--surface, the default)\n"
     TOOL_ROBOT_HELP;
 
 int cmd_render(tool_ctx* c, int argc, char** argv)
@@ -308,6 +346,8 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("render: --out needs a file name");
             out = v, i++;
+        } else if (!strcmp(a, "--boxes") || !strcmp(a, "--surface")) {
+            o.boxes = a[2] == 'b';
         } else if (!strcmp(a, "--frames")) {
             if (!tool_parse_int(v, 3, FILM_MAX_PANELS, &o.panels)) return tool_usage_error("render: --frames needs a whole number 3..%d", FILM_MAX_PANELS);
             i++;

@@ -11,7 +11,10 @@
 
 /* the page: the poses in base64 (14 bytes a voxel a frame, 4/3 of it as text), the per-voxel and
  * per-frame numbers as text, and the fixed page around them */
-#define VIEW_HTML_MAX ((TOOL_REC_FLOATS / 7) * 19L + AM_MAX_VOXELS * 32L + TOOL_REC_MAX_FRAMES * 96L + 262144L)
+#define VIEW_HTML_MAX ((TOOL_REC_FLOATS / 7) * 19L + AM_MAX_VOXELS * 32L + TOOL_REC_MAX_FRAMES * 96L + 262144L + VIEW_MESH_MAX)
+/* the body's surface: at most one face per face position, half the mesh's capacities; a triangle
+ * takes at most 3 x 8 + 3 characters, a vertex 4 x 8 + 4 */
+#define VIEW_MESH_MAX ((AM_MESH_MAX_TRIS / 2) * 27L + (AM_MESH_MAX_VERTS / 2) * 36L)
 static char view_html[VIEW_HTML_MAX];
 static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
 
@@ -74,7 +77,7 @@ static double nice_step(double x)
 }
 
 /* the data of the page as one JSON object */
-static void view_data(am_text* o, const tool_motion* mo, const am_eval_def* eval, const char* title)
+static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, const am_eval_def* eval, const char* title)
 {
     const am_model* m = mo->model;
     int nv = mo->nv, nf = mo->frames;
@@ -154,6 +157,22 @@ static void view_data(am_text* o, const tool_motion* mo, const am_eval_def* eval
         int idx = m->cell[v], x = idx % m->nx, y = (idx / m->nx) % m->ny, z = idx / (m->nx * m->ny);
         out_fmt(o, v ? ",%d,%d,%d" : "%d,%d,%d", x, y, z);
     }
+    if (mesh) {
+        /* the surface (amorph/mesh.h): corner vertices, the means, the triangles */
+        out_str(o, "],\n\"mesh_corner\": [");
+        for (long v = 0; v < mesh->ncorner; v++) out_fmt(o, v ? ",%ld" : "%ld", (long)mesh->vcorner[v]);
+        out_str(o, "],\n\"mesh_mask\": [");
+        for (long v = 0; v < mesh->ncorner; v++) out_fmt(o, v ? ",%d" : "%d", mesh->vmask[v]);
+        out_str(o, "],\n\"mesh_from\": [");
+        for (long v = mesh->ncorner; v < mesh->nvert; v++)
+            out_fmt(o, v > mesh->ncorner ? ",%ld,%ld,%ld,%ld" : "%ld,%ld,%ld,%ld", (long)mesh->vfrom[v][0], (long)mesh->vfrom[v][1],
+                    (long)mesh->vfrom[v][2], (long)mesh->vfrom[v][3]);
+        out_str(o, "],\n\"mesh_tri\": [");
+        for (long t = 0; t < mesh->ntri; t++)
+            out_fmt(o, t ? ",%ld,%ld,%ld" : "%ld,%ld,%ld", (long)mesh->tri[t][0], (long)mesh->tri[t][1], (long)mesh->tri[t][2]);
+        out_str(o, "],\n\"mesh_mat\": [");
+        for (long t = 0; t < mesh->ntri; t++) out_fmt(o, t ? ",%d" : "%d", mesh->tmat[t]);
+    }
     out_str(o, "],\n\"pose\": \"");
     out_base64(o, view_raw, 14L * nf * nv);
     out_str(o, "\"}\n");
@@ -168,7 +187,9 @@ static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     am_text o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
     view_html[0] = 0;
     for (size_t k = 0; k < sizeof view_page_pre / sizeof view_page_pre[0]; k++) out_str(&o, view_page_pre[k]);
-    view_data(&o, &mo, eval, title);
+    char err[AM_ERR_MAX];
+    if (am_mesh_build(tool_mesh(), lat, AM_MESH_BODY, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", what, err);
+    view_data(&o, &mo, tool_mesh(), eval, title);
     for (size_t k = 0; k < sizeof view_page_post / sizeof view_page_post[0]; k++) out_str(&o, view_page_post[k]);
     if (o.full) {
         fprintf(stderr, "amorph: %s: the page does not fit in %ld bytes\n", path, (long)VIEW_HTML_MAX);

@@ -10,6 +10,11 @@
 
 static float pic_pose[TOOL_REC_FLOATS];
 static long pic_step[TOOL_REC_MAX_FRAMES];
+static am_mesh pic_mesh;
+static double pic_mesh_pos[3 * AM_MESH_MAX_VERTS];
+
+am_mesh* tool_mesh(void) { return &pic_mesh; }
+double* tool_mesh_pos(void) { return pic_mesh_pos; }
 
 int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
                        const char* what)

@@ -30,6 +30,11 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
  * neighbours on each axis (so thermal expansion shows), m */
 void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3]);
 
+/* the surface mesh render, view and export share (amorph/mesh.h), static storage of tools/picture.c
+ * (one at a time), and room for its vertex positions (3 per vertex, m) */
+am_mesh* tool_mesh(void);
+double* tool_mesh_pos(void);
+
 /* the robot of render and view (tools/robot.h) into c->work[0].lattice, with its environment and
  * evaluation; 0 or an exit status after a message naming cmd */
 int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd);
