@@ -276,6 +276,7 @@ am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m_out, char* err, 
         }
         e->order[j] = k;
     }
+    for (int i = 0; i < m; i++) e->order_voxels[i] = voxels[e->order[i]];
     e->gen_b = b;
     e->gen_m = m;
     *m_out = m;

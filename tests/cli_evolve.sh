@@ -306,11 +306,14 @@ cp -r "$TMPD/exp" "$TMPD/expbad"
 sed -i '3s/^\([0-9]*,[0-9]*\),[^,]*,/\1,zero,/' "$TMPD/expbad/gmx-1/log.csv"
 expect_fail 2 "gmx-1/log.csv:3: best \\(column 3\\): not a number: 'zero'" \
     "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/expbad" --quiet
-# an experiment interrupted in its first run (Ctrl-C at evaluation 9) and run again ends the same
+# an experiment interrupted in its first generation (Ctrl-C at evaluation 9 of the 6 runs, which
+# evolve in lockstep: one wave) and run again ends the same
 env AMORPH_TEST_INTERRUPT=INT:9 "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp2" --quiet \
     >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-if [ $rc -eq 130 ] && grep -q "resume the experiment with the same command and --out $TMPD/exp2" "$TMPD/err" && [ ! -e "$TMPD/exp2/dct-2" ]; then ok
-else ko "experiment interrupted: exit $rc, stderr: $(cat "$TMPD/err")"; fi
+ck=$(ls "$TMPD"/exp2/*/checkpoint.txt 2>/dev/null | wc -l)
+if [ $rc -eq 130 ] && grep -q "resume the experiment with the same command and --out $TMPD/exp2" "$TMPD/err" && [ "$ck" -eq 6 ] &&
+    [ ! -e "$TMPD/exp2/results.csv" ]; then ok
+else ko "experiment interrupted: exit $rc, $ck checkpoints (want all 6 runs started at once), stderr: $(cat "$TMPD/err")"; fi
 expect_ok "$AMORPH" experiment representations --config "$TMPD/small.cfg" --evals 12 --runs 2 --out "$TMPD/exp2" --quiet
 if cmp -s "$TMPD/exp/results.csv" "$TMPD/exp2/results.csv"; then ok; else ko "an interrupted experiment ended differently"; fi
 expect_fail 2 "unknown experiment 'colours'" "$AMORPH" experiment colours

@@ -108,23 +108,28 @@ static void help_config(void)
 
 /* ---- the loop ---- */
 
-typedef struct run_io {
-    const char* dir;
-    int quiet;
-    int pictures;
-    const char* label;        /* prefix of progress lines (experiments), or NULL */
-} run_io;
-
-static TOOL_NOINLINE void progress(const am_evo* e, double t_start, long evals_start, int final, double* last_line, int quiet, const char* label)
+/* the progress line of a wave: one run's (labelled in an experiment), or the sums of several */
+static TOOL_NOINLINE void progress(const run_slot* s, int n, double t_start, long evals_start, int final, double* last_line, int quiet)
 {
     if (quiet) return;
     double now = am_port_now(), el = now - t_start;
-    double rate = el > 0 ? (double)(e->evaluations - evals_start) / el : 0.0;
-    double left = rate > 0 ? (double)(e->def.evaluations - e->evaluations) / rate : 0.0;
+    long done = 0, total = 0;
+    double best = -1.0, mean = 0.0;
+    for (int k = 0; k < n; k++) {
+        const am_evo* e = s[k].e;
+        done += e->evaluations;
+        total += e->def.evaluations;
+        if (e->last.best > best) best = e->last.best;
+        mean += e->last.mean / (double)n;
+    }
+    double rate = el > 0 ? (double)(done - evals_start) / el : 0.0;
+    double left = rate > 0 ? (double)(total - done) / rate : 0.0;
     if (left < 0) left = 0;
-    char line[256];
-    snprintf(line, sizeof line, "%s%sevaluations %ld/%ld  best %.4f m  mean %.4f m  %.2f eval/s  %.0f s left",
-             label ? label : "", label ? ": " : "", e->evaluations, e->def.evaluations, e->last.best, e->last.mean, rate, left);
+    char line[256], label[96];
+    if (n == 1) snprintf(label, sizeof label, "%s%s", s[0].label ? s[0].label : "", s[0].label ? ": " : "");
+    else snprintf(label, sizeof label, "%d runs: ", n);
+    snprintf(line, sizeof line, "%sevaluations %ld/%ld  best %.4f m  mean %.4f m  %.2f eval/s  %.0f s left", label, done, total, best, mean,
+             rate, left);
     if (am_port_is_terminal()) {
         am_port_progress(line);
         if (final) am_port_progress(NULL);
@@ -199,54 +204,179 @@ int workers_of(const am_evo_def* d)
     return w < 1 ? 1 : w;
 }
 
-/* runs e to its end in io->dir; 0 done, 130 interrupted, 1 error */
-static int run_loop(tool_ctx* c, const run_io* io)
+/* ---- a wave: runs evolved in lockstep, their offspring evaluated in one parallel map ---- */
+
+#define WAVE_ITEMS (EXP_WAVE * AM_EVO_BATCH)
+
+typedef struct wave_job {
+    run_slot* s;
+    am_evo_work* work;
+    int run[WAVE_ITEMS], idx[WAVE_ITEMS]; /* map item j evaluates item idx[j] of run run[j]'s batch */
+    int cancellable[EXP_WAVE];
+    am_evo_result* res;
+} wave_job;
+
+/* the map's results (item j's in res[j]) */
+#if EXP_WAVE > 1
+static am_evo_result g_wave_res[WAVE_ITEMS];
+#endif
+
+static void wave_task(void* ctx, int item, int worker)
 {
-    am_evo* e = &c->evo;
+    wave_job* job = (wave_job*)ctx;
+    const int k = job->run[item];
+    if (job->cancellable[k] && run_cancel(NULL)) {
+        memset(&job->res[item], 0, sizeof job->res[item]);
+        job->res[item].skipped = 1;
+        return;
+    }
+    am_evo_batch_eval(job->s[k].e, job->idx[item], &job->work[worker], &job->res[item]);
+}
+
+/* after run k's generation: its log row, best robot and (when due) checkpoint; 0 or 1 */
+static int after_generation(tool_ctx* c, run_slot* r, double best_before, int had_best)
+{
+    am_evo* e = r->e;
+    if (r->eo.failed) return 1; /* the checkpoint stays behind: a resume cuts evals.csv back to it */
+    if (append_log(r->dir, &e->last)) return 1;
+    if ((!had_best || e->best.fitness != best_before) && write_best(&c->work[0], e, r->dir)) return 1;
+    r->dirty = 1;
+    double now = am_port_now();
+    if (e->def.checkpoint_seconds == 0 || now - r->last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
+        if (write_checkpoint(r->dir, e)) return 1;
+        r->last_ckpt = now;
+        r->dirty = 0;
+    }
+    return 0;
+}
+
+/* one generation of every unfinished run of the wave: the runs' batches made, evaluated together
+ * in one parallel map (all their items, the largest bodies first), placed; then each run's files.
+ * 0, 1 after a message, or 130 when the generation was cancelled (each run as before it) */
+static int wave_generation(tool_ctx* c, run_slot* s, int n, int workers)
+{
+    static wave_job job;
     char err[AM_ERR_MAX];
-    const int workers = workers_of(&e->def);
-    const double t0 = am_port_now();
-    const long evals0 = e->evaluations;
-    double last_ckpt = t0, last_line = t0;
-    int dirty = 0;
-    evals_out eo = {io->dir, &e->def, 0};
-    const am_evo_hooks hooks = {run_cancel, evals_append, &eo};
-    while (!am_evo_done(e)) {
-        double best_before = e->has_best ? e->best.fitness : 0.0;
-        int had_best = e->has_best;
-        g_test_int.base = e->evaluations;
-        atomic_store(&g_test_int.started, 0);
-        am_status st = am_evo_generation(e, c->work, workers, &hooks, err, sizeof err);
-        if (st == AM_ERR_CANCELLED) break;
-        if (st != AM_OK) {
+    double best_before[EXP_WAVE];
+    int had_best[EXP_WAVE], live[EXP_WAVE], cancelled = 0;
+    long base = 0;
+    for (int k = 0; k < n; k++) {
+        live[k] = !am_evo_done(s[k].e);
+        base += s[k].e->evaluations;
+        best_before[k] = s[k].e->has_best ? s[k].e->best.fitness : 0.0;
+        had_best[k] = s[k].e->has_best;
+        if (live[k]) am_evo_gen_begin(s[k].e);
+    }
+    g_test_int.base = base;
+    atomic_store(&g_test_int.started, 0);
+    job.s = s;
+    job.work = c->work;
+    for (;;) {
+        /* every live run's next batch, merged into one map: most voxels first, ties in run order */
+        int total = 0, m[EXP_WAVE];
+        for (int k = 0; k < n; k++) {
+            m[k] = 0;
+            if (!live[k]) continue;
+            if (am_evo_batch_begin(s[k].e, &c->work[0].geno, &m[k], err, sizeof err) != AM_OK) {
+                fprintf(stderr, "amorph: %s: %s\n", s[k].dir, err);
+                return 1;
+            }
+            job.cancellable[k] = am_evo_batch_cancellable(s[k].e);
+            for (int i = 0; i < m[k]; i++) {
+                int j = total++, v = s[k].e->order_voxels[i];
+                while (j > 0 && s[job.run[j - 1]].e->order_voxels[job.idx[j - 1]] < v) {
+                    job.run[j] = job.run[j - 1];
+                    job.idx[j] = job.idx[j - 1];
+                    j--;
+                }
+                job.run[j] = k;
+                job.idx[j] = i;
+            }
+        }
+        if (total == 0) break;
+#if EXP_WAVE > 1
+        job.res = n == 1 ? s[0].e->res : g_wave_res;
+#else
+        job.res = s[0].e->res;
+#endif
+        if (am_port_parallel_map(total, workers, wave_task, &job, job.res, (long)sizeof job.res[0], err, sizeof err) != AM_OK) {
             fprintf(stderr, "amorph: %s\n", err);
             return 1;
         }
-        if (eo.failed) return 1; /* the checkpoint stays behind: a resume cuts evals.csv back to it */
-        /* a test's point inside this generation that no cancel poll saw (several batches) */
-        if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base <= g_test_int.after && g_test_int.after < e->evaluations)
-            test_interrupt_fire();
-        if (append_log(io->dir, &e->last)) return 1;
-        if ((!had_best || e->best.fitness != best_before) && write_best(c, io->dir)) return 1;
-        dirty = 1;
-        double now = am_port_now();
-        if (e->def.checkpoint_seconds == 0 || now - last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
-            if (write_checkpoint(io->dir, e)) return 1;
-            last_ckpt = now;
-            dirty = 0;
+        if (job.res != s[0].e->res || n > 1)
+            for (int j = 0; j < total; j++) s[job.run[j]].e->res[job.idx[j]] = job.res[j];
+        for (int k = 0; k < n; k++) {
+            if (!live[k] || m[k] == 0) continue;
+            const am_evo_hooks hooks = {NULL, evals_append, &s[k].eo};
+            am_status st = am_evo_batch_end(s[k].e, s[k].e->res, &c->work[0].geno, &hooks, err, sizeof err);
+            if (st == AM_ERR_CANCELLED) {
+                live[k] = 0; /* abandoned: the run is as before the generation */
+                cancelled = 1;
+            } else if (st != AM_OK) {
+                fprintf(stderr, "amorph: %s: %s\n", s[k].dir, err);
+                return 1;
+            }
         }
-        progress(e, t0, evals0, am_evo_done(e), &last_line, io->quiet, io->label);
+    }
+    long after = 0;
+    for (int k = 0; k < n; k++) {
+        if (live[k]) am_evo_gen_end(s[k].e);
+        after += s[k].e->evaluations;
+    }
+    /* a test's point inside this generation that no cancel poll saw (several batches) */
+    if (!cancelled && g_test_int.sig && !atomic_load(&g_test_int.fired) && base <= g_test_int.after && g_test_int.after < after)
+        test_interrupt_fire();
+    for (int k = 0; k < n; k++)
+        if (live[k] && after_generation(c, &s[k], best_before[k], had_best[k])) return 1;
+    return cancelled ? 130 : 0;
+}
+
+int run_wave(tool_ctx* c, run_slot* s, int n, int quiet)
+{
+    if (n < 1 || n > EXP_WAVE) return tool_usage_error("internal: a wave of %d runs (1 to %d)", n, EXP_WAVE);
+    int workers = 1;
+    const double t0 = am_port_now();
+    long evals0 = 0;
+    double last_line = t0;
+    for (int k = 0; k < n; k++) {
+        int w = workers_of(&s[k].e->def);
+        if (w > workers) workers = w;
+        evals0 += s[k].e->evaluations;
+        s[k].last_ckpt = t0;
+        s[k].dirty = 0;
+        s[k].eo.dir = s[k].dir;
+        s[k].eo.def = &s[k].e->def;
+        s[k].eo.failed = 0;
+    }
+    int rc = 0;
+    for (;;) {
+        int done = 1;
+        for (int k = 0; k < n; k++) done &= am_evo_done(s[k].e);
+        if (done) break;
+        rc = wave_generation(c, s, n, workers);
+        if (rc) break;
+        done = 1;
+        for (int k = 0; k < n; k++) done &= am_evo_done(s[k].e);
+        progress(s, n, t0, evals0, done, &last_line, quiet);
         if (am_port_interrupted()) break;
     }
-    if (am_port_interrupted() && !am_evo_done(e)) {
-        if (dirty && write_checkpoint(io->dir, e)) return 1;
+    if (rc == 1) return 1;
+    int unfinished = 0;
+    for (int k = 0; k < n; k++) unfinished += !am_evo_done(s[k].e);
+    if ((rc == 130 || am_port_interrupted()) && unfinished) {
+        for (int k = 0; k < n; k++)
+            if (s[k].dirty && write_checkpoint(s[k].dir, s[k].e)) return 1;
         am_port_progress(NULL);
-        fprintf(stderr, "amorph: interrupted after %ld evaluations (generation %ld); the checkpoint in %s stands.\n"
-                        "amorph: resume with: amorph evolve --resume %s\n",
-                e->evaluations, e->generation, io->dir, io->dir);
+        if (n == 1)
+            fprintf(stderr, "amorph: interrupted after %ld evaluations (generation %ld); the checkpoint in %s stands.\n"
+                            "amorph: resume with: amorph evolve --resume %s\n",
+                    s[0].e->evaluations, s[0].e->generation, s[0].dir, s[0].dir);
+        else
+            fprintf(stderr, "amorph: interrupted with %d of %d runs unfinished; the checkpoint in each run folder stands.\n", unfinished, n);
         return 130;
     }
-    if (write_summary(io->dir, e, am_port_now() - t0)) return 1;
+    for (int k = 0; k < n; k++)
+        if (write_summary(s[k].dir, s[k].e, am_port_now() - t0)) return 1;
     return 0;
 }
 
@@ -280,26 +410,34 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 }
 
 
-/* a new run in dir, to its end; 0, 1, 2 or 130 */
-int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+int open_start(am_evo* e, const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX];
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (lock_run(dir)) return 2;
-    int rc = start_prepare(c, d, dir);
+    return start_prepare(e, d, dir);
+}
+
+/* a new run in dir, to its end; 0, 1, 2 or 130 */
+int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+{
+    int rc = open_start(&c->evo, d, dir);
     if (rc == 0) {
-        run_io io = {dir, quiet, pictures, label};
-        rc = run_loop(c, &io);
+        run_slot s;
+        memset(&s, 0, sizeof s);
+        s.e = &c->evo;
+        s.dir = dir;
+        s.label = label;
+        rc = run_wave(c, &s, 1, quiet);
         if (rc == 0 && pictures) rc = finish_pictures(c, dir);
     }
     am_port_unlock();
     return rc;
 }
 
-
-/* loads the run in dir and checks it against the settings the user gives now (flags o, then
- * `extra` keys and values); 0, 1 or 2 */
-static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra)
+/* loads the run in dir into e and checks it against the settings the user gives now (flags o,
+ * then `extra` keys and values); 0, 1 or 2 */
+static TOOL_NOINLINE int resume_load(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
     path_join(path, sizeof path, dir, RUN_CONFIG);
@@ -309,43 +447,53 @@ static TOOL_NOINLINE int resume_load(tool_ctx* c, const char* dir, const evo_opt
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
                                 dir, dir);
-    int rc = read_checkpoint(path, &c->evo);
+    int rc = read_checkpoint(path, e);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
     path_join(path, sizeof path, dir, RUN_CONFIG);
     am_evo_def d;
     if (build_def(o, path, extra, &d, "resume")) return 2;
-    if (!am_evo_same_run(&c->evo.def, &d, what, sizeof what))
+    if (!am_evo_same_run(&e->def, &d, what, sizeof what))
         return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
-    c->evo.def.evaluations = d.evaluations;
-    c->evo.def.threads = d.threads;
-    c->evo.def.checkpoint_seconds = d.checkpoint_seconds;
-    if (c->evo.def.evaluations < c->evo.evaluations)
-        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, c->evo.def.evaluations, c->evo.evaluations);
-    if (trim_table(dir, RUN_LOG, am_evo_log_header(), c->evo.generation, "generation")) return 2;
+    e->def.evaluations = d.evaluations;
+    e->def.threads = d.threads;
+    e->def.checkpoint_seconds = d.checkpoint_seconds;
+    if (e->def.evaluations < e->evaluations)
+        return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, e->def.evaluations, e->evaluations);
+    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation")) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
-    int n = evals_header(&c->evo.def, hdr, (int)sizeof hdr);
+    int n = evals_header(&e->def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, RUN_EVALS);
     if (!am_port_exists(path)) {
         /* a run begun by a build without evals.csv: the table starts at the checkpoint's evaluation */
         if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, RUN_EVALS, hdr, c->evo.evaluations, "evaluation")) return 2;
+        if (trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation")) return 2;
     }
-    if (write_config(dir, &c->evo.def)) return 1;
+    if (write_config(dir, &e->def)) return 1;
     return 0;
+}
+
+int open_resume(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
+{
+    if (am_port_exists(dir) && lock_run(dir)) return 2;
+    int rc = resume_load(e, dir, o, extra);
+    /* what a kill during a write left: the run's files are whole, their temporaries go */
+    if (rc == 0) remove_stale(dir);
+    return rc;
 }
 
 int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
 {
-    if (am_port_exists(dir) && lock_run(dir)) return 2;
-    int rc = resume_load(c, dir, o, extra);
+    int rc = open_resume(&c->evo, dir, o, extra);
     if (rc == 0) {
-        /* what a kill during a write left: the run's files are whole, their temporaries go */
-        remove_stale(dir);
-        run_io io = {dir, quiet, pictures, label};
-        rc = run_loop(c, &io);
+        run_slot s;
+        memset(&s, 0, sizeof s);
+        s.e = &c->evo;
+        s.dir = dir;
+        s.label = label;
+        rc = run_wave(c, &s, 1, quiet);
         if (rc == 0 && pictures) rc = finish_pictures(c, dir);
     }
     am_port_unlock();

@@ -139,26 +139,58 @@ static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
     return am_port_exists(ck);
 }
 
-/* run k of variant v in dir/<variant>-<k>: started, resumed, or (finished) left as it is;
- * 0, 1, 2 or 130 */
-static TOOL_NOINLINE int experiment_run(tool_ctx* c, const am_evo_def* base, const variant* v, long k, const char* dir, int quiet)
+/* run k of variant v in dir/<variant>-<k> (its name into rdir, its progress label into label)
+ * opened into e: started, or resumed with this experiment's evaluations and threads (a finished
+ * run only writes its summary again); 0, 1 or 2 */
+static TOOL_NOINLINE int experiment_open(am_evo* e, const am_evo_def* base, const variant* v, long k, const char* dir, char* rdir,
+                                         char* label)
 {
-    char err[AM_ERR_MAX], rdir[EXP_RUN_DIR_MAX], label[96];
+    char err[AM_ERR_MAX];
     am_evo_def d = *base;
     if (apply_settings(&d, v->settings)) return 2;
     d.seed = base->seed + (uint64_t)(k - 1);
     if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", v->name, err);
-    if (snprintf(rdir, sizeof rdir, "%s/%s-%ld", dir, v->name, k) >= (int)sizeof rdir)
+    if (snprintf(rdir, EXP_RUN_DIR_MAX, "%s/%s-%ld", dir, v->name, k) >= EXP_RUN_DIR_MAX)
         return tool_usage_error("experiment: folder name too long");
-    snprintf(label, sizeof label, "%s-%ld", v->name, k);
-    if (!run_has_checkpoint(rdir)) return start_run(c, &d, rdir, quiet, 0, label);
-    /* a run begun before: resumed with this experiment's evaluations and threads */
+    snprintf(label, 96, "%s-%ld", v->name, k);
+    if (!run_has_checkpoint(rdir)) return open_start(e, &d, rdir);
     static const evo_opts none;
     char evs[32], ths[32];
     snprintf(evs, sizeof evs, "%ld", d.evaluations);
     snprintf(ths, sizeof ths, "%d", d.threads);
     const char* const extra[] = {"evaluations", evs, "threads", ths, NULL};
-    return resume_run(c, rdir, &none, extra, quiet, 0, label);
+    return open_resume(e, rdir, &none, extra);
+}
+
+/* the runs of an experiment evolve in waves of up to EXP_WAVE runs in lockstep: each generation,
+ * the offspring of every run of the wave go to one parallel map, so the workers (threads, or MPI
+ * ranks) have runs x population evaluations to share rather than one population. Run 0 of a wave
+ * is the tool_ctx's; the others are these. */
+#if EXP_WAVE > 1
+static am_evo g_exp_evo[EXP_WAVE - 1];
+#endif
+
+/* the runs [from, to) of the experiment's list (variant-major) as one wave; 0, 1, 2 or 130 */
+static TOOL_NOINLINE int experiment_wave(tool_ctx* c, const am_evo_def* base, const experiment* x, long runs, long from, long to,
+                                         const char* dir, int quiet)
+{
+    run_slot s[EXP_WAVE];
+    char rdir[EXP_WAVE][EXP_RUN_DIR_MAX], label[EXP_WAVE][96];
+    int n = 0, rc = 0;
+    memset(s, 0, sizeof s);
+    for (long r = from; r < to && rc == 0; r++, n++) {
+#if EXP_WAVE > 1
+        s[n].e = n == 0 ? &c->evo : &g_exp_evo[n - 1];
+#else
+        s[n].e = &c->evo;
+#endif
+        rc = experiment_open(s[n].e, base, &x->v[r / runs], r % runs + 1, dir, rdir[n], label[n]);
+        s[n].dir = rdir[n];
+        s[n].label = label[n];
+    }
+    if (rc == 0) rc = run_wave(c, s, n, quiet);
+    am_port_unlock();
+    return rc;
 }
 
 static int experiment_results(const experiment* x, int nv, long runs, const char* dir, int pictures, int json_out);
@@ -218,15 +250,15 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
     am_port_catch_interrupt();
     int nv = 0;
     while (nv < 6 && x->v[nv].name) nv++;
-    for (int v = 0; v < nv; v++)
-        for (long k = 1; k <= runs; k++) {
-            int rc = experiment_run(c, &base, &x->v[v], k, dir, o.quiet);
-            if (rc == 130) {
-                fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
-                return rc;
-            }
-            if (rc) return rc;
+    const long all = (long)nv * runs;
+    for (long from = 0; from < all; from += EXP_WAVE) {
+        int rc = experiment_wave(c, &base, x, runs, from, from + EXP_WAVE < all ? from + EXP_WAVE : all, dir, o.quiet);
+        if (rc == 130) {
+            fprintf(stderr, "amorph: resume the experiment with the same command and --out %s\n", dir);
+            return rc;
         }
+        if (rc) return rc;
+    }
     return experiment_results(x, nv, runs, dir, o.pictures, o.json);
 }
 

@@ -11,11 +11,13 @@
 #define EXP_MAX_RUNS 4          /* runs per variant */
 #define EXP_DIR_MAX 256         /* an experiment folder's name */
 #define EXP_RUN_DIR_MAX 384     /* a run folder's name */
+#define EXP_WAVE 1              /* runs evolved in lockstep (one am_evo each) */
 #else
 #define EXP_ROWS 4096
 #define EXP_MAX_RUNS 16
 #define EXP_DIR_MAX 1024
 #define EXP_RUN_DIR_MAX 2048
+#define EXP_WAVE 16
 #endif
 
 /* ---- options (tools/cmd_evolve.c) ---- */
@@ -42,6 +44,32 @@ int test_interrupt_setup(void);
 
 /* ---- runs (tools/cmd_evolve.c) ---- */
 
+/* evals.csv: one row per evaluation, appended as the library places each batch */
+typedef struct evals_out {
+    const char* dir;
+    const am_evo_def* def;
+    int failed;               /* 1 after a row could not be written (reported once) */
+} evals_out;
+
+/* one run of a wave: runs evolved in lockstep, the offspring of all of them evaluated in one
+ * parallel map per generation (amorph experiment; amorph evolve is a wave of one) */
+typedef struct run_slot {
+    am_evo* e;                /* the run (opened by open_start or open_resume) */
+    const char* dir;          /* its folder (valid while the wave runs) */
+    const char* label;        /* prefix of its progress line, or NULL */
+    evals_out eo;             /* the rest is run_wave's */
+    double last_ckpt;
+    int dirty;
+} run_slot;
+/* a new run in dir: the folder made and locked, its first files written, e initialised; 0, 1 or 2 */
+int open_start(am_evo* e, const am_evo_def* d, const char* dir);
+/* the run in dir locked and loaded into e, checked against the flags o and `extra` keys and
+ * values, its tables cut back to its checkpoint; 0, 1 or 2 */
+int open_resume(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra);
+/* the n (1..EXP_WAVE) runs of s to their ends together, then their summaries; 0, 1, or 130 when
+ * interrupted (every run's checkpoint written). The locks stay held (am_port_unlock). */
+int run_wave(tool_ctx* c, run_slot* s, int n, int quiet);
+
 /* a new run in dir, to its end; label prefixes the progress lines (experiments) or is NULL */
 int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label);
 /* the run in dir continued to its end, with the flags o and `extra` keys and values */
@@ -56,7 +84,7 @@ int write_text(const char* dir, const char* file, const char* text, long len);
 int write_config(const char* dir, const am_evo_def* d);
 int write_checkpoint(const char* dir, const am_evo* e);
 /* best.genome and best.lattice of c->evo */
-int write_best(tool_ctx* c, const char* dir);
+int write_best(am_evo_work* w, const am_evo* e, const char* dir);
 /* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON object),
  * both of the fields put(q, ctx) writes */
 int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx);
@@ -68,13 +96,6 @@ int write_summary(const char* dir, const am_evo* e, double wall);
 int append_log(const char* dir, const am_evo_stats* s);
 /* dir/file (a table with header hdr) cut back to its first `rows` rows */
 int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit);
-/* evals.csv: one row per evaluation, appended as the library places each batch */
-typedef struct evals_out {
-    const char* dir;
-    const am_evo_def* def;
-    int failed;               /* 1 after a row could not be written (reported once) */
-} evals_out;
-
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
 /* the header of a run's evals.csv, with its newline; its length */
@@ -82,7 +103,7 @@ int evals_header(const am_evo_def* d, char* buf, int cap);
 /* a fresh folder name runs/run-NNN */
 int default_out(char* out, size_t cap);
 /* a new run's files in dir (made and locked): configuration, log headers, first checkpoint */
-int start_prepare(tool_ctx* c, const am_evo_def* d, const char* dir);
+int start_prepare(am_evo* e, const am_evo_def* d, const char* dir);
 /* the folder's lock (one process at a time) */
 int lock_run(const char* dir);
 /* the stale temporaries of atomic writes in dir removed (a warning when one cannot be); no status */

@@ -77,16 +77,15 @@ int write_checkpoint(const char* dir, const am_evo* e)
     return write_stream(dir, RUN_CHECKPOINT, checkpoint_writer, e, "checkpoint");
 }
 
-TOOL_NOINLINE int write_best(tool_ctx* c, const char* dir)
+TOOL_NOINLINE int write_best(am_evo_work* w, const am_evo* e, const char* dir)
 {
-    const am_evo* e = &c->evo;
     char err[AM_ERR_MAX];
     if (write_stream(dir, RUN_BEST_GENOME, genome_writer, &e->best.genome, "best genome")) return 1;
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &c->work[0].geno, &c->work[0].lattice, err, sizeof err) != AM_OK) {
+    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
     }
-    return write_stream(dir, RUN_BEST_LATTICE, lattice_writer, &c->work[0].lattice, "best lattice");
+    return write_stream(dir, RUN_BEST_LATTICE, lattice_writer, &w->lattice, "best lattice");
 }
 
 /* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
@@ -253,12 +252,12 @@ int default_out(char* out, size_t cap)
  * checkpoint; 0, 1 or 2. A run exists once its first checkpoint does (written before any
  * evaluation): a folder with the other files but no checkpoint was left by a run stopped before
  * it, and is started over. */
-TOOL_NOINLINE int start_prepare(tool_ctx* c, const am_evo_def* d, const char* dir)
+TOOL_NOINLINE int start_prepare(am_evo* e, const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
     path_join(path, sizeof path, dir, RUN_CHECKPOINT);
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
-    if (am_evo_init(&c->evo, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    if (am_evo_init(e, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
@@ -266,7 +265,7 @@ TOOL_NOINLINE int start_prepare(tool_ctx* c, const am_evo_def* d, const char* di
     n = evals_header(d, hdr, (int)sizeof hdr);
     if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
-    if (write_checkpoint(dir, &c->evo)) return 1;
+    if (write_checkpoint(dir, e)) return 1;
     return 0;
 }
 

@@ -165,6 +165,7 @@ typedef struct am_evo {
     am_evo_result res[AM_EVO_BATCH];          /* am_evo_generation's results of the batch's map items */
     int order[AM_EVO_BATCH];                  /* the current batch's evaluation order: item i of its
                                                  map evaluates child[order[i]] (largest body first) */
+    int order_voxels[AM_EVO_BATCH];           /* voxels of item i's body (the order's key) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
                                                  (the second's is in w[0].geno.other) */
     /* the generation under way (am_evo_gen_begin .. am_evo_gen_end; never in a checkpoint) */
