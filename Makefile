@@ -150,7 +150,10 @@ test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
 	@if command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 && command -v wine >/dev/null 2>&1; then \
 	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all check-alloc; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
-	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows
+	@if command -v mpicc >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then \
+	    $(MAKE) --no-print-directory PORT=mpi BUILD=$(BUILD)/mpi all check-alloc; else echo "test: no mpicc or mpirun: MPI build skipped"; fi
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows \
+	    MPI_BUILD=$(BUILD)/mpi
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
