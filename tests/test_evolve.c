@@ -534,6 +534,65 @@ static void test_cancel_leaves_the_run_unchanged(void)
     CHECK(am_evo_hash(&g_a) == am_evo_hash(&g_b), "a cancelled generation changed the rest of the run");
 }
 
+/* the step API: two runs stepped together, their items evaluated interleaved and last first (as a
+ * wave's map hands them out, or another process evaluates them), equal the runs made one
+ * generation at a time; a skipped result cancels the generation and leaves the run as it was */
+static am_evo_result g_res[2][AM_EVO_BATCH];
+
+static void test_steps_equal_generations(void)
+{
+    am_evo_def d1 = small_def(AM_REPR_GMX), d2 = small_def(AM_REPR_DCT);
+    char err[AM_ERR_MAX];
+    d2.seed = 11;
+    CHECK(am_evo_init(&g_a, &d1, err, sizeof err) == AM_OK && run_to_end(&g_a, 1), "reference 1: %s", err);
+    CHECK(am_evo_init(&g_b, &d2, err, sizeof err) == AM_OK && run_to_end(&g_b, 1), "reference 2: %s", err);
+    const uint64_t h1 = am_evo_hash(&g_a), h2 = am_evo_hash(&g_b);
+    am_evo* e[2] = {&g_a, &g_b};
+    CHECK(am_evo_init(e[0], &d1, err, sizeof err) == AM_OK && am_evo_init(e[1], &d2, err, sizeof err) == AM_OK, "%s", err);
+    int gens = 0, cancelled = 0;
+    while (!am_evo_done(e[0]) || !am_evo_done(e[1])) {
+        int live[2], m[2];
+        for (int k = 0; k < 2; k++) {
+            live[k] = !am_evo_done(e[k]);
+            if (live[k]) am_evo_gen_begin(e[k]);
+        }
+        for (;;) {
+            int total = 0;
+            for (int k = 0; k < 2; k++) {
+                m[k] = 0;
+                if (live[k]) CHECK(am_evo_batch_begin(e[k], &g_work[0].geno, &m[k], err, sizeof err) == AM_OK, "batch: %s", err);
+                total += m[k];
+            }
+            if (total == 0) break;
+            /* largest first within a run; here the last item first, the runs interleaved, on three workspaces */
+            for (int i = AM_EVO_BATCH - 1, w = 0; i >= 0; i--)
+                for (int k = 0; k < 2; k++)
+                    if (i < m[k]) am_evo_batch_eval(e[k], i, &g_work[w++ % 3], &g_res[k][i]);
+            if (gens == 1 && !cancelled && m[0] > 0) {
+                /* one item skipped in run 0's first batch: its generation is abandoned, run 1's is not */
+                am_rng before = e[0]->gen_saved;
+                uint64_t hb = am_evo_hash(e[0]);
+                g_res[0][m[0] - 1].skipped = 1;
+                CHECK(am_evo_batch_cancellable(e[0]), "the first batch is cancellable");
+                CHECK(am_evo_batch_end(e[0], g_res[0], &g_work[0].geno, NULL, err, sizeof err) == AM_ERR_CANCELLED, "skipped: %s", err);
+                CHECK(memcmp(&before, &e[0]->rng, sizeof before) == 0 && am_evo_hash(e[0]) == hb, "a cancel changed the run");
+                live[0] = 0;
+                m[0] = 0;
+                cancelled = 1;
+            }
+            for (int k = 0; k < 2; k++)
+                if (m[k] > 0) CHECK(am_evo_batch_end(e[k], g_res[k], &g_work[0].geno, NULL, err, sizeof err) == AM_OK, "%s", err);
+        }
+        for (int k = 0; k < 2; k++)
+            if (live[k]) am_evo_gen_end(e[k]);
+        CHECK(++gens < 20, "runaway");
+        if (gens >= 20) return;
+    }
+    CHECK(cancelled == 1, "the cancel case did not run");
+    CHECK(am_evo_hash(e[0]) == h1 && am_evo_hash(e[1]) == h2, "stepped runs %016llx %016llx, whole generations %016llx %016llx",
+          (unsigned long long)am_evo_hash(e[0]), (unsigned long long)am_evo_hash(e[1]), (unsigned long long)h1, (unsigned long long)h2);
+}
+
 static void test_log_row(void)
 {
     am_evo_stats s = {3, 80, 0.125, 0.0625, 0.05, 1, 2, 1.5};
@@ -556,6 +615,7 @@ int main(int argc, char** argv)
     RUN(test_checkpoint_resume_equals_uninterrupted);
     RUN(test_checkpoint_damage_is_refused);
     RUN(test_cancel_leaves_the_run_unchanged);
+    RUN(test_steps_equal_generations);
     RUN(test_checkpoint_members_checked);
     RUN(test_checkpoint_bad_tokens_quoted);
     RUN(test_evaluations_are_reported);

@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <stdatomic.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -298,6 +299,43 @@ static void test_progress_is_silent_off_a_terminal(void)
     CHECK(am_port_interrupted() == 0, "interrupted without a request");
 }
 
+/* 1 when a child process can take the lock of path (it exits at once, releasing it) */
+static int other_process_can_lock(const char* path)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        char err[AM_ERR_MAX];
+        _exit(am_port_lock(path, err, sizeof err) == AM_OK ? 0 : 1);
+    }
+    int status = 0;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid) return -1;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* several folders held at once (an experiment's run folders), each refused to another process,
+ * AM_PORT_LOCKS at most, all released by one am_port_unlock */
+static void test_locks(void)
+{
+    char err[AM_ERR_MAX], a[600], b[600], p[600];
+    path_of(a, sizeof a, "lock_a");
+    path_of(b, sizeof b, "lock_b");
+    CHECK(am_port_lock(a, err, sizeof err) == AM_OK, "lock a: %s", err);
+    CHECK(am_port_lock(b, err, sizeof err) == AM_OK, "a second lock while holding one: %s", err);
+    CHECK(other_process_can_lock(a) == 0 && other_process_can_lock(b) == 0, "another process took a held lock");
+    int n = 2;
+    for (; n < AM_PORT_LOCKS; n++) {
+        char name[32];
+        snprintf(name, sizeof name, "lock_%d", n);
+        path_of(p, sizeof p, name);
+        if (am_port_lock(p, err, sizeof err) != AM_OK) break;
+    }
+    CHECK(n == AM_PORT_LOCKS, "only %d of %d locks: %s", n, AM_PORT_LOCKS, err);
+    path_of(p, sizeof p, "lock_over");
+    CHECK(am_port_lock(p, err, sizeof err) == AM_ERR_CAPACITY && strstr(err, "lock_over"), "lock %d: %s", AM_PORT_LOCKS + 1, err);
+    am_port_unlock();
+    CHECK(other_process_can_lock(a) == 1 && other_process_can_lock(b) == 1, "am_port_unlock left a lock held");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -306,6 +344,7 @@ int main(int argc, char** argv)
     RUN(test_files);
     RUN(test_streams);
     RUN(test_remove_stale);
+    RUN(test_locks);
     RUN(test_progress_is_silent_off_a_terminal);
     return SUMMARY();
 }
