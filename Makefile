@@ -2,7 +2,9 @@
 #   make                      build/libamorph.a and build/amorph
 #   make test                 every test (the README's test command; also builds the -O0, fixed-point
 #                             and board-profile variants the shell tests compare against)
-#   make bench                benchmarks that print figures
+#   make bench                benchmarks that print figures (bench-board: a board's cost under QEMU;
+#                             bench-mpi: MPI ranks against threads)
+#   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)
@@ -94,7 +96,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h))
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board bench-mpi
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -187,6 +189,12 @@ bench: all
 # soft float) and Cortex-M4F builds under QEMU with -icount (tools/bench_board.sh states the method)
 bench-board:
 	@sh tools/bench_board.sh
+
+# evaluations per hour on 1 and 2 threads against 1 and 2 MPI ranks, and the map's cost per item
+# (tools/bench_mpi.sh; needs Open MPI)
+bench-mpi: all
+	@$(MAKE) --no-print-directory PORT=mpi BUILD=$(BUILD)/mpi all
+	@POSIX=$(BUILD)/amorph MPI=$(BUILD)/mpi/amorph sh tools/bench_mpi.sh
 
 asan:
 	$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1" CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" unit

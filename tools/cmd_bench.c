@@ -186,19 +186,50 @@ static void bench_express(tool_ctx* c)
     fflush(stdout);
 }
 
-/* name=value lines of the default experiment's evaluations per hour on 1 and 2 threads; 0, or 1
- * when the two runs differ */
-static int bench_evolve(tool_ctx* c, long evaluations)
+/* the parallel map's own cost: maps of `n` items that only write their result bytes (an
+ * am_evo_result each, what an evaluation hands back), timed over `reps` maps; microseconds per item.
+ * Under port/mpi this is the transport of an evaluation's result to every rank (and the collectives
+ * around a map); on threads, the cost of handing an item to a worker. */
+typedef struct null_job {
+    am_evo_result* res;
+} null_job;
+
+static void null_task(void* ctx, int item, int worker)
+{
+    null_job* j = (null_job*)ctx;
+    (void)worker;
+    memset(&j->res[item], 0, sizeof j->res[item]);
+    j->res[item].fitness = (double)item;
+    j->res[item].steps = item;
+}
+
+static double map_us_per_item(am_evo* e, int n, int workers, int reps)
+{
+    char err[AM_ERR_MAX];
+    null_job j = {e->res};
+    double t0 = am_port_now();
+    for (int r = 0; r < reps; r++) {
+        if (am_port_parallel_map(n, workers, null_task, &j, e->res, (long)sizeof e->res[0], err, sizeof err) != AM_OK) return -1.0;
+        for (int i = 0; i < n; i++)
+            if (e->res[i].steps != i) return -1.0; /* a result that did not arrive */
+    }
+    return (am_port_now() - t0) / ((double)reps * n) * 1e6;
+}
+
+/* name=value lines of the default experiment's evaluations per hour on `threads` (0: 1 and 2)
+ * threads of each of am_port_processes() processes; 0, or 1 when the runs differ */
+static int bench_evolve(tool_ctx* c, long evaluations, int threads)
 {
     char err[AM_ERR_MAX];
     am_evo_def d = am_default_evo();
     d.evaluations = evaluations;
     uint64_t hash[2] = {0, 0};
     double rate[2] = {0, 0};
-    int cores = am_port_cores();
-    printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\n", d.geno.nx, d.geno.ny, d.geno.nz,
-           d.population, evaluations, cores);
-    for (int t = 1; t <= 2; t++) {
+    int cores = am_port_cores(), procs = am_port_processes();
+    int t_from = threads ? threads : 1, t_to = threads ? threads : 2;
+    printf("evolve_config=default (gmx, %dx%dx%d, population %d)\nevolve_evaluations=%ld\ncores=%d\nprocesses=%d\n", d.geno.nx, d.geno.ny,
+           d.geno.nz, d.population, evaluations, cores, procs);
+    for (int t = t_from; t <= t_to; t++) {
         if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
@@ -208,21 +239,24 @@ static int bench_evolve(tool_ctx* c, long evaluations)
             voxel_steps += c->evo.last_voxel_steps;
         }
         double el = am_port_now() - t0;
-        rate[t - 1] = (double)c->evo.evaluations / el * 3600.0;
-        hash[t - 1] = am_evo_hash(&c->evo);
-        printf("threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
-               "voxel_steps_per_s=%.0f run_hash=%016llx\n",
-               t, c->evo.evaluations, el, rate[t - 1], (double)steps / (double)c->evo.evaluations,
-               steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, (unsigned long long)hash[t - 1]);
+        int k = t - t_from;
+        rate[k] = (double)c->evo.evaluations / el * 3600.0;
+        hash[k] = am_evo_hash(&c->evo);
+        double map_us = map_us_per_item(&c->evo, d.population, t, 2000);
+        printf("processes=%d threads=%d evaluations=%ld wall_s=%.2f evals_per_hour=%.0f mean_steps_per_eval=%.0f mean_voxels=%.0f "
+               "voxel_steps_per_s=%.0f map_us_per_item=%.2f run_hash=%016llx\n",
+               procs, t, c->evo.evaluations, el, rate[k], (double)steps / (double)c->evo.evaluations,
+               steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, map_us, (unsigned long long)hash[k]);
     }
-    printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
-           hash[0] == hash[1] ? "yes" : "NO");
-    return hash[0] == hash[1] ? 0 : 1;
+    if (t_to > t_from)
+        printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],
+               hash[0] == hash[1] ? "yes" : "NO");
+    return hash[0] == hash[1] || t_to == t_from ? 0 : 1;
 }
 
 static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--dt-frac F] [--repeat N]\n"
-    "       amorph bench --evolve [--evals N]\n"
+    "       amorph bench --evolve [--evals N] [--threads T]\n"
     "       amorph bench --kernels\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
@@ -230,8 +264,10 @@ static const char bench_help[] =
     "and simulated seconds per wall second (sim_s_per_s), both over --steps actuated steps (2000).\n"
     "--dt-frac F: another step than the default (to compare builds or steps at the same step).\n"
     "--repeat N: each scene N times (1 to 64), then the best, median and worst figure.\n"
-    "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads,\n"
-    "each a run of N evaluations (60), and the speedup of the second core.\n"
+    "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads\n"
+    "(or T only), each a run of N evaluations (60), the speedup of the second core, and the parallel\n"
+    "map's own cost per item (map_us_per_item: maps of 20 items that only hand back a result). Under\n"
+    "mpirun (the MPI build), every rank runs T threads: tools/bench_mpi.sh sets ranks against threads.\n"
     "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
     "vectorisable loops" TOOL_DESKTOP_ONLY ".\n";
 
@@ -241,7 +277,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
     long steps = 2000, n;
     int coll = -1;
     long evolve_evals = 0;
-    int kernels = 0, repeat = 1;
+    int kernels = 0, repeat = 1, threads = 0;
     double dt_frac = 0; /* the default step */
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
@@ -269,6 +305,9 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--evals")) {
             if (!tool_parse_long(v, 2, 1000000, &n)) return tool_usage_error("bench: --evals needs a whole number >= 2");
             evolve_evals = n, i++;
+        } else if (!strcmp(a, "--threads")) {
+            if (!tool_parse_long(v, 1, AM_MAX_WORKERS, &n)) return tool_usage_error("bench: --threads needs a whole number from 1 to %d", AM_MAX_WORKERS);
+            threads = (int)n, i++;
         } else return tool_unknown_option("bench", a);
     }
     if (kernels) {
@@ -280,9 +319,10 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         return 0;
 #endif
     }
+    if (threads && !evolve_evals) return tool_usage_error("bench: --threads applies to --evolve");
     if (evolve_evals) {
         printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
-        return bench_evolve(c, evolve_evals);
+        return bench_evolve(c, evolve_evals, threads);
     }
     printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
     if (scene) {

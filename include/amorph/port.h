@@ -99,8 +99,12 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
 /* one item of a parallel map: item in [0, n), worker in [0, workers) names the caller's
  * per-worker workspace (no two calls with the same worker run at the same time) */
 typedef void (*am_port_task)(void* ctx, int item, int worker);
-/* processor cores available (1 on a single-core board) */
+/* processor cores available to this process (1 on a single-core board; port/mpi: this machine's
+ * cores shared among the ranks on it) */
 int am_port_cores(void);
+/* the processes a parallel map spreads its items over: 1, but for a port of several (port/mpi: the
+ * ranks). Like the workers, it never changes a result. */
+int am_port_processes(void);
 /* calls task(ctx, item, worker) exactly once for every item in [0, n), in items' order of
  * hand-out (item 0 first) on up to `workers` workers, and returns when all are done. A port may
  * use fewer workers than asked (port/baremetal uses one); results must not depend on how many.

@@ -414,6 +414,11 @@ int am_port_end(int status)
 
 /* ---- parallel map: one core, one worker ---- */
 
+int am_port_processes(void)
+{
+    return 1;
+}
+
 int am_port_cores(void)
 {
     return 1;

@@ -363,6 +363,11 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
     return bad ? st : AM_OK;
 }
 
+int am_port_processes(void)
+{
+    return on ? ranks : 1;
+}
+
 int am_port_cores(void)
 {
     int c = am_posix_cores();

@@ -22,6 +22,7 @@
 #define am_port_exists am_posix_exists
 #define am_port_remove_stale am_posix_remove_stale
 #define am_port_cores am_posix_cores
+#define am_port_processes am_posix_processes
 #define am_port_parallel_map am_posix_parallel_map
 #define am_port_catch_interrupt am_posix_catch_interrupt
 #define am_port_interrupted am_posix_interrupted

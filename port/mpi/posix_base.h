@@ -25,6 +25,7 @@ am_status am_posix_make_dir(const char* path, char* err, int errsz);
 int am_posix_exists(const char* path);
 am_status am_posix_remove_stale(const char* dir, int* removed, char* err, int errsz);
 int am_posix_cores(void);
+int am_posix_processes(void);
 am_status am_posix_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz);
 void am_posix_catch_interrupt(void);
 int am_posix_interrupted(void);

@@ -235,6 +235,11 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     return AM_OK;
 }
 
+int am_port_processes(void)
+{
+    return 1;
+}
+
 int am_port_cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);

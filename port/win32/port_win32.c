@@ -289,6 +289,11 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     return AM_OK;
 }
 
+int am_port_processes(void)
+{
+    return 1;
+}
+
 int am_port_cores(void)
 {
     SYSTEM_INFO si;
