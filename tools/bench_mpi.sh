@@ -23,9 +23,9 @@ for turn in $(seq 1 "$TURNS"); do
     for cfg in "threads 1" "threads 2" "ranks 1" "ranks 2"; do
         set -- $cfg
         if [ "$1" = threads ]; then
-            line=$("$POSIX" bench --evolve --evals "$EVALS" --threads "$2" | grep '^processes=')
+            line=$("$POSIX" bench --evolve --evals "$EVALS" --threads "$2" | grep '^processes=.* threads=')
         else
-            line=$(mpirun -q --oversubscribe -np "$2" "$MPI" bench --evolve --evals "$EVALS" --threads 1 | grep '^processes=')
+            line=$(mpirun -q --oversubscribe -np "$2" "$MPI" bench --evolve --evals "$EVALS" --threads 1 | grep '^processes=.* threads=')
         fi
         echo "$cfg $line" >>"$out"
         echo "turn $turn: $cfg: $line"

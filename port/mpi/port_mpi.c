@@ -24,6 +24,9 @@
  * from its last checkpoint). A rank that dies makes mpirun end the job (it notices the lost process);
  * an MPI call that fails ends the job with MPI_Abort after a one-line message.
  *
+ * AMORPH_MPI_STATS=1 (each rank's own environment) makes rank 0 print, at the end, one line of what
+ * the transport cost: maps, items, collectives, their seconds and bytes (docs/cluster.md).
+ *
  * Test hooks: AMORPH_TEST_RANK=r (read by every rank from its own environment; default 0) names the
  * one rank on which am_port_raise acts, so a test's AMORPH_TEST_INTERRUPT stops or kills that rank. */
 #define _POSIX_C_SOURCE 200809L
@@ -57,6 +60,27 @@ static int raise_rank;           /* AMORPH_TEST_RANK */
 static int node_ranks = 1;       /* ranks on this rank's machine */
 static int err_fd = 2;           /* this rank's own stderr (rank > 0: kept before /dev/null) */
 
+/* what the transport cost (AMORPH_MPI_STATS=1: one line from rank 0 at the end) */
+static struct {
+    int on;
+    long collectives, maps, items;
+    double bytes, seconds, map_seconds;
+} g_stats;
+
+/* the time an MPI call took, counted */
+static double stat_t0(void)
+{
+    return g_stats.on ? MPI_Wtime() : 0.0;
+}
+
+static void stat_add(double t0, long bytes)
+{
+    if (!g_stats.on) return;
+    g_stats.collectives++;
+    g_stats.bytes += (double)bytes;
+    g_stats.seconds += MPI_Wtime() - t0;
+}
+
 /* ---- collectives ---- */
 
 /* 1 when a call must be collective: MPI is on, on the main thread, outside a map */
@@ -86,8 +110,10 @@ static void bcast(void* p, long n)
     char* c = (char*)p;
     while (n > 0) {
         int k = n > (1L << 30) ? 1 << 30 : (int)n;
+        double t0 = stat_t0();
         int rc = MPI_Bcast(c, k, MPI_BYTE, 0, MPI_COMM_WORLD);
         if (rc != MPI_SUCCESS) fatal("MPI_Bcast", rc);
+        stat_add(t0, k);
         c += k;
         n -= k;
     }
@@ -125,6 +151,8 @@ void am_port_start(int* argc, char*** argv)
     }
     const char* r = getenv("AMORPH_TEST_RANK");
     raise_rank = r ? atoi(r) : 0;
+    r = getenv("AMORPH_MPI_STATS");
+    g_stats.on = r && !strcmp(r, "1");
     if (rank > 0) {
         /* the console is rank 0's: the others' output (the same as rank 0's) goes nowhere */
         fflush(stdout);
@@ -144,6 +172,15 @@ int am_port_end(int status)
     if (!on) return status;
     fflush(stdout);
     fflush(stderr);
+    if (g_stats.on && rank == 0) {
+        char line[400];
+        int n = snprintf(line, sizeof line,
+                         "amorph: mpi: ranks=%d maps=%ld items=%ld map_s=%.6f collectives=%ld collective_s=%.6f bytes=%.0f "
+                         "us_per_collective=%.2f\n",
+                         ranks, g_stats.maps, g_stats.items, g_stats.map_seconds, g_stats.collectives, g_stats.seconds, g_stats.bytes,
+                         g_stats.collectives ? g_stats.seconds / (double)g_stats.collectives * 1e6 : 0.0);
+        if (n > 0) (void)!write(err_fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1));
+    }
     /* every rank arrives here with the same status (same program, same inputs) */
     MPI_Finalize();
     on = 0;
@@ -325,6 +362,7 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
     if (n > MPI_MAP_ITEMS || (long)n * size > MPI_MAP_BYTES || !out)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "parallel map: %d items of %ld bytes: at most %d items and %ld bytes across ranks",
                        n, size, MPI_MAP_ITEMS, MPI_MAP_BYTES);
+    const double map_t0 = stat_t0();
     int mine = 0;
     for (int i = 0; i < n; i++)
         if (owner(i) == rank) g_items[mine++] = i;
@@ -337,8 +375,10 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
     /* a rank that could not start its threads still ran every item (the POSIX map runs them all on
      * this thread): the status is a warning every rank would give, so it is agreed below */
     int bad = st != AM_OK, any_bad = 0;
+    double t0 = stat_t0();
     int rc = MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     if (rc != MPI_SUCCESS) fatal("MPI_Allreduce", rc);
+    stat_add(t0, sizeof bad);
     /* the results: each rank's items packed in order, gathered to all, put in place */
     char* o = (char*)out;
     for (int k = 0; k < mine; k++) memcpy(g_send + (long)k * size, o + (long)g_items[k] * size, (size_t)size);
@@ -350,8 +390,15 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
         g_displs[r] = at;
         at += g_counts[r];
     }
+    t0 = stat_t0();
     rc = MPI_Allgatherv(g_send, mine * (int)size, MPI_BYTE, g_recv, g_counts, g_displs, MPI_BYTE, MPI_COMM_WORLD);
     if (rc != MPI_SUCCESS) fatal("MPI_Allgatherv", rc);
+    stat_add(t0, (long)n * size);
+    if (g_stats.on) {
+        g_stats.maps++;
+        g_stats.items += n;
+        g_stats.map_seconds += MPI_Wtime() - map_t0;
+    }
     int next[1024];
     for (int r = 0; r < ranks; r++) next[r] = g_displs[r];
     for (int i = 0; i < n; i++) {
@@ -415,8 +462,10 @@ int am_port_interrupted(void)
     if (!on) return am_posix_interrupted();
     if (collective()) {
         int mine = am_posix_interrupted(), all = 0;
+        double t0 = stat_t0();
         int rc = MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
         if (rc != MPI_SUCCESS) fatal("MPI_Allreduce", rc);
+        stat_add(t0, sizeof mine);
         agreed = all;
     }
     return agreed;
