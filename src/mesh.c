@@ -20,6 +20,7 @@
  * triangles around its centre (the mean of its corners), so a face between two materials is the
  * same four triangles in both of their surfaces, and a bent face has no preferred diagonal. */
 #include "amorph/mesh.h"
+#include "amorph/image.h"
 
 #include <math.h>
 #include <string.h>
@@ -338,16 +339,6 @@ void am_mesh_half(const am_mesh* m, const float* pose, int i, double half[3])
         if (half[a] > L) half[a] = L; /* a torn-apart link must not make a giant voxel */
 }
 
-/* v rotated by the unit quaternion q = (w, x, y, z) */
-static void rotate(const double q[4], const double v[3], double out[3])
-{
-    double u[3] = {q[1], q[2], q[3]};
-    double t[3] = {2 * (u[1] * v[2] - u[2] * v[1]), 2 * (u[2] * v[0] - u[0] * v[2]), 2 * (u[0] * v[1] - u[1] * v[0])};
-    out[0] = v[0] + q[0] * t[0] + (u[1] * t[2] - u[2] * t[1]);
-    out[1] = v[1] + q[0] * t[1] + (u[2] * t[0] - u[0] * t[2]);
-    out[2] = v[2] + q[0] * t[2] + (u[0] * t[1] - u[1] * t[0]);
-}
-
 void am_mesh_place(const am_mesh* m, const float* pose, double* pos)
 {
     for (long v = 0; v < m->ncorner; v++) {
@@ -367,7 +358,7 @@ void am_mesh_place(const am_mesh* m, const float* pose, double* pos)
             am_mesh_half(m, pose, j, h);
             /* the corner is on the voxel's -axis side when the voxel lies on the corner's + side */
             double o[3] = {bx ? -h[0] : h[0], by ? -h[1] : h[1], bz ? -h[2] : h[2]};
-            rotate(q, o, w);
+            am_quat_rotate(q, o, w);
             for (int k = 0; k < 3; k++) sum[k] += (double)f[k] + w[k];
             n++;
         }

@@ -135,7 +135,7 @@ void am_raster_line2(am_canvas* c, const am_camera* cam, double x0, double y0, d
 }
 
 /* v rotated by the unit quaternion q = (w, x, y, z): v + 2w (u x v) + 2 u x (u x v) */
-static void rotate(const double q[4], const double v[3], double out[3])
+void am_quat_rotate(const double q[4], const double v[3], double out[3])
 {
     double u[3] = {q[1], q[2], q[3]};
     double t[3] = {2 * (u[1] * v[2] - u[2] * v[1]), 2 * (u[2] * v[0] - u[0] * v[2]), 2 * (u[0] * v[1] - u[1] * v[0])};
@@ -151,7 +151,7 @@ void am_raster_box(am_canvas* c, const am_camera* cam, const double centre[3], c
     double sc[8][3];
     for (int k = 0; k < 8; k++) {
         double v[3] = {(k & 1 ? 1 : -1) * half[0], (k & 2 ? 1 : -1) * half[1], (k & 4 ? 1 : -1) * half[2]}, w[3];
-        rotate(q, v, w);
+        am_quat_rotate(q, v, w);
         double p[3] = {centre[0] + w[0], centre[1] + w[1], centre[2] + w[2]};
         am_camera_project(cam, p, sc[k]);
     }
@@ -160,7 +160,7 @@ void am_raster_box(am_canvas* c, const am_camera* cam, const double centre[3], c
     for (int f = 0; f < 6; f++) {
         double axis[3] = {0, 0, 0}, n[3];
         axis[f / 2] = f & 1 ? 1 : -1;
-        rotate(q, axis, n);
+        am_quat_rotate(q, axis, n);
         if (dot3(n, cam->fwd) >= 0) continue; /* faces away from the viewer */
         double lit = dot3(n, light);
         double k = ambient + (1 - ambient) * (lit > 0 ? lit : 0);

@@ -400,7 +400,7 @@ static int finish_pictures(tool_ctx* c, const char* dir)
         path_join(path, sizeof path, dir, RUN_BEST_PNG);
         if (tool_write_filmstrip(c, &c->work[0].lattice, &e->def.env, &ev, path)) return 1;
         path_join(path, sizeof path, dir, RUN_BEST_HTML);
-        snprintf(title, sizeof title, "amorph: best of %s (%.4f m)", dir, e->best.fitness);
+        snprintf(title, sizeof title, "amorph: best of %.200s (%.4f m)", dir, e->best.fitness);
         if (tool_write_viewer(c, &c->work[0].lattice, &e->def.env, &ev, title, path)) return 1;
     }
     path_join(path, sizeof path, dir, RUN_FITNESS_SVG);
@@ -418,16 +418,15 @@ int open_start(am_evo* e, const am_evo_def* d, const char* dir)
     return start_prepare(e, d, dir);
 }
 
-/* a new run in dir, to its end; 0, 1, 2 or 130 */
-int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label)
+/* the run opened in c->evo (status rc of its opening) run to its end in dir, then its pictures;
+ * its lock released. 0, 1, 2 or 130 */
+static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictures)
 {
-    int rc = open_start(&c->evo, d, dir);
     if (rc == 0) {
         run_slot s;
         memset(&s, 0, sizeof s);
         s.e = &c->evo;
         s.dir = dir;
-        s.label = label;
         rc = run_wave(c, &s, 1, quiet);
         if (rc == 0 && pictures) rc = finish_pictures(c, dir);
     }
@@ -484,22 +483,6 @@ int open_resume(am_evo* e, const char* dir, const evo_opts* o, const char* const
     return rc;
 }
 
-int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label)
-{
-    int rc = open_resume(&c->evo, dir, o, extra);
-    if (rc == 0) {
-        run_slot s;
-        memset(&s, 0, sizeof s);
-        s.e = &c->evo;
-        s.dir = dir;
-        s.label = label;
-        rc = run_wave(c, &s, 1, quiet);
-        if (rc == 0 && pictures) rc = finish_pictures(c, dir);
-    }
-    am_port_unlock();
-    return rc;
-}
-
 /* the run's summary on the standard output: key = value lines, or one JSON line (--json) */
 static int print_result(const am_evo* e, const char* dir, double wall, int json)
 {
@@ -551,7 +534,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
     const double t0 = am_port_now();
-    int rc = o.resume ? resume_run(c, dir, &o, NULL, o.quiet, o.pictures, NULL) : start_run(c, &d, dir, o.quiet, o.pictures, NULL);
+    int rc = run_opened(c, o.resume ? open_resume(&c->evo, dir, &o, NULL) : open_start(&c->evo, &d, dir), dir, o.quiet, o.pictures);
     if (rc == 0) rc = print_result(&c->evo, dir, am_port_now() - t0, o.json);
     return rc;
 }

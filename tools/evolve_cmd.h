@@ -70,11 +70,6 @@ int open_resume(am_evo* e, const char* dir, const evo_opts* o, const char* const
  * interrupted (every run's checkpoint written). The locks stay held (am_port_unlock). */
 int run_wave(tool_ctx* c, run_slot* s, int n, int quiet);
 
-/* a new run in dir, to its end; label prefixes the progress lines (experiments) or is NULL */
-int start_run(tool_ctx* c, const am_evo_def* d, const char* dir, int quiet, int pictures, const char* label);
-/* the run in dir continued to its end, with the flags o and `extra` keys and values */
-int resume_run(tool_ctx* c, const char* dir, const evo_opts* o, const char* const* extra, int quiet, int pictures, const char* label);
-
 /* ---- the run folder (tools/run_dir.c) ---- */
 
 /* dir/file into out; 1 when it fits (a path too long is cut, and then fails to open with its name) */

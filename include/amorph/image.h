@@ -63,6 +63,8 @@ void am_camera_look(am_camera* cam, const double target[3], double az, double el
                     int vw, int vh);
 /* world point -> canvas pixel (out[0], out[1]) and depth out[2] */
 void am_camera_project(const am_camera* cam, const double p[3], double out[3]);
+/* v rotated by the unit quaternion q = (w, x, y, z) (the pictures' and the mesh's placement) */
+void am_quat_rotate(const double q[4], const double v[3], double out[3]);
 
 /* a triangle given in canvas pixels with depths (v = x0, y0, depth0, x1, y1, depth1, x2, y2,
  * depth2), clipped to the viewport, depth-tested and written in one colour; depth_test 0 draws
