@@ -13,6 +13,7 @@
 #include "amorph/sim.h"
 #include "amorph/evolve.h"
 #include "amorph/image.h"
+#include "amorph/inflate.h"
 #include "amorph/port.h"
 #include "amorph/xml.h"
 #include "amorph/vxa.h"

@@ -16,6 +16,7 @@
  */
 #include "amorph/vxa.h"
 
+#include "amorph/inflate.h"
 #include "amorph/text.h"
 
 #include <math.h>
@@ -403,7 +404,33 @@ static long b64_decode(char* s, long n)
     return o;
 }
 
-enum { COMP_ASCII, COMP_BASE64 };
+enum { COMP_ASCII, COMP_BASE64, COMP_ZLIB, COMP_QT_ZLIB };
+
+/* the cells of one compressed layer (base64 already decoded in buf[0..len)): a zlib stream
+ * (ZLIB), or Qt's qCompress form, the uncompressed length as 4 big-endian bytes then the stream
+ * (QT_ZLIB); *len becomes the cells' count, the cells replace buf's bytes */
+static am_status inflate_layer(const vctx* c, int k, int z, int comp, char* buf, long* len, long per)
+{
+    am_inflate_work w;
+    uint8_t cells[AM_MAX_DIM * AM_MAX_DIM];
+    char msg[AM_ERR_MAX];
+    long skip = 0, want = -1, got = 0;
+    if (comp == COMP_QT_ZLIB) {
+        if (*len < 4) return verr(c, k, AM_ERR_PARSE, "layer %d: %ld bytes, too short for QT_ZLIB data (a length and a zlib stream)", z, *len);
+        const unsigned char* u = (const unsigned char*)buf;
+        want = (long)((unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3]);
+        skip = 4;
+    }
+    am_status st = am_zlib_inflate((const uint8_t*)buf + skip, *len - skip, cells, per, &got, &w, msg, sizeof msg);
+    if (st == AM_ERR_CAPACITY)
+        return verr(c, k, AM_ERR_PARSE, "layer %d inflates to more than %ld cells (X_Voxels x Y_Voxels)", z, per);
+    if (st != AM_OK) return verr(c, k, AM_ERR_PARSE, "layer %d: %s", z, msg);
+    if (want >= 0 && want != got)
+        return verr(c, k, AM_ERR_PARSE, "layer %d inflates to %ld bytes, its QT_ZLIB header says %ld", z, got, want);
+    memcpy(buf, cells, (size_t)got);
+    *len = got;
+    return AM_OK;
+}
 
 static am_status read_structure(vctx* c, int n, am_lattice* lat)
 {
@@ -418,12 +445,11 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         if (!strcmp(v, "ASCII_READABLE")) comp = COMP_ASCII;
         else if (!strcmp(v, "BASE64")) comp = COMP_BASE64;
-        else if (!strcmp(v, "ZLIB") || !strcmp(v, "QT_ZLIB"))
-            return verr(c, n, AM_ERR_PARSE,
-                        "Compression=\"%s\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64",
-                        val(v, qv));
+        else if (!strcmp(v, "ZLIB")) comp = COMP_ZLIB;
+        else if (!strcmp(v, "QT_ZLIB")) comp = COMP_QT_ZLIB;
         else
-            return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE or BASE64)", val(v, qv));
+            return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)",
+                        val(v, qv));
     }
     if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
     long dim[3];
@@ -449,8 +475,9 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <Layer> elements than Z_Voxels = %d", lat->nz);
         long len = 0;
         if ((st = text_of(c, k, buf, sizeof buf, &len)) != AM_OK) return st;
-        if (comp == COMP_BASE64 && (len = b64_decode(buf, len)) < 0)
+        if (comp != COMP_ASCII && (len = b64_decode(buf, len)) < 0)
             return verr(c, k, AM_ERR_PARSE, "layer %d: bad base64 data", z);
+        if ((comp == COMP_ZLIB || comp == COMP_QT_ZLIB) && (st = inflate_layer(c, k, z, comp, buf, &len, per)) != AM_OK) return st;
         if (len != per)
             return verr(c, k, AM_ERR_PARSE, "layer %d has %ld cells, expected %ld (X_Voxels x Y_Voxels = %d x %d)", z, len, per,
                         lat->nx, lat->ny);

@@ -417,12 +417,27 @@ static void test_vxa_errors(void)
     /* XML errors come through with their line */
     expect_vxa(vxa(0, 0, 0, "<Layer>11</Lay>"), AM_ERR_PARSE, "t.vxa:8: </Lay> does not close <Layer> (opened on line 8)");
     /* structure */
-    expect_vxa(vxa(0, 0, "<Structure Compression=\"ZLIB\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>",
-                   "<Layer>eJxjYCADMAIxE/HKAQDpAAQ=</Layer>"),
-               AM_ERR_PARSE,
-               "t.vxa:7: Compression=\"ZLIB\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64");
+    /* ZLIB and QT_ZLIB layers (base64 of a zlib stream; QT_ZLIB with a 4-byte length first) */
+#define ZH(comp) "<Structure Compression=\"" comp "\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>"
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer><![CDATA[eNpjZAQAAAUAAw==]]></Layer>"), AM_OK, "");
+    CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 1 && lat_a.nx == 2, "ZLIB layer cells %d %d", lat_a.cell[0], lat_a.cell[1]);
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAAAAnjaY2QEAAAFAAM=</Layer>"), AM_OK, "");
+    CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 1, "QT_ZLIB layer cells");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZAQAAAUAAg==</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: bad Adler-32: the stream says 00050002, the data gives 00050003");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eJ1jZAQAAAUAAw==</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: bad zlib header: check bits 0x789d not a multiple of 31");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZGQEAAAJAAQ=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0 inflates to more than 2 cells (X_Voxels x Y_Voxels)");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZAQAAAU</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: the zlib stream ends before its Adler-32 checksum");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eN*</Layer>"), AM_ERR_PARSE, "t.vxa:8: layer 0: bad base64 data");
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAAAA3jaY2QEAAAFAAM=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0 inflates to 2 bytes, its QT_ZLIB header says 3");
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAA=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: 2 bytes, too short for QT_ZLIB data (a length and a zlib stream)");
     expect_vxa(vxa(0, 0, "<Structure Compression=\"RLE\"><Data>", 0), AM_ERR_PARSE,
-               "t.vxa:7: Compression=\"RLE\" is not supported (ASCII_READABLE or BASE64)");
+               "t.vxa:7: Compression=\"RLE\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)");
     expect_vxa(vxa(0, 0, "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Z_Voxels>1</Z_Voxels><Data>", 0),
                AM_ERR_PARSE, "t.vxa:7: <Structure> has no <Y_Voxels>");
     expect_vxa(vxa(0, 0, SH("2", "1", "x"), 0), AM_ERR_PARSE, "t.vxa:7: <Z_Voxels>: 'x' is not a whole number");
