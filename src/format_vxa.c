@@ -432,10 +432,12 @@ static am_status inflate_layer(const vctx* c, int k, int z, int comp, char* buf,
     return AM_OK;
 }
 
+static am_status read_phase(vctx* c, int n, const am_lattice* lat);
+
 static am_status read_structure(vctx* c, int n, am_lattice* lat)
 {
     char qv[AM_QUOTE_BUF];
-    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data"};
+    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data", "PhaseOffset"};
     int at[MAX_TAGS];
     am_status st;
     int comp = COMP_BASE64; /* VoxCAD's reader: no Compression attribute means BASE64 */
@@ -451,7 +453,7 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
             return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)",
                         val(v, qv));
     }
-    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
     long dim[3];
     for (int i = 0; i < 3; i++) {
         if (at[i] < 0) return verr(c, n, AM_ERR_PARSE, "<Structure> has no <%s>", tags[i]);
@@ -497,6 +499,70 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         z++;
     }
     if (z < lat->nz) return verr(c, at[3], AM_ERR_PARSE, "<Data> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    if (at[4] >= 0) return read_phase(c, at[4], lat);
+    return AM_OK;
+}
+
+/* the numbers of a <Layer> of reals (evosoro writes "0.1, 0.25, ... , " in CDATA): read from the
+ * element's raw text, CDATA markers skipped, separated by commas and blanks; exactly `per` of them
+ * into out, each finite */
+static am_status number_layer(const vctx* c, int k, int z, am_param* out, long per, const char* what)
+{
+    char qv[AM_QUOTE_BUF];
+    const am_xml_node* e = &c->d->node[k];
+    const char* t = c->d->text;
+    long i = e->content, end = e->content_end, count = 0;
+    if (e->child >= 0) return verr(c, k, AM_ERR_PARSE, "<Layer> must hold a value, not elements");
+    while (i < end) {
+        if (!strncmp(t + i, "<![CDATA[", 9)) {
+            i += 9;
+            continue;
+        }
+        if (!strncmp(t + i, "]]>", 3)) {
+            i += 3;
+            continue;
+        }
+        if (is_blank(t[i]) || t[i] == ',') {
+            i++;
+            continue;
+        }
+        char tok[64];
+        long n = 0;
+        while (i + n < end && !is_blank(t[i + n]) && t[i + n] != ',' && t[i + n] != ']' && t[i + n] != '<' && n < 63) n++;
+        memcpy(tok, t + i, (size_t)n);
+        tok[n] = 0;
+        char* stop = NULL;
+        double v = n > 0 ? strtod(tok, &stop) : 0;
+        if (n == 0 || *stop || !(v - v == 0))
+            return verr(c, k, AM_ERR_PARSE, "%s layer %d: value %ld '%s' is not a finite number", what, z, count, val(tok, qv));
+        if (count == per)
+            return verr(c, k, AM_ERR_PARSE, "%s layer %d has more than %ld values (X_Voxels x Y_Voxels)", what, z, per);
+        out[count++] = (am_param)v;
+        i += n;
+    }
+    if (count != per)
+        return verr(c, k, AM_ERR_PARSE, "%s layer %d has %ld values, expected %ld (X_Voxels x Y_Voxels)", what, z, count, per);
+    return AM_OK;
+}
+
+/* evosoro's <PhaseOffset>: one <Layer> of reals per z, a phase per cell in periods */
+static am_status read_phase(vctx* c, int n, const am_lattice* lat)
+{
+    const long per = (long)lat->nx * lat->ny;
+    am_layers* ly = &c->info->layers;
+    int z = 0;
+    am_status st;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+        if (!am_xml_is(c->d, k, "Layer")) {
+            unsupported(c, k);
+            continue;
+        }
+        if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <PhaseOffset> layers than Z_Voxels = %d", lat->nz);
+        if ((st = number_layer(c, k, z, ly->phase + per * z, per, "<PhaseOffset>")) != AM_OK) return st;
+        z++;
+    }
+    if (z < lat->nz) return verr(c, n, AM_ERR_PARSE, "<PhaseOffset> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    ly->has_phase = 1;
     return AM_OK;
 }
 
@@ -579,8 +645,86 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     return AM_OK;
 }
 
-/* <Boundary_Conditions>, <Fixed_Regions>, <Forced_Regions>: a count and regions (not supported) */
-static am_status read_regions(vctx* c, int n, const char* count_tag)
+/* one <FRegion> (VoxCAD's boundary condition): a box in coordinates relative to the workspace
+ * (0..1 along each axis, X_Voxels x Lattice_Dim and so on), its fixed degrees of freedom and its
+ * force. Every filled cell whose centre lies in the box is clamped when the region fixes it, and
+ * the region's force is shared equally among them (VoxCAD's meaning: a force on the region).
+ * fixed_list: a region of <Fixed_Regions> without DofFixed or Fixed is fixed. */
+static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_list)
+{
+    static const char* const tags[] = {"PrimType", "X", "Y", "Z", "dX", "dY", "dZ", "Radius", "R", "G", "B", "alpha",
+                                       "DofFixed", "Fixed", "ForceX", "ForceY", "ForceZ", "TorqueX", "TorqueY", "TorqueZ",
+                                       "DisplaceX", "DisplaceY", "DisplaceZ", "AngDisplaceX", "AngDisplaceY", "AngDisplaceZ"};
+    enum { NT = 26 };
+    int at[NT];
+    double v[NT];
+    am_status st;
+    char qn[AM_QUOTE_BUF];
+    /* the children() of a long table */
+    for (int i = 0; i < NT; i++) at[i] = -1, v[i] = 0;
+    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+        int i = 0;
+        while (i < NT && !am_xml_is(c->d, k, tags[i])) i++;
+        if (i == NT) {
+            unsupported(c, k);
+            continue;
+        }
+        if (at[i] >= 0)
+            return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <FRegion> (first on line %d)", tag(c, k, qn),
+                        (int)c->d->node[at[i]].line);
+        at[i] = k;
+        if ((st = double_of(c, k, &v[i])) != AM_OK) return st;
+    }
+    if (at[0] >= 0 && v[0] != 0) {
+        warn(c, n, "<FRegion> of PrimType %.9g not supported (amorph reads box regions, PrimType 0): ignored", v[0]);
+        return AM_OK;
+    }
+    int dof = 0;
+    if (at[12] >= 0) {
+        if (!(v[12] >= 0 && v[12] <= 63 && v[12] == floor(v[12])))
+            return verr(c, at[12], AM_ERR_RANGE, "<DofFixed> %.9g is not a set of the six degrees of freedom (0..63)", v[12]);
+        dof = (int)v[12];
+    } else if (at[13] >= 0) dof = v[13] != 0 ? 63 : 0;
+    else if (fixed_list) dof = 63;
+    if (dof != 0 && dof != 63)
+        warn(c, at[12], "<DofFixed> %d fixes some degrees of freedom only: amorph clamps all six of the region's voxels", dof);
+    for (int i = 17; i < NT; i++)
+        if (at[i] >= 0 && v[i] != 0)
+            warn(c, at[i], "<%s> %.9g not supported (amorph's boundary conditions are clamps and forces): ignored", tags[i], v[i]);
+    for (int i = 14; i < 17; i++)
+        if (!(fabs(v[i]) < 1e30)) return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g is not a finite force", tags[i], v[i]);
+    /* the box, corners in either order */
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        double p = v[1 + a], d = v[4 + a];
+        if (!(fabs(p) < 1e30) || !(fabs(d) < 1e30))
+            return verr(c, n, AM_ERR_RANGE, "<FRegion>: its box must be finite numbers");
+        lo[a] = d < 0 ? p + d : p;
+        hi[a] = d < 0 ? p : p + d;
+    }
+    am_layers* ly = &c->info->layers;
+    const int nx = lat->nx, ny = lat->ny, nz = lat->nz;
+    long count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int cell = 0; cell < nx * ny * nz; cell++) {
+            if (!lat->cell[cell]) continue;
+            const double ctr[3] = {(cell % nx + 0.5) / nx, (cell / nx % ny + 0.5) / ny, (cell / (nx * ny) + 0.5) / nz};
+            if (!(ctr[0] >= lo[0] && ctr[0] <= hi[0] && ctr[1] >= lo[1] && ctr[1] <= hi[1] && ctr[2] >= lo[2] && ctr[2] <= hi[2]))
+                continue;
+            if (pass == 0) {
+                count++;
+                continue;
+            }
+            if (dof) ly->fixed[cell] = 1;
+            for (int k = 0; k < 3; k++) ly->force[k][cell] += (am_param)(v[14 + k] / (double)count);
+        }
+    if (count == 0) warn(c, n, "<FRegion> holds no voxel (no filled cell's centre lies in its box): no effect");
+    ly->has_bc = 1;
+    return AM_OK;
+}
+
+/* <Boundary_Conditions>, <Fixed_Regions>, <Forced_Regions>: a count, then the regions */
+static am_status read_regions(vctx* c, int n, const char* count_tag, const am_lattice* lat, int fixed_list)
 {
     const char* const tags[] = {count_tag};
     int at[MAX_TAGS];
@@ -589,12 +733,11 @@ static am_status read_regions(vctx* c, int n, const char* count_tag)
     if (st != AM_OK) return st;
     if (at[0] >= 0 && (st = int_of(c, at[0], 0, 1000000000L, &v)) != AM_OK) return st;
     for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next)
-        if (am_xml_is(c->d, k, "FRegion"))
-            warn(c, k, "unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material instead)");
+        if (am_xml_is(c->d, k, "FRegion") && (st = read_region(c, k, lat, fixed_list)) != AM_OK) return st;
     return AM_OK;
 }
 
-static am_status read_environment(vctx* c, int n)
+static am_status read_environment(vctx* c, int n, const am_lattice* lat)
 {
     static const char* const tags[] = {"Boundary_Conditions", "Fixed_Regions", "Forced_Regions", "Gravity", "Thermal"};
     static const char* const grav[] = {"GravEnabled", "GravAcc", "FloorEnabled"};
@@ -603,9 +746,9 @@ static am_status read_environment(vctx* c, int n)
     am_status st;
     am_env* env = &c->info->env;
     if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
-    if (at[0] >= 0 && (st = read_regions(c, at[0], "NumBCs")) != AM_OK) return st;
-    if (at[1] >= 0 && (st = read_regions(c, at[1], "NumFixed")) != AM_OK) return st;
-    if (at[2] >= 0 && (st = read_regions(c, at[2], "NumForced")) != AM_OK) return st;
+    if (at[0] >= 0 && (st = read_regions(c, at[0], "NumBCs", lat, 0)) != AM_OK) return st;
+    if (at[1] >= 0 && (st = read_regions(c, at[1], "NumFixed", lat, 1)) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_regions(c, at[2], "NumForced", lat, 0)) != AM_OK) return st;
     if (at[3] >= 0) {
         /* VoxCAD's reader: inside <Gravity> a missing switch is off, a missing GravAcc -9.81 */
         int on = 0;
@@ -711,6 +854,41 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
 
 /* ---- reading ----------------------------------------------------------------------------- */
 
+/* the warning lines in line order (the sections are read in a fixed order, not the file's): a
+ * stable sort on (file, line), the base file's lines before a VXD's (names[0], names[1]) */
+static void sort_warnings(am_vxa_info* info, const char* const names[2])
+{
+    enum { MAXL = AM_VXA_WARN_TEXT / 16 };
+    char copy[AM_VXA_WARN_TEXT];
+    long start[MAXL], key[MAXL];
+    int n = 0;
+    size_t total = strlen(info->warning);
+    memcpy(copy, info->warning, total + 1);
+    for (size_t p = 0; p < total && n < MAXL;) {
+        const char* e = strchr(copy + p, '\n');
+        size_t len = e ? (size_t)(e - (copy + p)) + 1 : total - p;
+        int f = names[1] && !strncmp(copy + p, names[1], strlen(names[1])) && strncmp(copy + p, names[0], strlen(names[0])) ? 1 : 0;
+        const char* colon = copy + p + strlen(names[f]);
+        long line = *colon == ':' ? strtol(colon + 1, NULL, 10) : 0;
+        start[n] = (long)p;
+        key[n++] = (long)f << 40 | line;
+        p += len;
+    }
+    long w = 0;
+    for (int done = 0; done < n; done++) {
+        int best = -1;
+        for (int i = 0; i < n; i++)
+            if (start[i] >= 0 && (best < 0 || key[i] < key[best])) best = i;
+        const char* l = copy + start[best];
+        const char* e = strchr(l, '\n');
+        size_t len = e ? (size_t)(e - l) + 1 : strlen(l);
+        memcpy(info->warning + w, l, len);
+        w += (long)len;
+        start[best] = -1;
+    }
+    info->warning[w] = 0;
+}
+
 int am_vxa_sniff(const char* text)
 {
     if (!text) return 0;
@@ -749,8 +927,10 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     if (at[0] < 0) return verr(&c, 0, AM_ERR_PARSE, "<VXA> has no <VXC> element (the robot)");
     if ((st = read_vxc(&c, at[0], lat)) != AM_OK) return st;
     if (at[1] >= 0 && (st = read_simulator(&c, at[1], lat)) != AM_OK) return st;
-    if (at[2] >= 0 && (st = read_environment(&c, at[2])) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_environment(&c, at[2], lat)) != AM_OK) return st;
     if (at[3] >= 0 && (st = read_amorph(&c, at[3], lat)) != AM_OK) return st;
+    const char* const names[2] = {fname ? fname : "", NULL};
+    sort_warnings(info, names);
     return AM_OK;
 }
 
@@ -846,6 +1026,42 @@ static am_status check_input(const am_lattice* lat, const am_env* env, double dt
 am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz)
 {
+    return am_vxa_format_layers(lat, NULL, env, dt, buf, cap, len, err, errsz);
+}
+
+/* the voxels with a boundary condition: one box <FRegion> each, its own cell */
+static am_status put_regions(wbuf* w, const am_lattice* lat, const am_layers* ly, char* err, int errsz)
+{
+    const int nx = lat->nx, ny = lat->ny, nz = lat->nz;
+    char a[40], b[40];
+    int count = 0;
+    for (int c = 0; c < nx * ny * nz; c++)
+        count += lat->cell[c] && (ly->fixed[c] || ly->force[0][c] != AM_P(0) || ly->force[1][c] != AM_P(0) || ly->force[2][c] != AM_P(0));
+    if (count == 0) return AM_OK;
+    if (count > AM_VXA_MAX_BC_VOXELS)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "vxa format: %d voxels with boundary conditions, more than the %d it writes", count,
+                       AM_VXA_MAX_BC_VOXELS);
+    put(w, "    <Boundary_Conditions>\n      <NumBCs>%d</NumBCs>\n", count);
+    for (int c = 0; c < nx * ny * nz; c++) {
+        if (!lat->cell[c] || !(ly->fixed[c] || ly->force[0][c] != AM_P(0) || ly->force[1][c] != AM_P(0) || ly->force[2][c] != AM_P(0)))
+            continue;
+        const int idx[3] = {c % nx, c / nx % ny, c / (nx * ny)}, n[3] = {nx, ny, nz};
+        static const char* const ax[3] = {"X", "Y", "Z"};
+        put(w, "      <FRegion>\n        <PrimType>0</PrimType>\n");
+        for (int k = 0; k < 3; k++)
+            put(w, "        <%s>%s</%s>\n        <d%s>%s</d%s>\n", ax[k], num(a, (double)idx[k] / n[k], 0), ax[k], ax[k],
+                num(b, 1.0 / n[k], 0), ax[k]);
+        put(w, "        <DofFixed>%d</DofFixed>\n", ly->fixed[c] ? 63 : 0);
+        for (int k = 0; k < 3; k++) put(w, "        <Force%s>%s</Force%s>\n", ax[k], num(a, (double)ly->force[k][c], 1), ax[k]);
+        put(w, "      </FRegion>\n");
+    }
+    put(w, "    </Boundary_Conditions>\n");
+    return AM_OK;
+}
+
+am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
+                               long* len, char* err, int errsz)
+{
     if (len) *len = 0;
     if (!lat || !env || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: no lattice, environment or buffer");
     buf[0] = 0;
@@ -871,7 +1087,12 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
             "      <CollisionHorizon>3</CollisionHorizon>\n    </Collisions>\n  </Simulator>\n",
         env->collisions ? 1 : 0);
 
-    put(&w, "  <Environment>\n    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
+    put(&w, "  <Environment>\n");
+    if (layers && layers->has_bc && (st = put_regions(&w, lat, layers, err, errsz)) != AM_OK) {
+        buf[0] = 0;
+        return st;
+    }
+    put(&w, "    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
     put(&w, "      <GravAcc>%s</GravAcc>\n      <FloorEnabled>%d</FloorEnabled>\n    </Gravity>\n",
         env->gravity > AM_P(0) ? num(a, -(double)env->gravity, 1) : "-9.81", env->floor ? 1 : 0);
     /* VoxCAD's temperature: TempBase + TempAmplitude sin(2 pi t / TempPeriod + phase); expansion
@@ -923,7 +1144,18 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
         w.buf[w.len] = 0;
         put(&w, "]]></Layer>\n");
     }
-    put(&w, "      </Data>\n    </Structure>\n  </VXC>\n");
+    put(&w, "      </Data>\n");
+    if (layers && layers->has_phase) {
+        /* evosoro's form: one CDATA list of reals per layer, in periods */
+        put(&w, "      <PhaseOffset>\n");
+        for (int z = 0; z < lat->nz && !w.full; z++) {
+            put(&w, "        <Layer><![CDATA[");
+            for (long i = 0; i < per; i++) put(&w, "%s%s", i ? ", " : "", num(a, (double)layers->phase[per * z + i], 1));
+            put(&w, "]]></Layer>\n");
+        }
+        put(&w, "      </PhaseOffset>\n");
+    }
+    put(&w, "    </Structure>\n  </VXC>\n");
 
     put(&w, "  <Amorph Version=\"1\">\n    <CTEMode>%s</CTEMode>\n    <PeriodSteps>%d</PeriodSteps>\n",
         vol ? "volumetric" : "linear", env->period_steps);

@@ -341,27 +341,28 @@ static void test_vxa_warnings(void)
     const char* t = "<VXA Version=\"1.1\">\n"
                     "<GPU><HeapSize>0.5</HeapSize></GPU>\n"
                     "<Simulator><Integration><Integrator>1</Integrator><DtFrac>1.5</DtFrac></Integration></Simulator>\n"
-                    "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X></FRegion></Boundary_Conditions>"
+                    "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X><Wobble/></FRegion></Boundary_Conditions>"
                     "</Environment>\n"
                     "<VXC><Lattice><X_Dim_Adj>0.5</X_Dim_Adj></Lattice><Palette><Material ID=\"7\">\n"
                     "<Mechanical><MatModel>1</MatModel><IsConductive>1</IsConductive></Mechanical></Material></Palette>\n"
                     "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
-                    "<Data><Layer>1</Layer></Data><PhaseOffset/></Structure></VXC>\n"
+                    "<Data><Layer>1</Layer></Data><Stiffness/></Structure></VXC>\n"
                     "</VXA>\n";
     CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "w.vxa", err, sizeof err) == AM_OK, "%s", err);
+    /* in line order, though <VXC> is read first */
     const char* want =
         "w.vxa:2: warning: unsupported tag <GPU> ignored\n"
+        "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
+        "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
+        "used (amorph sim --dt-frac overrides)\n"
+        "w.vxa:5: warning: unsupported tag <Wobble> ignored\n"
+        "w.vxa:5: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"
         "w.vxa:6: warning: <X_Dim_Adj> 0.5 not supported (amorph lattices are cubic cells on a rectangular grid); 1 used\n"
         "w.vxa:6: warning: <Material ID=\"7\"> is material 1 of the palette: materials are numbered by their order, as in VoxCAD\n"
         "w.vxa:7: warning: unsupported tag <IsConductive> ignored\n"
         "w.vxa:7: warning: <MatModel> 1 (non-linear) not supported: material 1 is linear elastic here\n"
-        "w.vxa:8: warning: unsupported tag <PhaseOffset> ignored\n"
-        "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
-        "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
-        "used (amorph sim --dt-frac overrides)\n"
-        "w.vxa:5: warning: unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material "
-        "instead)\n";
-    CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 9, "%d warnings:\n%s", info_a.warnings, info_a.warning);
+        "w.vxa:8: warning: unsupported tag <Stiffness> ignored\n";
+    CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 10, "%d warnings:\n%s", info_a.warnings, info_a.warning);
     CHECK(info_a.env.dt_frac == am_default_env().dt_frac, "dt_frac kept");
     /* many warnings: all counted, the text stays within its buffer */
     long n = sprintf(big, "<VXA>");
@@ -651,6 +652,181 @@ static void test_robot_settings(void)
               "cte of material %d follows its actuation", m);
 }
 
+/* ---- per-cell layers: evosoro's PhaseOffset, VoxCAD's boundary conditions --------------- */
+
+static char ftext[1 << 16];
+static am_model pm1, pm2;
+static am_state ps1, ps2;
+static am_layers lay;
+
+static int read_data(const char* path)
+{
+    char err[AM_ERR_MAX];
+    long len = 0;
+    am_status st = am_port_read_file(path, ftext, sizeof ftext, &len, err, sizeof err);
+    CHECK(st == AM_OK, "%s", err);
+    return st == AM_OK;
+}
+
+/* the voxel of cell (x, y, z), -1 if none */
+static int voxel_of(const am_model* m, int x, int y, int z)
+{
+    return m->cell_voxel[x + m->nx * (y + m->ny * z)];
+}
+
+static void test_vxa_phase_offset(void)
+{
+#if !defined(AM_COMPACT)
+    char err[AM_ERR_MAX] = "";
+    if (!read_data("tests/data/evosoro_phase.vxa")) return;
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, ftext, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    const am_layers* ly = &info_a.layers;
+    CHECK(ly->has_phase && !ly->has_bc, "layers %d %d", ly->has_phase, ly->has_bc);
+    CHECK(ly->phase[1] == AM_P(0.25) && ly->phase[3 + 4 * (2 + 3 * 1)] == AM_P(0.82) && ly->phase[0] == AM_P(0),
+          "phases %g %g", (double)ly->phase[1], (double)ly->phase[3 + 4 * (2 + 3 * 1)]);
+    CHECK(strstr(info_a.warning, "e.vxa:83: warning: unsupported tag <Stiffness> ignored\n") != NULL, "%s", info_a.warning);
+    /* the voxels actuate with their own phases: after a quarter period the columns differ */
+    lay = info_a.layers;
+    am_env env = info_a.env;
+    env.period_steps = 40;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(pm1.voxel_phase == 1, "voxel_phase");
+    am_state_reset(&pm1, &ps1);
+    ps1.actuate = 1;
+    am_steps(&pm1, &ps1, 10);
+    int v0 = voxel_of(&pm1, 0, 0, 0), v1 = voxel_of(&pm1, 1, 0, 0), v4 = voxel_of(&pm1, 0, 1, 0);
+    CHECK(ps1.s[v0] != ps1.s[v1], "columns 0 and 1 actuate alike: %g %g", (double)ps1.s[v0], (double)ps1.s[v1]);
+    /* phases 0.25 apart, the last actuation at step 9 of 40: column 0 near sin(pi/2) (the largest
+     * scale), column 1 a quarter period later, near sin(pi) */
+    CHECK(ps1.s[v0] > ps1.s[v1] && ps1.s[v1] > AM_R(1) && ps1.s[v0] - AM_R(1) > AM_R(4) * (ps1.s[v1] - AM_R(1)), "scales %g %g",
+          (double)ps1.s[v0], (double)ps1.s[v1]);
+    CHECK(ps1.s[v4] != ps1.s[v0], "y = 1 has its own phase");
+    /* every phase 0 simulates exactly as the per-material path does (same state, bit for bit) */
+    lay.has_phase = 0;
+    CHECK(am_model_build_layers(&pm2, &lat_a, &env, &lay, err, sizeof err) == AM_OK && pm2.voxel_phase == 0, "%s", err);
+    memset(lay.phase, 0, sizeof lay.phase);
+    lay.has_phase = 1;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK && pm1.voxel_phase == 1, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    am_state_reset(&pm2, &ps2);
+    ps1.actuate = ps2.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    am_steps(&pm2, &ps2, 300);
+    CHECK(am_state_hash(&pm1, &ps1) == am_state_hash(&pm2, &ps2) && !ps1.diverged, "zero phases differ from none");
+    /* and the file's phases move it otherwise */
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &info_a.layers, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    ps1.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    CHECK(am_state_hash(&pm1, &ps1) != am_state_hash(&pm2, &ps2) && !ps1.diverged, "the phases changed nothing");
+
+    /* round trip: the phases come back bit for bit, and a second write is the same text */
+    long len = 0, len2 = 0;
+    CHECK(am_vxa_format_layers(&lat_a, &info_a.layers, &info_a.env, 2.5e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<PhaseOffset>") && strstr(text, "0.25, 0.5, 0.75, 0.01, 0.26"), "written phases");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "p.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_b.layers.has_phase && am_lattice_equal(&lat_a, &lat_b), "phases back");
+    int same = 1;
+    for (int c = 0; c < 24; c++) same &= info_b.layers.phase[c] == info_a.layers.phase[c];
+    CHECK(same, "phases differ after a round trip");
+    CHECK(am_vxa_format_layers(&lat_b, &info_b.layers, &info_b.env, 2.5e-5, text2, sizeof text2, &len2, err, sizeof err) == AM_OK &&
+              len == len2 && !strcmp(text, text2),
+          "second write differs");
+#endif
+    /* malformed layers: one line each */
+#define PH(layers) "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>" \
+                   "<Data><Layer>11</Layer></Data><PhaseOffset>" layers "</PhaseOffset>"
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>0.5, 0.25, </Layer>"));
+    expect_vxa(big, AM_OK, "");
+    CHECK(info_a.layers.has_phase && info_a.layers.phase[0] == AM_P(0.5) && info_a.layers.phase[1] == AM_P(0.25), "two phases");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>0.5</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0 has 1 values, expected 2 (X_Voxels x Y_Voxels)");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>0.5, x1, 3</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0: value 1 'x1' is not a finite number");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>1,2,3</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0 has more than 2 values (X_Voxels x Y_Voxels)");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>1 2</Layer>\n<Layer>1 2</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: more <PhaseOffset> layers than Z_Voxels = 1");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH(""));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> has 0 <Layer> elements, Z_Voxels says 1");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>1 inf</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> layer 0: value 1 'inf' is not a finite number");
+}
+
+/* VoxCAD's cantilever: the clamp and the tip load come from its regions; the tip deflects as the
+ * Euler-Bernoulli beam does. The beam's links are exact Euler-Bernoulli frame elements between
+ * voxel centres (docs/physics.md), so for a point load P at the tip centre the deflection is
+ * P l^3 / (3 E I) with l = 5 L from the clamped voxel's centre and E I = E L^4 / 12, 0.5 mm here
+ * (1% of l: small enough for linear theory, whose geometric error is of order (w / l)^2, 1e-4).
+ * The file's global damping gives the first bending mode a damping ratio of 0.3 and the run lasts
+ * 16 / (0.3 omega_1), leaving e^-16 of the initial swing: the 1% tolerance is the one of
+ * test_physics.c's cantilevers (float positions and the fixed-point force unit, 0.2% of this load). */
+static void test_vxa_cantilever(void)
+{
+    char err[AM_ERR_MAX] = "";
+    if (!read_data("tests/data/voxcad_cantilever.vxa")) return;
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, ftext, "c.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_a.warnings == 0, "%s", info_a.warning);
+    const am_layers* ly = &info_a.layers;
+    CHECK(ly->has_bc && ly->fixed[0] && !ly->fixed[1] && !ly->fixed[5] && ly->force[2][5] == AM_P(-0.1) && ly->force[2][4] == AM_P(0) &&
+              ly->force[0][5] == AM_P(0),
+          "regions: fixed %d %d, force %g", ly->fixed[0], ly->fixed[5], (double)ly->force[2][5]);
+    const double L = 0.01, E = 1e7, rho = 1000, l = 5 * L, EI = E * L * L * L * L / 12, P = 0.1;
+    const double omega1 = 1.8751 * 1.8751 * sqrt(EI / (rho * L * L * l * l * l * l));
+    CHECK(am_model_build_layers(&pm1, &lat_a, &info_a.env, ly, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    const int root = voxel_of(&pm1, 0, 0, 0), tip = voxel_of(&pm1, 5, 0, 0);
+    CHECK(pm1.fixed[root] && !pm1.fixed[tip] && pm1.any_force, "model: clamp and load");
+    long steps = (long)ceil(16.0 / (0.3 * omega1 * am_to_si(&pm1, ps1.dt, AM_DIM_TIME)));
+    am_steps(&pm1, &ps1, steps);
+    const double w = -am_to_si(&pm1, ps1.x[2][tip], AM_DIM_LENGTH), want = P * l * l * l / (3 * EI);
+    printf("    cantilever: %ld steps, tip deflection %.6e m, Euler-Bernoulli %.6e m (error %.2e)\n", steps, w, want, w / want - 1);
+    CHECK(!ps1.diverged, "diverged");
+    NEAR_REL(w, want, 0.01);
+    CHECK(ps1.x[0][root] == AM_R(0) && ps1.x[2][root] == AM_R(0) && ps1.q[0][root] == AM_R(1), "the clamp moved");
+    /* without its regions the beam just sits (no gravity, no floor) */
+    lay = info_a.layers;
+    lay.has_bc = 0;
+    CHECK(am_model_build_layers(&pm2, &lat_a, &info_a.env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm2, &ps2);
+    am_steps(&pm2, &ps2, 2000);
+    CHECK(ps2.x[2][tip] == AM_R(0) && !pm2.fixed[root], "the beam moved without regions");
+#if !defined(AM_COMPACT)
+    /* round trip: each voxel with a condition is a region of its own cell */
+    long len = 0;
+    CHECK(am_vxa_format_layers(&lat_a, ly, &info_a.env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<NumBCs>2</NumBCs>") && strstr(text, "<DofFixed>63</DofFixed>") && strstr(text, "<ForceZ>-0.1</ForceZ>"),
+          "written regions");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "r.vxa", err, sizeof err) == AM_OK && info_b.warnings == 0, "%s %s", err,
+          info_b.warning);
+    int same = info_b.layers.has_bc;
+    for (int c = 0; c < 6; c++)
+        for (int k = 0; k < 3; k++) same &= info_b.layers.force[k][c] == ly->force[k][c] && info_b.layers.fixed[c] == ly->fixed[c];
+    CHECK(same, "regions differ after a round trip");
+#endif
+    /* what is not supported: a warning each, in line order; a bad DofFixed: an error */
+#define REG(body) "<Environment><Boundary_Conditions><NumBCs>1</NumBCs><FRegion>" body "</FRegion></Boundary_Conditions></Environment>"
+    expect_vxa(vxa(REG("<PrimType>2</PrimType>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> of PrimType 2 not supported (amorph reads box regions, PrimType 0): "
+                                  "ignored\n"), "%s", info_a.warning);
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><DofFixed>7</DofFixed><TorqueZ>2</TorqueZ>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <DofFixed> 7 fixes some degrees of freedom only: amorph clamps all six of the "
+                                  "region's voxels\nt.vxa:2: warning: <TorqueZ> 2 not supported (amorph's boundary conditions are "
+                                  "clamps and forces): ignored\n"), "%s", info_a.warning);
+    CHECK(info_a.layers.fixed[0] && info_a.layers.fixed[1], "clamped");
+    expect_vxa(vxa(REG("<X>0.6</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><ForceX>1</ForceX>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"),
+          "%s", info_a.warning);
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><ForceZ>-3</ForceZ>"), 0, 0, 0), AM_OK, "");
+    CHECK(info_a.layers.force[2][0] == AM_P(-1.5) && info_a.layers.force[2][1] == AM_P(-1.5), "the force shared by two voxels");
+    expect_vxa(vxa(REG("<DofFixed>99</DofFixed>"), 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DofFixed> 99 is not a set of the six degrees of freedom (0..63)");
+    expect_vxa(vxa(REG("<ForceX>abc</ForceX>"), 0, 0, 0), AM_ERR_PARSE, "t.vxa:2: <ForceX>: 'abc' is not a finite number");
+    expect_vxa(vxa("<Environment><Fixed_Regions><NumFixed>1</NumFixed><FRegion><dX>0.5</dX><dY>1</dY><dZ>1</dZ></FRegion>"
+                   "</Fixed_Regions></Environment>", 0, 0, 0), AM_OK, "");
+    CHECK(info_a.layers.fixed[0] && !info_a.layers.fixed[1], "a region of <Fixed_Regions> is fixed");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -667,5 +843,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_errors);
     RUN(test_vxa_bad_tokens_quoted);
     RUN(test_vxa_format_errors);
+    RUN(test_vxa_phase_offset);
+    RUN(test_vxa_cantilever);
     return SUMMARY();
 }

@@ -99,9 +99,9 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
 /* ---- loading ---- */
 
 #if TOOL_VXA
-/* VXA text -> lattice; the reader's warnings on stderr */
-static am_status load_vxa(const char* text, const char* fname, am_lattice* lat, tool_robot* r, double* period_s, char* err,
-                          int errsz)
+/* VXA text -> lattice and layers (c->layers); the reader's warnings on stderr */
+static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, am_lattice* lat, tool_robot* r, double* period_s,
+                          char* err, int errsz)
 {
     static am_xml_doc doc;   /* the XML reader's workspace, used during this call only */
     static am_vxa_info info; /* the file's environment and warnings, copied out below */
@@ -113,6 +113,7 @@ static am_status load_vxa(const char* text, const char* fname, am_lattice* lat, 
     if (info.warnings > kept) fprintf(stderr, "%s: warning: %d more warnings not shown\n", fname, info.warnings - kept);
     r->env = info.env;
     *period_s = info.period_steps_given ? 0 : info.temp_period;
+    c->layers = info.layers;
     return AM_OK;
 }
 #endif
@@ -197,7 +198,7 @@ static am_status load_file(tool_ctx* c, const char* name, am_lattice* lat, tool_
     } else if (kind == TOOL_TEXT_VXA) {
         r->kind = TOOL_ROBOT_VXA;
 #if TOOL_VXA
-        st = load_vxa(tool_src_text(&src), name, lat, r, period_s, err, errsz);
+        st = load_vxa(c, tool_src_text(&src), name, lat, r, period_s, err, errsz);
 #else
         (void)period_s;
         st = am_fail(err, errsz, AM_ERR_ARG, "%s: a VXA file: not in this build: VXA files belong to the desktop profile", name);
@@ -243,6 +244,16 @@ static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_
     return AM_OK;
 }
 
+am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
+{
+#if TOOL_VXA
+    return am_model_build_layers(m, lat, env, &c->layers, err, errsz);
+#else
+    (void)c;
+    return am_model_build(m, lat, env, err, errsz);
+#endif
+}
+
 am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz)
 {
     /* dt_rec depends on the materials and the voxel size only: an empty robot is timed as one
@@ -261,6 +272,9 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     r->kind = TOOL_ROBOT_SCENE;
     r->env = am_default_env();
     r->eval = am_default_eval();
+#if TOOL_VXA
+    am_layers_clear(&c->layers); /* none unless a VXA file brings them */
+#endif
     double period_s = 0; /* a VXA file's period in seconds, still to become steps */
     am_status st;
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);

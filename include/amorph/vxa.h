@@ -27,6 +27,9 @@ typedef struct am_vxa_info {
     double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
     int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
                                 converts temp_period with am_vxa_period_steps once dt is known */
+    am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
+                                conditions' fixed cells and forces (docs/vxa.md); build the model with
+                                am_model_build_layers */
     int warnings;            /* warnings found (all counted, the first ones kept in warning) */
     char warning[AM_VXA_WARN_TEXT]; /* warning lines, each ended by '\n'; NUL-terminated */
 } am_vxa_info;
@@ -46,7 +49,14 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
  * that cannot be written, AM_ERR_CAPACITY when buf is short (AM_VXA_TEXT_MAX always suffices). */
 am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz);
-#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS + AM_MAX_DIM * 64L + 8192L)
+/* the same with per-cell layers (NULL: none): phases as evosoro's <PhaseOffset> layers (in
+ * periods, each value in the shortest form that reads back to the same bits), and each voxel with
+ * a boundary condition (clamped, or a force) as one box <FRegion> of its own cell in
+ * <Boundary_Conditions>, at most AM_VXA_MAX_BC_VOXELS of them (AM_ERR_CAPACITY past that) */
+am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
+                               long* len, char* err, int errsz);
+#define AM_VXA_MAX_BC_VOXELS 256
+#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 18L + AM_MAX_DIM * 64L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
  * number, at least 1, at most 1e9 */
