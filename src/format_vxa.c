@@ -29,13 +29,40 @@
 #define VXA_LAYER_MAX (2L * AM_MAX_DIM * AM_MAX_DIM + 512L) /* decoded text of one <Layer> */
 #define VXA_TEMP_BASE 25.0                                 /* the reference temperature written (VoxCAD's default) */
 
+/* a VXD's replacements (voxcraft-sim): each element of the VXD with replace="VXA.A.B" stands for
+ * the element at that path of the base file */
+#define VXD_MAX_REPLACE 64
+#define VXD_PATH_MAX 128
+
 typedef struct vctx {
-    const am_xml_doc* d;
+    const am_xml_doc* d;     /* the base VXA file */
     am_vxa_info* info;
     long wlen; /* bytes of info->warning in use */
     char* err;
     int errsz;
+    const am_xml_doc* d2;    /* the VXD file, or NULL */
+    int nrep;                /* its replacements */
+    int rep_node[VXD_MAX_REPLACE];   /* the VXD element (an id of the VXD: VXD_BIAS + index) */
+    char rep_path[VXD_MAX_REPLACE][VXD_PATH_MAX];
+    int rep_used[VXD_MAX_REPLACE];
 } vctx;
+
+/* Element ids: an element of the base file is its index there, one of the VXD file VXD_BIAS plus
+ * its index there (the same for attributes); these helpers read either document. */
+#define VXD_BIAS (1 << 20)
+static const am_xml_doc* D(const vctx* c, int n) { return n >= VXD_BIAS ? c->d2 : c->d; }
+static int IX(int n) { return n >= VXD_BIAS ? n - VXD_BIAS : n; }
+static int BIAS(int n) { return n >= VXD_BIAS ? VXD_BIAS : 0; }
+static const am_xml_node* N(const vctx* c, int n) { return &D(c, n)->node[IX(n)]; }
+static int first_child(const vctx* c, int n) { return N(c, n)->child < 0 ? -1 : N(c, n)->child + BIAS(n); }
+static int next_sib(const vctx* c, int k) { return N(c, k)->next < 0 ? -1 : N(c, k)->next + BIAS(k); }
+static int is(const vctx* c, int n, const char* name) { return am_xml_is(D(c, n), IX(n), name); }
+static int attr_find(const vctx* c, int n, const char* name)
+{
+    int a = am_xml_attr_find(D(c, n), IX(n), name);
+    return a < 0 ? -1 : a + BIAS(n);
+}
+static am_status attr_text(const vctx* c, int a, char* out, long cap, long* len) { return am_xml_attr_text(D(c, a), IX(a), out, cap, len); }
 
 /* ---- messages ---------------------------------------------------------------------------- */
 
@@ -55,7 +82,7 @@ static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...
 {
     va_list ap;
     va_start(ap, fmt);
-    am_vfail_at(c->err, c->errsz, code, c->d->fname, (int)c->d->node[n].line, fmt, ap);
+    am_vfail_at(c->err, c->errsz, code, D(c, n)->fname, (int)N(c, n)->line, fmt, ap);
     va_end(ap);
     return code;
 }
@@ -64,7 +91,7 @@ static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...
 static void warn(vctx* c, int n, const char* fmt, ...)
 {
     char line[320];
-    int k = snprintf(line, sizeof line, "%s:%d: warning: ", c->d->fname, (int)c->d->node[n].line);
+    int k = snprintf(line, sizeof line, "%s:%d: warning: ", D(c, n)->fname, (int)N(c, n)->line);
     if (k >= 0 && k < (int)sizeof line) {
         va_list ap;
         va_start(ap, fmt);
@@ -84,7 +111,7 @@ static void warn(vctx* c, int n, const char* fmt, ...)
 /* the name of element n quoted for a message (am_quote) into q */
 static const char* tag(const vctx* c, int n, char q[AM_QUOTE_BUF])
 {
-    return am_quote(q, AM_QUOTE_BUF, c->d->text + c->d->node[n].start + 1, c->d->node[n].name_len);
+    return am_quote(q, AM_QUOTE_BUF, D(c, n)->text + N(c, n)->start + 1, N(c, n)->name_len);
 }
 
 /* a value quoted for a message (am_quote) into q */
@@ -105,9 +132,9 @@ static int is_blank(char ch) { return ch == ' ' || ch == '\t' || ch == '\n' || c
 static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
 {
     char qn[AM_QUOTE_BUF];
-    if (c->d->node[n].child >= 0) return verr(c, n, AM_ERR_PARSE, "<%s> must hold a value, not elements", tag(c, n, qn));
+    if (N(c, n)->child >= 0) return verr(c, n, AM_ERR_PARSE, "<%s> must hold a value, not elements", tag(c, n, qn));
     long k = 0;
-    if (am_xml_text(c->d, n, buf, cap, &k) != AM_OK)
+    if (am_xml_text(D(c, n), IX(n), buf, cap, &k) != AM_OK)
         return verr(c, n, AM_ERR_CAPACITY, "<%s>: its text is longer than %ld bytes", tag(c, n, qn), cap - 1);
     long s = 0;
     while (s < k && is_blank(buf[s])) s++;
@@ -195,23 +222,77 @@ static am_status bool_of(const vctx* c, int n, int* out)
 
 enum { MAX_TAGS = 16 };
 
-/* walks the children of element n: each one named in tags[] is stored in at[] (index, or -1 when
- * absent; a second one is an error), each other one is a warning unless it is named `repeat`
- * (those are left for the caller to walk) */
-static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
+/* the path of base element n ("VXA.VXC.Structure") into out; empty when longer than cap */
+static void path_of(const vctx* c, int n, char* out, size_t cap)
+{
+    int chain[AM_XML_MAX_DEPTH + 2], depth = 0;
+    size_t len = 0;
+    for (int k = n; k >= 0 && depth < AM_XML_MAX_DEPTH + 2; k = c->d->node[k].parent) chain[depth++] = k;
+    out[0] = 0;
+    for (int i = depth - 1; i >= 0; i--) {
+        const am_xml_node* e = &c->d->node[chain[i]];
+        if (len + e->name_len + 2 > cap) {
+            out[0] = 0;
+            return;
+        }
+        if (len) out[len++] = '.';
+        memcpy(out + len, c->d->text + e->start + 1, e->name_len);
+        len += e->name_len;
+        out[len] = 0;
+    }
+}
+
+/* the unused replacement for the child named like element k (or, k < 0, any unused one) of the
+ * element at path; -1 when none */
+static int replacement(const vctx* c, const char* path, int k)
+{
+    const size_t pl = strlen(path);
+    for (int r = 0; r < c->nrep; r++) {
+        const char* rp = c->rep_path[r];
+        if (c->rep_used[r] || strncmp(rp, path, pl) != 0 || rp[pl] != '.' || strchr(rp + pl + 1, '.')) continue;
+        if (k < 0 || is(c, k, rp + pl + 1)) return r;
+    }
+    return -1;
+}
+
+/* one child k of element n for children() */
+static am_status take(vctx* c, int n, int k, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
 {
     char qn[AM_QUOTE_BUF];
+    int i = 0;
+    while (i < ntags && !is(c, k, tags[i])) i++;
+    if (i < ntags) {
+        if (at[i] >= 0)
+            return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%s> (first on line %d)", tags[i], tag(c, n, qn),
+                        (int)N(c, at[i])->line);
+        at[i] = k;
+    } else if (!repeat || !is(c, k, repeat))
+        unsupported(c, k);
+    return AM_OK;
+}
+
+/* walks the children of element n: each one named in tags[] is stored in at[] (index, or -1 when
+ * absent; a second one is an error), each other one is a warning unless it is named `repeat`
+ * (those are left for the caller to walk). With a VXD, an element of the VXD replacing a child
+ * stands in its place, and one replacing an element the base file lacks comes after them. */
+static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
+{
+    char path[VXD_PATH_MAX] = "";
+    am_status st;
+    const int merge = c->nrep > 0 && n < VXD_BIAS;
+    if (merge) path_of(c, n, path, sizeof path);
     for (int i = 0; i < ntags; i++) at[i] = -1;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        int i = 0;
-        while (i < ntags && !am_xml_is(c->d, k, tags[i])) i++;
-        if (i < ntags) {
-            if (at[i] >= 0)
-                return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%s> (first on line %d)", tags[i], tag(c, n, qn),
-                            (int)c->d->node[at[i]].line);
-            at[i] = k;
-        } else if (!repeat || !am_xml_is(c->d, k, repeat))
-            unsupported(c, k);
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        int use = k, r = merge && path[0] ? replacement(c, path, k) : -1;
+        if (r >= 0) {
+            use = c->rep_node[r];
+            c->rep_used[r] = 1;
+        }
+        if ((st = take(c, n, use, tags, ntags, at, repeat)) != AM_OK) return st;
+    }
+    for (int r; merge && path[0] && (r = replacement(c, path, -1)) >= 0;) {
+        c->rep_used[r] = 1;
+        if ((st = take(c, n, c->rep_node[r], tags, ntags, at, repeat)) != AM_OK) return st;
     }
     return AM_OK;
 }
@@ -285,11 +366,11 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     *m = am_default_material();
     memset(m->name, 0, sizeof m->name);
     snprintf(m->name, sizeof m->name, "material%d", id);
-    int a = am_xml_attr_find(c->d, n, "ID");
+    int a = attr_find(c, n, "ID");
     if (a >= 0) {
         char idv[VXA_VALUE_MAX];
         char* end = NULL;
-        if (am_xml_attr_text(c->d, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
+        if (attr_text(c, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
             warn(c, n, "<Material ID=\"%s\"> is material %d of the palette: materials are numbered by their order, as in VoxCAD",
                  val(idv, qv), id);
     }
@@ -341,8 +422,8 @@ static am_status read_palette(vctx* c, int n, am_palette* pal)
 {
     am_status st;
     pal->count = 0;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Material")) {
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Material")) {
             unsupported(c, k);
             continue;
         }
@@ -441,10 +522,10 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
     int at[MAX_TAGS];
     am_status st;
     int comp = COMP_BASE64; /* VoxCAD's reader: no Compression attribute means BASE64 */
-    int a = am_xml_attr_find(c->d, n, "Compression");
+    int a = attr_find(c, n, "Compression");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
-        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (attr_text(c, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         if (!strcmp(v, "ASCII_READABLE")) comp = COMP_ASCII;
         else if (!strcmp(v, "BASE64")) comp = COMP_BASE64;
         else if (!strcmp(v, "ZLIB")) comp = COMP_ZLIB;
@@ -469,8 +550,8 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
     long per = dim[0] * dim[1];
     int z = 0;
     char buf[VXA_LAYER_MAX];
-    for (int k = c->d->node[at[3]].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Layer")) {
+    for (int k = first_child(c, at[3]); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Layer")) {
             unsupported(c, k);
             continue;
         }
@@ -509,8 +590,8 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
 static am_status number_layer(const vctx* c, int k, int z, am_param* out, long per, const char* what)
 {
     char qv[AM_QUOTE_BUF];
-    const am_xml_node* e = &c->d->node[k];
-    const char* t = c->d->text;
+    const am_xml_node* e = N(c, k);
+    const char* t = D(c, k)->text;
     long i = e->content, end = e->content_end, count = 0;
     if (e->child >= 0) return verr(c, k, AM_ERR_PARSE, "<Layer> must hold a value, not elements");
     while (i < end) {
@@ -552,8 +633,8 @@ static am_status read_phase(vctx* c, int n, const am_lattice* lat)
     am_layers* ly = &c->info->layers;
     int z = 0;
     am_status st;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Layer")) {
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Layer")) {
             unsupported(c, k);
             continue;
         }
@@ -572,10 +653,10 @@ static am_status read_vxc(vctx* c, int n, am_lattice* lat)
     static const char* const tags[] = {"Lattice", "Voxel", "Palette", "Structure"};
     int at[MAX_TAGS];
     am_status st;
-    int a = am_xml_attr_find(c->d, n, "Version");
+    int a = attr_find(c, n, "Version");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
-        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (attr_text(c, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         double ver = atof(v);
         if (ver < 0.925)
             return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%s\">: only versions 0.93 and 0.94 are read", val(v, qv));
@@ -662,16 +743,16 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
     char qn[AM_QUOTE_BUF];
     /* the children() of a long table */
     for (int i = 0; i < NT; i++) at[i] = -1, v[i] = 0;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
         int i = 0;
-        while (i < NT && !am_xml_is(c->d, k, tags[i])) i++;
+        while (i < NT && !is(c, k, tags[i])) i++;
         if (i == NT) {
             unsupported(c, k);
             continue;
         }
         if (at[i] >= 0)
             return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <FRegion> (first on line %d)", tag(c, k, qn),
-                        (int)c->d->node[at[i]].line);
+                        (int)N(c, at[i])->line);
         at[i] = k;
         if ((st = double_of(c, k, &v[i])) != AM_OK) return st;
     }
@@ -732,8 +813,8 @@ static am_status read_regions(vctx* c, int n, const char* count_tag, const am_la
     am_status st = children(c, n, tags, 1, at, "FRegion");
     if (st != AM_OK) return st;
     if (at[0] >= 0 && (st = int_of(c, at[0], 0, 1000000000L, &v)) != AM_OK) return st;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next)
-        if (am_xml_is(c->d, k, "FRegion") && (st = read_region(c, k, lat, fixed_list)) != AM_OK) return st;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k))
+        if (is(c, k, "FRegion") && (st = read_region(c, k, lat, fixed_list)) != AM_OK) return st;
     return AM_OK;
 }
 
@@ -803,9 +884,9 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     am_status st;
     long v;
     am_env* env = &c->info->env;
-    int a = am_xml_attr_find(c->d, n, "Version");
+    int a = attr_find(c, n, "Version");
     char ver[VXA_VALUE_MAX] = "";
-    if (a >= 0 && am_xml_attr_text(c->d, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
+    if (a >= 0 && attr_text(c, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
     if (strcmp(ver, "1") != 0)
         return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%s\">: this build reads version 1", val(ver, qv));
     if ((st = children(c, n, tags, 7, at, "Material")) != AM_OK) return st;
@@ -826,11 +907,11 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Material")) continue;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Material")) continue;
         char idv[VXA_VALUE_MAX] = "";
-        int ia = am_xml_attr_find(c->d, k, "ID");
-        if (ia >= 0 && am_xml_attr_text(c->d, ia, idv, sizeof idv, NULL) != AM_OK) idv[0] = 0;
+        int ia = attr_find(c, k, "ID");
+        if (ia >= 0 && attr_text(c, ia, idv, sizeof idv, NULL) != AM_OK) idv[0] = 0;
         char* end = NULL;
         long id = idv[0] ? strtol(idv, &end, 10) : 0;
         if (!idv[0] || *end || id < 1 || id > lat->palette.count)
@@ -867,7 +948,8 @@ static void sort_warnings(am_vxa_info* info, const char* const names[2])
     for (size_t p = 0; p < total && n < MAXL;) {
         const char* e = strchr(copy + p, '\n');
         size_t len = e ? (size_t)(e - (copy + p)) + 1 : total - p;
-        int f = names[1] && !strncmp(copy + p, names[1], strlen(names[1])) && strncmp(copy + p, names[0], strlen(names[0])) ? 1 : 0;
+        const size_t l1 = names[1] ? strlen(names[1]) : 0;
+        int f = names[1] && !strncmp(copy + p, names[1], l1) && copy[p + l1] == ':' ? 1 : 0;
         const char* colon = copy + p + strlen(names[f]);
         long line = *colon == ':' ? strtol(colon + 1, NULL, 10) : 0;
         start[n] = (long)p;
@@ -901,8 +983,48 @@ int am_vxa_sniff(const char* text)
 am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz)
 {
-    char qv[AM_QUOTE_BUF];
-    if (!lat || !info || !work || !text) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
+    return am_vxa_parse_vxd(lat, info, work, text, fname, NULL, NULL, NULL, err, errsz);
+}
+
+/* the VXD's elements: each with replace="VXA...." becomes a replacement */
+static am_status read_vxd(vctx* c)
+{
+    char qv[AM_QUOTE_BUF], qn[AM_QUOTE_BUF];
+    const int root = VXD_BIAS;
+    if (!is(c, root, "VXD"))
+        return verr(c, root, AM_ERR_PARSE, "not a VXD file: the root element is <%s>, expected <VXD>", tag(c, root, qv));
+    for (int k = first_child(c, root); k >= 0; k = next_sib(c, k)) {
+        char p[VXD_PATH_MAX + 1];
+        int a = attr_find(c, k, "replace");
+        if (a < 0) {
+            warn(c, k, "unsupported tag <%s> ignored (amorph reads the elements of a VXD that replace=\"VXA...\" a part of the base)",
+                 tag(c, k, qn));
+            continue;
+        }
+        long len = 0;
+        if (attr_text(c, a, p, sizeof p, &len) != AM_OK || len >= VXD_PATH_MAX || strncmp(p, "VXA.", 4) != 0 || strchr(p, ' ')) {
+            warn(c, k, "<%s replace=\"%s\">: not a path of a VXA file (VXA.A.B, under %d bytes): ignored", tag(c, k, qn), val(p, qv),
+                 VXD_PATH_MAX);
+            continue;
+        }
+        for (int r = 0; r < c->nrep; r++)
+            if (!strcmp(c->rep_path[r], p))
+                return verr(c, k, AM_ERR_PARSE, "replace=\"%s\" given twice (first on line %d)", val(p, qv), (int)N(c, c->rep_node[r])->line);
+        if (c->nrep == VXD_MAX_REPLACE)
+            return verr(c, k, AM_ERR_CAPACITY, "more than %d replaced elements in a VXD", VXD_MAX_REPLACE);
+        c->rep_node[c->nrep] = k;
+        memcpy(c->rep_path[c->nrep], p, (size_t)len + 1);
+        c->rep_used[c->nrep++] = 0;
+    }
+    return AM_OK;
+}
+
+am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
+                           am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz)
+{
+    char qv[AM_QUOTE_BUF], qn[AM_QUOTE_BUF];
+    if (!lat || !info || !work || !text || (vxd_text && !vxd_work))
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
     memset(lat, 0, sizeof *lat);
     memset(info, 0, sizeof *info);
     lat->voxel_size = AM_P(0.001); /* VoxCAD's default Lattice_Dim */
@@ -911,9 +1033,20 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
     am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
     if (st != AM_OK) return st;
-    vctx c = {work, info, 0, err, errsz};
+    vctx c;
+    memset(&c, 0, sizeof c);
+    c.d = work, c.info = info, c.err = err, c.errsz = errsz;
+    if (am_xml_is(work, 0, "VXD"))
+        return verr(&c, 0, AM_ERR_PARSE, "a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not "
+                                          "read alone: give its base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a "
+                                          "folder holding base.vxa and robot.vxd)");
     if (!am_xml_is(work, 0, "VXA"))
         return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%s>, expected <VXA>", tag(&c, 0, qv));
+    if (vxd_text) {
+        if ((st = am_xml_parse(vxd_work, vxd_text, (long)strlen(vxd_text), vxd_fname, err, errsz)) != AM_OK) return st;
+        c.d2 = vxd_work;
+        if ((st = read_vxd(&c)) != AM_OK) return st;
+    }
     int a = am_xml_attr_find(work, 0, "Version");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
@@ -929,7 +1062,11 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     if (at[1] >= 0 && (st = read_simulator(&c, at[1], lat)) != AM_OK) return st;
     if (at[2] >= 0 && (st = read_environment(&c, at[2], lat)) != AM_OK) return st;
     if (at[3] >= 0 && (st = read_amorph(&c, at[3], lat)) != AM_OK) return st;
-    const char* const names[2] = {fname ? fname : "", NULL};
+    for (int r = 0; r < c.nrep; r++)
+        if (!c.rep_used[r])
+            warn(&c, c.rep_node[r], "<%s replace=\"%s\">: amorph reads no element at that path: ignored", tag(&c, c.rep_node[r], qn),
+                 val(c.rep_path[r], qv));
+    const char* const names[2] = {fname ? fname : "", vxd_text ? (vxd_fname ? vxd_fname : "") : NULL};
     sort_warnings(info, names);
     return AM_OK;
 }

@@ -827,6 +827,97 @@ static void test_vxa_cantilever(void)
     CHECK(info_a.layers.fixed[0] && !info_a.layers.fixed[1], "a region of <Fixed_Regions> is fixed");
 }
 
+/* voxcraft's VXD over a base VXA: replaced and added elements, warnings in order (base, then VXD),
+ * messages naming the VXD file, and a VXD alone refused with what to pass instead */
+static void test_vxa_vxd(void)
+{
+    static am_xml_doc vdoc;
+    static char btext[1 << 14];
+    char err[AM_ERR_MAX] = "";
+    long len = 0;
+    CHECK(am_port_read_file("tests/data/voxcraft/base.vxa", btext, sizeof btext, &len, err, sizeof err) == AM_OK, "%s", err);
+    if (!read_data("tests/data/voxcraft/robot.vxd")) return;
+    CHECK(am_vxa_parse_vxd(&lat_a, &info_a, &doc, btext, "base.vxa", &vdoc, ftext, "robot.vxd", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(lat_a.nx == 4 && lat_a.ny == 3 && lat_a.nz == 2 && lat_a.cell[1] == 2 && lat_a.cell[12] == 0 && lat_a.cell[13] == 1,
+          "the VXD's structure: %d x %d x %d", lat_a.nx, lat_a.ny, lat_a.nz);
+    CHECK(info_a.layers.has_phase && info_a.layers.phase[3] == AM_P(0.75), "the VXD's phases");
+    CHECK(info_a.env.temp_amplitude == AM_P(30) && lat_a.palette.count == 2 && !strcmp(lat_a.palette.mat[1].name, "Active"),
+          "the VXD's thermal, the base's palette");
+    const char* want = "base.vxa:5: warning: unsupported tag <GPU> ignored\n"
+                       "base.vxa:9: warning: unsupported tag <EnableExpansion> ignored\n"
+                       "robot.vxd:25: warning: unsupported tag <RecordHistory> ignored\n"
+                       "robot.vxd:28: warning: <Material replace=\"VXA.VXC.Palette.Material\">: amorph reads no element at that path: "
+                       "ignored\n"
+                       "robot.vxd:31: warning: unsupported tag <RawPrint> ignored (amorph reads the elements of a VXD that "
+                       "replace=\"VXA...\" a part of the base)\n";
+    CHECK(!strcmp(info_a.warning, want), "warnings:\n%s", info_a.warning);
+    /* the base alone: its own 1-voxel structure */
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, btext, "base.vxa", err, sizeof err) == AM_OK && am_lattice_count(&lat_b) == 1, "%s", err);
+    /* an element the base lacks is added; an error in the VXD names the VXD's line */
+    const char* v2 = "<VXD>\n<Collisions replace=\"VXA.Simulator.Collisions\"><SelfColEnabled>0</SelfColEnabled></Collisions>\n"
+                     "<Amorph replace=\"VXA.Amorph\" Version=\"1\"><PeriodSteps>123</PeriodSteps></Amorph>\n</VXD>\n";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v2, "v2.vxd", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_b.env.collisions == 0 && info_b.env.period_steps == 123 && info_b.period_steps_given, "replaced and added elements");
+    const char* v3 = "<VXD>\n\n<Structure replace=\"VXA.VXC.Structure\"><X_Voxels>0</X_Voxels></Structure></VXD>";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v3, "v3.vxd", err, sizeof err) == AM_ERR_RANGE &&
+              !strcmp(err, "v3.vxd:3: <X_Voxels> 0 is outside 1..1000000000"),
+          "%s", err);
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, "<VXA/>", "v4.vxd", err, sizeof err) == AM_ERR_PARSE &&
+              !strcmp(err, "v4.vxd:1: not a VXD file: the root element is <VXA>, expected <VXD>"),
+          "%s", err);
+    const char* v5 = "<VXD><A replace=\"VXA.B\"/>\n<C replace=\"VXA.B\"/></VXD>";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v5, "v5.vxd", err, sizeof err) == AM_ERR_PARSE &&
+              !strcmp(err, "v5.vxd:2: replace=\"VXA.B\" given twice (first on line 1)"),
+          "%s", err);
+    expect_vxa("<VXD>\n<Structure replace=\"VXA.VXC.Structure\"/></VXD>", AM_ERR_PARSE,
+               "t.vxa:1: a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not read alone: give its "
+               "base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and robot.vxd)");
+}
+
+/* the reader on damaged files: every prefix of a file with every kind of layer (ZLIB cells,
+ * PhaseOffset reals, regions), and random byte changes, each read cleanly (AM_OK, or one line
+ * "t.vxa:LINE: problem"; never a crash: asan and valgrind run it) */
+static void test_vxa_noise(void)
+{
+    static char src[1 << 14], buf[1 << 14];
+    char err[AM_ERR_MAX];
+    long n = 0;
+    int bad = 0, ok = 0, refused = 0;
+    static const char* const files[] = {"tests/data/voxcad_cantilever.vxa", "tests/data/evosoro_phase.vxa"};
+    uint64_t r = 0x2545F4914F6CDD1Dull;
+    for (int f = 0; f < 2; f++) {
+        CHECK(am_port_read_file(files[f], src, sizeof src, &n, err, sizeof err) == AM_OK, "%s", err);
+        const long step = test_quick() ? 97 : 7;
+        for (long cut = 0; cut < n; cut += step) {
+            memcpy(buf, src, (size_t)cut);
+            buf[cut] = 0;
+            am_status st = am_vxa_parse(&lat_b, &info_b, &doc, buf, "t.vxa", err, sizeof err);
+            if (st == AM_OK) ok++;
+            else refused++;
+            if (st != AM_OK && (strncmp(err, "t.vxa:", 6) || strchr(err, '\n'))) bad++;
+        }
+        const int rounds = test_quick() ? 100 : 2000;
+        for (int i = 0; i < rounds; i++) {
+            memcpy(buf, src, (size_t)n + 1);
+            for (int k = 0; k < 1 + i % 3; k++) {
+                r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+                const char set[] = "0123456789<>/=\", .-eE]![xAZ";
+                buf[r % (uint64_t)n] = set[(r >> 32) % (sizeof set - 1)];
+            }
+            am_status st = am_vxa_parse(&lat_b, &info_b, &doc, buf, "t.vxa", err, sizeof err);
+            if (st == AM_OK) ok++;
+            else refused++;
+            if (st != AM_OK && (strncmp(err, "t.vxa:", 6) || strchr(err, '\n'))) bad++;
+            if (st == AM_OK && info_b.layers.has_phase) {
+                /* what was read builds or is refused with a message */
+                am_status mb = am_model_build_layers(&pm2, &lat_b, &info_b.env, &info_b.layers, err, sizeof err);
+                if (mb != AM_OK && mb != AM_ERR_EMPTY && !err[0]) bad++;
+            }
+        }
+    }
+    CHECK(bad == 0 && ok > 0 && refused > 0, "%d unclean outcomes (%d read, %d refused)", bad, ok, refused);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -845,5 +936,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_format_errors);
     RUN(test_vxa_phase_offset);
     RUN(test_vxa_cantilever);
+    RUN(test_vxa_vxd);
+    RUN(test_vxa_noise);
     return SUMMARY();
 }

@@ -16,6 +16,8 @@
 /* what sim, render, view and export were told about the robot */
 typedef struct tool_robot_args {
     const char* name;          /* the file or run folder, or the scene's name; NULL until given */
+    const char* vxd;           /* a voxcraft VXD file over the VXA file name (the other file named with
+                                  it, one of them ending in .vxd); NULL when none */
     int is_scene;              /* 1: name is a scene (--scene NAME) */
     double dt_s;               /* --dt SECONDS (a fixed time step), 0 when not given */
     int nset;                  /* settings given, in order */
@@ -47,7 +49,8 @@ typedef struct tool_robot {
 int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val);
 
 /* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
- * --scene NAME), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
+ * --scene NAME; a VXA file and a VXD file over it, voxcraft-sim's `base.vxa robot.vxd`; a folder
+ * holding base.vxa and robot.vxd, voxcraft-sim's layout), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
  * (tool_setting_arg). Returns 1 when consumed, 0 when it is none of these (the command's own
  * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
  * as --population, a value missing). */

@@ -43,6 +43,14 @@ int am_vxa_sniff(const char* text);
 am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz);
 
+/* reads a base VXA file with a VXD file over it (voxcraft-sim's convention): every element of the
+ * VXD (root <VXD>) with replace="VXA.A.B" stands for the element at that path of the base text,
+ * or is added there when the base lacks it; the result is read as one VXA file. vxd_work is a
+ * second XML workspace; messages name the file of the element at fault. A VXD text given alone to
+ * am_vxa_parse is an error that says so. vxd_text NULL: am_vxa_parse. */
+am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
+                           am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz);
+
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
  * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment
