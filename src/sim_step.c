@@ -92,13 +92,24 @@ static void voxel_actuation(const am_model* m, am_state* s)
         arg0 = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps));
 #endif
     }
-    for (int i = 0; i < m->nv; i++) {
-        const int k = m->mat[i];
-        am_real T = m->temp_base;
-        if (s->actuate) T += AM_MUL(m->temp_amplitude, am_sin((arg0 + m->mat_phase[k]) + m->vphase[i]));
-        am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
-        changed |= sc != s->s[i];
-        s->s[i] = sc;
+    if (s->actuate) {
+        for (int i = 0; i < m->nv; i++) {
+            const int k = m->mat[i];
+            am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin((arg0 + m->mat_phase[k]) + m->vphase[i]));
+            am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+            changed |= sc != s->s[i];
+            s->s[i] = sc;
+        }
+    } else {
+        /* held at temp_base (relaxation): every voxel of a material has its material's scale, found
+         * once per material, and nothing changes from step to step */
+        for (int k = 0; k < m->palette.count; k++)
+            s->mat_scale[k] = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], m->temp_base);
+        for (int i = 0; i < m->nv; i++) {
+            const am_real sc = s->mat_scale[m->mat[i]];
+            changed |= sc != s->s[i];
+            s->s[i] = sc;
+        }
     }
     if (!changed) return;
     s->scales_valid = 1;
