@@ -10,6 +10,13 @@
  * Simulator, Environment, Amorph) whatever their order in the file, because the damping of
  * <Simulator> and the exact values of <Amorph> land on the materials read from <VXC>.
  *
+ * A voxcraft VXD over the file (am_vxa_parse_vxd) lives in a second workspace: element ids of the
+ * VXD are offset by VXD_BIAS, and the walker of a known element's children (children()) puts each
+ * VXD element whose replace="VXA...." names a child in that child's place, or after the children
+ * when the base has none, so every reader below reads the merged file without knowing it.
+ * Per-cell layers (<PhaseOffset>, the boundary conditions' <FRegion> boxes) go into
+ * am_vxa_info.layers. Warnings are sorted into line order at the end.
+ *
  * Writing follows what VoxCAD writes (tag order, ASCII_READABLE layers in CDATA), then adds the
  * <Amorph> element for the values VXA cannot hold. Reals are printed in the shortest form that
  * reads back to the same bits, so a written file reads back to the same lattice.
@@ -941,7 +948,8 @@ static void sort_warnings(am_vxa_info* info, const char* const names[2])
 {
     enum { MAXL = AM_VXA_WARN_TEXT / 16 };
     char copy[AM_VXA_WARN_TEXT];
-    long start[MAXL], key[MAXL];
+    long start[MAXL], line_of[MAXL];
+    int file_of[MAXL];
     int n = 0;
     size_t total = strlen(info->warning);
     memcpy(copy, info->warning, total + 1);
@@ -953,14 +961,16 @@ static void sort_warnings(am_vxa_info* info, const char* const names[2])
         const char* colon = copy + p + strlen(names[f]);
         long line = *colon == ':' ? strtol(colon + 1, NULL, 10) : 0;
         start[n] = (long)p;
-        key[n++] = (long)f << 40 | line;
+        file_of[n] = f;
+        line_of[n++] = line;
         p += len;
     }
     long w = 0;
     for (int done = 0; done < n; done++) {
         int best = -1;
         for (int i = 0; i < n; i++)
-            if (start[i] >= 0 && (best < 0 || key[i] < key[best])) best = i;
+            if (start[i] >= 0 && (best < 0 || file_of[i] < file_of[best] || (file_of[i] == file_of[best] && line_of[i] < line_of[best])))
+                best = i;
         const char* l = copy + start[best];
         const char* e = strchr(l, '\n');
         size_t len = e ? (size_t)(e - l) + 1 : strlen(l);

@@ -82,6 +82,8 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
     "--floor on|off, --cte_mode volumetric|linear, --fitness horizontal|x|3d, --dt_frac F,\n"            \
     "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
-    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"
+    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"                        \
+    "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
+    "holding base.vxa and robot.vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
 #endif

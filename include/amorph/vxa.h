@@ -5,7 +5,9 @@
  * supported. The reader parses the text with the fixed-memory XML reader (amorph/xml.h) into a
  * caller's workspace, fills a lattice and an environment, and lists every tag it does not
  * support as a warning line "fname:line: warning: unsupported tag <X> ignored" (never silence).
- * Malformed files are errors "fname:line: problem".
+ * Malformed files are errors "fname:line: problem". ZLIB layers are inflated (amorph/inflate.h);
+ * evosoro's per-voxel phases and VoxCAD's boundary conditions come out as per-cell layers
+ * (am_layers, for am_model_build_layers); a voxcraft VXD is read over its base (am_vxa_parse_vxd).
  *
  * The writer produces what VoxCAD writes (ASCII_READABLE structure) plus one <Amorph> element that
  * VoxCAD ignores and this reader uses, holding what VXA cannot say (per-material damping, fixed
