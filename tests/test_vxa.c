@@ -695,11 +695,11 @@ static void test_vxa_phase_offset(void)
     ps1.actuate = 1;
     am_steps(&pm1, &ps1, 10);
     int v0 = voxel_of(&pm1, 0, 0, 0), v1 = voxel_of(&pm1, 1, 0, 0), v4 = voxel_of(&pm1, 0, 1, 0);
-    CHECK(ps1.s[v0] != ps1.s[v1], "columns 0 and 1 actuate alike: %g %g", (double)ps1.s[v0], (double)ps1.s[v1]);
+    CHECK(ps1.s[v0] != ps1.s[v1], "columns 0 and 1 actuate alike: %g %g", AM_TO_DOUBLE(ps1.s[v0]), AM_TO_DOUBLE(ps1.s[v1]));
     /* phases 0.25 apart, the last actuation at step 9 of 40: column 0 near sin(pi/2) (the largest
      * scale), column 1 a quarter period later, near sin(pi) */
-    CHECK(ps1.s[v0] > ps1.s[v1] && ps1.s[v1] > AM_R(1) && ps1.s[v0] - AM_R(1) > AM_R(4) * (ps1.s[v1] - AM_R(1)), "scales %g %g",
-          (double)ps1.s[v0], (double)ps1.s[v1]);
+    const double s0 = AM_TO_DOUBLE(ps1.s[v0]), s1 = AM_TO_DOUBLE(ps1.s[v1]);
+    CHECK(s0 > s1 && s1 > 1 && s0 - 1 > 4 * (s1 - 1), "scales %g %g", s0, s1);
     CHECK(ps1.s[v4] != ps1.s[v0], "y = 1 has its own phase");
     /* every phase 0 simulates exactly as the per-material path does (same state, bit for bit) */
     lay.has_phase = 0;
