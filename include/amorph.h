@@ -14,6 +14,7 @@
 #include "amorph/evolve.h"
 #include "amorph/image.h"
 #include "amorph/mesh.h"
+#include "amorph/inflate.h"
 #include "amorph/port.h"
 #include "amorph/xml.h"
 #include "amorph/vxa.h"

@@ -10,12 +10,20 @@
  * Simulator, Environment, Amorph) whatever their order in the file, because the damping of
  * <Simulator> and the exact values of <Amorph> land on the materials read from <VXC>.
  *
+ * A voxcraft VXD over the file (am_vxa_parse_vxd) lives in a second workspace: element ids of the
+ * VXD are offset by VXD_BIAS, and the walker of a known element's children (children()) puts each
+ * VXD element whose replace="VXA...." names a child in that child's place, or after the children
+ * when the base has none, so every reader below reads the merged file without knowing it.
+ * Per-cell layers (<PhaseOffset>, the boundary conditions' <FRegion> boxes) go into
+ * am_vxa_info.layers. Warnings are sorted into line order at the end.
+ *
  * Writing follows what VoxCAD writes (tag order, ASCII_READABLE layers in CDATA), then adds the
  * <Amorph> element for the values VXA cannot hold. Reals are printed in the shortest form that
  * reads back to the same bits, so a written file reads back to the same lattice.
  */
 #include "amorph/vxa.h"
 
+#include "amorph/inflate.h"
 #include "amorph/text.h"
 
 #include <math.h>
@@ -28,13 +36,40 @@
 #define VXA_LAYER_MAX (2L * AM_MAX_DIM * AM_MAX_DIM + 512L) /* decoded text of one <Layer> */
 #define VXA_TEMP_BASE 25.0                                 /* the reference temperature written (VoxCAD's default) */
 
+/* a VXD's replacements (voxcraft-sim): each element of the VXD with replace="VXA.A.B" stands for
+ * the element at that path of the base file */
+#define VXD_MAX_REPLACE 64
+#define VXD_PATH_MAX 128
+
 typedef struct vctx {
-    const am_xml_doc* d;
+    const am_xml_doc* d;     /* the base VXA file */
     am_vxa_info* info;
     long wlen; /* bytes of info->warning in use */
     char* err;
     int errsz;
+    const am_xml_doc* d2;    /* the VXD file, or NULL */
+    int nrep;                /* its replacements */
+    int rep_node[VXD_MAX_REPLACE];   /* the VXD element (an id of the VXD: VXD_BIAS + index) */
+    char rep_path[VXD_MAX_REPLACE][VXD_PATH_MAX];
+    int rep_used[VXD_MAX_REPLACE];
 } vctx;
+
+/* Element ids: an element of the base file is its index there, one of the VXD file VXD_BIAS plus
+ * its index there (the same for attributes); these helpers read either document. */
+#define VXD_BIAS (1 << 20)
+static const am_xml_doc* D(const vctx* c, int n) { return n >= VXD_BIAS ? c->d2 : c->d; }
+static int IX(int n) { return n >= VXD_BIAS ? n - VXD_BIAS : n; }
+static int BIAS(int n) { return n >= VXD_BIAS ? VXD_BIAS : 0; }
+static const am_xml_node* N(const vctx* c, int n) { return &D(c, n)->node[IX(n)]; }
+static int first_child(const vctx* c, int n) { return N(c, n)->child < 0 ? -1 : N(c, n)->child + BIAS(n); }
+static int next_sib(const vctx* c, int k) { return N(c, k)->next < 0 ? -1 : N(c, k)->next + BIAS(k); }
+static int is(const vctx* c, int n, const char* name) { return am_xml_is(D(c, n), IX(n), name); }
+static int attr_find(const vctx* c, int n, const char* name)
+{
+    int a = am_xml_attr_find(D(c, n), IX(n), name);
+    return a < 0 ? -1 : a + BIAS(n);
+}
+static am_status attr_text(const vctx* c, int a, char* out, long cap, long* len) { return am_xml_attr_text(D(c, a), IX(a), out, cap, len); }
 
 /* ---- messages ---------------------------------------------------------------------------- */
 
@@ -54,7 +89,7 @@ static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...
 {
     va_list ap;
     va_start(ap, fmt);
-    am_vfail_at(c->err, c->errsz, code, c->d->fname, (int)c->d->node[n].line, fmt, ap);
+    am_vfail_at(c->err, c->errsz, code, D(c, n)->fname, (int)N(c, n)->line, fmt, ap);
     va_end(ap);
     return code;
 }
@@ -63,7 +98,7 @@ static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...
 static void warn(vctx* c, int n, const char* fmt, ...)
 {
     char line[320];
-    int k = snprintf(line, sizeof line, "%s:%d: warning: ", c->d->fname, (int)c->d->node[n].line);
+    int k = snprintf(line, sizeof line, "%s:%d: warning: ", D(c, n)->fname, (int)N(c, n)->line);
     if (k >= 0 && k < (int)sizeof line) {
         va_list ap;
         va_start(ap, fmt);
@@ -83,7 +118,7 @@ static void warn(vctx* c, int n, const char* fmt, ...)
 /* the name of element n quoted for a message (am_quote) into q */
 static const char* tag(const vctx* c, int n, char q[AM_QUOTE_BUF])
 {
-    return am_quote(q, AM_QUOTE_BUF, c->d->text + c->d->node[n].start + 1, c->d->node[n].name_len);
+    return am_quote(q, AM_QUOTE_BUF, D(c, n)->text + N(c, n)->start + 1, N(c, n)->name_len);
 }
 
 /* a value quoted for a message (am_quote) into q */
@@ -104,9 +139,9 @@ static int is_blank(char ch) { return ch == ' ' || ch == '\t' || ch == '\n' || c
 static am_status text_of(const vctx* c, int n, char* buf, long cap, long* len)
 {
     char qn[AM_QUOTE_BUF];
-    if (c->d->node[n].child >= 0) return verr(c, n, AM_ERR_PARSE, "<%s> must hold a value, not elements", tag(c, n, qn));
+    if (N(c, n)->child >= 0) return verr(c, n, AM_ERR_PARSE, "<%s> must hold a value, not elements", tag(c, n, qn));
     long k = 0;
-    if (am_xml_text(c->d, n, buf, cap, &k) != AM_OK)
+    if (am_xml_text(D(c, n), IX(n), buf, cap, &k) != AM_OK)
         return verr(c, n, AM_ERR_CAPACITY, "<%s>: its text is longer than %ld bytes", tag(c, n, qn), cap - 1);
     long s = 0;
     while (s < k && is_blank(buf[s])) s++;
@@ -194,23 +229,77 @@ static am_status bool_of(const vctx* c, int n, int* out)
 
 enum { MAX_TAGS = 16 };
 
-/* walks the children of element n: each one named in tags[] is stored in at[] (index, or -1 when
- * absent; a second one is an error), each other one is a warning unless it is named `repeat`
- * (those are left for the caller to walk) */
-static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
+/* the path of base element n ("VXA.VXC.Structure") into out; empty when longer than cap */
+static void path_of(const vctx* c, int n, char* out, size_t cap)
+{
+    int chain[AM_XML_MAX_DEPTH + 2], depth = 0;
+    size_t len = 0;
+    for (int k = n; k >= 0 && depth < AM_XML_MAX_DEPTH + 2; k = c->d->node[k].parent) chain[depth++] = k;
+    out[0] = 0;
+    for (int i = depth - 1; i >= 0; i--) {
+        const am_xml_node* e = &c->d->node[chain[i]];
+        if (len + e->name_len + 2 > cap) {
+            out[0] = 0;
+            return;
+        }
+        if (len) out[len++] = '.';
+        memcpy(out + len, c->d->text + e->start + 1, e->name_len);
+        len += e->name_len;
+        out[len] = 0;
+    }
+}
+
+/* the unused replacement for the child named like element k (or, k < 0, any unused one) of the
+ * element at path; -1 when none */
+static int replacement(const vctx* c, const char* path, int k)
+{
+    const size_t pl = strlen(path);
+    for (int r = 0; r < c->nrep; r++) {
+        const char* rp = c->rep_path[r];
+        if (c->rep_used[r] || strncmp(rp, path, pl) != 0 || rp[pl] != '.' || strchr(rp + pl + 1, '.')) continue;
+        if (k < 0 || is(c, k, rp + pl + 1)) return r;
+    }
+    return -1;
+}
+
+/* one child k of element n for children() */
+static am_status take(vctx* c, int n, int k, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
 {
     char qn[AM_QUOTE_BUF];
+    int i = 0;
+    while (i < ntags && !is(c, k, tags[i])) i++;
+    if (i < ntags) {
+        if (at[i] >= 0)
+            return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%s> (first on line %d)", tags[i], tag(c, n, qn),
+                        (int)N(c, at[i])->line);
+        at[i] = k;
+    } else if (!repeat || !is(c, k, repeat))
+        unsupported(c, k);
+    return AM_OK;
+}
+
+/* walks the children of element n: each one named in tags[] is stored in at[] (index, or -1 when
+ * absent; a second one is an error), each other one is a warning unless it is named `repeat`
+ * (those are left for the caller to walk). With a VXD, an element of the VXD replacing a child
+ * stands in its place, and one replacing an element the base file lacks comes after them. */
+static am_status children(vctx* c, int n, const char* const* tags, int ntags, int at[MAX_TAGS], const char* repeat)
+{
+    char path[VXD_PATH_MAX] = "";
+    am_status st;
+    const int merge = c->nrep > 0 && n < VXD_BIAS;
+    if (merge) path_of(c, n, path, sizeof path);
     for (int i = 0; i < ntags; i++) at[i] = -1;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        int i = 0;
-        while (i < ntags && !am_xml_is(c->d, k, tags[i])) i++;
-        if (i < ntags) {
-            if (at[i] >= 0)
-                return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <%s> (first on line %d)", tags[i], tag(c, n, qn),
-                            (int)c->d->node[at[i]].line);
-            at[i] = k;
-        } else if (!repeat || !am_xml_is(c->d, k, repeat))
-            unsupported(c, k);
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        int use = k, r = merge && path[0] ? replacement(c, path, k) : -1;
+        if (r >= 0) {
+            use = c->rep_node[r];
+            c->rep_used[r] = 1;
+        }
+        if ((st = take(c, n, use, tags, ntags, at, repeat)) != AM_OK) return st;
+    }
+    for (int r; merge && path[0] && (r = replacement(c, path, -1)) >= 0;) {
+        c->rep_used[r] = 1;
+        if ((st = take(c, n, c->rep_node[r], tags, ntags, at, repeat)) != AM_OK) return st;
     }
     return AM_OK;
 }
@@ -284,11 +373,11 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     *m = am_default_material();
     memset(m->name, 0, sizeof m->name);
     snprintf(m->name, sizeof m->name, "material%d", id);
-    int a = am_xml_attr_find(c->d, n, "ID");
+    int a = attr_find(c, n, "ID");
     if (a >= 0) {
         char idv[VXA_VALUE_MAX];
         char* end = NULL;
-        if (am_xml_attr_text(c->d, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
+        if (attr_text(c, a, idv, sizeof idv, NULL) != AM_OK || strtol(idv, &end, 10) != id || !idv[0] || *end)
             warn(c, n, "<Material ID=\"%s\"> is material %d of the palette: materials are numbered by their order, as in VoxCAD",
                  val(idv, qv), id);
     }
@@ -340,8 +429,8 @@ static am_status read_palette(vctx* c, int n, am_palette* pal)
 {
     am_status st;
     pal->count = 0;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Material")) {
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Material")) {
             unsupported(c, k);
             continue;
         }
@@ -403,29 +492,56 @@ static long b64_decode(char* s, long n)
     return o;
 }
 
-enum { COMP_ASCII, COMP_BASE64 };
+enum { COMP_ASCII, COMP_BASE64, COMP_ZLIB, COMP_QT_ZLIB };
+
+/* the cells of one compressed layer (base64 already decoded in buf[0..len)): a zlib stream
+ * (ZLIB), or Qt's qCompress form, the uncompressed length as 4 big-endian bytes then the stream
+ * (QT_ZLIB); *len becomes the cells' count, the cells replace buf's bytes */
+static am_status inflate_layer(const vctx* c, int k, int z, int comp, char* buf, long* len, long per)
+{
+    am_inflate_work w;
+    uint8_t cells[AM_MAX_DIM * AM_MAX_DIM];
+    char msg[AM_ERR_MAX];
+    long skip = 0, want = -1, got = 0;
+    if (comp == COMP_QT_ZLIB) {
+        if (*len < 4) return verr(c, k, AM_ERR_PARSE, "layer %d: %ld bytes, too short for QT_ZLIB data (a length and a zlib stream)", z, *len);
+        const unsigned char* u = (const unsigned char*)buf;
+        want = (long)((unsigned long)u[0] << 24 | (unsigned long)u[1] << 16 | (unsigned long)u[2] << 8 | u[3]);
+        skip = 4;
+    }
+    am_status st = am_zlib_inflate((const uint8_t*)buf + skip, *len - skip, cells, per, &got, &w, msg, sizeof msg);
+    if (st == AM_ERR_CAPACITY)
+        return verr(c, k, AM_ERR_PARSE, "layer %d inflates to more than %ld cells (X_Voxels x Y_Voxels)", z, per);
+    if (st != AM_OK) return verr(c, k, AM_ERR_PARSE, "layer %d: %s", z, msg);
+    if (want >= 0 && want != got)
+        return verr(c, k, AM_ERR_PARSE, "layer %d inflates to %ld bytes, its QT_ZLIB header says %ld", z, got, want);
+    memcpy(buf, cells, (size_t)got);
+    *len = got;
+    return AM_OK;
+}
+
+static am_status read_phase(vctx* c, int n, const am_lattice* lat);
 
 static am_status read_structure(vctx* c, int n, am_lattice* lat)
 {
     char qv[AM_QUOTE_BUF];
-    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data"};
+    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data", "PhaseOffset"};
     int at[MAX_TAGS];
     am_status st;
     int comp = COMP_BASE64; /* VoxCAD's reader: no Compression attribute means BASE64 */
-    int a = am_xml_attr_find(c->d, n, "Compression");
+    int a = attr_find(c, n, "Compression");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
-        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (attr_text(c, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         if (!strcmp(v, "ASCII_READABLE")) comp = COMP_ASCII;
         else if (!strcmp(v, "BASE64")) comp = COMP_BASE64;
-        else if (!strcmp(v, "ZLIB") || !strcmp(v, "QT_ZLIB"))
-            return verr(c, n, AM_ERR_PARSE,
-                        "Compression=\"%s\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64",
-                        val(v, qv));
+        else if (!strcmp(v, "ZLIB")) comp = COMP_ZLIB;
+        else if (!strcmp(v, "QT_ZLIB")) comp = COMP_QT_ZLIB;
         else
-            return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE or BASE64)", val(v, qv));
+            return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)",
+                        val(v, qv));
     }
-    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
     long dim[3];
     for (int i = 0; i < 3; i++) {
         if (at[i] < 0) return verr(c, n, AM_ERR_PARSE, "<Structure> has no <%s>", tags[i]);
@@ -441,16 +557,17 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
     long per = dim[0] * dim[1];
     int z = 0;
     char buf[VXA_LAYER_MAX];
-    for (int k = c->d->node[at[3]].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Layer")) {
+    for (int k = first_child(c, at[3]); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Layer")) {
             unsupported(c, k);
             continue;
         }
         if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <Layer> elements than Z_Voxels = %d", lat->nz);
         long len = 0;
         if ((st = text_of(c, k, buf, sizeof buf, &len)) != AM_OK) return st;
-        if (comp == COMP_BASE64 && (len = b64_decode(buf, len)) < 0)
+        if (comp != COMP_ASCII && (len = b64_decode(buf, len)) < 0)
             return verr(c, k, AM_ERR_PARSE, "layer %d: bad base64 data", z);
+        if ((comp == COMP_ZLIB || comp == COMP_QT_ZLIB) && (st = inflate_layer(c, k, z, comp, buf, &len, per)) != AM_OK) return st;
         if (len != per)
             return verr(c, k, AM_ERR_PARSE, "layer %d has %ld cells, expected %ld (X_Voxels x Y_Voxels = %d x %d)", z, len, per,
                         lat->nx, lat->ny);
@@ -470,6 +587,70 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         z++;
     }
     if (z < lat->nz) return verr(c, at[3], AM_ERR_PARSE, "<Data> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    if (at[4] >= 0) return read_phase(c, at[4], lat);
+    return AM_OK;
+}
+
+/* the numbers of a <Layer> of reals (evosoro writes "0.1, 0.25, ... , " in CDATA): read from the
+ * element's raw text, CDATA markers skipped, separated by commas and blanks; exactly `per` of them
+ * into out, each finite */
+static am_status number_layer(const vctx* c, int k, int z, am_param* out, long per, const char* what)
+{
+    char qv[AM_QUOTE_BUF];
+    const am_xml_node* e = N(c, k);
+    const char* t = D(c, k)->text;
+    long i = e->content, end = e->content_end, count = 0;
+    if (e->child >= 0) return verr(c, k, AM_ERR_PARSE, "<Layer> must hold a value, not elements");
+    while (i < end) {
+        if (!strncmp(t + i, "<![CDATA[", 9)) {
+            i += 9;
+            continue;
+        }
+        if (!strncmp(t + i, "]]>", 3)) {
+            i += 3;
+            continue;
+        }
+        if (is_blank(t[i]) || t[i] == ',') {
+            i++;
+            continue;
+        }
+        char tok[64];
+        long n = 0;
+        while (i + n < end && !is_blank(t[i + n]) && t[i + n] != ',' && t[i + n] != ']' && t[i + n] != '<' && n < 63) n++;
+        memcpy(tok, t + i, (size_t)n);
+        tok[n] = 0;
+        char* stop = NULL;
+        double v = n > 0 ? strtod(tok, &stop) : 0;
+        if (n == 0 || *stop || !(v - v == 0))
+            return verr(c, k, AM_ERR_PARSE, "%s layer %d: value %ld '%s' is not a finite number", what, z, count, val(tok, qv));
+        if (count == per)
+            return verr(c, k, AM_ERR_PARSE, "%s layer %d has more than %ld values (X_Voxels x Y_Voxels)", what, z, per);
+        out[count++] = (am_param)v;
+        i += n;
+    }
+    if (count != per)
+        return verr(c, k, AM_ERR_PARSE, "%s layer %d has %ld values, expected %ld (X_Voxels x Y_Voxels)", what, z, count, per);
+    return AM_OK;
+}
+
+/* evosoro's <PhaseOffset>: one <Layer> of reals per z, a phase per cell in periods */
+static am_status read_phase(vctx* c, int n, const am_lattice* lat)
+{
+    const long per = (long)lat->nx * lat->ny;
+    am_layers* ly = &c->info->layers;
+    int z = 0;
+    am_status st;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Layer")) {
+            unsupported(c, k);
+            continue;
+        }
+        if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <PhaseOffset> layers than Z_Voxels = %d", lat->nz);
+        if ((st = number_layer(c, k, z, ly->phase + per * z, per, "<PhaseOffset>")) != AM_OK) return st;
+        z++;
+    }
+    if (z < lat->nz) return verr(c, n, AM_ERR_PARSE, "<PhaseOffset> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    ly->has_phase = 1;
     return AM_OK;
 }
 
@@ -479,10 +660,10 @@ static am_status read_vxc(vctx* c, int n, am_lattice* lat)
     static const char* const tags[] = {"Lattice", "Voxel", "Palette", "Structure"};
     int at[MAX_TAGS];
     am_status st;
-    int a = am_xml_attr_find(c->d, n, "Version");
+    int a = attr_find(c, n, "Version");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
-        if (am_xml_attr_text(c->d, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
+        if (attr_text(c, a, v, sizeof v, NULL) != AM_OK) v[0] = 0;
         double ver = atof(v);
         if (ver < 0.925)
             return verr(c, n, AM_ERR_PARSE, "<VXC Version=\"%s\">: only versions 0.93 and 0.94 are read", val(v, qv));
@@ -552,8 +733,86 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     return AM_OK;
 }
 
-/* <Boundary_Conditions>, <Fixed_Regions>, <Forced_Regions>: a count and regions (not supported) */
-static am_status read_regions(vctx* c, int n, const char* count_tag)
+/* one <FRegion> (VoxCAD's boundary condition): a box in coordinates relative to the workspace
+ * (0..1 along each axis, X_Voxels x Lattice_Dim and so on), its fixed degrees of freedom and its
+ * force. Every filled cell whose centre lies in the box is clamped when the region fixes it, and
+ * the region's force is shared equally among them (VoxCAD's meaning: a force on the region).
+ * fixed_list: a region of <Fixed_Regions> without DofFixed or Fixed is fixed. */
+static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_list)
+{
+    static const char* const tags[] = {"PrimType", "X", "Y", "Z", "dX", "dY", "dZ", "Radius", "R", "G", "B", "alpha",
+                                       "DofFixed", "Fixed", "ForceX", "ForceY", "ForceZ", "TorqueX", "TorqueY", "TorqueZ",
+                                       "DisplaceX", "DisplaceY", "DisplaceZ", "AngDisplaceX", "AngDisplaceY", "AngDisplaceZ"};
+    enum { NT = 26 };
+    int at[NT];
+    double v[NT];
+    am_status st;
+    char qn[AM_QUOTE_BUF];
+    /* the children() of a long table */
+    for (int i = 0; i < NT; i++) at[i] = -1, v[i] = 0;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        int i = 0;
+        while (i < NT && !is(c, k, tags[i])) i++;
+        if (i == NT) {
+            unsupported(c, k);
+            continue;
+        }
+        if (at[i] >= 0)
+            return verr(c, k, AM_ERR_PARSE, "<%s> given twice in <FRegion> (first on line %d)", tag(c, k, qn),
+                        (int)N(c, at[i])->line);
+        at[i] = k;
+        if ((st = double_of(c, k, &v[i])) != AM_OK) return st;
+    }
+    if (at[0] >= 0 && v[0] != 0) {
+        warn(c, n, "<FRegion> of PrimType %.9g not supported (amorph reads box regions, PrimType 0): ignored", v[0]);
+        return AM_OK;
+    }
+    int dof = 0;
+    if (at[12] >= 0) {
+        if (!(v[12] >= 0 && v[12] <= 63 && v[12] == floor(v[12])))
+            return verr(c, at[12], AM_ERR_RANGE, "<DofFixed> %.9g is not a set of the six degrees of freedom (0..63)", v[12]);
+        dof = (int)v[12];
+    } else if (at[13] >= 0) dof = v[13] != 0 ? 63 : 0;
+    else if (fixed_list) dof = 63;
+    if (dof != 0 && dof != 63)
+        warn(c, at[12], "<DofFixed> %d fixes some degrees of freedom only: amorph clamps all six of the region's voxels", dof);
+    for (int i = 17; i < NT; i++)
+        if (at[i] >= 0 && v[i] != 0)
+            warn(c, at[i], "<%s> %.9g not supported (amorph's boundary conditions are clamps and forces): ignored", tags[i], v[i]);
+    for (int i = 14; i < 17; i++)
+        if (!(fabs(v[i]) < 1e30)) return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g is not a finite force", tags[i], v[i]);
+    /* the box, corners in either order */
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; a++) {
+        double p = v[1 + a], d = v[4 + a];
+        if (!(fabs(p) < 1e30) || !(fabs(d) < 1e30))
+            return verr(c, n, AM_ERR_RANGE, "<FRegion>: its box must be finite numbers");
+        lo[a] = d < 0 ? p + d : p;
+        hi[a] = d < 0 ? p : p + d;
+    }
+    am_layers* ly = &c->info->layers;
+    const int nx = lat->nx, ny = lat->ny, nz = lat->nz;
+    long count = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int cell = 0; cell < nx * ny * nz; cell++) {
+            if (!lat->cell[cell]) continue;
+            const double ctr[3] = {(cell % nx + 0.5) / nx, (cell / nx % ny + 0.5) / ny, (cell / (nx * ny) + 0.5) / nz};
+            if (!(ctr[0] >= lo[0] && ctr[0] <= hi[0] && ctr[1] >= lo[1] && ctr[1] <= hi[1] && ctr[2] >= lo[2] && ctr[2] <= hi[2]))
+                continue;
+            if (pass == 0) {
+                count++;
+                continue;
+            }
+            if (dof) ly->fixed[cell] = 1;
+            for (int k = 0; k < 3; k++) ly->force[k][cell] += (am_param)(v[14 + k] / (double)count);
+        }
+    if (count == 0) warn(c, n, "<FRegion> holds no voxel (no filled cell's centre lies in its box): no effect");
+    ly->has_bc = 1;
+    return AM_OK;
+}
+
+/* <Boundary_Conditions>, <Fixed_Regions>, <Forced_Regions>: a count, then the regions */
+static am_status read_regions(vctx* c, int n, const char* count_tag, const am_lattice* lat, int fixed_list)
 {
     const char* const tags[] = {count_tag};
     int at[MAX_TAGS];
@@ -561,13 +820,12 @@ static am_status read_regions(vctx* c, int n, const char* count_tag)
     am_status st = children(c, n, tags, 1, at, "FRegion");
     if (st != AM_OK) return st;
     if (at[0] >= 0 && (st = int_of(c, at[0], 0, 1000000000L, &v)) != AM_OK) return st;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next)
-        if (am_xml_is(c->d, k, "FRegion"))
-            warn(c, k, "unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material instead)");
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k))
+        if (is(c, k, "FRegion") && (st = read_region(c, k, lat, fixed_list)) != AM_OK) return st;
     return AM_OK;
 }
 
-static am_status read_environment(vctx* c, int n)
+static am_status read_environment(vctx* c, int n, const am_lattice* lat)
 {
     static const char* const tags[] = {"Boundary_Conditions", "Fixed_Regions", "Forced_Regions", "Gravity", "Thermal"};
     static const char* const grav[] = {"GravEnabled", "GravAcc", "FloorEnabled"};
@@ -576,9 +834,9 @@ static am_status read_environment(vctx* c, int n)
     am_status st;
     am_env* env = &c->info->env;
     if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
-    if (at[0] >= 0 && (st = read_regions(c, at[0], "NumBCs")) != AM_OK) return st;
-    if (at[1] >= 0 && (st = read_regions(c, at[1], "NumFixed")) != AM_OK) return st;
-    if (at[2] >= 0 && (st = read_regions(c, at[2], "NumForced")) != AM_OK) return st;
+    if (at[0] >= 0 && (st = read_regions(c, at[0], "NumBCs", lat, 0)) != AM_OK) return st;
+    if (at[1] >= 0 && (st = read_regions(c, at[1], "NumFixed", lat, 1)) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_regions(c, at[2], "NumForced", lat, 0)) != AM_OK) return st;
     if (at[3] >= 0) {
         /* VoxCAD's reader: inside <Gravity> a missing switch is off, a missing GravAcc -9.81 */
         int on = 0;
@@ -633,9 +891,9 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     am_status st;
     long v;
     am_env* env = &c->info->env;
-    int a = am_xml_attr_find(c->d, n, "Version");
+    int a = attr_find(c, n, "Version");
     char ver[VXA_VALUE_MAX] = "";
-    if (a >= 0 && am_xml_attr_text(c->d, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
+    if (a >= 0 && attr_text(c, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
     if (strcmp(ver, "1") != 0)
         return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%s\">: this build reads version 1", val(ver, qv));
     if ((st = children(c, n, tags, 7, at, "Material")) != AM_OK) return st;
@@ -656,11 +914,11 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
-    for (int k = c->d->node[n].child; k >= 0; k = c->d->node[k].next) {
-        if (!am_xml_is(c->d, k, "Material")) continue;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (!is(c, k, "Material")) continue;
         char idv[VXA_VALUE_MAX] = "";
-        int ia = am_xml_attr_find(c->d, k, "ID");
-        if (ia >= 0 && am_xml_attr_text(c->d, ia, idv, sizeof idv, NULL) != AM_OK) idv[0] = 0;
+        int ia = attr_find(c, k, "ID");
+        if (ia >= 0 && attr_text(c, ia, idv, sizeof idv, NULL) != AM_OK) idv[0] = 0;
         char* end = NULL;
         long id = idv[0] ? strtol(idv, &end, 10) : 0;
         if (!idv[0] || *end || id < 1 || id > lat->palette.count)
@@ -684,6 +942,45 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
 
 /* ---- reading ----------------------------------------------------------------------------- */
 
+/* the warning lines in line order (the sections are read in a fixed order, not the file's): a
+ * stable sort on (file, line), the base file's lines before a VXD's (names[0], names[1]) */
+static void sort_warnings(am_vxa_info* info, const char* const names[2])
+{
+    enum { MAXL = AM_VXA_WARN_TEXT / 16 };
+    char copy[AM_VXA_WARN_TEXT];
+    long start[MAXL], line_of[MAXL];
+    int file_of[MAXL];
+    int n = 0;
+    size_t total = strlen(info->warning);
+    memcpy(copy, info->warning, total + 1);
+    for (size_t p = 0; p < total && n < MAXL;) {
+        const char* e = strchr(copy + p, '\n');
+        size_t len = e ? (size_t)(e - (copy + p)) + 1 : total - p;
+        const size_t l1 = names[1] ? strlen(names[1]) : 0;
+        int f = names[1] && !strncmp(copy + p, names[1], l1) && copy[p + l1] == ':' ? 1 : 0;
+        const char* colon = copy + p + strlen(names[f]);
+        long line = *colon == ':' ? strtol(colon + 1, NULL, 10) : 0;
+        start[n] = (long)p;
+        file_of[n] = f;
+        line_of[n++] = line;
+        p += len;
+    }
+    long w = 0;
+    for (int done = 0; done < n; done++) {
+        int best = -1;
+        for (int i = 0; i < n; i++)
+            if (start[i] >= 0 && (best < 0 || file_of[i] < file_of[best] || (file_of[i] == file_of[best] && line_of[i] < line_of[best])))
+                best = i;
+        const char* l = copy + start[best];
+        const char* e = strchr(l, '\n');
+        size_t len = e ? (size_t)(e - l) + 1 : strlen(l);
+        memcpy(info->warning + w, l, len);
+        w += (long)len;
+        start[best] = -1;
+    }
+    info->warning[w] = 0;
+}
+
 int am_vxa_sniff(const char* text)
 {
     if (!text) return 0;
@@ -696,8 +993,48 @@ int am_vxa_sniff(const char* text)
 am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz)
 {
-    char qv[AM_QUOTE_BUF];
-    if (!lat || !info || !work || !text) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
+    return am_vxa_parse_vxd(lat, info, work, text, fname, NULL, NULL, NULL, err, errsz);
+}
+
+/* the VXD's elements: each with replace="VXA...." becomes a replacement */
+static am_status read_vxd(vctx* c)
+{
+    char qv[AM_QUOTE_BUF], qn[AM_QUOTE_BUF];
+    const int root = VXD_BIAS;
+    if (!is(c, root, "VXD"))
+        return verr(c, root, AM_ERR_PARSE, "not a VXD file: the root element is <%s>, expected <VXD>", tag(c, root, qv));
+    for (int k = first_child(c, root); k >= 0; k = next_sib(c, k)) {
+        char p[VXD_PATH_MAX + 1];
+        int a = attr_find(c, k, "replace");
+        if (a < 0) {
+            warn(c, k, "unsupported tag <%s> ignored (amorph reads the elements of a VXD that replace=\"VXA...\" a part of the base)",
+                 tag(c, k, qn));
+            continue;
+        }
+        long len = 0;
+        if (attr_text(c, a, p, sizeof p, &len) != AM_OK || len >= VXD_PATH_MAX || strncmp(p, "VXA.", 4) != 0 || strchr(p, ' ')) {
+            warn(c, k, "<%s replace=\"%s\">: not a path of a VXA file (VXA.A.B, under %d bytes): ignored", tag(c, k, qn), val(p, qv),
+                 VXD_PATH_MAX);
+            continue;
+        }
+        for (int r = 0; r < c->nrep; r++)
+            if (!strcmp(c->rep_path[r], p))
+                return verr(c, k, AM_ERR_PARSE, "replace=\"%s\" given twice (first on line %d)", val(p, qv), (int)N(c, c->rep_node[r])->line);
+        if (c->nrep == VXD_MAX_REPLACE)
+            return verr(c, k, AM_ERR_CAPACITY, "more than %d replaced elements in a VXD", VXD_MAX_REPLACE);
+        c->rep_node[c->nrep] = k;
+        memcpy(c->rep_path[c->nrep], p, (size_t)len + 1);
+        c->rep_used[c->nrep++] = 0;
+    }
+    return AM_OK;
+}
+
+am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
+                           am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz)
+{
+    char qv[AM_QUOTE_BUF], qn[AM_QUOTE_BUF];
+    if (!lat || !info || !work || !text || (vxd_text && !vxd_work))
+        return am_fail(err, errsz, AM_ERR_ARG, "vxa: no lattice, info, workspace or text");
     memset(lat, 0, sizeof *lat);
     memset(info, 0, sizeof *info);
     lat->voxel_size = AM_P(0.001); /* VoxCAD's default Lattice_Dim */
@@ -706,9 +1043,20 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
     am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
     if (st != AM_OK) return st;
-    vctx c = {work, info, 0, err, errsz};
+    vctx c;
+    memset(&c, 0, sizeof c);
+    c.d = work, c.info = info, c.err = err, c.errsz = errsz;
+    if (am_xml_is(work, 0, "VXD"))
+        return verr(&c, 0, AM_ERR_PARSE, "a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not "
+                                          "read alone: give its base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a "
+                                          "folder holding base.vxa and robot.vxd)");
     if (!am_xml_is(work, 0, "VXA"))
         return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%s>, expected <VXA>", tag(&c, 0, qv));
+    if (vxd_text) {
+        if ((st = am_xml_parse(vxd_work, vxd_text, (long)strlen(vxd_text), vxd_fname, err, errsz)) != AM_OK) return st;
+        c.d2 = vxd_work;
+        if ((st = read_vxd(&c)) != AM_OK) return st;
+    }
     int a = am_xml_attr_find(work, 0, "Version");
     if (a >= 0) {
         char v[VXA_VALUE_MAX];
@@ -722,8 +1070,14 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
     if (at[0] < 0) return verr(&c, 0, AM_ERR_PARSE, "<VXA> has no <VXC> element (the robot)");
     if ((st = read_vxc(&c, at[0], lat)) != AM_OK) return st;
     if (at[1] >= 0 && (st = read_simulator(&c, at[1], lat)) != AM_OK) return st;
-    if (at[2] >= 0 && (st = read_environment(&c, at[2])) != AM_OK) return st;
+    if (at[2] >= 0 && (st = read_environment(&c, at[2], lat)) != AM_OK) return st;
     if (at[3] >= 0 && (st = read_amorph(&c, at[3], lat)) != AM_OK) return st;
+    for (int r = 0; r < c.nrep; r++)
+        if (!c.rep_used[r])
+            warn(&c, c.rep_node[r], "<%s replace=\"%s\">: amorph reads no element at that path: ignored", tag(&c, c.rep_node[r], qn),
+                 val(c.rep_path[r], qv));
+    const char* const names[2] = {fname ? fname : "", vxd_text ? (vxd_fname ? vxd_fname : "") : NULL};
+    sort_warnings(info, names);
     return AM_OK;
 }
 
@@ -819,6 +1173,42 @@ static am_status check_input(const am_lattice* lat, const am_env* env, double dt
 am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz)
 {
+    return am_vxa_format_layers(lat, NULL, env, dt, buf, cap, len, err, errsz);
+}
+
+/* the voxels with a boundary condition: one box <FRegion> each, its own cell */
+static am_status put_regions(wbuf* w, const am_lattice* lat, const am_layers* ly, char* err, int errsz)
+{
+    const int nx = lat->nx, ny = lat->ny, nz = lat->nz;
+    char a[40], b[40];
+    int count = 0;
+    for (int c = 0; c < nx * ny * nz; c++)
+        count += lat->cell[c] && (ly->fixed[c] || ly->force[0][c] != AM_P(0) || ly->force[1][c] != AM_P(0) || ly->force[2][c] != AM_P(0));
+    if (count == 0) return AM_OK;
+    if (count > AM_VXA_MAX_BC_VOXELS)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "vxa format: %d voxels with boundary conditions, more than the %d it writes", count,
+                       AM_VXA_MAX_BC_VOXELS);
+    put(w, "    <Boundary_Conditions>\n      <NumBCs>%d</NumBCs>\n", count);
+    for (int c = 0; c < nx * ny * nz; c++) {
+        if (!lat->cell[c] || !(ly->fixed[c] || ly->force[0][c] != AM_P(0) || ly->force[1][c] != AM_P(0) || ly->force[2][c] != AM_P(0)))
+            continue;
+        const int idx[3] = {c % nx, c / nx % ny, c / (nx * ny)}, n[3] = {nx, ny, nz};
+        static const char* const ax[3] = {"X", "Y", "Z"};
+        put(w, "      <FRegion>\n        <PrimType>0</PrimType>\n");
+        for (int k = 0; k < 3; k++)
+            put(w, "        <%s>%s</%s>\n        <d%s>%s</d%s>\n", ax[k], num(a, (double)idx[k] / n[k], 0), ax[k], ax[k],
+                num(b, 1.0 / n[k], 0), ax[k]);
+        put(w, "        <DofFixed>%d</DofFixed>\n", ly->fixed[c] ? 63 : 0);
+        for (int k = 0; k < 3; k++) put(w, "        <Force%s>%s</Force%s>\n", ax[k], num(a, (double)ly->force[k][c], 1), ax[k]);
+        put(w, "      </FRegion>\n");
+    }
+    put(w, "    </Boundary_Conditions>\n");
+    return AM_OK;
+}
+
+am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
+                               long* len, char* err, int errsz)
+{
     if (len) *len = 0;
     if (!lat || !env || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: no lattice, environment or buffer");
     buf[0] = 0;
@@ -844,7 +1234,12 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
             "      <CollisionHorizon>3</CollisionHorizon>\n    </Collisions>\n  </Simulator>\n",
         env->collisions ? 1 : 0);
 
-    put(&w, "  <Environment>\n    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
+    put(&w, "  <Environment>\n");
+    if (layers && layers->has_bc && (st = put_regions(&w, lat, layers, err, errsz)) != AM_OK) {
+        buf[0] = 0;
+        return st;
+    }
+    put(&w, "    <Gravity>\n      <GravEnabled>%d</GravEnabled>\n", env->gravity > AM_P(0) ? 1 : 0);
     put(&w, "      <GravAcc>%s</GravAcc>\n      <FloorEnabled>%d</FloorEnabled>\n    </Gravity>\n",
         env->gravity > AM_P(0) ? num(a, -(double)env->gravity, 1) : "-9.81", env->floor ? 1 : 0);
     /* VoxCAD's temperature: TempBase + TempAmplitude sin(2 pi t / TempPeriod + phase); expansion
@@ -896,7 +1291,18 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
         w.buf[w.len] = 0;
         put(&w, "]]></Layer>\n");
     }
-    put(&w, "      </Data>\n    </Structure>\n  </VXC>\n");
+    put(&w, "      </Data>\n");
+    if (layers && layers->has_phase) {
+        /* evosoro's form: one CDATA list of reals per layer, in periods */
+        put(&w, "      <PhaseOffset>\n");
+        for (int z = 0; z < lat->nz && !w.full; z++) {
+            put(&w, "        <Layer><![CDATA[");
+            for (long i = 0; i < per; i++) put(&w, "%s%s", i ? ", " : "", num(a, (double)layers->phase[per * z + i], 1));
+            put(&w, "]]></Layer>\n");
+        }
+        put(&w, "      </PhaseOffset>\n");
+    }
+    put(&w, "    </Structure>\n  </VXC>\n");
 
     put(&w, "  <Amorph Version=\"1\">\n    <CTEMode>%s</CTEMode>\n    <PeriodSteps>%d</PeriodSteps>\n",
         vol ? "volumetric" : "linear", env->period_steps);

@@ -111,7 +111,43 @@ am_real am_sim_scale(int cte_mode, am_real cte, am_real T)
     return cte_mode == AM_CTE_LINEAR ? arg : am_cbrt(arg);
 }
 
+void am_layers_clear(am_layers* l)
+{
+    l->has_phase = 0;
+    l->has_bc = 0;
+}
+
 am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
+{
+    return am_model_build_layers(m, lat, env, NULL, err, errsz);
+}
+
+/* the layers' values of the filled cells: finite phases and forces; the board takes none */
+static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* any_force, char* err, int errsz)
+{
+    const int ncell = lat->nx * lat->ny * lat->nz;
+    *any_force = 0;
+    for (int c = 0; c < ncell; c++) {
+        if (!lat->cell[c]) continue;
+        if (ly->has_phase && !am_param_finite(ly->phase[c]))
+            return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its phase must be a finite number of periods", c);
+        if (!ly->has_bc) continue;
+        for (int k = 0; k < 3; k++) {
+            if (!am_param_finite(ly->force[k][c]))
+                return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its external force must be finite", c);
+            *any_force |= ly->force[k][c] != AM_P(0);
+        }
+    }
+#if defined(AM_COMPACT)
+    if (ly->has_phase || *any_force)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: the board profile has no room for them (desktop profile only)",
+                       ly->has_phase ? "a phase per voxel" : "external forces per voxel");
+#endif
+    return AM_OK;
+}
+
+am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
+                                int errsz)
 {
     am_status st;
     if (lat->nx < 1 || lat->ny < 1 || lat->nz < 1 || lat->nx > AM_MAX_DIM || lat->ny > AM_MAX_DIM || lat->nz > AM_MAX_DIM)
@@ -124,6 +160,8 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     for (int k = 0; k < lat->palette.count; k++)
         if ((st = check_material(&lat->palette.mat[k], k, err, errsz)) != AM_OK) return st;
 
+    int any_force = 0;
+    if (layers && (st = check_layers(lat, layers, &any_force, err, errsz)) != AM_OK) return st;
     const int nx = lat->nx, ny = lat->ny, nz = lat->nz, ncell = nx * ny * nz;
     /* units (docs/fixed.md): SI in the float and double builds; in the fixed-point build the voxel
      * edge, the mass of the densest voxel of the palette and the time in which the stiffest
@@ -196,7 +234,7 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
         am_real mass = AM_MUL(PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
         am_real inertia = am_sim_inertia(mass, L);
         m->mass[vc] = mass;
-        m->fixed[i] = (uint8_t)(mt->fixed != 0);
+        m->fixed[i] = (uint8_t)(mt->fixed != 0 || (layers && layers->has_bc && layers->fixed[c]));
         m->inv_mass[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
         m->inv_inertia[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
         am_real EL = AM_MUL(PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
@@ -292,6 +330,21 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     }
     m->coll_range = AM_MUL(AM_MUL(AM_R(1.25), m->max_scale), L);
 
+    /* the layers: a phase per voxel (and then a rest length per link), forces per voxel */
+    m->voxel_phase = layers != NULL && layers->has_phase;
+    m->any_force = any_force;
+#if !defined(AM_COMPACT)
+    for (int i = 0; i < nv; i++) {
+        m->vphase[i] = AM_R(0);
+        if (m->voxel_phase) m->vphase[i] = PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
+        for (int k = 0; k < 3; k++) {
+            m->force[k][i] = AM_R(0);
+            if (any_force) m->force[k][i] = PV(layers->force[k][m->cell[i]], am_unit(m, AM_DIM_FORCE));
+        }
+    }
+    for (int l = 0; l < nl; l++) m->lself[l] = (am_pair)l;
+#endif
+
     /* divergence bound: ten times the fastest sound speed of the palette */
     am_real c2 = AM_R(0);
 #if defined(AM_REAL_FIXED_POINT)
@@ -362,6 +415,9 @@ void am_state_reset(const am_model* m, am_state* s)
             s->v[c][i] = s->w[c][i] = AM_R(0);
 #endif
             s->fext[c][i] = s->mext[c][i] = s->fc[c][i] = AM_R(0);
+#if !defined(AM_COMPACT)
+            if (m->any_force) s->fext[c][i] = m->force[c][i]; /* the boundary conditions' forces */
+#endif
             s->xref[c][i] = AM_R(0);
         }
         s->q[0][i] = AM_R(1);

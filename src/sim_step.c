@@ -75,9 +75,62 @@ static void voxel_scales(int nv, const am_matid* restrict mat, const am_real* re
     for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
 }
 
+#if !defined(AM_COMPACT)
+/* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
+ * material's argument plus its own phase, then each link's rest length from its two voxels. With
+ * every voxel phase 0 these are the per-material path's values, operation for operation. */
+static void voxel_actuation(const am_model* m, am_state* s)
+{
+    const am_env* e = &m->env;
+    int changed = !s->scales_valid;
+    am_real arg0 = AM_R(0);
+    if (s->actuate) {
+        long ph = (s->step - s->actuation_step0) % e->period_steps; /* exact phase in steps */
+#if defined(AM_REAL_FIXED_POINT)
+        arg0 = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)e->period_steps * AM_FIX_ONE);
+#else
+        arg0 = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps));
+#endif
+    }
+    if (s->actuate) {
+        for (int i = 0; i < m->nv; i++) {
+            const int k = m->mat[i];
+            am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin((arg0 + m->mat_phase[k]) + m->vphase[i]));
+            am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+            changed |= sc != s->s[i];
+            s->s[i] = sc;
+        }
+    } else {
+        /* held at temp_base (relaxation): every voxel of a material has its material's scale, found
+         * once per material, and nothing changes from step to step */
+        for (int k = 0; k < m->palette.count; k++)
+            s->mat_scale[k] = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], m->temp_base);
+        for (int i = 0; i < m->nv; i++) {
+            const am_real sc = s->mat_scale[m->mat[i]];
+            changed |= sc != s->s[i];
+            s->s[i] = sc;
+        }
+    }
+    if (!changed) return;
+    s->scales_valid = 1;
+    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    for (int l = 0; l < m->nl; l++) {
+        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
+        s->pair_rest[l] = r;
+        s->pair_inv_rest[l] = AM_DIV(AM_R(1), r);
+    }
+}
+#endif
+
 /* per-material temperature and linear scale, voxel scales, rest lengths per material pair */
 static void actuation(const am_model* m, am_state* s)
 {
+#if !defined(AM_COMPACT)
+    if (m->voxel_phase) {
+        voxel_actuation(m, s);
+        return;
+    }
+#endif
     const am_env* e = &m->env;
     int changed = !s->scales_valid;
     for (int k = 0; k < m->palette.count; k++) {
@@ -306,6 +359,12 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
     am_real* strain = s->strain;
     const int backward = 0;
 #endif
+    /* where each link finds its rest length: its pair of materials', or its own (voxel_phase) */
+#if defined(AM_COMPACT)
+    const am_pair* rest_at = m->lpair;
+#else
+    const am_pair* rest_at = m->voxel_phase ? m->lself : m->lpair;
+#endif
     const int chunks = (l1 - l0 + LINK_CHUNK - 1) / LINK_CHUNK;
     int bad = 0;
     for (int k = 0; k < chunks; k++) {
@@ -316,10 +375,10 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
         for (int l = c0; l < c1; l++) was_large |= s->large[l];
         if (!was_large)
             r = small_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
-                           s->damp_t, s->damp_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
+                           s->damp_t, s->damp_r, rest_at, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
         if (r & 2)
             r = full_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
-                          s->damp_t, s->damp_r, m->lpair, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
+                          s->damp_t, s->damp_r, rest_at, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
                           strain, o);
         bad |= r & 1;
 #if defined(AM_COMPACT)

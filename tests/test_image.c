@@ -1,5 +1,5 @@
 /* Tests of the picture layer: CRC-32 and Adler-32 against known vectors and bitwise references,
- * the PNG encoder (decoded here by an independent inflate, tests/png_read.h), the rasteriser on
+ * the PNG encoder (decoded here by tests/png_read.h with the library inflater), the rasteriser on
  * single triangles and cubes, and a whole filmstrip from the render command's writer.
  *
  * The program doubles as the PNG inspector of the shell tests (tests/cli_render.sh,

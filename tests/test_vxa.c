@@ -341,27 +341,28 @@ static void test_vxa_warnings(void)
     const char* t = "<VXA Version=\"1.1\">\n"
                     "<GPU><HeapSize>0.5</HeapSize></GPU>\n"
                     "<Simulator><Integration><Integrator>1</Integrator><DtFrac>1.5</DtFrac></Integration></Simulator>\n"
-                    "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X></FRegion></Boundary_Conditions>"
+                    "<Environment><Boundary_Conditions><NumBCs>1</NumBCs>\n<FRegion><X>0</X><Wobble/></FRegion></Boundary_Conditions>"
                     "</Environment>\n"
                     "<VXC><Lattice><X_Dim_Adj>0.5</X_Dim_Adj></Lattice><Palette><Material ID=\"7\">\n"
                     "<Mechanical><MatModel>1</MatModel><IsConductive>1</IsConductive></Mechanical></Material></Palette>\n"
                     "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
-                    "<Data><Layer>1</Layer></Data><PhaseOffset/></Structure></VXC>\n"
+                    "<Data><Layer>1</Layer></Data><Stiffness/></Structure></VXC>\n"
                     "</VXA>\n";
     CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "w.vxa", err, sizeof err) == AM_OK, "%s", err);
+    /* in line order, though <VXC> is read first */
     const char* want =
         "w.vxa:2: warning: unsupported tag <GPU> ignored\n"
+        "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
+        "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
+        "used (amorph sim --dt-frac overrides)\n"
+        "w.vxa:5: warning: unsupported tag <Wobble> ignored\n"
+        "w.vxa:5: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"
         "w.vxa:6: warning: <X_Dim_Adj> 0.5 not supported (amorph lattices are cubic cells on a rectangular grid); 1 used\n"
         "w.vxa:6: warning: <Material ID=\"7\"> is material 1 of the palette: materials are numbered by their order, as in VoxCAD\n"
         "w.vxa:7: warning: unsupported tag <IsConductive> ignored\n"
         "w.vxa:7: warning: <MatModel> 1 (non-linear) not supported: material 1 is linear elastic here\n"
-        "w.vxa:8: warning: unsupported tag <PhaseOffset> ignored\n"
-        "w.vxa:3: warning: <Integrator> 1 not supported: amorph integrates with semi-implicit Euler\n"
-        "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
-        "used (amorph sim --dt-frac overrides)\n"
-        "w.vxa:5: warning: unsupported tag <FRegion> ignored (boundary condition regions: give the voxels a fixed material "
-        "instead)\n";
-    CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 9, "%d warnings:\n%s", info_a.warnings, info_a.warning);
+        "w.vxa:8: warning: unsupported tag <Stiffness> ignored\n";
+    CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 10, "%d warnings:\n%s", info_a.warnings, info_a.warning);
     CHECK(info_a.env.dt_frac == am_default_env().dt_frac, "dt_frac kept");
     /* many warnings: all counted, the text stays within its buffer */
     long n = sprintf(big, "<VXA>");
@@ -417,12 +418,27 @@ static void test_vxa_errors(void)
     /* XML errors come through with their line */
     expect_vxa(vxa(0, 0, 0, "<Layer>11</Lay>"), AM_ERR_PARSE, "t.vxa:8: </Lay> does not close <Layer> (opened on line 8)");
     /* structure */
-    expect_vxa(vxa(0, 0, "<Structure Compression=\"ZLIB\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>",
-                   "<Layer>eJxjYCADMAIxE/HKAQDpAAQ=</Layer>"),
-               AM_ERR_PARSE,
-               "t.vxa:7: Compression=\"ZLIB\" is not supported (no zlib inflater here): save the file with ASCII_READABLE or BASE64");
+    /* ZLIB and QT_ZLIB layers (base64 of a zlib stream; QT_ZLIB with a 4-byte length first) */
+#define ZH(comp) "<Structure Compression=\"" comp "\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels><Data>"
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer><![CDATA[eNpjZAQAAAUAAw==]]></Layer>"), AM_OK, "");
+    CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 1 && lat_a.nx == 2, "ZLIB layer cells %d %d", lat_a.cell[0], lat_a.cell[1]);
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAAAAnjaY2QEAAAFAAM=</Layer>"), AM_OK, "");
+    CHECK(lat_a.cell[0] == 1 && lat_a.cell[1] == 1, "QT_ZLIB layer cells");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZAQAAAUAAg==</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: bad Adler-32: the stream says 00050002, the data gives 00050003");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eJ1jZAQAAAUAAw==</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: bad zlib header: check bits 0x789d not a multiple of 31");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZGQEAAAJAAQ=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0 inflates to more than 2 cells (X_Voxels x Y_Voxels)");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eNpjZAQAAAU</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: the zlib stream ends before its Adler-32 checksum");
+    expect_vxa(vxa(0, 0, ZH("ZLIB"), "<Layer>eN*</Layer>"), AM_ERR_PARSE, "t.vxa:8: layer 0: bad base64 data");
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAAAA3jaY2QEAAAFAAM=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0 inflates to 2 bytes, its QT_ZLIB header says 3");
+    expect_vxa(vxa(0, 0, ZH("QT_ZLIB"), "<Layer>AAA=</Layer>"), AM_ERR_PARSE,
+               "t.vxa:8: layer 0: 2 bytes, too short for QT_ZLIB data (a length and a zlib stream)");
     expect_vxa(vxa(0, 0, "<Structure Compression=\"RLE\"><Data>", 0), AM_ERR_PARSE,
-               "t.vxa:7: Compression=\"RLE\" is not supported (ASCII_READABLE or BASE64)");
+               "t.vxa:7: Compression=\"RLE\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)");
     expect_vxa(vxa(0, 0, "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Z_Voxels>1</Z_Voxels><Data>", 0),
                AM_ERR_PARSE, "t.vxa:7: <Structure> has no <Y_Voxels>");
     expect_vxa(vxa(0, 0, SH("2", "1", "x"), 0), AM_ERR_PARSE, "t.vxa:7: <Z_Voxels>: 'x' is not a whole number");
@@ -636,6 +652,272 @@ static void test_robot_settings(void)
               "cte of material %d follows its actuation", m);
 }
 
+/* ---- per-cell layers: evosoro's PhaseOffset, VoxCAD's boundary conditions --------------- */
+
+static char ftext[1 << 16];
+static am_model pm1, pm2;
+static am_state ps1, ps2;
+static am_layers lay;
+
+static int read_data(const char* path)
+{
+    char err[AM_ERR_MAX];
+    long len = 0;
+    am_status st = am_port_read_file(path, ftext, sizeof ftext, &len, err, sizeof err);
+    CHECK(st == AM_OK, "%s", err);
+    return st == AM_OK;
+}
+
+/* the voxel of cell (x, y, z), -1 if none */
+static int voxel_of(const am_model* m, int x, int y, int z)
+{
+    return m->cell_voxel[x + m->nx * (y + m->ny * z)];
+}
+
+static void test_vxa_phase_offset(void)
+{
+#if !defined(AM_COMPACT)
+    char err[AM_ERR_MAX] = "";
+    if (!read_data("tests/data/evosoro_phase.vxa")) return;
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, ftext, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    const am_layers* ly = &info_a.layers;
+    CHECK(ly->has_phase && !ly->has_bc, "layers %d %d", ly->has_phase, ly->has_bc);
+    CHECK(ly->phase[1] == AM_P(0.25) && ly->phase[3 + 4 * (2 + 3 * 1)] == AM_P(0.82) && ly->phase[0] == AM_P(0),
+          "phases %g %g", (double)ly->phase[1], (double)ly->phase[3 + 4 * (2 + 3 * 1)]);
+    CHECK(strstr(info_a.warning, "e.vxa:83: warning: unsupported tag <Stiffness> ignored\n") != NULL, "%s", info_a.warning);
+    /* the voxels actuate with their own phases: after a quarter period the columns differ */
+    lay = info_a.layers;
+    am_env env = info_a.env;
+    env.period_steps = 40;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(pm1.voxel_phase == 1, "voxel_phase");
+    am_state_reset(&pm1, &ps1);
+    ps1.actuate = 1;
+    am_steps(&pm1, &ps1, 10);
+    int v0 = voxel_of(&pm1, 0, 0, 0), v1 = voxel_of(&pm1, 1, 0, 0), v4 = voxel_of(&pm1, 0, 1, 0);
+    CHECK(ps1.s[v0] != ps1.s[v1], "columns 0 and 1 actuate alike: %g %g", AM_TO_DOUBLE(ps1.s[v0]), AM_TO_DOUBLE(ps1.s[v1]));
+    /* phases 0.25 apart, the last actuation at step 9 of 40: column 0 near sin(pi/2) (the largest
+     * scale), column 1 a quarter period later, near sin(pi) */
+    const double s0 = AM_TO_DOUBLE(ps1.s[v0]), s1 = AM_TO_DOUBLE(ps1.s[v1]);
+    CHECK(s0 > s1 && s1 > 1 && s0 - 1 > 4 * (s1 - 1), "scales %g %g", s0, s1);
+    CHECK(ps1.s[v4] != ps1.s[v0], "y = 1 has its own phase");
+    /* every phase 0 simulates exactly as the per-material path does (same state, bit for bit) */
+    lay.has_phase = 0;
+    CHECK(am_model_build_layers(&pm2, &lat_a, &env, &lay, err, sizeof err) == AM_OK && pm2.voxel_phase == 0, "%s", err);
+    memset(lay.phase, 0, sizeof lay.phase);
+    lay.has_phase = 1;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK && pm1.voxel_phase == 1, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    am_state_reset(&pm2, &ps2);
+    ps1.actuate = ps2.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    am_steps(&pm2, &ps2, 300);
+    CHECK(am_state_hash(&pm1, &ps1) == am_state_hash(&pm2, &ps2) && !ps1.diverged, "zero phases differ from none");
+    /* and the file's phases move it otherwise */
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &info_a.layers, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    ps1.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    CHECK(am_state_hash(&pm1, &ps1) != am_state_hash(&pm2, &ps2) && !ps1.diverged, "the phases changed nothing");
+
+    /* round trip: the phases come back bit for bit, and a second write is the same text */
+    long len = 0, len2 = 0;
+    CHECK(am_vxa_format_layers(&lat_a, &info_a.layers, &info_a.env, 2.5e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<PhaseOffset>") && strstr(text, "0.25, 0.5, 0.75, 0.01, 0.26"), "written phases");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "p.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_b.layers.has_phase && am_lattice_equal(&lat_a, &lat_b), "phases back");
+    int same = 1;
+    for (int c = 0; c < 24; c++) same &= info_b.layers.phase[c] == info_a.layers.phase[c];
+    CHECK(same, "phases differ after a round trip");
+    CHECK(am_vxa_format_layers(&lat_b, &info_b.layers, &info_b.env, 2.5e-5, text2, sizeof text2, &len2, err, sizeof err) == AM_OK &&
+              len == len2 && !strcmp(text, text2),
+          "second write differs");
+#endif
+    /* malformed layers: one line each */
+#define PH(layers) "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>2</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>" \
+                   "<Data><Layer>11</Layer></Data><PhaseOffset>" layers "</PhaseOffset>"
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>0.5, 0.25, </Layer>"));
+    expect_vxa(big, AM_OK, "");
+    CHECK(info_a.layers.has_phase && info_a.layers.phase[0] == AM_P(0.5) && info_a.layers.phase[1] == AM_P(0.25), "two phases");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>0.5</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0 has 1 values, expected 2 (X_Voxels x Y_Voxels)");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>0.5, x1, 3</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0: value 1 'x1' is not a finite number");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("\n<Layer>1,2,3</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: <PhaseOffset> layer 0 has more than 2 values (X_Voxels x Y_Voxels)");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>1 2</Layer>\n<Layer>1 2</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:3: more <PhaseOffset> layers than Z_Voxels = 1");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH(""));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> has 0 <Layer> elements, Z_Voxels says 1");
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>1 inf</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> layer 0: value 1 'inf' is not a finite number");
+}
+
+/* VoxCAD's cantilever: the clamp and the tip load come from its regions; the tip deflects as the
+ * Euler-Bernoulli beam does. The beam's links are exact Euler-Bernoulli frame elements between
+ * voxel centres (docs/physics.md), so for a point load P at the tip centre the deflection is
+ * P l^3 / (3 E I) with l = 5 L from the clamped voxel's centre and E I = E L^4 / 12, 0.5 mm here
+ * (1% of l: small enough for linear theory, whose geometric error is of order (w / l)^2, 1e-4).
+ * The file's global damping gives the first bending mode a damping ratio of 0.3 and the run lasts
+ * 16 / (0.3 omega_1), leaving e^-16 of the initial swing: the 1% tolerance is the one of
+ * test_physics.c's cantilevers (float positions and the fixed-point force unit, 0.2% of this load). */
+static void test_vxa_cantilever(void)
+{
+    char err[AM_ERR_MAX] = "";
+    if (!read_data("tests/data/voxcad_cantilever.vxa")) return;
+    CHECK(am_vxa_parse(&lat_a, &info_a, &doc, ftext, "c.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_a.warnings == 0, "%s", info_a.warning);
+    const am_layers* ly = &info_a.layers;
+    CHECK(ly->has_bc && ly->fixed[0] && !ly->fixed[1] && !ly->fixed[5] && ly->force[2][5] == AM_P(-0.1) && ly->force[2][4] == AM_P(0) &&
+              ly->force[0][5] == AM_P(0),
+          "regions: fixed %d %d, force %g", ly->fixed[0], ly->fixed[5], (double)ly->force[2][5]);
+    const double L = 0.01, E = 1e7, rho = 1000, l = 5 * L, EI = E * L * L * L * L / 12, P = 0.1;
+    const double omega1 = 1.8751 * 1.8751 * sqrt(EI / (rho * L * L * l * l * l * l));
+    CHECK(am_model_build_layers(&pm1, &lat_a, &info_a.env, ly, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    const int root = voxel_of(&pm1, 0, 0, 0), tip = voxel_of(&pm1, 5, 0, 0);
+    CHECK(pm1.fixed[root] && !pm1.fixed[tip] && pm1.any_force, "model: clamp and load");
+    long steps = (long)ceil(16.0 / (0.3 * omega1 * am_to_si(&pm1, ps1.dt, AM_DIM_TIME)));
+    am_steps(&pm1, &ps1, steps);
+    const double w = -am_to_si(&pm1, ps1.x[2][tip], AM_DIM_LENGTH), want = P * l * l * l / (3 * EI);
+    printf("    cantilever: %ld steps, tip deflection %.6e m, Euler-Bernoulli %.6e m (error %.2e)\n", steps, w, want, w / want - 1);
+    CHECK(!ps1.diverged, "diverged");
+    NEAR_REL(w, want, 0.01);
+    CHECK(ps1.x[0][root] == AM_R(0) && ps1.x[2][root] == AM_R(0) && ps1.q[0][root] == AM_R(1), "the clamp moved");
+    /* without its regions the beam just sits (no gravity, no floor) */
+    lay = info_a.layers;
+    lay.has_bc = 0;
+    CHECK(am_model_build_layers(&pm2, &lat_a, &info_a.env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm2, &ps2);
+    am_steps(&pm2, &ps2, 2000);
+    CHECK(ps2.x[2][tip] == AM_R(0) && !pm2.fixed[root], "the beam moved without regions");
+#if !defined(AM_COMPACT)
+    /* round trip: each voxel with a condition is a region of its own cell */
+    long len = 0;
+    CHECK(am_vxa_format_layers(&lat_a, ly, &info_a.env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<NumBCs>2</NumBCs>") && strstr(text, "<DofFixed>63</DofFixed>") && strstr(text, "<ForceZ>-0.1</ForceZ>"),
+          "written regions");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "r.vxa", err, sizeof err) == AM_OK && info_b.warnings == 0, "%s %s", err,
+          info_b.warning);
+    int same = info_b.layers.has_bc;
+    for (int c = 0; c < 6; c++)
+        for (int k = 0; k < 3; k++) same &= info_b.layers.force[k][c] == ly->force[k][c] && info_b.layers.fixed[c] == ly->fixed[c];
+    CHECK(same, "regions differ after a round trip");
+#endif
+    /* what is not supported: a warning each, in line order; a bad DofFixed: an error */
+#define REG(body) "<Environment><Boundary_Conditions><NumBCs>1</NumBCs><FRegion>" body "</FRegion></Boundary_Conditions></Environment>"
+    expect_vxa(vxa(REG("<PrimType>2</PrimType>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> of PrimType 2 not supported (amorph reads box regions, PrimType 0): "
+                                  "ignored\n"), "%s", info_a.warning);
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><DofFixed>7</DofFixed><TorqueZ>2</TorqueZ>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <DofFixed> 7 fixes some degrees of freedom only: amorph clamps all six of the "
+                                  "region's voxels\nt.vxa:2: warning: <TorqueZ> 2 not supported (amorph's boundary conditions are "
+                                  "clamps and forces): ignored\n"), "%s", info_a.warning);
+    CHECK(info_a.layers.fixed[0] && info_a.layers.fixed[1], "clamped");
+    expect_vxa(vxa(REG("<X>0.6</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><ForceX>1</ForceX>"), 0, 0, 0), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"),
+          "%s", info_a.warning);
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><ForceZ>-3</ForceZ>"), 0, 0, 0), AM_OK, "");
+    CHECK(info_a.layers.force[2][0] == AM_P(-1.5) && info_a.layers.force[2][1] == AM_P(-1.5), "the force shared by two voxels");
+    expect_vxa(vxa(REG("<DofFixed>99</DofFixed>"), 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DofFixed> 99 is not a set of the six degrees of freedom (0..63)");
+    expect_vxa(vxa(REG("<ForceX>abc</ForceX>"), 0, 0, 0), AM_ERR_PARSE, "t.vxa:2: <ForceX>: 'abc' is not a finite number");
+    expect_vxa(vxa("<Environment><Fixed_Regions><NumFixed>1</NumFixed><FRegion><dX>0.5</dX><dY>1</dY><dZ>1</dZ></FRegion>"
+                   "</Fixed_Regions></Environment>", 0, 0, 0), AM_OK, "");
+    CHECK(info_a.layers.fixed[0] && !info_a.layers.fixed[1], "a region of <Fixed_Regions> is fixed");
+}
+
+/* voxcraft's VXD over a base VXA: replaced and added elements, warnings in order (base, then VXD),
+ * messages naming the VXD file, and a VXD alone refused with what to pass instead */
+static void test_vxa_vxd(void)
+{
+    static am_xml_doc vdoc;
+    static char btext[1 << 14];
+    char err[AM_ERR_MAX] = "";
+    long len = 0;
+    CHECK(am_port_read_file("tests/data/voxcraft/base.vxa", btext, sizeof btext, &len, err, sizeof err) == AM_OK, "%s", err);
+    if (!read_data("tests/data/voxcraft/robot.vxd")) return;
+    CHECK(am_vxa_parse_vxd(&lat_a, &info_a, &doc, btext, "base.vxa", &vdoc, ftext, "robot.vxd", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(lat_a.nx == 4 && lat_a.ny == 3 && lat_a.nz == 2 && lat_a.cell[1] == 2 && lat_a.cell[12] == 0 && lat_a.cell[13] == 1,
+          "the VXD's structure: %d x %d x %d", lat_a.nx, lat_a.ny, lat_a.nz);
+    CHECK(info_a.layers.has_phase && info_a.layers.phase[3] == AM_P(0.75), "the VXD's phases");
+    CHECK(info_a.env.temp_amplitude == AM_P(30) && lat_a.palette.count == 2 && !strcmp(lat_a.palette.mat[1].name, "Active"),
+          "the VXD's thermal, the base's palette");
+    const char* want = "base.vxa:5: warning: unsupported tag <GPU> ignored\n"
+                       "base.vxa:9: warning: unsupported tag <EnableExpansion> ignored\n"
+                       "robot.vxd:25: warning: unsupported tag <RecordHistory> ignored\n"
+                       "robot.vxd:28: warning: <Material replace=\"VXA.VXC.Palette.Material\">: amorph reads no element at that path: "
+                       "ignored\n"
+                       "robot.vxd:31: warning: unsupported tag <RawPrint> ignored (amorph reads the elements of a VXD that "
+                       "replace=\"VXA...\" a part of the base)\n";
+    CHECK(!strcmp(info_a.warning, want), "warnings:\n%s", info_a.warning);
+    /* the base alone: its own 1-voxel structure */
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, btext, "base.vxa", err, sizeof err) == AM_OK && am_lattice_count(&lat_b) == 1, "%s", err);
+    /* an element the base lacks is added; an error in the VXD names the VXD's line */
+    const char* v2 = "<VXD>\n<Collisions replace=\"VXA.Simulator.Collisions\"><SelfColEnabled>0</SelfColEnabled></Collisions>\n"
+                     "<Amorph replace=\"VXA.Amorph\" Version=\"1\"><PeriodSteps>123</PeriodSteps></Amorph>\n</VXD>\n";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v2, "v2.vxd", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_b.env.collisions == 0 && info_b.env.period_steps == 123 && info_b.period_steps_given, "replaced and added elements");
+    const char* v3 = "<VXD>\n\n<Structure replace=\"VXA.VXC.Structure\"><X_Voxels>0</X_Voxels></Structure></VXD>";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v3, "v3.vxd", err, sizeof err) == AM_ERR_RANGE &&
+              !strcmp(err, "v3.vxd:3: <X_Voxels> 0 is outside 1..1000000000"),
+          "%s", err);
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, "<VXA/>", "v4.vxd", err, sizeof err) == AM_ERR_PARSE &&
+              !strcmp(err, "v4.vxd:1: not a VXD file: the root element is <VXA>, expected <VXD>"),
+          "%s", err);
+    const char* v5 = "<VXD><A replace=\"VXA.B\"/>\n<C replace=\"VXA.B\"/></VXD>";
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v5, "v5.vxd", err, sizeof err) == AM_ERR_PARSE &&
+              !strcmp(err, "v5.vxd:2: replace=\"VXA.B\" given twice (first on line 1)"),
+          "%s", err);
+    expect_vxa("<VXD>\n<Structure replace=\"VXA.VXC.Structure\"/></VXD>", AM_ERR_PARSE,
+               "t.vxa:1: a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not read alone: give its "
+               "base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and robot.vxd)");
+}
+
+/* the reader on damaged files: every prefix of a file with every kind of layer (ZLIB cells,
+ * PhaseOffset reals, regions), and random byte changes, each read cleanly (AM_OK, or one line
+ * "t.vxa:LINE: problem"; never a crash: asan and valgrind run it) */
+static void test_vxa_noise(void)
+{
+    static char src[1 << 14], buf[1 << 14];
+    char err[AM_ERR_MAX];
+    long n = 0;
+    int bad = 0, ok = 0, refused = 0;
+    static const char* const files[] = {"tests/data/voxcad_cantilever.vxa", "tests/data/evosoro_phase.vxa"};
+    uint64_t r = 0x2545F4914F6CDD1Dull;
+    for (int f = 0; f < 2; f++) {
+        CHECK(am_port_read_file(files[f], src, sizeof src, &n, err, sizeof err) == AM_OK, "%s", err);
+        const long step = test_quick() ? 97 : 7;
+        for (long cut = 0; cut < n; cut += step) {
+            memcpy(buf, src, (size_t)cut);
+            buf[cut] = 0;
+            am_status st = am_vxa_parse(&lat_b, &info_b, &doc, buf, "t.vxa", err, sizeof err);
+            if (st == AM_OK) ok++;
+            else refused++;
+            if (st != AM_OK && (strncmp(err, "t.vxa:", 6) || strchr(err, '\n'))) bad++;
+        }
+        const int rounds = test_quick() ? 100 : 2000;
+        for (int i = 0; i < rounds; i++) {
+            memcpy(buf, src, (size_t)n + 1);
+            for (int k = 0; k < 1 + i % 3; k++) {
+                r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+                const char set[] = "0123456789<>/=\", .-eE]![xAZ";
+                buf[r % (uint64_t)n] = set[(r >> 32) % (sizeof set - 1)];
+            }
+            am_status st = am_vxa_parse(&lat_b, &info_b, &doc, buf, "t.vxa", err, sizeof err);
+            if (st == AM_OK) ok++;
+            else refused++;
+            if (st != AM_OK && (strncmp(err, "t.vxa:", 6) || strchr(err, '\n'))) bad++;
+            if (st == AM_OK && info_b.layers.has_phase) {
+                /* what was read builds or is refused with a message */
+                am_status mb = am_model_build_layers(&pm2, &lat_b, &info_b.env, &info_b.layers, err, sizeof err);
+                if (mb != AM_OK && mb != AM_ERR_EMPTY && !err[0]) bad++;
+            }
+        }
+    }
+    CHECK(bad == 0 && ok > 0 && refused > 0, "%d unclean outcomes (%d read, %d refused)", bad, ok, refused);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -652,5 +934,9 @@ int main(int argc, char** argv)
     RUN(test_vxa_errors);
     RUN(test_vxa_bad_tokens_quoted);
     RUN(test_vxa_format_errors);
+    RUN(test_vxa_phase_offset);
+    RUN(test_vxa_cantilever);
+    RUN(test_vxa_vxd);
+    RUN(test_vxa_noise);
     return SUMMARY();
 }

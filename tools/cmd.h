@@ -33,6 +33,11 @@ typedef struct tool_ctx {
     /* the evolver's run (evolve, experiment, repro, bench --evolve); bench's expression timing
      * borrows the genomes of its population as its pool */
     am_evo evo;
+#if !defined(AM_PROFILE_BOARD)
+    /* the per-cell layers (phases, boundary conditions) of the robot tool_robot_load loaded last:
+     * a VXA file's, else none (tools/robot.h, tool_model_build) */
+    am_layers layers;
+#endif
 } tool_ctx;
 
 /* the genome a command reads (random, express, sim of a genome file or a run folder): the

@@ -146,6 +146,16 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
     am_status st = tool_robot_load(c, &ra, lat, &rob, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s", err);
     if (lattice) {
+#if TOOL_VXA
+        /* the lattice format has no place for per-cell layers: said, then the lattice alone */
+        if (c->layers.has_phase || c->layers.has_bc)
+            fprintf(stderr, "%s: warning: the lattice format holds no %s: --lattice %s has the voxels and materials only "
+                            "(--vxa keeps them)\n", ra.name,
+                    c->layers.has_phase && c->layers.has_bc ? "per-voxel phases or boundary conditions"
+                    : c->layers.has_phase                   ? "per-voxel phases"
+                                                            : "boundary conditions",
+                    lattice);
+#endif
         tool_out o;
         if (tool_out_open(&o, strcmp(lattice, "-") ? lattice : NULL)) return 1;
         st = am_lattice_write(lat, &o.text, err, sizeof err);
@@ -162,7 +172,8 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         long len = 0;
         st = tool_robot_dt(c, lat, &rob.env, &dt, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", ra.name, err);
-        if (am_vxa_format(lat, &rob.env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+        if (am_vxa_format_layers(lat, &c->layers, &rob.env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK)
+            return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }
 #endif

@@ -21,7 +21,7 @@ int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, co
 {
     char err[AM_ERR_MAX];
     memset(mo, 0, sizeof *mo);
-    am_status st = am_model_build(&c->work[0].model, lat, env, err, sizeof err);
+    am_status st = tool_model_build(c, &c->work[0].model, lat, env, err, sizeof err);
     if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
     if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
     /* frames that fit: the float budget caps big bodies, the step list caps the count. Record as

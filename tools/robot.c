@@ -52,6 +52,12 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
     return 1;
 }
 
+static int ends_with(const char* s, const char* tail)
+{
+    size_t n = strlen(s), t = strlen(tail);
+    return n >= t && !strcmp(s + n - t, tail);
+}
+
 static int two_robots(const char* cmd, const char* one, const char* two)
 {
     char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
@@ -75,7 +81,13 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
         return 1;
     }
     if (arg[0] != '-' || !arg[1]) {
-        if (a->name) return two_robots(cmd, a->name, arg);
+        /* a VXD over a VXA file: the one of the two ending in .vxd */
+        if (a->name && !a->vxd && !a->is_scene && (ends_with(arg, ".vxd") || ends_with(a->name, ".vxd"))) {
+            if (ends_with(a->name, ".vxd")) a->vxd = a->name, a->name = arg;
+            else a->vxd = arg;
+            return 1;
+        }
+        if (a->name) return two_robots(cmd, a->name, a->vxd ? a->vxd : arg);
         a->name = arg;
         return 1;
     }
@@ -99,13 +111,21 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
 /* ---- loading ---- */
 
 #if TOOL_VXA
-/* VXA text -> lattice; the reader's warnings on stderr */
-static am_status load_vxa(const char* text, const char* fname, am_lattice* lat, tool_robot* r, double* period_s, char* err,
-                          int errsz)
+/* VXA text (and a VXD file over it, vxd NULL when none) -> lattice and layers (c->layers); the
+ * reader's warnings on stderr */
+static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, const char* vxd, am_lattice* lat, tool_robot* r,
+                          double* period_s, char* err, int errsz)
 {
-    static am_xml_doc doc;   /* the XML reader's workspace, used during this call only */
-    static am_vxa_info info; /* the file's environment and warnings, copied out below */
-    am_status st = am_vxa_parse(lat, &info, &doc, text, fname, err, errsz);
+    static am_xml_doc doc, vxd_doc; /* the XML reader's workspaces, used during this call only */
+    static am_vxa_info info;        /* the file's environment and warnings, copied out below */
+    static char vxd_text[1L << 20]; /* the VXD file's text (a structure and its layers) */
+    am_status st;
+    if (vxd) {
+        long len = 0;
+        if ((st = am_port_read_file(vxd, vxd_text, sizeof vxd_text, &len, err, errsz)) != AM_OK) return st;
+        if ((long)strlen(vxd_text) != len) return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: binary data (a NUL byte) in a text file", vxd);
+    }
+    st = am_vxa_parse_vxd(lat, &info, &doc, text, fname, &vxd_doc, vxd ? vxd_text : NULL, vxd, err, errsz);
     if (st != AM_OK) return st;
     int kept = 0;
     for (const char* p = info.warning; *p; p++) kept += *p == '\n';
@@ -113,6 +133,7 @@ static am_status load_vxa(const char* text, const char* fname, am_lattice* lat, 
     if (info.warnings > kept) fprintf(stderr, "%s: warning: %d more warnings not shown\n", fname, info.warnings - kept);
     r->env = info.env;
     *period_s = info.period_steps_given ? 0 : info.temp_period;
+    c->layers = info.layers;
     return AM_OK;
 }
 #endif
@@ -185,8 +206,8 @@ static am_status lattice_line(void* ctx, int lineno, char* line, long n, char* e
 }
 
 /* a file in any format amorph reads: lattice text, genome text (expressed), VXA (desktop) */
-static am_status load_file(tool_ctx* c, const char* name, am_lattice* lat, tool_robot* r, double* period_s, char* err,
-                           int errsz)
+static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_lattice* lat, tool_robot* r, double* period_s,
+                           char* err, int errsz)
 {
     tool_src src;
     am_status st = tool_src_open(&src, name, TOOL_FILE_MAX, 0, err, errsz);
@@ -197,11 +218,13 @@ static am_status load_file(tool_ctx* c, const char* name, am_lattice* lat, tool_
     } else if (kind == TOOL_TEXT_VXA) {
         r->kind = TOOL_ROBOT_VXA;
 #if TOOL_VXA
-        st = load_vxa(tool_src_text(&src), name, lat, r, period_s, err, errsz);
+        st = load_vxa(c, tool_src_text(&src), name, vxd, lat, r, period_s, err, errsz);
 #else
         (void)period_s;
         st = am_fail(err, errsz, AM_ERR_ARG, "%s: a VXA file: not in this build: VXA files belong to the desktop profile", name);
 #endif
+    } else if (vxd) {
+        st = am_fail(err, errsz, AM_ERR_PARSE, "%s: not a VXA file: a VXD file (%s) goes over a base VXA file", name, vxd);
     } else if (kind == TOOL_TEXT_GENOME) {
         r->kind = TOOL_ROBOT_GENOME;
         st = tool_genome_to_lattice(c, &src, lat, err, errsz);
@@ -243,6 +266,16 @@ static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_
     return AM_OK;
 }
 
+am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
+{
+#if TOOL_VXA
+    return am_model_build_layers(m, lat, env, &c->layers, err, errsz);
+#else
+    (void)c;
+    return am_model_build(m, lat, env, err, errsz);
+#endif
+}
+
 am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz)
 {
     /* dt_rec depends on the materials and the voxel size only: an empty robot is timed as one
@@ -256,18 +289,45 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
     return AM_OK;
 }
 
+#if TOOL_VXA
+/* 1 when dir is a folder holding base.vxa (voxcraft-sim's layout): its base.vxa and robot.vxd */
+static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TOOL_PATH_MAX])
+{
+    size_t n = strlen(dir);
+    const char* sep = n && dir[n - 1] == '/' ? "" : "/";
+    if (snprintf(base, TOOL_PATH_MAX, "%s%sbase.vxa", dir, sep) >= TOOL_PATH_MAX) return 0;
+    if (snprintf(robot, TOOL_PATH_MAX, "%s%srobot.vxd", dir, sep) >= TOOL_PATH_MAX) return 0;
+    return am_port_exists(base);
+}
+#endif
+
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz)
 {
     r->kind = TOOL_ROBOT_SCENE;
     r->env = am_default_env();
     r->eval = am_default_eval();
+#if TOOL_VXA
+    am_layers_clear(&c->layers); /* none unless a VXA file brings them */
+#endif
     double period_s = 0; /* a VXA file's period in seconds, still to become steps */
     am_status st;
+#if TOOL_VXA
+    static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
+#endif
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
     else if (tool_is_run_dir(a->name)) {
         r->kind = TOOL_ROBOT_RUN;
         st = load_run(c, a->name, lat, r, err, errsz);
-    } else st = load_file(c, a->name, lat, r, &period_s, err, errsz);
+    }
+#if TOOL_VXA
+    else if (!a->vxd && voxcraft_dir(a->name, base, robot)) {
+        if (!am_port_exists(robot))
+            return am_fail(err, errsz, AM_ERR_IO, "%s: a voxcraft folder holds base.vxa and robot.vxd; no robot.vxd (another VXD: "
+                                                  "amorph sim %s FILE.vxd)", a->name, base);
+        st = load_file(c, base, robot, lat, r, &period_s, err, errsz);
+    }
+#endif
+    else st = load_file(c, a->name, a->vxd, lat, r, &period_s, err, errsz);
     if (st != AM_OK) return st;
     int period_set = 0;
     st = apply_settings(a, lat, r, &period_set, err, errsz);

@@ -16,6 +16,8 @@
 /* what sim, render, view and export were told about the robot */
 typedef struct tool_robot_args {
     const char* name;          /* the file or run folder, or the scene's name; NULL until given */
+    const char* vxd;           /* a voxcraft VXD file over the VXA file name (the other file named with
+                                  it, one of them ending in .vxd); NULL when none */
     int is_scene;              /* 1: name is a scene (--scene NAME) */
     double dt_s;               /* --dt SECONDS (a fixed time step), 0 when not given */
     int nset;                  /* settings given, in order */
@@ -47,7 +49,8 @@ typedef struct tool_robot {
 int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char** key, const char** val);
 
 /* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
- * --scene NAME), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
+ * --scene NAME; a VXA file and a VXD file over it, voxcraft-sim's `base.vxa robot.vxd`; a folder
+ * holding base.vxa and robot.vxd, voxcraft-sim's layout), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
  * (tool_setting_arg). Returns 1 when consumed, 0 when it is none of these (the command's own
  * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
  * as --population, a value missing). */
@@ -63,6 +66,10 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz);
 
+/* builds the model of the robot tool_robot_load loaded last into m: lat and env with that robot's
+ * per-cell layers (a VXA file's phases and boundary conditions; none for other robots) */
+am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
+
 /* the time step in seconds the simulator takes for lat in env (an empty robot is timed as one voxel
  * of its first material); builds the model into c->work[0].model */
 am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz);
@@ -75,6 +82,8 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
     "--floor on|off, --cte_mode volumetric|linear, --fitness horizontal|x|3d, --dt_frac F,\n"            \
     "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
-    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"
+    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"                        \
+    "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
+    "holding base.vxa and robot.vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
 #endif

@@ -39,6 +39,23 @@ typedef struct am_env {
 
 am_env am_default_env(void);
 
+/* What a robot may carry per lattice cell beyond its material: VXA's per-voxel actuation phase
+ * (evosoro's PhaseOffset layer) and boundary conditions (VXA's fixed and forced regions). Cell c
+ * is the lattice's cell c; entries of empty cells are not read. am_model_build_layers takes it;
+ * am_model_build is that call with none. Large (about 136 KB on the desktop): declare it static. */
+typedef struct am_layers {
+    int has_phase;                    /* 1: phase[] holds every cell's phase */
+    int has_bc;                       /* 1: fixed[] and force[] hold boundary conditions */
+    am_param phase[AM_MAX_CELLS];     /* periods (evosoro's unit: 0.25 is a quarter period), added to the
+                                       * material's phase as 2 pi phase radians */
+    uint8_t fixed[AM_MAX_CELLS];      /* 1: the cell's voxel is clamped (all six degrees of freedom) */
+    am_param force[3][AM_MAX_CELLS];  /* N: a constant external force on the cell's voxel */
+} am_layers;
+
+/* no phases, no boundary conditions (the arrays are left as they are: only the flags are read
+ * before them) */
+void am_layers_clear(am_layers* l);
+
 /* Index and constant layout. The desktop profile keeps every constant per voxel and per link and
  * 32-bit indices, so that the step's loops read them contiguously and vectorise. The board profile
  * (AM_COMPACT, make PROFILE=board) keeps them once per material and per pair of materials, which
@@ -110,6 +127,18 @@ typedef struct am_model {
     /* per material: actuation */
     am_real mat_cte[AM_MAX_MATERIALS];
     am_real mat_phase[AM_MAX_MATERIALS];
+    /* a robot with its own phase per voxel (am_layers; desktop profile): each voxel actuates with
+     * its material's phase plus vphase, and each link's rest length follows its two voxels (the
+     * link loop finds it at entry lself[l] = l of the state's rest lengths, where a robot without
+     * them finds its pair of materials' at lpair[l]). voxel_phase is 0 for every other robot,
+     * which keeps the per-material actuation */
+    int voxel_phase;
+    int any_force;                 /* 1: some voxel has a constant external force (force) */
+#if !defined(AM_COMPACT)
+    am_real vphase[AM_MAX_VOXELS];    /* radians */
+    am_pair lself[AM_MAX_LINKS];      /* l */
+    am_real force[3][AM_MAX_VOXELS];  /* the boundary conditions' forces, model units; am_state_reset puts them in fext */
+#endif
     am_real dt_rec;                /* analytic time step, s */
     am_real max_speed;             /* divergence bound on any voxel speed, m/s */
     am_real coll_range;            /* largest contact distance (two spheres at full scale), m */
@@ -169,6 +198,13 @@ typedef struct am_record {
     void* sink_ctx;
 } am_record;
 
+/* entries of the state's rest lengths: a pair of materials each, or on the desktop a link each */
+#if defined(AM_COMPACT)
+#define AM_REST_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS)
+#else
+#define AM_REST_CAP (AM_MAX_LINKS + 1)
+#endif
+
 /* the mutable state of one simulation */
 typedef struct am_state {
     long step;               /* steps taken */
@@ -198,9 +234,10 @@ typedef struct am_state {
     am_real fc[3][AM_MAX_VOXELS];   /* scratch: self-collision force, then the step's total force, N */
     uint8_t contact[AM_MAX_VOXELS]; /* 0 no floor contact, 1 stuck, 2 sliding */
     /* per pair of materials (i * AM_MAX_MATERIALS + j): a link's rest length follows the scales
-     * of its two voxels' materials */
-    am_real pair_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS];     /* current rest length, m */
-    am_real pair_inv_rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS]; /* its inverse, 1/m */
+     * of its two voxels' materials; for a robot with a phase per voxel (model voxel_phase) per
+     * link instead (entry l) */
+    am_real pair_rest[AM_REST_CAP];     /* current rest length, m */
+    am_real pair_inv_rest[AM_REST_CAP]; /* its inverse, 1/m */
     /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t and c_r,
      * each capped so that one step removes at most AM_DAMP_CAP of its link's two-body relative motion
      * (docs/physics.md, Damping); recomputed when dt or glob_scale changes */
@@ -245,6 +282,11 @@ typedef struct am_state {
 /* builds the model; AM_ERR_EMPTY for no voxel, AM_ERR_CAPACITY past a capacity, AM_ERR_RANGE for a
  * bad material or environment value */
 am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
+/* the same with per-cell layers (NULL: none): phases make the model's voxel_phase, fixed cells are
+ * clamped as a fixed material's are, forces act on their voxels at every step. The board profile
+ * has no room for phases and forces per voxel: AM_ERR_CAPACITY (fixed cells are taken there). */
+am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
+                                int errsz);
 /* puts the state at rest at the initial pose, dt = env.dt_frac * dt_rec, actuation off */
 void am_state_reset(const am_model* m, am_state* s);
 /* one time step */

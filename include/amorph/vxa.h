@@ -5,7 +5,9 @@
  * supported. The reader parses the text with the fixed-memory XML reader (amorph/xml.h) into a
  * caller's workspace, fills a lattice and an environment, and lists every tag it does not
  * support as a warning line "fname:line: warning: unsupported tag <X> ignored" (never silence).
- * Malformed files are errors "fname:line: problem".
+ * Malformed files are errors "fname:line: problem". ZLIB layers are inflated (amorph/inflate.h);
+ * evosoro's per-voxel phases and VoxCAD's boundary conditions come out as per-cell layers
+ * (am_layers, for am_model_build_layers); a voxcraft VXD is read over its base (am_vxa_parse_vxd).
  *
  * The writer produces what VoxCAD writes (ASCII_READABLE structure) plus one <Amorph> element that
  * VoxCAD ignores and this reader uses, holding what VXA cannot say (per-material damping, fixed
@@ -27,6 +29,9 @@ typedef struct am_vxa_info {
     double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
     int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
                                 converts temp_period with am_vxa_period_steps once dt is known */
+    am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
+                                conditions' fixed cells and forces (docs/vxa.md); build the model with
+                                am_model_build_layers */
     int warnings;            /* warnings found (all counted, the first ones kept in warning) */
     char warning[AM_VXA_WARN_TEXT]; /* warning lines, each ended by '\n'; NUL-terminated */
 } am_vxa_info;
@@ -40,13 +45,28 @@ int am_vxa_sniff(const char* text);
 am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz);
 
+/* reads a base VXA file with a VXD file over it (voxcraft-sim's convention): every element of the
+ * VXD (root <VXD>) with replace="VXA.A.B" stands for the element at that path of the base text,
+ * or is added there when the base lacks it; the result is read as one VXA file. vxd_work is a
+ * second XML workspace; messages name the file of the element at fault. A VXD text given alone to
+ * am_vxa_parse is an error that says so. vxd_text NULL: am_vxa_parse. */
+am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
+                           am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz);
+
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
  * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment
  * that cannot be written, AM_ERR_CAPACITY when buf is short (AM_VXA_TEXT_MAX always suffices). */
 am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz);
-#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS + AM_MAX_DIM * 64L + 8192L)
+/* the same with per-cell layers (NULL: none): phases as evosoro's <PhaseOffset> layers (in
+ * periods, each value in the shortest form that reads back to the same bits), and each voxel with
+ * a boundary condition (clamped, or a force) as one box <FRegion> of its own cell in
+ * <Boundary_Conditions>, at most AM_VXA_MAX_BC_VOXELS of them (AM_ERR_CAPACITY past that) */
+am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
+                               long* len, char* err, int errsz);
+#define AM_VXA_MAX_BC_VOXELS 256
+#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 18L + AM_MAX_DIM * 64L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
  * number, at least 1, at most 1e9 */
