@@ -96,7 +96,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h))
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board bench-mpi
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -157,6 +157,7 @@ test: all check-alloc check-fma
 	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows \
 	    MPI_BUILD=$(BUILD)/mpi
 	@$(MAKE) --no-print-directory check-fixed
+	@$(MAKE) --no-print-directory fuzz-smoke
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
 # the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
@@ -195,6 +196,29 @@ bench-board:
 bench-mpi: all
 	@$(MAKE) --no-print-directory PORT=mpi BUILD=$(BUILD)/mpi all
 	@POSIX=$(BUILD)/amorph MPI=$(BUILD)/mpi/amorph sh tools/bench_mpi.sh
+
+# the parsers under libFuzzer (tests/fuzz_parsers.c): clang, ASan and UBSan, the library built
+# with coverage; the seed corpus is tests/data. make fuzz runs FUZZ_SECONDS (60); make test runs a
+# fixed count of inputs from a fixed seed (fuzz-smoke) when clang has libFuzzer
+FUZZ_SECONDS ?= 60
+FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all
+fuzz-build:
+	@$(MAKE) --no-print-directory BUILD=build/fuzz CC=clang OPT=-O1 ARCH= CFLAGS="-fsanitize=fuzzer-no-link $(FUZZ_SAN)" \
+	    build/fuzz/libamorph.a build/fuzz/libamorph_port.a
+	clang -std=c11 $(WARN) -O1 -g -DAM_REAL_FLOAT -DAM_PROFILE_DESKTOP -Iinclude -fsanitize=fuzzer $(FUZZ_SAN) \
+	    -o build/fuzz/fuzz_parsers tests/fuzz_parsers.c build/fuzz/libamorph.a build/fuzz/libamorph_port.a -lm -lpthread
+fuzz-corpus:
+	@rm -rf build/fuzz/corpus && mkdir -p build/fuzz/corpus && sh tests/fuzz_corpus.sh build/fuzz/corpus
+fuzz: fuzz-build fuzz-corpus
+	build/fuzz/fuzz_parsers -max_total_time=$(FUZZ_SECONDS) -max_len=200000 -timeout=10 build/fuzz/corpus
+fuzz-smoke:
+	@if echo 'int LLVMFuzzerTestOneInput(const unsigned char* d, unsigned long n) { (void)d; (void)n; return 0; }' | \
+	    clang -x c -fsanitize=fuzzer -o /dev/null - >/dev/null 2>&1; then \
+	    $(MAKE) --no-print-directory fuzz-build fuzz-corpus >/dev/null && \
+	    build/fuzz/fuzz_parsers -runs=300000 -seed=1 -max_len=200000 -timeout=10 build/fuzz/corpus 2>build/fuzz/smoke.log && \
+	    echo "fuzz-smoke: 300000 inputs from seed 1 (seed corpus: tests/fuzz_corpus.sh): no crash, no sanitizer report, every message one line" || \
+	    { tail -n 30 build/fuzz/smoke.log; echo "fuzz-smoke: 0 passed, 1 failed"; exit 1; }; \
+	else echo "fuzz-smoke: clang without libFuzzer: skipped"; fi
 
 asan:
 	$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1" CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" unit

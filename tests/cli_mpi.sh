@@ -2,7 +2,8 @@
 # tests/cli_mpi.sh: the MPI build (port/mpi, make PORT=mpi) under Open MPI's mpirun on this machine
 # (loopback, --oversubscribe), against the POSIX build $BUILD/amorph on one thread. `make test`
 # builds it into $BUILD/mpi and sets MPI_BUILD when mpicc and mpirun are installed; skipped
-# otherwise. Checked: an evolution at 1, 2 and 3 ranks (and 2 ranks of 2 threads) gives the
+# otherwise. Checked: an evolution at 1, 2 and 3 ranks (and 2 ranks of 2 threads, and 3 ranks with
+# the fixed deal, AMORPH_MPI_DEAL=static) gives the
 # one-thread run hash, log.csv (wall time aside), evals.csv, best genome and checkpoint; an
 # experiment (its runs in lockstep) at 1, 2 and 3 ranks gives the same results.csv and run tables;
 # a rank killed mid-run (rank 0, and rank 1) ends the job with amorph's one line, no hang, and the
@@ -46,11 +47,13 @@ expect_ok "$AMORPH" evolve $RUN --threads 1 --out "$TMPD/ref"
 ref=$(sumval "$TMPD/ref" run_hash)
 check "reference run hash" [ -n "$ref" ]
 
-# --- evolve at 1, 2 and 3 ranks of one thread, and 2 ranks of 2 threads ---
-for np in 1 2 3 2x2; do
-    n=${np%x*} th=1
+# --- evolve at 1, 2 and 3 ranks of one thread, 2 ranks of 2 threads, and 3 ranks dealt the
+# items in a fixed snake order instead of taking them from the shared counter ---
+for np in 1 2 3 2x2 3static; do
+    n=${np%x*} n=${n%static} th=1 deal=dynamic
     [ "$np" = 2x2 ] && th=2
-    M "$n" "$MPX" evolve $RUN --threads $th --out "$TMPD/r$np" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    [ "$np" = 3static ] && deal=static
+    M "$n" -x AMORPH_MPI_DEAL=$deal "$MPX" evolve $RUN --threads $th --out "$TMPD/r$np" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
     h=$(sumval "$TMPD/r$np" run_hash)
     check "evolve on $np ranks: exit $rc, run hash '$h' (one thread: $ref), stderr: $(head -c 200 "$TMPD/err")" \
         [ $rc -eq 0 ] && [ "$h" = "$ref" ]

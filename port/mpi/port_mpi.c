@@ -6,10 +6,14 @@
  * collective: rank 0 does the work (with the POSIX port, posix_base.c) and broadcasts what the
  * program sees (a status, a message, the bytes read, the time, a flag). The ranks therefore take
  * the same branches and reach the same calls in the same order, and the only thing a rank does on
- * its own is its share of each parallel map: items are dealt out over the ranks (in snake order,
- * so that the largest bodies, first in the caller's order, spread evenly), each rank runs its items
- * on its own threads (the POSIX map: hybrid MPI + threads), and the items' result bytes (the map's
- * out) are gathered to every rank with one MPI_Allgatherv. Nothing else travels: every rank makes
+ * its own is its share of each parallel map: each rank's main thread takes the next items (one per
+ * thread) from a counter in rank 0's memory (MPI_Fetch_and_op, one-sided: rank 0 is not asked), runs
+ * them on its own threads (the POSIX map: hybrid MPI + threads) and takes more until none is left,
+ * so a rank busy with a large body takes fewer; then the items' result bytes (the map's out), each
+ * with its index, are gathered to every rank with one MPI_Allgatherv. Without one-sided operations
+ * (or with AMORPH_MPI_DEAL=static) the items are dealt in a fixed snake order instead (the largest
+ * bodies, first in the caller's order, spread evenly). Which rank evaluates an item never changes
+ * its result. Nothing else travels: every rank makes
  * the same offspring from the same random stream, so no genome is ever sent.
  *
  * Results (run hash, log.csv, checkpoints, best genome) equal those of one process with any number
@@ -59,6 +63,12 @@ static volatile int agreed;      /* the interruption flag agreed at the last red
 static int raise_rank;           /* AMORPH_TEST_RANK */
 static int node_ranks = 1;       /* ranks on this rank's machine */
 static int err_fd = 2;           /* this rank's own stderr (rank > 0: kept before /dev/null) */
+
+/* the dynamic deal's counter: the next item of the map under way, a long in rank 0's window that
+ * every rank's main thread advances with MPI_Fetch_and_op (passive target: rank 0 does nothing) */
+static long g_next_item;
+static MPI_Win g_win;
+static int g_dynamic;            /* 1: the counter works (else the snake deal) */
 
 /* what the transport cost (AMORPH_MPI_STATS=1: one line from rank 0 at the end) */
 static struct {
@@ -153,6 +163,20 @@ void am_port_start(int* argc, char*** argv)
     raise_rank = r ? atoi(r) : 0;
     r = getenv("AMORPH_MPI_STATS");
     g_stats.on = r && !strcmp(r, "1");
+    /* the deal: dynamic (a shared counter) unless rank 0's AMORPH_MPI_DEAL says static, or the MPI
+     * library has no one-sided operations here; every rank must agree */
+    int want = 1;
+    if (rank == 0) {
+        r = getenv("AMORPH_MPI_DEAL");
+        want = !(r && !strcmp(r, "static"));
+    }
+    MPI_Bcast(&want, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    int made = 0;
+    if (want && MPI_Win_create(&g_next_item, rank == 0 ? (MPI_Aint)sizeof g_next_item : 0, (int)sizeof g_next_item, MPI_INFO_NULL,
+                               MPI_COMM_WORLD, &g_win) == MPI_SUCCESS) {
+        made = MPI_Win_lock_all(0, g_win) == MPI_SUCCESS;
+    }
+    MPI_Allreduce(&made, &g_dynamic, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
     if (rank > 0) {
         /* the console is rank 0's: the others' output (the same as rank 0's) goes nowhere */
         fflush(stdout);
@@ -180,6 +204,10 @@ int am_port_end(int status)
                          ranks, g_stats.maps, g_stats.items, g_stats.map_seconds, g_stats.collectives, g_stats.seconds, g_stats.bytes,
                          g_stats.collectives ? g_stats.seconds / (double)g_stats.collectives * 1e6 : 0.0);
         if (n > 0) (void)!write(err_fd, line, (size_t)(n < (int)sizeof line ? n : (int)sizeof line - 1));
+    }
+    if (g_dynamic) {
+        MPI_Win_unlock_all(g_win);
+        MPI_Win_free(&g_win);
     }
     /* every rank arrives here with the same status (same program, same inputs) */
     MPI_Finalize();
@@ -349,9 +377,21 @@ static void local_task(void* ctx, int k, int worker)
     j->task(j->ctx, j->items[k], worker);
 }
 
-static int g_items[MPI_MAP_ITEMS];
+static int g_items[MPI_MAP_ITEMS];   /* this rank's items of the map under way, in their order */
 static char g_send[MPI_MAP_BYTES], g_recv[MPI_MAP_BYTES];
 static int g_counts[1024], g_displs[1024];
+
+/* the next `count` items for this rank: the first index (n or more when none is left) */
+static long fetch_items(long count)
+{
+    long first = 0;
+    double t0 = stat_t0();
+    int rc = MPI_Fetch_and_op(&count, &first, MPI_LONG, 0, 0, MPI_SUM, g_win);
+    if (rc == MPI_SUCCESS) rc = MPI_Win_flush(0, g_win);
+    if (rc != MPI_SUCCESS) fatal("MPI_Fetch_and_op", rc);
+    stat_add(t0, sizeof count);
+    return first;
+}
 
 am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
 {
@@ -359,55 +399,84 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
     if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
     if (ranks > (int)(sizeof g_counts / sizeof g_counts[0]))
         return am_fail(err, errsz, AM_ERR_CAPACITY, "parallel map: %d ranks, at most %d", ranks, (int)(sizeof g_counts / sizeof g_counts[0]));
-    if (n > MPI_MAP_ITEMS || (long)n * size > MPI_MAP_BYTES || !out)
+    const long rec = (long)sizeof(int) + size; /* a result on the way: its item, then its bytes */
+    if (n > MPI_MAP_ITEMS || (long)n * rec > MPI_MAP_BYTES || !out)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "parallel map: %d items of %ld bytes: at most %d items and %ld bytes across ranks",
                        n, size, MPI_MAP_ITEMS, MPI_MAP_BYTES);
     const double map_t0 = stat_t0();
-    int mine = 0;
-    for (int i = 0; i < n; i++)
-        if (owner(i) == rank) g_items[mine++] = i;
-    /* this rank's items on its threads; calls from them (and from this thread while it runs items)
-     * are local */
+    int mine = 0, rc;
+    am_status st = AM_OK;
     local_job job = {task, ctx, g_items};
-    in_map = 1;
-    am_status st = am_posix_parallel_map(mine, workers, local_task, &job, NULL, 0, err, errsz);
-    in_map = 0;
-    /* a rank that could not start its threads still ran every item (the POSIX map runs them all on
-     * this thread): the status is a warning every rank would give, so it is agreed below */
-    int bad = st != AM_OK, any_bad = 0;
+    if (g_dynamic) {
+        /* dynamic deal: rank 0 resets the counter, then every rank takes `workers` items at a time
+         * (one per thread) until none is left: a rank with a large body takes fewer */
+        if (rank == 0) {
+            long zero = 0, old = 0;
+            rc = MPI_Fetch_and_op(&zero, &old, MPI_LONG, 0, 0, MPI_REPLACE, g_win);
+            if (rc == MPI_SUCCESS) rc = MPI_Win_flush(0, g_win);
+            if (rc != MPI_SUCCESS) fatal("MPI_Fetch_and_op", rc);
+        }
+        rc = MPI_Barrier(MPI_COMM_WORLD);
+        if (rc != MPI_SUCCESS) fatal("MPI_Barrier", rc);
+        for (;;) {
+            long first = fetch_items(workers);
+            if (first >= n) break;
+            int got = (int)(n - first < workers ? n - first : workers);
+            for (int k = 0; k < got; k++) g_items[mine + k] = (int)first + k;
+            job.items = g_items + mine;
+            in_map = 1;
+            am_status s1 = am_posix_parallel_map(got, workers, local_task, &job, NULL, 0, err, errsz);
+            in_map = 0;
+            if (s1 != AM_OK) st = s1;
+            mine += got;
+        }
+    } else {
+        /* snake deal: a fixed share */
+        for (int i = 0; i < n; i++)
+            if (owner(i) == rank) g_items[mine++] = i;
+        in_map = 1;
+        st = am_posix_parallel_map(mine, workers, local_task, &job, NULL, 0, err, errsz);
+        in_map = 0;
+    }
+    /* each rank's count and status (a rank that could not start its threads still ran its items
+     * on this thread: a warning every rank gives alike) */
+    int me[2] = {mine, st != AM_OK}, all[2 * 1024];
     double t0 = stat_t0();
-    int rc = MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    if (rc != MPI_SUCCESS) fatal("MPI_Allreduce", rc);
-    stat_add(t0, sizeof bad);
-    /* the results: each rank's items packed in order, gathered to all, put in place */
+    rc = MPI_Allgather(me, 2, MPI_INT, all, 2, MPI_INT, MPI_COMM_WORLD);
+    if (rc != MPI_SUCCESS) fatal("MPI_Allgather", rc);
+    stat_add(t0, sizeof me);
+    /* the results: each rank's records (item, bytes) gathered to all, put in place */
     char* o = (char*)out;
-    for (int k = 0; k < mine; k++) memcpy(g_send + (long)k * size, o + (long)g_items[k] * size, (size_t)size);
-    int at = 0;
+    for (int k = 0; k < mine; k++) {
+        memcpy(g_send + k * rec, &g_items[k], sizeof(int));
+        memcpy(g_send + k * rec + sizeof(int), o + (long)g_items[k] * size, (size_t)size);
+    }
+    int at = 0, any_bad = 0, total = 0;
     for (int r = 0; r < ranks; r++) {
-        int c = 0;
-        for (int i = 0; i < n; i++) c += owner(i) == r;
-        g_counts[r] = c * (int)size;
+        g_counts[r] = all[2 * r] * (int)rec;
         g_displs[r] = at;
         at += g_counts[r];
+        total += all[2 * r];
+        any_bad |= all[2 * r + 1];
     }
+    if (total != n) fatal("the parallel map (items lost)", MPI_ERR_OTHER);
     t0 = stat_t0();
-    rc = MPI_Allgatherv(g_send, mine * (int)size, MPI_BYTE, g_recv, g_counts, g_displs, MPI_BYTE, MPI_COMM_WORLD);
+    rc = MPI_Allgatherv(g_send, mine * (int)rec, MPI_BYTE, g_recv, g_counts, g_displs, MPI_BYTE, MPI_COMM_WORLD);
     if (rc != MPI_SUCCESS) fatal("MPI_Allgatherv", rc);
-    stat_add(t0, (long)n * size);
+    stat_add(t0, (long)n * rec);
+    for (int k = 0; k < n; k++) {
+        int i;
+        memcpy(&i, g_recv + k * rec, sizeof i);
+        if (i < 0 || i >= n) fatal("the parallel map (an item out of range)", MPI_ERR_OTHER);
+        memcpy(o + (long)i * size, g_recv + k * rec + sizeof(int), (size_t)size);
+    }
     if (g_stats.on) {
         g_stats.maps++;
         g_stats.items += n;
         g_stats.map_seconds += MPI_Wtime() - map_t0;
     }
-    int next[1024];
-    for (int r = 0; r < ranks; r++) next[r] = g_displs[r];
-    for (int i = 0; i < n; i++) {
-        int r = owner(i);
-        memcpy(o + (long)i * size, g_recv + next[r], (size_t)size);
-        next[r] += (int)size;
-    }
-    if (any_bad && !bad) return am_fail(err, errsz, AM_ERR_IO, "parallel map: a rank could not start its threads");
-    return bad ? st : AM_OK;
+    if (any_bad && st == AM_OK) return am_fail(err, errsz, AM_ERR_IO, "parallel map: a rank could not start its threads");
+    return st;
 }
 
 int am_port_processes(void)
