@@ -1049,7 +1049,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
     if (am_xml_is(work, 0, "VXD"))
         return verr(&c, 0, AM_ERR_PARSE, "a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not "
                                           "read alone: give its base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a "
-                                          "folder holding base.vxa and robot.vxd)");
+                                          "folder holding base.vxa and one .vxd)");
     if (!am_xml_is(work, 0, "VXA"))
         return verr(&c, 0, AM_ERR_PARSE, "not a VXA file: the root element is <%s>, expected <VXA>", tag(&c, 0, qv));
     if (vxd_text) {

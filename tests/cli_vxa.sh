@@ -168,9 +168,18 @@ else ko "VXD: $h $(hash_of "$D/vx2.out") $(hash_of "$D/vx3.out") $(hash_of "$D/v
 if grep -qxF "$V/robot.vxd:31: warning: unsupported tag <RawPrint> ignored (amorph reads the elements of a VXD that replace=\"VXA...\" a part of the base)" "$D/vx1.err" && \
    [ "$(grep -c "^$V/robot.vxd:" "$D/vx1.err")" -eq 3 ] && [ "$(grep -c "^$V/base.vxa:" "$D/vx1.err")" -eq 2 ]; then ok
 else ko "VXD warnings: $(cat "$D/vx1.err")"; fi
-expect_fail 2 "^amorph: $V/robot.vxd:1: a VXD file \(voxcraft-sim's robot: elements that replace parts of a base VXA file\) is not read alone: give its base VXA file first, then the VXD \(amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and robot.vxd\)$" "$AMORPH" sim "$V/robot.vxd"
+expect_fail 2 "^amorph: $V/robot.vxd:1: a VXD file \(voxcraft-sim's robot: elements that replace parts of a base VXA file\) is not read alone: give its base VXA file first, then the VXD \(amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and one .vxd\)$" "$AMORPH" sim "$V/robot.vxd"
 mkdir -p "$D/onlybase" && cp "$V/base.vxa" "$D/onlybase/"
-expect_fail 2 "$D/onlybase: a voxcraft folder holds base.vxa and robot.vxd; no robot.vxd" "$AMORPH" sim "$D/onlybase"
+expect_fail 2 "$D/onlybase: a voxcraft folder holds a base VXA and a robot's VXD; no .vxd in it" "$AMORPH" sim "$D/onlybase"
+# the folder's VXD under any name (voxcraft-sim names them freely), and its VXA under any name
+# when it is the only one; two VXD files are refused with both names
+mkdir -p "$D/anyname" && cp "$V/base.vxa" "$D/anyname/body.vxa" && cp "$V/robot.vxd" "$D/anyname/walker7.vxd"
+"$AMORPH" sim "$D/anyname" --cycles 1 --relax-max 200 >"$D/vx5.out" 2>/dev/null
+check "a voxcraft folder with other names: hash '$(hash_of "$D/vx5.out")' (want $h)" [ "$(hash_of "$D/vx5.out")" = "$h" ]
+cp "$V/robot.vxd" "$D/anyname/a2.vxd"
+expect_fail 2 "$D/anyname: 2 VXD files \\(a2.vxd, walker7.vxd\\): name one" "$AMORPH" sim "$D/anyname"
+cp "$V/base.vxa" "$D/anyname/other.vxa"
+expect_fail 2 "$D/anyname: a voxcraft folder holds base.vxa and VXD files; this one has 2 VXA files and no base.vxa" "$AMORPH" sim "$D/anyname"
 printf '<VXD>\n<Structure replace="VXA.VXC.Structure"><X_Voxels>x</X_Voxels></Structure>\n</VXD>\n' >"$D/bad.vxd"
 expect_fail 2 "^amorph: $D/bad.vxd:2: <X_Voxels>: 'x' is not a whole number$" "$AMORPH" sim "$V/base.vxa" "$D/bad.vxd"
 expect_fail 2 "one robot at a time" "$AMORPH" sim "$V/base.vxa" "$V/robot.vxd" "$F"

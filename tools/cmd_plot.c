@@ -1,11 +1,9 @@
 /* amorph plot: best fitness against evaluations as SVG, one line per run folder; for an
  * experiment folder, the mean of each variant's runs with a band of one standard error (the
  * seed's Figure 6). docs/pictures.md. */
-#define _POSIX_C_SOURCE 200809L /* opendir: the one directory listing of the tools (experiment folders) */
 #include "cmd.h"
 #if TOOL_PICTURES
 
-#include <dirent.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -134,22 +132,19 @@ static int cmp_names(const void* a, const void* b) { return strcmp((const char*)
 static int load_experiment(const char* dir)
 {
     static char names[PLOT_MAX_RUNS][96];
-    int n = 0;
-    DIR* d = opendir(dir);
-    if (!d) return tool_usage_error("plot: %s: cannot open the folder", dir);
-    for (struct dirent* e = readdir(d); e; e = readdir(d)) {
+    static char listing[PLOT_MAX_RUNS * 128];
+    int n = 0, count = 0;
+    char err[AM_ERR_MAX];
+    if (am_port_list_dir(dir, listing, (long)sizeof listing, &count, err, sizeof err) != AM_OK) return tool_usage_error("plot: %s", err);
+    for (const char* name = listing; count-- > 0; name += strlen(name) + 1) {
         char sub[PLOT_PATH_MAX + 128], csv[PLOT_PATH_MAX + 160];
-        if (e->d_name[0] == '.' || strlen(e->d_name) >= sizeof names[0]) continue;
-        snprintf(sub, sizeof sub, "%s/%s", dir, e->d_name);
+        if (name[0] == '.' || strlen(name) >= sizeof names[0]) continue;
+        snprintf(sub, sizeof sub, "%s/%s", dir, name);
         snprintf(csv, sizeof csv, "%s/" RUN_LOG, sub);
-        if (!am_port_exists(csv) || !strrchr(e->d_name, '-')) continue;
-        if (n >= PLOT_MAX_RUNS) {
-            closedir(d);
-            return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
-        }
-        memcpy(names[n++], e->d_name, strlen(e->d_name) + 1); /* shorter than names[0]: checked above */
+        if (!am_port_exists(csv) || !strrchr(name, '-')) continue;
+        if (n >= PLOT_MAX_RUNS) return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
+        memcpy(names[n++], name, strlen(name) + 1); /* shorter than names[0]: checked above */
     }
-    closedir(d);
     if (n == 0) return tool_usage_error("plot: %s: no run folders (<variant>-<k>/log.csv) in the experiment folder", dir);
     qsort(names, (size_t)n, sizeof names[0], cmp_names);
     int s = -1;

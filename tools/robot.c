@@ -290,14 +290,48 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
 }
 
 #if TOOL_VXA
-/* 1 when dir is a folder holding base.vxa (voxcraft-sim's layout): its base.vxa and robot.vxd */
-static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TOOL_PATH_MAX])
+/* a voxcraft folder (voxcraft-sim's layout: a base VXA and the robots' VXD files): 1 with its VXA
+ * (base.vxa, else the folder's one .vxa) in base and its one .vxd in robot; 0 when dir is no folder
+ * or holds no .vxa; -1 after a message in err (which VXA or which VXD is not clear) */
+static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TOOL_PATH_MAX], char* err, int errsz)
 {
+    static char names[16384];
+    int count = 0;
+    char e2[AM_ERR_MAX];
+    if (am_port_list_dir(dir, names, (long)sizeof names, &count, e2, sizeof e2) != AM_OK) return 0;
     size_t n = strlen(dir);
     const char* sep = n && dir[n - 1] == '/' ? "" : "/";
-    if (snprintf(base, TOOL_PATH_MAX, "%s%sbase.vxa", dir, sep) >= TOOL_PATH_MAX) return 0;
-    if (snprintf(robot, TOOL_PATH_MAX, "%s%srobot.vxd", dir, sep) >= TOOL_PATH_MAX) return 0;
-    return am_port_exists(base);
+    const char *vxa = NULL, *vxd = NULL, *vxd2 = NULL;
+    int nvxa = 0, nvxd = 0, has_base = 0;
+    for (const char* p = names; count-- > 0; p += strlen(p) + 1) {
+        if (strlen(p) > 4 && ends_with(p, ".vxa")) {
+            nvxa++;
+            vxa = p;
+            if (!strcmp(p, "base.vxa")) has_base = 1;
+        } else if (strlen(p) > 4 && ends_with(p, ".vxd")) {
+            nvxd++;
+            if (!vxd || strcmp(p, vxd) < 0) vxd2 = vxd, vxd = p;
+            else if (!vxd2 || strcmp(p, vxd2) < 0) vxd2 = p;
+        }
+    }
+    if (nvxa == 0) return 0;
+    if (nvxa > 1 && !has_base) {
+        am_fail(err, errsz, AM_ERR_ARG, "%s: a voxcraft folder holds base.vxa and VXD files; this one has %d VXA files and no base.vxa: "
+                                        "name the files (amorph sim BASE.vxa ROBOT.vxd)", dir, nvxa);
+        return -1;
+    }
+    if (nvxd != 1) {
+        if (nvxd == 0)
+            am_fail(err, errsz, AM_ERR_ARG, "%s: a voxcraft folder holds a base VXA and a robot's VXD; no .vxd in it (a VXA alone: amorph "
+                                            "sim %s%s%s)", dir, dir, sep, has_base ? "base.vxa" : vxa);
+        else
+            am_fail(err, errsz, AM_ERR_ARG, "%s: %d VXD files (%s, %s%s): name one (amorph sim %s%s%s %s%s%s)", dir, nvxd, vxd, vxd2,
+                    nvxd > 2 ? ", ..." : "", dir, sep, has_base ? "base.vxa" : vxa, dir, sep, vxd);
+        return -1;
+    }
+    if (snprintf(base, TOOL_PATH_MAX, "%s%s%s", dir, sep, has_base ? "base.vxa" : vxa) >= TOOL_PATH_MAX) return 0;
+    if (snprintf(robot, TOOL_PATH_MAX, "%s%s%s", dir, sep, vxd) >= TOOL_PATH_MAX) return 0;
+    return 1;
 }
 #endif
 
@@ -320,10 +354,8 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         st = load_run(c, a->name, lat, r, err, errsz);
     }
 #if TOOL_VXA
-    else if (!a->vxd && voxcraft_dir(a->name, base, robot)) {
-        if (!am_port_exists(robot))
-            return am_fail(err, errsz, AM_ERR_IO, "%s: a voxcraft folder holds base.vxa and robot.vxd; no robot.vxd (another VXD: "
-                                                  "amorph sim %s FILE.vxd)", a->name, base);
+    else if (!a->vxd && (st = (am_status)voxcraft_dir(a->name, base, robot, err, errsz)) != 0) {
+        if ((int)st < 0) return AM_ERR_ARG;
         st = load_file(c, base, robot, lat, r, &period_s, err, errsz);
     }
 #endif

@@ -50,7 +50,7 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
 
 /* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
  * --scene NAME; a VXA file and a VXD file over it, voxcraft-sim's `base.vxa robot.vxd`; a folder
- * holding base.vxa and robot.vxd, voxcraft-sim's layout), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
+ * holding a base VXA and one .vxd, voxcraft-sim's layout), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
  * (tool_setting_arg). Returns 1 when consumed, 0 when it is none of these (the command's own
  * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
  * as --population, a value missing). */
@@ -84,6 +84,6 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
     "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"                        \
     "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
-    "holding base.vxa and robot.vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
+    "holding base.vxa and one .vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
 #endif

@@ -93,6 +93,11 @@ int am_port_exists(const char* path);
  * removed: port/baremetal, whose one temporary per file, path.tmp, is reused and renamed by the
  * next write of path. */
 am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz);
+/* the names of the entries of the folder dir (files and folders, not . and ..), in no particular
+ * order, each followed by a NUL, into names (capacity cap); *count gets how many. AM_ERR_IO when
+ * dir cannot be listed (not a folder; a port without listing, as port/baremetal), AM_ERR_CAPACITY
+ * when the names need more than cap bytes. */
+am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz);
 
 /* ---- parallel map ---- */
 

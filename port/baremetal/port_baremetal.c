@@ -400,6 +400,15 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     return AM_OK;
 }
 
+/* ---- folders: semihosting cannot list one ---- */
+
+am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz)
+{
+    (void)names, (void)cap;
+    *count = 0;
+    return am_fail(err, errsz, AM_ERR_IO, "%s: cannot list a folder on this board (name the files)", dir);
+}
+
 /* ---- the program: one process ---- */
 
 void am_port_start(int* argc, char*** argv)

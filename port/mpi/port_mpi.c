@@ -46,6 +46,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <fcntl.h>
+#include <time.h>
 #include <unistd.h>
 
 /* the bytes of one map's results a rank sends and receives (am_evo_result is under 200 bytes: an
@@ -66,7 +67,7 @@ static int err_fd = 2;           /* this rank's own stderr (rank > 0: kept befor
 
 /* the dynamic deal's counter: the next item of the map under way, a long in rank 0's window that
  * every rank's main thread advances with MPI_Fetch_and_op (passive target: rank 0 does nothing) */
-static long g_next_item;
+static long* g_win_mem;          /* the counter (rank 0's window memory, allocated by MPI) */
 static MPI_Win g_win;
 static int g_dynamic;            /* 1: the counter works (else the snake deal) */
 
@@ -172,8 +173,12 @@ void am_port_start(int* argc, char*** argv)
     }
     MPI_Bcast(&want, 1, MPI_INT, 0, MPI_COMM_WORLD);
     int made = 0;
-    if (want && MPI_Win_create(&g_next_item, rank == 0 ? (MPI_Aint)sizeof g_next_item : 0, (int)sizeof g_next_item, MPI_INFO_NULL,
-                               MPI_COMM_WORLD, &g_win) == MPI_SUCCESS) {
+    /* the window's memory is MPI's own (MPI_Win_allocate), so that on one machine the library can
+     * place it in shared memory, where the counter is a hardware atomic that needs nothing of
+     * rank 0 (a window over this program's memory is served by rank 0's MPI calls: a rank would
+     * wait for rank 0 to finish an evaluation) */
+    if (want && MPI_Win_allocate(rank == 0 ? (MPI_Aint)sizeof(long) : 0, (int)sizeof(long), MPI_INFO_NULL, MPI_COMM_WORLD, &g_win_mem,
+                                 &g_win) == MPI_SUCCESS) {
         made = MPI_Win_lock_all(0, g_win) == MPI_SUCCESS;
     }
     MPI_Allreduce(&made, &g_dynamic, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
@@ -341,6 +346,23 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     return st;
 }
 
+am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz)
+{
+    if (!collective()) return am_posix_list_dir(dir, names, cap, count, err, errsz);
+    int n = 0;
+    am_status st = rank == 0 ? am_posix_list_dir(dir, names, cap, &n, err, errsz) : AM_OK;
+    st = bcast_status(st, err, errsz);
+    bcast(&n, sizeof n);
+    *count = n;
+    if (st != AM_OK) return st;
+    long len = 0;
+    if (rank == 0)
+        for (int k = 0; k < n; k++) len += (long)strlen(names + len) + 1;
+    bcast(&len, sizeof len);
+    bcast(names, len);
+    return AM_OK;
+}
+
 /* ---- owning a folder: rank 0 holds the locks ---- */
 
 am_status am_port_lock(const char* path, char* err, int errsz)
@@ -380,6 +402,20 @@ static void local_task(void* ctx, int k, int worker)
 static int g_items[MPI_MAP_ITEMS];   /* this rank's items of the map under way, in their order */
 static char g_send[MPI_MAP_BYTES], g_recv[MPI_MAP_BYTES];
 static int g_counts[1024], g_displs[1024];
+
+/* waits for req without spinning: a rank done with its share may wait for seconds on one with a
+ * large body, and MPI's busy polling would take a core (or a hyperthread's sibling) from it */
+static void wait_asleep(MPI_Request* req, const char* what)
+{
+    for (;;) {
+        int done = 0;
+        int rc = MPI_Test(req, &done, MPI_STATUS_IGNORE);
+        if (rc != MPI_SUCCESS) fatal(what, rc);
+        if (done) return;
+        struct timespec ts = {0, 200000}; /* 0.2 ms: nothing against an evaluation's 0.1 to 10 s */
+        nanosleep(&ts, NULL);
+    }
+}
 
 /* the next `count` items for this rank: the first index (n or more when none is left) */
 static long fetch_items(long count)
@@ -442,8 +478,10 @@ am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx,
      * on this thread: a warning every rank gives alike) */
     int me[2] = {mine, st != AM_OK}, all[2 * 1024];
     double t0 = stat_t0();
-    rc = MPI_Allgather(me, 2, MPI_INT, all, 2, MPI_INT, MPI_COMM_WORLD);
-    if (rc != MPI_SUCCESS) fatal("MPI_Allgather", rc);
+    MPI_Request req;
+    rc = MPI_Iallgather(me, 2, MPI_INT, all, 2, MPI_INT, MPI_COMM_WORLD, &req);
+    if (rc != MPI_SUCCESS) fatal("MPI_Iallgather", rc);
+    wait_asleep(&req, "MPI_Iallgather");
     stat_add(t0, sizeof me);
     /* the results: each rank's records (item, bytes) gathered to all, put in place */
     char* o = (char*)out;

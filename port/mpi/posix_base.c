@@ -21,6 +21,7 @@
 #define am_port_make_dir am_posix_make_dir
 #define am_port_exists am_posix_exists
 #define am_port_remove_stale am_posix_remove_stale
+#define am_port_list_dir am_posix_list_dir
 #define am_port_cores am_posix_cores
 #define am_port_processes am_posix_processes
 #define am_port_parallel_map am_posix_parallel_map

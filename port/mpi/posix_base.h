@@ -24,6 +24,7 @@ am_status am_posix_close(am_port_stream s, int commit, char* err, int errsz);
 am_status am_posix_make_dir(const char* path, char* err, int errsz);
 int am_posix_exists(const char* path);
 am_status am_posix_remove_stale(const char* dir, int* removed, char* err, int errsz);
+am_status am_posix_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz);
 int am_posix_cores(void);
 int am_posix_processes(void);
 am_status am_posix_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz);

@@ -407,6 +407,34 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     return st;
 }
 
+am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz)
+{
+    *count = 0;
+    DIR* d = opendir(dir);
+    if (!d) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
+    long at = 0;
+    am_status st = AM_OK;
+    for (;;) {
+        errno = 0;
+        struct dirent* e = readdir(d);
+        if (!e) {
+            if (errno != 0) st = am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
+            break;
+        }
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        long n = (long)strlen(e->d_name) + 1;
+        if (at + n > cap) {
+            st = am_fail(err, errsz, AM_ERR_CAPACITY, "%s: the folder's names need more than %ld bytes", dir, cap);
+            break;
+        }
+        memcpy(names + at, e->d_name, (size_t)n);
+        at += n;
+        (*count)++;
+    }
+    closedir(d);
+    return st;
+}
+
 /* ---- parallel map ---- */
 
 typedef struct map_job {

@@ -455,6 +455,39 @@ int am_port_exists(const char* path)
     return GetFileAttributesA(path) != INVALID_FILE_ATTRIBUTES;
 }
 
+am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, char* err, int errsz)
+{
+    *count = 0;
+    char pattern[PORT_PATH];
+    size_t dl = strlen(dir);
+    const char* sep = dl > 0 && (dir[dl - 1] == '/' || dir[dl - 1] == '\\' || dir[dl - 1] == ':') ? "" : "/";
+    int k = snprintf(pattern, sizeof pattern, "%s%s*", dir, sep);
+    if (k < 0 || (size_t)k >= sizeof pattern) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", dir);
+    DWORD attr = GetFileAttributesA(dir);
+    if (attr == INVALID_FILE_ATTRIBUTES || !(attr & FILE_ATTRIBUTE_DIRECTORY)) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: not a folder", dir);
+    WIN32_FIND_DATAA fd;
+    HANDLE f = FindFirstFileA(pattern, &fd);
+    if (f == INVALID_HANDLE_VALUE) {
+        if (GetLastError() == ERROR_FILE_NOT_FOUND) return AM_OK; /* an empty root folder */
+        return fail_last(err, errsz, AM_ERR_IO, "cannot list the folder", dir);
+    }
+    long at = 0;
+    am_status st = AM_OK;
+    do {
+        if (!strcmp(fd.cFileName, ".") || !strcmp(fd.cFileName, "..")) continue;
+        long n = (long)strlen(fd.cFileName) + 1;
+        if (at + n > cap) {
+            st = am_fail(err, errsz, AM_ERR_CAPACITY, "%s: the folder's names need more than %ld bytes", dir, cap);
+            break;
+        }
+        memcpy(names + at, fd.cFileName, (size_t)n);
+        at += n;
+        (*count)++;
+    } while (FindNextFileA(f, &fd));
+    FindClose(f);
+    return st;
+}
+
 am_status am_port_remove_stale(const char* dir, int* removed, char* err, int errsz)
 {
     if (removed) *removed = 0;
