@@ -299,6 +299,31 @@ static void test_progress_is_silent_off_a_terminal(void)
     CHECK(am_port_interrupted() == 0, "interrupted without a request");
 }
 
+/* a folder's entries: every file and folder once, not . and ..; too small a buffer and a missing
+ * folder are errors with the folder's name */
+static void test_list_dir(void)
+{
+    char err[AM_ERR_MAX], d[600], p[700], names[256];
+    path_of(d, sizeof d, "listing");
+    CHECK(am_port_make_dir(d, err, sizeof err) == AM_OK, "%s", err);
+    static const char* const want[3] = {"a.vxa", "robot.vxd", "sub"};
+    for (int k = 0; k < 2; k++) {
+        snprintf(p, sizeof p, "%s/%s", d, want[k]);
+        CHECK(am_port_write_file(p, "x", 1, err, sizeof err) == AM_OK, "%s", err);
+    }
+    snprintf(p, sizeof p, "%s/%s", d, want[2]);
+    CHECK(am_port_make_dir(p, err, sizeof err) == AM_OK, "%s", err);
+    int count = -1, seen[3] = {0, 0, 0};
+    CHECK(am_port_list_dir(d, names, sizeof names, &count, err, sizeof err) == AM_OK && count == 3, "%d entries: %s", count, err);
+    const char* q = names;
+    for (int i = 0; i < count && i < 3; i++, q += strlen(q) + 1)
+        for (int k = 0; k < 3; k++) seen[k] += !strcmp(q, want[k]);
+    CHECK(seen[0] == 1 && seen[1] == 1 && seen[2] == 1, "entries seen %d %d %d", seen[0], seen[1], seen[2]);
+    CHECK(am_port_list_dir(d, names, 8, &count, err, sizeof err) == AM_ERR_CAPACITY && strstr(err, "listing"), "8 bytes: %s", err);
+    snprintf(p, sizeof p, "%s/none", d);
+    CHECK(am_port_list_dir(p, names, sizeof names, &count, err, sizeof err) == AM_ERR_IO && strstr(err, "none"), "missing: %s", err);
+}
+
 /* 1 when a child process can take the lock of path (it exits at once, releasing it) */
 static int other_process_can_lock(const char* path)
 {
@@ -345,6 +370,7 @@ int main(int argc, char** argv)
     RUN(test_streams);
     RUN(test_remove_stale);
     RUN(test_locks);
+    RUN(test_list_dir);
     RUN(test_progress_is_silent_off_a_terminal);
     return SUMMARY();
 }
