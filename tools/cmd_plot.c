@@ -139,7 +139,7 @@ static int load_experiment(const char* dir)
     for (const char* name = listing; count-- > 0; name += strlen(name) + 1) {
         char sub[PLOT_PATH_MAX + 128], csv[PLOT_PATH_MAX + 160];
         if (name[0] == '.' || strlen(name) >= sizeof names[0]) continue;
-        snprintf(sub, sizeof sub, "%s/%s", dir, name);
+        snprintf(sub, sizeof sub, "%s/%.95s", dir, name); /* a name that long was skipped above */
         snprintf(csv, sizeof csv, "%s/" RUN_LOG, sub);
         if (!am_port_exists(csv) || !strrchr(name, '-')) continue;
         if (n >= PLOT_MAX_RUNS) return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
