@@ -871,7 +871,7 @@ static void test_vxa_vxd(void)
           "%s", err);
     expect_vxa("<VXD>\n<Structure replace=\"VXA.VXC.Structure\"/></VXD>", AM_ERR_PARSE,
                "t.vxa:1: a VXD file (voxcraft-sim's robot: elements that replace parts of a base VXA file) is not read alone: give its "
-               "base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and robot.vxd)");
+               "base VXA file first, then the VXD (amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and one .vxd)");
 }
 
 /* the reader on damaged files: every prefix of a file with every kind of layer (ZLIB cells,
