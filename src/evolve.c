@@ -357,46 +357,95 @@ void am_evo_gen_end(am_evo* e)
     e->gen_b = e->gen_m = 0;
 }
 
-/* ---- one generation on one run ---- */
+/* ---- generations: one run, or several in lockstep ---- */
 
 typedef struct eval_job {
-    const am_evo* e;
-    am_evo_result* res;
+    am_evo* const* runs;
+    am_evo_wave* wave;                         /* NULL: one run, map item i its item i, results in its res */
     am_evo_work* work;
-    const am_evo_hooks* hooks; /* with a cancel callback, or NULL */
+    const am_evo_hooks* cancel[AM_EVO_WAVE_MAX]; /* run k's hooks when its batch may be cancelled, else NULL */
 } eval_job;
 
 static void eval_task(void* ctx, int item, int worker)
 {
     eval_job* job = (eval_job*)ctx;
-    if (job->hooks && job->hooks->cancel(job->hooks->ctx)) {
-        memset(&job->res[item], 0, sizeof job->res[item]);
-        job->res[item].skipped = 1;
+    const int k = job->wave ? job->wave->run[item] : 0, i = job->wave ? job->wave->idx[item] : item;
+    am_evo_result* r = job->wave ? &job->wave->res[item] : &job->runs[0]->res[item];
+    const am_evo_hooks* h = job->cancel[k];
+    if (h && h->cancel(h->ctx)) {
+        memset(r, 0, sizeof *r);
+        r->skipped = 1;
         return;
     }
-    am_evo_batch_eval(job->e, item, &job->work[worker], &job->res[item]);
+    am_evo_batch_eval(job->runs[k], i, &job->work[worker], r);
+}
+
+/* the generations of runs[0..n) (all of them, or the unfinished ones when skip_done) */
+static am_status generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, int workers, const am_evo_hooks* hooks,
+                             int skip_done, char* err, int errsz)
+{
+    if (n < 1 || n > AM_EVO_WAVE_MAX || (n > 1 && !wave))
+        return am_fail(err, errsz, AM_ERR_ARG, "%d runs in lockstep (1 to %d, several need a wave)", n, AM_EVO_WAVE_MAX);
+    if (workers < 1) workers = 1;
+    if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
+    int live[AM_EVO_WAVE_MAX], m[AM_EVO_WAVE_MAX], cancelled = 0;
+    for (int k = 0; k < n; k++) {
+        live[k] = !(skip_done && am_evo_done(runs[k]));
+        if (live[k]) am_evo_gen_begin(runs[k]);
+    }
+    eval_job job = {runs, wave, w, {NULL}};
+    for (;;) {
+        /* every live run's next batch, merged into one map: most voxels first, ties in run order */
+        int total = 0;
+        for (int k = 0; k < n; k++) {
+            m[k] = 0;
+            if (!live[k]) continue;
+            am_status st = am_evo_batch_begin(runs[k], &w[0].geno, &m[k], err, errsz);
+            if (st != AM_OK) return st;
+            job.cancel[k] = hooks && hooks[k].cancel && am_evo_batch_cancellable(runs[k]) ? &hooks[k] : NULL;
+            for (int i = 0; wave && i < m[k]; i++) {
+                int j = total + i, v = runs[k]->order_voxels[i];
+                while (j > 0 && runs[wave->run[j - 1]]->order_voxels[wave->idx[j - 1]] < v) {
+                    wave->run[j] = wave->run[j - 1];
+                    wave->idx[j] = wave->idx[j - 1];
+                    j--;
+                }
+                wave->run[j] = k;
+                wave->idx[j] = i;
+            }
+            total += m[k];
+        }
+        if (total == 0) break;
+        void* out = wave ? (void*)wave->res : (void*)runs[0]->res;
+        am_status st = am_port_parallel_map(total, workers, eval_task, &job, out, (long)sizeof(am_evo_result), err, errsz);
+        if (st != AM_OK) {
+            for (int k = 0; k < n; k++)
+                if (live[k]) runs[k]->rng = runs[k]->gen_saved;
+            return st;
+        }
+        for (int j = 0; wave && j < total; j++) runs[wave->run[j]]->res[wave->idx[j]] = wave->res[j];
+        for (int k = 0; k < n; k++) {
+            if (m[k] == 0) continue;
+            st = am_evo_batch_end(runs[k], runs[k]->res, &w[0].geno, hooks ? &hooks[k] : NULL, err, errsz);
+            if (st == AM_ERR_CANCELLED) {
+                live[k] = 0; /* abandoned: the run is as before the generation */
+                cancelled = 1;
+            } else if (st != AM_OK) return st;
+        }
+    }
+    for (int k = 0; k < n; k++)
+        if (live[k]) am_evo_gen_end(runs[k]);
+    return cancelled ? am_fail(err, errsz, AM_ERR_CANCELLED, "interrupted") : AM_OK;
+}
+
+am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, int workers, const am_evo_hooks* hooks,
+                             char* err, int errsz)
+{
+    return generations(runs, n, wave, w, workers, hooks, 1, err, errsz);
 }
 
 am_status am_evo_generation(am_evo* e, am_evo_work* w, int workers, const am_evo_hooks* hooks, char* err, int errsz)
 {
-    if (workers < 1) workers = 1;
-    if (workers > AM_MAX_WORKERS) workers = AM_MAX_WORKERS;
-    am_evo_gen_begin(e);
-    for (;;) {
-        int m = 0;
-        am_status st = am_evo_batch_begin(e, &w[0].geno, &m, err, errsz);
-        if (st != AM_OK) return st;
-        if (m == 0) break;
-        /* cancelling is possible while nothing of the run has changed: in the first batch */
-        eval_job job = {e, e->res, w, hooks && hooks->cancel && am_evo_batch_cancellable(e) ? hooks : NULL};
-        st = am_port_parallel_map(m, workers, eval_task, &job, e->res, (long)sizeof e->res[0], err, errsz);
-        if (st != AM_OK) {
-            e->rng = e->gen_saved;
-            return st;
-        }
-        st = am_evo_batch_end(e, e->res, &w[0].geno, hooks, err, errsz);
-        if (st != AM_OK) return st;
-    }
-    am_evo_gen_end(e);
-    return AM_OK;
+    am_evo* const runs[1] = {e};
+    return generations(runs, 1, NULL, w, workers, hooks, 0, err, errsz);
 }

@@ -593,6 +593,32 @@ static void test_steps_equal_generations(void)
           (unsigned long long)am_evo_hash(e[0]), (unsigned long long)am_evo_hash(e[1]), (unsigned long long)h1, (unsigned long long)h2);
 }
 
+/* am_evo_generations: runs of different lengths in lockstep, their offspring in one map, each ends
+ * as it does alone; a finished run is left alone while the other goes on */
+static am_evo_wave g_wave;
+
+static void test_generations_in_lockstep(void)
+{
+    am_evo_def d1 = small_def(AM_REPR_CPPN), d2 = small_def(AM_REPR_GMX);
+    char err[AM_ERR_MAX];
+    d2.evaluations = 36;
+    CHECK(am_evo_init(&g_a, &d1, err, sizeof err) == AM_OK && run_to_end(&g_a, 1), "alone 1: %s", err);
+    CHECK(am_evo_init(&g_b, &d2, err, sizeof err) == AM_OK && run_to_end(&g_b, 1), "alone 2: %s", err);
+    const uint64_t h1 = am_evo_hash(&g_a), h2 = am_evo_hash(&g_b);
+    am_evo* runs[2] = {&g_a, &g_b};
+    CHECK(am_evo_init(&g_a, &d1, err, sizeof err) == AM_OK && am_evo_init(&g_b, &d2, err, sizeof err) == AM_OK, "%s", err);
+    int gens = 0;
+    while ((!am_evo_done(&g_a) || !am_evo_done(&g_b)) && gens < 20) {
+        CHECK(am_evo_generations(runs, 2, &g_wave, g_work, 3, NULL, err, sizeof err) == AM_OK, "%s", err);
+        gens++;
+    }
+    CHECK(gens == 6 && g_a.generation == 4 && g_b.generation == 6, "%d calls, generations %ld and %ld (want 6, 4, 6)", gens,
+          g_a.generation, g_b.generation);
+    CHECK(am_evo_hash(&g_a) == h1 && am_evo_hash(&g_b) == h2, "in lockstep %016llx %016llx, alone %016llx %016llx",
+          (unsigned long long)am_evo_hash(&g_a), (unsigned long long)am_evo_hash(&g_b), (unsigned long long)h1, (unsigned long long)h2);
+    CHECK(am_evo_generations(runs, 2, NULL, g_work, 1, NULL, err, sizeof err) == AM_ERR_ARG, "two runs without a wave accepted");
+}
+
 static void test_log_row(void)
 {
     am_evo_stats s = {3, 80, 0.125, 0.0625, 0.05, 1, 2, 1.5};
@@ -616,6 +642,7 @@ int main(int argc, char** argv)
     RUN(test_checkpoint_damage_is_refused);
     RUN(test_cancel_leaves_the_run_unchanged);
     RUN(test_steps_equal_generations);
+    RUN(test_generations_in_lockstep);
     RUN(test_checkpoint_members_checked);
     RUN(test_checkpoint_bad_tokens_quoted);
     RUN(test_evaluations_are_reported);

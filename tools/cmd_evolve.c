@@ -206,32 +206,13 @@ int workers_of(const am_evo_def* d)
 
 /* ---- a wave: runs evolved in lockstep, their offspring evaluated in one parallel map ---- */
 
-#define WAVE_ITEMS (EXP_WAVE * AM_EVO_BATCH)
-
-typedef struct wave_job {
-    run_slot* s;
-    am_evo_work* work;
-    int run[WAVE_ITEMS], idx[WAVE_ITEMS]; /* map item j evaluates item idx[j] of run run[j]'s batch */
-    int cancellable[EXP_WAVE];
-    am_evo_result* res;
-} wave_job;
-
-/* the map's results (item j's in res[j]) */
+/* the merged map's scratch of a wave of several runs (am_evo_generations) */
 #if EXP_WAVE > 1
-static am_evo_result g_wave_res[WAVE_ITEMS];
+static am_evo_wave g_wave;
+#define WAVE_SCRATCH(n) ((n) > 1 ? &g_wave : NULL)
+#else
+#define WAVE_SCRATCH(n) NULL
 #endif
-
-static void wave_task(void* ctx, int item, int worker)
-{
-    wave_job* job = (wave_job*)ctx;
-    const int k = job->run[item];
-    if (job->cancellable[k] && run_cancel(NULL)) {
-        memset(&job->res[item], 0, sizeof job->res[item]);
-        job->res[item].skipped = 1;
-        return;
-    }
-    am_evo_batch_eval(job->s[k].e, job->idx[item], &job->work[worker], &job->res[item]);
-}
 
 /* after run k's generation: its log row, best robot and (when due) checkpoint; 0 or 1 */
 static int after_generation(tool_ctx* c, run_slot* r, double best_before, int had_best)
@@ -250,85 +231,39 @@ static int after_generation(tool_ctx* c, run_slot* r, double best_before, int ha
     return 0;
 }
 
-/* one generation of every unfinished run of the wave: the runs' batches made, evaluated together
- * in one parallel map (all their items, the largest bodies first), placed; then each run's files.
- * 0, 1 after a message, or 130 when the generation was cancelled (each run as before it) */
+/* one generation of every unfinished run of the wave (am_evo_generations: their offspring in one
+ * parallel map), then each run's files. 0, 1 after a message, or 130 when the generation was
+ * cancelled (the runs it stopped are as before it) */
 static int wave_generation(tool_ctx* c, run_slot* s, int n, int workers)
 {
-    static wave_job job;
     char err[AM_ERR_MAX];
     double best_before[EXP_WAVE];
-    int had_best[EXP_WAVE], live[EXP_WAVE], cancelled = 0;
-    long base = 0;
+    int had_best[EXP_WAVE];
+    long gen_before[EXP_WAVE], base = 0, after = 0;
+    am_evo* runs[EXP_WAVE];
+    am_evo_hooks hooks[EXP_WAVE];
     for (int k = 0; k < n; k++) {
-        live[k] = !am_evo_done(s[k].e);
+        runs[k] = s[k].e;
         base += s[k].e->evaluations;
         best_before[k] = s[k].e->has_best ? s[k].e->best.fitness : 0.0;
         had_best[k] = s[k].e->has_best;
-        if (live[k]) am_evo_gen_begin(s[k].e);
+        gen_before[k] = s[k].e->generation;
+        hooks[k] = (am_evo_hooks){run_cancel, evals_append, &s[k].eo};
     }
     g_test_int.base = base;
     atomic_store(&g_test_int.started, 0);
-    job.s = s;
-    job.work = c->work;
-    for (;;) {
-        /* every live run's next batch, merged into one map: most voxels first, ties in run order */
-        int total = 0, m[EXP_WAVE];
-        for (int k = 0; k < n; k++) {
-            m[k] = 0;
-            if (!live[k]) continue;
-            if (am_evo_batch_begin(s[k].e, &c->work[0].geno, &m[k], err, sizeof err) != AM_OK) {
-                fprintf(stderr, "amorph: %s: %s\n", s[k].dir, err);
-                return 1;
-            }
-            job.cancellable[k] = am_evo_batch_cancellable(s[k].e);
-            for (int i = 0; i < m[k]; i++) {
-                int j = total++, v = s[k].e->order_voxels[i];
-                while (j > 0 && s[job.run[j - 1]].e->order_voxels[job.idx[j - 1]] < v) {
-                    job.run[j] = job.run[j - 1];
-                    job.idx[j] = job.idx[j - 1];
-                    j--;
-                }
-                job.run[j] = k;
-                job.idx[j] = i;
-            }
-        }
-        if (total == 0) break;
-#if EXP_WAVE > 1
-        job.res = n == 1 ? s[0].e->res : g_wave_res;
-#else
-        job.res = s[0].e->res;
-#endif
-        if (am_port_parallel_map(total, workers, wave_task, &job, job.res, (long)sizeof job.res[0], err, sizeof err) != AM_OK) {
-            fprintf(stderr, "amorph: %s\n", err);
-            return 1;
-        }
-        if (job.res != s[0].e->res || n > 1)
-            for (int j = 0; j < total; j++) s[job.run[j]].e->res[job.idx[j]] = job.res[j];
-        for (int k = 0; k < n; k++) {
-            if (!live[k] || m[k] == 0) continue;
-            const am_evo_hooks hooks = {NULL, evals_append, &s[k].eo};
-            am_status st = am_evo_batch_end(s[k].e, s[k].e->res, &c->work[0].geno, &hooks, err, sizeof err);
-            if (st == AM_ERR_CANCELLED) {
-                live[k] = 0; /* abandoned: the run is as before the generation */
-                cancelled = 1;
-            } else if (st != AM_OK) {
-                fprintf(stderr, "amorph: %s: %s\n", s[k].dir, err);
-                return 1;
-            }
-        }
+    am_status st = am_evo_generations(runs, n, WAVE_SCRATCH(n), c->work, workers, hooks, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_CANCELLED) {
+        fprintf(stderr, "amorph: %s\n", err);
+        return 1;
     }
-    long after = 0;
-    for (int k = 0; k < n; k++) {
-        if (live[k]) am_evo_gen_end(s[k].e);
-        after += s[k].e->evaluations;
-    }
+    for (int k = 0; k < n; k++) after += s[k].e->evaluations;
     /* a test's point inside this generation that no cancel poll saw (several batches) */
-    if (!cancelled && g_test_int.sig && !atomic_load(&g_test_int.fired) && base <= g_test_int.after && g_test_int.after < after)
+    if (st == AM_OK && g_test_int.sig && !atomic_load(&g_test_int.fired) && base <= g_test_int.after && g_test_int.after < after)
         test_interrupt_fire();
     for (int k = 0; k < n; k++)
-        if (live[k] && after_generation(c, &s[k], best_before[k], had_best[k])) return 1;
-    return cancelled ? 130 : 0;
+        if (s[k].e->generation != gen_before[k] && after_generation(c, &s[k], best_before[k], had_best[k])) return 1;
+    return st == AM_ERR_CANCELLED ? 130 : 0;
 }
 
 int run_wave(tool_ctx* c, run_slot* s, int n, int quiet)

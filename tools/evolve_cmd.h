@@ -11,13 +11,13 @@
 #define EXP_MAX_RUNS 4          /* runs per variant */
 #define EXP_DIR_MAX 256         /* an experiment folder's name */
 #define EXP_RUN_DIR_MAX 384     /* a run folder's name */
-#define EXP_WAVE 1              /* runs evolved in lockstep (one am_evo each) */
+#define EXP_WAVE AM_EVO_WAVE_MAX /* runs evolved in lockstep (one am_evo each): 1 */
 #else
 #define EXP_ROWS 4096
 #define EXP_MAX_RUNS 16
 #define EXP_DIR_MAX 1024
 #define EXP_RUN_DIR_MAX 2048
-#define EXP_WAVE 16
+#define EXP_WAVE AM_EVO_WAVE_MAX /* 16 */
 #endif
 
 /* ---- options (tools/cmd_evolve.c) ---- */

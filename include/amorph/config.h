@@ -59,10 +59,12 @@
 #define AM_MAX_POPULATION 20    /* individuals of a run */
 #define AM_MAX_WORKERS 1        /* evaluation workspaces (one per thread) */
 #define AM_EVO_BATCH 2          /* offspring made, evaluated and placed at a time (even, >= 2) */
+#define AM_EVO_WAVE_MAX 1       /* runs evolved in lockstep by am_evo_generations */
 #else
 #define AM_MAX_POPULATION 256
 #define AM_MAX_WORKERS 16
 #define AM_EVO_BATCH AM_MAX_POPULATION /* a whole generation: one parallel map */
+#define AM_EVO_WAVE_MAX 16
 #endif
 
 /* ---- XML and VXA files (include/amorph/xml.h, include/amorph/vxa.h, docs/vxa.md) ---- */

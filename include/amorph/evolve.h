@@ -227,6 +227,21 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
 /* ends the generation: e->last, e->last_steps, e->last_voxel_steps, e->generation + 1 */
 void am_evo_gen_end(am_evo* e);
 
+/* Several runs in lockstep (amorph experiment): one generation of each unfinished run of
+ * runs[0..n), n <= AM_EVO_WAVE_MAX, the offspring of all of them evaluated in one parallel map,
+ * the largest bodies first, so the workers share n x population evaluations. hooks[k] (hooks may
+ * be NULL) are run k's. wave is the merged map's scratch (large: declare it static); NULL is
+ * allowed for n = 1. AM_OK when every unfinished run did its generation; AM_ERR_CANCELLED
+ * ("interrupted") when a cancel callback stopped a first batch: the runs so stopped are as before
+ * the call (their generation unchanged) and the others did theirs. Each run's result is what
+ * am_evo_generation gives it alone; am_evo_generation is this over one run. */
+typedef struct am_evo_wave {
+    int run[AM_EVO_WAVE_MAX * AM_EVO_BATCH], idx[AM_EVO_WAVE_MAX * AM_EVO_BATCH]; /* map item j: item idx[j] of run run[j] */
+    am_evo_result res[AM_EVO_WAVE_MAX * AM_EVO_BATCH];                            /* map item j's result */
+} am_evo_wave;
+am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, int workers, const am_evo_hooks* hooks,
+                             char* err, int errsz);
+
 /* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec and detail
  * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
