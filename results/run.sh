@@ -8,6 +8,9 @@
 # representation has runs early), others-2000 (one run of each other experiment's variants that
 # differ from the seed's settings), fig6-5000 (the nine runs extended to 5,000).
 # Every run uses one thread (the machine's other core stays free); results do not depend on it.
+# Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
+# fig6-2000): a run folder that the other runner is working in is skipped, and that runner
+# finishes it.
 set -u
 AMORPH=$1 DIR=$2 STAGE=$3
 
@@ -15,12 +18,22 @@ AMORPH=$1 DIR=$2 STAGE=$3
 run() {
     folder=$1 evals=$2
     shift 2
+    err=$DIR/.run.$$.err
     if [ -f "$folder/checkpoint.txt" ]; then
-        "$AMORPH" evolve --resume "$folder" --evaluations "$evals" --threads 1 --quiet || exit 1
+        "$AMORPH" evolve --resume "$folder" --evaluations "$evals" --threads 1 --quiet 2>"$err"
     else
         set -- $(for kv in "$@"; do printf -- '--%s %s ' "${kv%%=*}" "${kv#*=}"; done)
-        "$AMORPH" evolve "$@" --evaluations "$evals" --threads 1 --quiet --no-pictures --out "$folder" || exit 1
+        "$AMORPH" evolve "$@" --evaluations "$evals" --threads 1 --quiet --no-pictures --out "$folder" 2>"$err"
     fi
+    rc=$?
+    if [ $rc -ne 0 ] && grep -q 'another amorph is working' "$err"; then
+        rm -f "$err"
+        echo "$(date -u +%FT%TZ) $folder skipped: another runner is working in it"
+        return 0
+    fi
+    cat "$err" >&2
+    rm -f "$err"
+    [ $rc -eq 0 ] || exit 1
     echo "$(date -u +%FT%TZ) $folder $(sed -n 's/^evaluations = //p' "$folder/summary.txt" 2>/dev/null) evaluations"
 }
 

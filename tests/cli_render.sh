@@ -103,6 +103,12 @@ for l in xlabel ylabel; do
     check "plot: the $l of a run ('$a') and of an experiment ('$b') should be equal" [ -n "$a" ] && [ "$a" = "$b" ]
 done
 check "plot: the x axis should be evaluations" grep -q 'class="xlabel"[^>]*>evaluations<' "$TMPD/exp-only.svg"
+# a folder of run folders without experiment.txt (results/run.sh's layout) plots as the experiment
+mkdir -p "$TMPD/runsonly"
+cp -R tests/data/plot-exp/dct-1 tests/data/plot-exp/dct-2 tests/data/plot-exp/dct-3 tests/data/plot-exp/gmx-1 \
+    tests/data/plot-exp/gmx-2 tests/data/plot-exp/gmx-3 "$TMPD/runsonly/"
+expect_ok "$AMORPH" plot "$TMPD/runsonly" --out "$TMPD/runsonly.svg"
+check "plot: a folder of run folders should draw what its experiment folder draws" cmp -s "$TMPD/exp-only.svg" "$TMPD/runsonly.svg"
 # runs logging at different evaluations (populations of 20 and 30): the mean steps wherever one
 # of them does, from 30 (both have a value) to 60 (both still logged): at 30, 40 and 60
 mkdir -p "$TMPD/mixed/a-1" "$TMPD/mixed/a-2"

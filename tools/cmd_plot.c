@@ -145,7 +145,7 @@ static int load_experiment(const char* dir)
         if (n >= PLOT_MAX_RUNS) return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
         memcpy(names[n++], name, strlen(name) + 1); /* shorter than names[0]: checked above */
     }
-    if (n == 0) return tool_usage_error("plot: %s: no run folders (<variant>-<k>/log.csv) in the experiment folder", dir);
+    if (n == 0) return tool_usage_error("plot: %s: neither a run folder (log.csv) nor a folder of run folders (<variant>-<k>/log.csv)", dir);
     qsort(names, (size_t)n, sizeof names[0], cmp_names);
     int s = -1;
     for (int i = 0; i < n; i++) {
@@ -372,16 +372,16 @@ static int plot_svg_write(const char* title, const char* path)
     return tool_write_output(path, plot_svg, o.len);
 }
 
-/* loads every folder: a run folder (log.csv) is one line, an experiment folder one per variant */
+/* loads every folder: a run folder (log.csv) is one line, an experiment folder (or any folder of
+ * run folders) one per variant */
 static int plot_load(int ndirs, char** dirs)
 {
     plot_nruns = plot_nser = 0;
     plot_used = plot_mused = 0;
     for (int i = 0; i < ndirs; i++) {
-        char csv[PLOT_PATH_MAX + 16], exp[PLOT_PATH_MAX + 24];
+        char csv[PLOT_PATH_MAX + 16];
         if (strlen(dirs[i]) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dirs[i]);
         snprintf(csv, sizeof csv, "%s/" RUN_LOG, dirs[i]);
-        snprintf(exp, sizeof exp, "%s/" EXP_ABOUT, dirs[i]);
         if (!am_port_exists(dirs[i])) return tool_usage_error("plot: %s: no such folder", dirs[i]);
         if (am_port_exists(csv)) {
             char name[96];
@@ -390,11 +390,11 @@ static int plot_load(int ndirs, char** dirs)
             int rc = load_run(dirs[i], s);
             if (rc) return rc;
             plot_ser[s].runs[plot_ser[s].nruns++] = plot_nruns - 1;
-        } else if (am_port_exists(exp)) {
+        } else {
+            /* an experiment folder, or any folder of <variant>-<k> run folders (results/run.sh's) */
             int rc = load_experiment(dirs[i]);
             if (rc) return rc;
-        } else
-            return tool_usage_error("plot: %s: neither a run folder (log.csv) nor an experiment folder (experiment.txt)", dirs[i]);
+        }
     }
     series_means();
     return 0;
@@ -410,8 +410,8 @@ static const char plot_help[] =
     "usage: amorph plot DIR... --out FILE.svg [--title TEXT]\n"
     "Plots the best fitness so far against evaluations (the log.csv of each folder) as SVG. A run\n"
     "folder (amorph evolve --out DIR) is one line; an experiment folder (amorph experiment --out\n"
-    "DIR) gives one line per variant: the mean of its runs (<variant>-<k> subfolders) with a band\n"
-    "of one standard error, and each run faintly, as the seed's Figure 6.\n"
+    "DIR), or any folder of run folders named <variant>-<k>, gives one line per variant: the mean\n"
+    "of its runs with a band of one standard error, and each run faintly, as the seed's Figure 6.\n"
     "  --out FILE.svg   the picture (written atomically); required\n"
     "  --title TEXT     the heading (\"best fitness against evaluations\")\n";
 
