@@ -5,7 +5,8 @@
  * (the seed's rule). The list is kept and rebuilt only when some voxel has moved, since the last
  * rebuild, more than half the slack between 2.5 L and the largest contact distance: until then no
  * pair off the list can touch. The rebuild hashes voxel centres into a spatial grid of 2.5 L
- * cells (fixed bucket array, linked lists in a fixed array), so it costs O(n), not O(n^2).
+ * cells (fixed bucket array; the voxels counting-sorted by bucket into a fixed array, with a copy
+ * of their centres on the desktop), so it costs O(n), not O(n^2).
  *
  * Contacts are spheres of radius 0.625 s L; overlapping pairs push apart along the line of
  * centres with the harmonic mean of the two contact stiffnesses plus collision damping on the
@@ -14,14 +15,25 @@
 
 #define CAND_FACTOR AM_R(2.5)
 
+/* 1 when voxels i and j are joined by one link or by two. Links join voxels one lattice step
+ * apart along their direction, so a path of one or two links from i to j is a way of writing the
+ * lattice offset of j from i as that many unit steps: only offsets of one or two steps can be, and
+ * only the (at most two) orders of their steps need looking at */
 static int within_two_links(const am_model* m, int i, int j)
 {
-    for (int d = 0; d < 6; d++) {
-        int n = am_neighbour(m, d, i);
-        if (n < 0) continue;
-        if (n == j) return 1;
-        for (int e = 0; e < 6; e++)
-            if (am_neighbour(m, e, n) == j) return 1;
+    const int nx = m->nx, ny = m->ny, ci = m->cell[i], cj = m->cell[j];
+    const int d[3] = {cj % nx - ci % nx, (cj / nx) % ny - (ci / nx) % ny, cj / (nx * ny) - ci / (nx * ny)};
+    int step[2], n = 0;
+    for (int a = 0; a < 3; a++)
+        for (int k = d[a] < 0 ? -d[a] : d[a]; k > 0; k--) {
+            if (n == 2) return 0; /* three or more steps */
+            step[n++] = 2 * a + (d[a] < 0); /* the direction: +x, -x, +y, -y, +z, -z */
+        }
+    if (n == 1) return am_neighbour(m, step[0], i) == j;
+    if (n != 2) return 0;
+    for (int o = 0; o < (step[0] == step[1] ? 1 : 2); o++) {
+        const int v = am_neighbour(m, step[o], i);
+        if (v >= 0 && am_neighbour(m, step[1 - o], v) == j) return 1;
     }
     return 0;
 }
@@ -47,40 +59,95 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(
 #define POS(c, i) (s->pos[c][i])
 #endif
 
+/* the bucket of voxel i's centre */
+static uint32_t voxel_bucket(const am_model* m, const am_state* s, int i, am_real inv_h)
+{
+    (void)m; /* read by the board's POS */
+    return bucket_of(cell_coord(POS(0, i), inv_h), cell_coord(POS(1, i), inv_h), cell_coord(POS(2, i), inv_h));
+}
+
+/* the centre of entry k of the sorted buckets: a copy on the desktop, read where it is on the board */
+#if defined(AM_COMPACT)
+#define ITEM_POS(c, k) POS(c, s->bucket_item[k])
+#else
+#define ITEM_POS(c, k) (s->bucket_pos[c][k])
+#endif
+
 static void rebuild(const am_model* m, am_state* s)
 {
     const int nv = m->nv;
     const am_real h = AM_MUL(CAND_FACTOR, m->L), h2 = AM_MUL(h, h), inv_h = AM_DIV(AM_R(1), h);
-    for (int b = 0; b < AM_COLL_BUCKETS; b++) s->bucket_head[b] = -1;
-    /* insert in descending index order so every list runs in ascending order */
-    for (int i = nv - 1; i >= 0; i--) {
-        if (!m->surface[i]) continue;
-        uint32_t b = bucket_of(cell_coord(POS(0, i), inv_h), cell_coord(POS(1, i), inv_h), cell_coord(POS(2, i), inv_h));
-        s->bucket_next[i] = s->bucket_head[b];
-        s->bucket_head[b] = (am_index)i;
+    /* two voxels within two links are at most two lattice steps apart (Manhattan), so a pair whose
+     * rest centres are further apart than 2.5 edges needs no look at the links */
+    const am_real lattice_far = AM_MUL(AM_R(2.5), m->L);
+    am_index* end = s->bucket_end;
+    /* the surface voxels sorted by bucket (a counting sort), ascending within each bucket */
+    for (int b = 0; b < AM_COLL_BUCKETS; b++) end[b] = 0;
+    for (int i = 0; i < nv; i++)
+        if (m->surface[i]) end[voxel_bucket(m, s, i, inv_h)]++;
+    int sum = 0;
+    for (int b = 0; b < AM_COLL_BUCKETS; b++) {
+        int n = end[b];
+        end[b] = (am_index)sum; /* the bucket's first entry; the placing below moves it to its end */
+        sum += n;
     }
+    for (int i = 0; i < nv; i++) {
+        if (!m->surface[i]) continue;
+        const int k = end[voxel_bucket(m, s, i, inv_h)]++;
+        s->bucket_item[k] = (am_index)i;
+#if !defined(AM_COMPACT)
+        for (int c = 0; c < 3; c++) s->bucket_pos[c][k] = POS(c, i);
+#endif
+    }
+#if !defined(AM_COMPACT)
+    for (int b = 0; b < AM_COLL_BUCKETS; b++) {
+        s->bucket_seen[b] = 0;
+        s->bucket_cursor[b] = b ? end[b - 1] : 0;
+    }
+#endif
     int np = 0;
     for (int i = 0; i < nv; i++) {
         if (!m->surface[i]) continue;
-        long cx = cell_coord(POS(0, i), inv_h), cy = cell_coord(POS(1, i), inv_h), cz = cell_coord(POS(2, i), inv_h);
+        const am_real pix = POS(0, i), piy = POS(1, i), piz = POS(2, i);
+        long cx = cell_coord(pix, inv_h), cy = cell_coord(piy, inv_h), cz = cell_coord(piz, inv_h);
+#if defined(AM_COMPACT)
         uint32_t seen[27];
         int nseen = 0;
+#endif
         for (int dz = -1; dz <= 1; dz++)
             for (int dy = -1; dy <= 1; dy++)
                 for (int dx = -1; dx <= 1; dx++) {
                     uint32_t b = bucket_of(cx + dx, cy + dy, cz + dz);
+                    /* two cells that hash alike: the bucket is visited once, at the first; then
+                     * its entries after i, the pairs (i, j > i) */
+#if defined(AM_COMPACT)
                     int dup = 0;
-                    for (int k = 0; k < nseen; k++) dup |= seen[k] == b; /* hash collisions: visit once */
+                    for (int k = 0; k < nseen; k++) dup |= seen[k] == b;
                     if (dup) continue;
                     seen[nseen++] = b;
-                    for (int j = s->bucket_head[b]; j >= 0; j = s->bucket_next[j]) {
-                        if (j <= i) continue;
-                        am_real ex = POS(0, j) - POS(0, i), ey = POS(1, j) - POS(1, i), ez = POS(2, j) - POS(2, i);
+                    int k = b ? end[b - 1] : 0;
+                    const int k1 = end[b];
+                    while (k < k1 && s->bucket_item[k] <= i) k++;
+#else
+                    if (s->bucket_seen[b] == i + 1) continue;
+                    s->bucket_seen[b] = i + 1;
+                    /* i only grows, so the entries the cursor passed stay behind */
+                    int k = s->bucket_cursor[b];
+                    const int k1 = end[b];
+                    while (k < k1 && s->bucket_item[k] <= i) k++;
+                    s->bucket_cursor[b] = (am_index)k;
+#endif
+                    for (; k < k1; k++) {
+                        const int j = s->bucket_item[k];
+                        am_real ex = ITEM_POS(0, k) - pix, ey = ITEM_POS(1, k) - piy, ez = ITEM_POS(2, k) - piz;
                         /* a far pair is out on one axis already (and its square might leave a
                          * fixed-point range) */
                         if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
                         if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) >= h2) continue;
-                        if (within_two_links(m, i, j)) continue;
+                        if (am_fabs(m->x0[0][j] - m->x0[0][i]) + am_fabs(m->x0[1][j] - m->x0[1][i]) + am_fabs(m->x0[2][j] - m->x0[2][i]) <
+                                lattice_far &&
+                            within_two_links(m, i, j))
+                            continue;
                         if (np >= AM_MAX_PAIRS) {
                             s->pairs_overflow = 1;
                             continue;
@@ -91,8 +158,8 @@ static void rebuild(const am_model* m, am_state* s)
                     }
                 }
     }
-    /* pairs come out grouped by bucket visit order; that order is fixed by the positions, so the
-     * list is deterministic */
+    /* pairs come out grouped by bucket visit order, ascending within a bucket; that order is fixed
+     * by the positions, so the list is deterministic */
     s->npairs = np;
     if (np > s->max_npairs) s->max_npairs = np;
     for (int c = 0; c < 3; c++)

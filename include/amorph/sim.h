@@ -267,9 +267,12 @@ typedef struct am_state {
 #if !defined(AM_COMPACT)
     am_real pos[3][AM_MAX_VOXELS];       /* scratch: the centres x0 + x of the step, for the contacts
                                           * (the board computes them where read) */
+    am_real bucket_pos[3][AM_MAX_VOXELS]; /* broad-phase scratch: bucket_item's centres, */
+    int32_t bucket_seen[AM_COLL_BUCKETS];  /* the last voxel + 1 that visited the bucket, */
+    am_index bucket_cursor[AM_COLL_BUCKETS]; /* and the bucket's first entry after that voxel */
 #endif
-    am_index bucket_head[AM_COLL_BUCKETS]; /* broad-phase scratch */
-    am_index bucket_next[AM_MAX_VOXELS];
+    am_index bucket_end[AM_COLL_BUCKETS]; /* broad-phase scratch: the surface voxels sorted by */
+    am_index bucket_item[AM_MAX_VOXELS];  /* bucket, bucket b at [b ? end[b-1] : 0, end[b]) */
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
 #if defined(AM_REAL_FIXED_POINT)
     /* the rounding remainders of x, p and h (Q48 - Q24 parts, error diffusion): a step adds
