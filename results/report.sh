@@ -5,10 +5,15 @@
 # RUN/gait30.json, the best robot simulated in the run's settings over 30 actuation cycles instead
 # of the evolved 10 (`amorph sim RUN --cycles 30 --json`: travel per cycle, sustained, airborne,
 # the gait's name, the material mix), and with --pictures RUN/best.png, its filmstrip over the
-# evolved cycles (`amorph render`, 1200 x 300 pixels). Then it prints one Markdown table, a row per run: evaluations
-# done, best fitness, voxels and the material mix, and the 30-cycle gait. The files are
-# deterministic (gait30.json leaves out the wall time): the same run folder gives the same files on
-# every float build.
+# evolved cycles (`amorph render`, 1200 x 300 pixels). Then it prints Markdown: a table with a row
+# per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
+# Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
+# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them; and
+# the compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
+# DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs) and
+# DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1).
+# The files are deterministic (gait30.json leaves out the wall time): the same run folders give
+# the same files on every float build.
 set -eu
 AMORPH=$1 DIR=$2 PICTURES=${3:-}
 [ -x "$AMORPH" ] || { echo "report.sh: $AMORPH: not an executable" >&2; exit 2; }
@@ -43,3 +48,54 @@ for cfg in "$DIR"/*/*/config.txt; do
         "$mix" "$(json "$g" gait)" "$(echo "$first" | awk '{ print $1 * 1000 }')" "$(echo "$last" | awk '{ print $1 * 1000 }')" \
         "$(json "$g" sustained)" "$(json "$g" airborne)"
 done
+
+# Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
+# of each representation that reached it, (n) the number of those runs
+echo
+echo "| evaluations | DCT | CPPN | GMX |"
+echo "|---:|---|---|---|"
+awk -F, '
+    FNR == 1 { n = split(FILENAME, p, "/"); run = p[n - 1]; rep = run; sub(/-[0-9]+$/, "", rep); runs[run] = rep
+               for (c = 1; c <= NF; c++) col[$c] = c; best = -1; prev = 0; next }
+    { e = $col["evaluations"] + 0; before = best; if ($col["best"] + 0 > best) best = $col["best"] + 0
+      # each multiple of 500 in (prev, e]: the best of the rows at or below it
+      for (m = 500 * (int(prev / 500) + 1); m <= e; m += 500) at[run, m] = m == e ? best : before
+      prev = e; if (e > top) top = e }
+    END {
+      split("dct cppn gmx", order, " ")
+      for (m = 500; m <= top; m += 500) {
+        line = "| " m " |"
+        for (r = 1; r <= 3; r++) {
+          k = 0; s = 0; s2 = 0
+          for (run in runs) if (runs[run] == order[r] && ((run, m) in at)) { v = at[run, m]; k++; s += v; s2 += v * v }
+          if (k == 0) cell = ""
+          else if (k == 1) cell = sprintf("%.4f (1 run)", s)
+          else { mean = s / k; var = (s2 - k * mean * mean) / (k - 1); cell = sprintf("%.4f +- %.4f (%d runs)", mean, sqrt(var > 0 ? var / k : 0), k) }
+          line = line " " cell " |"
+        }
+        print line
+      }
+    }' "$DIR"/representations/*-[0-9]*/log.csv
+
+# compute: hours of one thread per run, the sum of log.csv's wall_s. A generation that took more
+# than 5 times the run's median was paused (the runners are stopped while other work needs the
+# machine, and a VM may be suspended): it counts as the median, and the last column says how many
+echo
+echo "| run | evaluations | hours | paused generations |"
+echo "|---|---:|---:|---:|"
+for log in "$DIR"/*/*/log.csv; do
+    run=${log%/log.csv}
+    col=$(head -n 1 "$log" | tr ',' '\n' | grep -n '^wall_s$' | cut -d: -f1)
+    med=$(tail -n +2 "$log" | cut -d, -f"$col" | sort -g | awk '{ a[NR] = $1 } END { print NR ? a[int((NR + 1) / 2)] : 0 }')
+    awk -F, -v name="${run#"$DIR"/}" -v c="$col" -v med="$med" 'FNR == 1 { for (k = 1; k <= NF; k++) if ($k == "evaluations") ce = k; next }
+        { w = $c + 0; if (w > 5 * med) { w = med; p++ } t += w; e = $ce } END { printf "| %s | %d | %.2f | %d |\n", name, e, t / 3600, p }' "$log"
+done
+
+if [ "$PICTURES" = "--pictures" ]; then
+    "$AMORPH" plot "$DIR/representations" --title "best fitness so far: DCT, CPPN and GMX at 20^3 (mean +- 1 standard error)" \
+        --out "$DIR/representations/fitness.svg" >/dev/null
+    set --
+    for d in three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
+    "$AMORPH" plot "$DIR/representations/gmx-1" "$@" --title "the other experiments against the seed's settings (gmx-1)" \
+        --out "$DIR/others.svg" >/dev/null
+fi
