@@ -8,8 +8,9 @@
 # evolved cycles (`amorph render`, 1200 x 300 pixels). Then it prints Markdown: a table with a row
 # per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
 # Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
-# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them; and
-# the compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
+# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them;
+# the mean size of the bodies each representation evaluated, every 500 evaluations; and the
+# compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
 # DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs) and
 # DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1).
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
@@ -76,6 +77,23 @@ awk -F, '
         print line
       }
     }' "$DIR"/representations/*-[0-9]*/log.csv
+
+# body size: the mean voxels of the bodies each representation evaluated in each window of 500
+# evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the
+# workspace" in numbers
+echo
+echo "| evaluations | DCT voxels | CPPN voxels | GMX voxels |"
+echo "|---:|---:|---:|---:|"
+for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do
+    [ -f "$f" ] || continue
+    rep=$(basename "$(dirname "$f")"); rep=${rep%-*}
+    gzip -dc "$f" | awk -F, -v rep="$rep" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
+        { print rep, int($col["evaluation"] / 500), $col["voxels"] }'
+done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
+    END { split("dct cppn gmx", order, " ")
+          for (w = 0; w <= top; w++) { line = "| " (w * 500 + 1) "-" (w + 1) * 500 " |"
+              for (r = 1; r <= 3; r++) line = line ((order[r], w) in n ? sprintf(" %.0f (%d bodies) |", s[order[r], w] / n[order[r], w], n[order[r], w]) : " |")
+              print line } }'
 
 # compute: hours of one thread per run, the sum of log.csv's wall_s. A generation that took more
 # than 5 times the run's median was paused (the runners are stopped while other work needs the
