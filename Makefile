@@ -236,11 +236,14 @@ repro:
 	@sh tools/repro.sh float
 	@sh tools/repro.sh fixed
 
-# worst-case stack depth from GCC's frame sizes and call graph: the board build, then the desktop
-# build (tools/stack.sh states the method)
+# worst-case stack depth from GCC's frame sizes and call graph: the board builds (Cortex-M4, and
+# rv32 when its compiler is installed), then the desktop build (tools/stack.sh states the method)
 stack:
 	@$(MAKE) --no-print-directory TARGET=cortex-m4 PROFILE=board BUILD=build/stack/cortex-m4 CFLAGS="-fstack-usage -fcallgraph-info=su" build/stack/cortex-m4/amorph >/dev/null
 	@echo "== board (cortex-m4, PROFILE=board)"; sh tools/stack.sh build/stack/cortex-m4
+	@if command -v riscv64-unknown-elf-gcc >/dev/null 2>&1; then \
+	    $(MAKE) --no-print-directory TARGET=rv32 PROFILE=board BUILD=build/stack/rv32 CFLAGS="-fstack-usage -fcallgraph-info=su" build/stack/rv32/amorph >/dev/null && \
+	    echo && echo "== board (rv32, PROFILE=board)" && sh tools/stack.sh build/stack/rv32; fi
 	@$(MAKE) --no-print-directory PROFILE=desktop ARCH= BUILD=build/stack/desktop CFLAGS="-fstack-usage -fcallgraph-info=su" build/stack/desktop/amorph >/dev/null
 	@echo; echo "== desktop (x86-64, PROFILE=desktop)"; sh tools/stack.sh build/stack/desktop
 

@@ -38,24 +38,36 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
 # util_text.c:drain, or the am_text functions it is inlined into), a line function of
 # tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream, a
 # whole-text writer of am_text_format (the write_ adapters of the genome, configuration and
-# checkpoint formats);
+# checkpoint formats), the fields of a summary for write_summaries (put_*), the frame sink of the recorder
+# (the sink of am_record_frame, tools/trajectory.c), the hooks of an evolution run (its cancel
+# test and its per-evaluation record, tools/cmd_evolve.c);
 # any other indirect call may reach any function of kind "other"
+# the name of a function without the suffixes of the clones GCC makes (.part.0, .constprop.0, .isra.0)
+function base(f) { sub(/(\.(part|constprop|isra|cold)\.[0-9]+)+$/, "", f); return f }
 function kind_of(c) {
+    c = base(c)
     if (c ~ /^src\/geno_(dct|cppn|gmx)\.c:/) return "geno"
     if (c ~ /_task$/) return "task"
     if (c ~ /(_flush|am_text_drop)$/) return "flush"
     if (c ~ /^tools\/.*_line$/) return "line"
     if (c ~ /_writer$/) return "writer"
     if (c ~ /^src\/(evo_checkpoint|evo_config|format_genome)\.c:write_/) return "textwriter"
+    if (c ~ /(^|:)put_[a-z_]+$/) return "put"
+    if (c ~ /(^|:)traj_row$/) return "sink"
+    if (c ~ /(^|:)(run_cancel|evals_append)$/) return "hook"
     return "other"
 }
 function site_of(f) {
+    f = base(f)
     if (f ~ /^(am_genome_|src\/(format_genome|geno_common|geno_levelset)\.c:)/) return "geno"
-    if (f ~ /(am_port_parallel_map|map_loop)$/) return "task"
+    if (f ~ /(am_port_parallel_map|map_loop|map_thread)$/) return "task"
     if (f ~ /(util_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
     if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
     if (f ~ /:write_stream$/) return "writer"
     if (f ~ /(^|:)am_text_format$/) return "textwriter"
+    if (f ~ /(^|:)write_summaries$/) return "put"
+    if (f ~ /(^|:)(am_record_frame|record_extra|am_evaluate)$/) return "sink" # record_extra is inlined into am_evaluate
+    if (f ~ /(^|:)(eval_task|am_evo_batch_end)$/) return "hook"
     return "other"
 }
 # the deepest callee of an indirect call made by f: a command (cmd_*) when f is the root, else
