@@ -13,6 +13,8 @@
  * approach speed. The pair list is walked serially in its (deterministic) order. */
 #include "sim_internal.h"
 
+#include <string.h>
+
 #define CAND_FACTOR AM_R(2.5)
 
 /* 1 when voxels i and j are joined by one link or by two. Links join voxels one lattice step
@@ -59,6 +61,32 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(
 #define POS(c, i) (s->pos[c][i])
 #endif
 
+#if !defined(AM_COMPACT)
+/* the bin of a pair d2 = d0^2 apart at the rebuild: floor((d0 - range) / width), in [0, bins) */
+static int gap_bin(am_real d2, am_real range, am_real inv_w)
+{
+    const am_real u = AM_MUL(am_sqrt(d2) - range, inv_w);
+    if (!(u > AM_R(0))) return 0;
+    if (u >= AM_INT(AM_COLL_GAP_BINS - 1)) return AM_COLL_GAP_BINS - 1;
+    return (int)AM_FLOOR_INT(u);
+}
+
+/* pair_by_gap: the pairs' indices counting-sorted by the bins that pair_touch holds */
+static void sort_by_gap(am_state* s)
+{
+    int32_t* end = s->gap_end;
+    for (int b = 0; b < AM_COLL_GAP_BINS; b++) end[b] = 0;
+    for (int k = 0; k < s->npairs; k++) end[s->pair_touch[k]]++;
+    int32_t sum = 0;
+    for (int b = 0; b < AM_COLL_GAP_BINS; b++) {
+        const int32_t n = end[b];
+        end[b] = sum;
+        sum += n;
+    }
+    for (int k = 0; k < s->npairs; k++) s->pair_by_gap[end[s->pair_touch[k]]++] = (am_index)k;
+}
+#endif
+
 /* the bucket of voxel i's centre */
 static uint32_t voxel_bucket(const am_model* m, const am_state* s, int i, am_real inv_h)
 {
@@ -81,6 +109,12 @@ static void rebuild(const am_model* m, am_state* s)
      * rest centres are further apart than 2.5 edges needs no look at the links */
     const am_real lattice_far = AM_MUL(AM_R(2.5), m->L);
     am_index* end = s->bucket_end;
+#if !defined(AM_COMPACT)
+    /* the bins of the pairs' distances: AM_COLL_GAP_BINS over the 2 slack between the contact range
+     * and h (all in the first when there is no slack: every step rebuilds then) */
+    s->gap_width = AM_MUL(h - m->coll_range, AM_R(1.0 / AM_COLL_GAP_BINS));
+    const am_real inv_w = s->gap_width > AM_R(0) ? AM_DIV(AM_R(1), s->gap_width) : AM_R(0);
+#endif
     /* the surface voxels sorted by bucket (a counting sort), ascending within each bucket */
     for (int b = 0; b < AM_COLL_BUCKETS; b++) end[b] = 0;
     for (int i = 0; i < nv; i++)
@@ -154,6 +188,9 @@ static void rebuild(const am_model* m, am_state* s)
                         }
                         s->pa[np] = (am_index)i;
                         s->pb[np] = (am_index)j;
+#if !defined(AM_COMPACT)
+                        s->pair_touch[np] = (uint8_t)gap_bin(AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez), m->coll_range, inv_w);
+#endif
                         np++;
                     }
                 }
@@ -162,6 +199,9 @@ static void rebuild(const am_model* m, am_state* s)
      * by the positions, so the list is deterministic */
     s->npairs = np;
     if (np > s->max_npairs) s->max_npairs = np;
+#if !defined(AM_COMPACT)
+    sort_by_gap(s);
+#endif
     for (int c = 0; c < 3; c++)
         for (int i = 0; i < nv; i++) s->xref[c][i] = s->x[c][i];
     s->rebuilds++;
@@ -170,10 +210,40 @@ static void rebuild(const am_model* m, am_state* s)
 typedef am_real vox_row[AM_MAX_VOXELS];
 
 /* 1 when some voxel is farther than sqrt(lim) = slack from where it was at the last rebuild
- * (restrict parameters and no early exit, so that the compiler vectorises it) */
-static int moved_far(int nv, am_real slack, am_real lim, const vox_row* restrict x, const vox_row* restrict xref)
+ * (restrict parameters and no early exit, so that the compiler vectorises it); *most the
+ * largest square of a voxel's move (trusted when 0 is returned) */
+/* the largest move is kept as a key that compares as the square does: the square itself in fixed
+ * point; else its bits, which compare as unsigned integers in the order of the (never negative)
+ * value, so that the maximum is an integer one, which the compiler vectorises (a floating one it
+ * may not reorder) */
+#if defined(AM_REAL_FIXED_POINT)
+typedef am_real move_key;
+static inline move_key key_of(am_real d2) { return d2; }
+static inline am_real real_of(move_key k) { return k; }
+#else
+#if defined(AM_REAL_DOUBLE)
+typedef uint64_t move_key;
+#else
+typedef uint32_t move_key;
+#endif
+static inline move_key key_of(am_real d2)
+{
+    move_key k;
+    memcpy(&k, &d2, sizeof k);
+    return k;
+}
+static inline am_real real_of(move_key k)
+{
+    am_real d2;
+    memcpy(&d2, &k, sizeof d2);
+    return d2;
+}
+#endif
+
+static int moved_far(int nv, am_real slack, am_real lim, const vox_row* restrict x, const vox_row* restrict xref, am_real* most)
 {
     int far = 0;
+    move_key top = key_of(AM_R(0));
     (void)slack; /* read by the fixed-point build only */
     for (int i = 0; i < nv; i++) {
         am_real ex = x[0][i] - xref[0][i], ey = x[1][i] - xref[1][i], ez = x[2][i] - xref[2][i];
@@ -182,21 +252,27 @@ static int moved_far(int nv, am_real slack, am_real lim, const vox_row* restrict
          * trusted (an or over all voxels, as the early return of the scalar test was) */
         far |= (am_fabs(ex) > slack) + (am_fabs(ey) > slack) + (am_fabs(ez) > slack) > 0;
 #endif
-        far |= AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) > lim;
+        const am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
+        const move_key k = key_of(d2);
+        far |= d2 > lim;
+        top = k > top ? k : top;
     }
+    *most = real_of(top);
     return far;
 }
 
-static int needs_rebuild(const am_model* m, const am_state* s)
+/* 1 when the list must be rebuilt; else *most is the largest square of a voxel's move since */
+static int needs_rebuild(const am_model* m, const am_state* s, am_real* most)
 {
+    *most = AM_R(0);
     if (s->npairs < 0) return 1;
     am_real slack = AM_MUL(AM_R(0.5), AM_MUL(CAND_FACTOR, m->L) - m->coll_range);
     if (!(slack > AM_R(0))) return 1;
-    return moved_far(m->nv, slack, AM_MUL(slack, slack), (const vox_row*)s->x, (const vox_row*)s->xref);
+    return moved_far(m->nv, slack, AM_MUL(slack, slack), (const vox_row*)s->x, (const vox_row*)s->xref, most);
 }
 
-/* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
- * a chunk of the list at once (no branch: the compiler vectorises it) */
+/* the centres of the voxels for the contact tests: x0 + x where read on the board, the step's
+ * copy in pos on the desktop */
 #define PAIR_CHUNK 64
 #if defined(AM_COMPACT)
 #define CENTRES_PARAM const vox_row *restrict x0, const vox_row *restrict x
@@ -213,6 +289,10 @@ static void collision_positions(int nv, const vox_row* restrict x0, const vox_ro
         for (int i = 0; i < nv; i++) pos[c][i] = x0[c][i] + x[c][i];
 }
 #endif
+
+#if defined(AM_COMPACT)
+/* touch[j] = 1 when the candidate pair k0 + j (j < n) overlaps: the test of am_sim_collide, for
+ * a chunk of the list at once (no branch: the compiler vectorises it) */
 static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_index* restrict pb, CENTRES_PARAM,
                      const am_real* restrict scale, int32_t* restrict touch)
 {
@@ -224,6 +304,21 @@ static void overlaps(int n, am_real rad, const am_index* restrict pa, const am_i
         touch[j] = !(d2 >= AM_MUL(reach, reach)) & (d2 > AM_R(0));
     }
 }
+#else
+/* hit[q] = 1 when the candidate pair idx[q] (q < n) overlaps: the test of am_sim_collide for the
+ * pairs a step tests, a chunk at once (no branch: the compiler vectorises it) */
+static void overlaps_of(int n, am_real rad, const am_index* restrict idx, const am_index* restrict pa, const am_index* restrict pb,
+                        CENTRES_PARAM, const am_real* restrict scale, int32_t* restrict hit)
+{
+    for (int q = 0; q < n; q++) {
+        const int k = idx[q], a = pa[k], b = pb[k];
+        am_real ex = CENTRE(0, b) - CENTRE(0, a), ey = CENTRE(1, b) - CENTRE(1, a), ez = CENTRE(2, b) - CENTRE(2, a);
+        am_real reach = AM_MUL(rad, scale[a] + scale[b]);
+        am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
+        hit[q] = !(d2 >= AM_MUL(reach, reach)) & (d2 > AM_R(0));
+    }
+}
+#endif
 
 void am_sim_collide(const am_model* m, am_state* s)
 {
@@ -234,8 +329,35 @@ void am_sim_collide(const am_model* m, am_state* s)
 #if !defined(AM_COMPACT)
     collision_positions(nv, (const vox_row*)m->x0, (const vox_row*)s->x, s->pos);
 #endif
-    if (needs_rebuild(m, s)) rebuild(m, s);
+    am_real most;
+    if (needs_rebuild(m, s, &most)) {
+        rebuild(m, s);
+        most = AM_R(0);
+    }
     const am_real rad = AM_MUL(AM_R(0.625), m->L);
+#if !defined(AM_COMPACT)
+    /* A pair d0 apart at the rebuild is now at least d0 - 2 D apart, D the largest move of a voxel
+     * since, and touches only closer than the contact range: only the bins below 2 D (and a
+     * margin for rounding) above the range are tested, the others cannot touch. The overlapping
+     * pairs are then walked in the list's order, so the forces add up as when every pair is tested */
+    uint8_t* touch = s->pair_touch;
+    const int np = s->npairs;
+    memset(touch, 0, (size_t)(np > 0 ? np : 0));
+    int nb = AM_COLL_GAP_BINS;
+    if (s->gap_width > AM_R(0)) {
+        const am_real u = AM_DIV(AM_MUL(AM_R(2), am_sqrt(most)) + AM_MUL(AM_R(1.0 / 1024), m->L), s->gap_width);
+        if (u < AM_INT(AM_COLL_GAP_BINS - 1)) nb = (int)AM_FLOOR_INT(u) + 1;
+    }
+    const int ntest = np > 0 ? s->gap_end[nb - 1] : 0;
+    int32_t hit[PAIR_CHUNK];
+    for (int k = 0; k < ntest; k += PAIR_CHUNK) {
+        const int n = ntest - k < PAIR_CHUNK ? ntest - k : PAIR_CHUNK;
+        overlaps_of(n, rad, s->pair_by_gap + k, s->pa, s->pb, CENTRES_ARG(m, s), s->s, hit);
+        for (int q = 0; q < n; q++) touch[s->pair_by_gap[k + q]] = (uint8_t)hit[q];
+    }
+    for (int k = 0; k < np; k++) {
+        if (!touch[k]) continue;
+#else
     int32_t touch[PAIR_CHUNK];
     for (int k = 0; k < s->npairs; k++) {
         if (k % PAIR_CHUNK == 0) {
@@ -243,6 +365,7 @@ void am_sim_collide(const am_model* m, am_state* s)
             overlaps(n, rad, s->pa + k, s->pb + k, CENTRES_ARG(m, s), s->s, touch);
         }
         if (!touch[k % PAIR_CHUNK]) continue;
+#endif
         const int a = s->pa[k], b = s->pb[k];
         am_real ex = POS(0, b) - POS(0, a), ey = POS(1, b) - POS(1, a), ez = POS(2, b) - POS(2, a);
         am_real reach = AM_MUL(rad, s->s[a] + s->s[b]);

@@ -934,13 +934,15 @@ static void test_self_collision(void)
     CHECK(off < 0.25 * VOX_L, "collisions off: the cubes did not pass through (%.3f L)", off / VOX_L);
 }
 
-/* The candidate list against its rule, counted out pair by pair (docs/physics.md section 6):
- * after each rebuild, the pairs (i < j) on the list are exactly the pairs of surface voxels whose
+/* The candidate list against its rule, counted out pair by pair (docs/physics.md section 6), and
+ * the contacts each step finds against all the listed pairs: after each rebuild, the pairs (i < j) on the list are exactly the pairs of surface voxels whose
  * centres at the rebuild (x0 + xref) are closer than 2.5 L, less those joined by one link or by two
  * (looked up here by walking the links, not by lattice offsets as the rebuild does); each once, i
  * ascending. A random half-filled 10^3 lattice of both materials (holes, thin parts, voxels joined
  * by two links around a corner), actuated and shaken (random speeds up to 2 m/s) so that the list
- * is rebuilt many times. A pair within 1e-6 of the 2.5 L bound is not judged. */
+ * is rebuilt many times; after every step (desktop builds), the pairs the step found overlapping
+ * are exactly the listed pairs closer than their contact distance. A pair within 1e-6 of the
+ * 2.5 L bound (1e-5 of its contact distance) is not judged. */
 static int linked_within_two(int i, int j)
 {
     for (int d = 0; d < 6; d++) {
@@ -967,8 +969,32 @@ static void test_collision_pairs(void)
     const double h = 2.5 * SI(g_m.L, LENGTH);
     long checked = 0, rebuilds = -1, pairs = 0, links_out = 0, unjudged = 0;
     int bad = 0;
+    long touching = 0, tested_steps = 0;
     for (long k = 0; k < qsteps(1500, 300) && !bad; k++) {
         am_step(&g_m, &g_s);
+#if !defined(AM_COMPACT)
+        /* the step's contacts: a step tests only the pairs that can have closed their gap since the
+         * rebuild; every pair that overlapped at the step's centres (pos, scales s) must be among
+         * those it found (pair_touch), and no other */
+        tested_steps++;
+        for (int q = 0; q < g_s.npairs && !bad; q++) {
+            const int a = g_s.pa[q], b = g_s.pb[q];
+            double d2 = 0;
+            for (int c = 0; c < 3; c++) {
+                double e = SI(g_s.pos[c][b], LENGTH) - SI(g_s.pos[c][a], LENGTH);
+                d2 += e * e;
+            }
+            const double reach = 0.625 * SI(g_m.L, LENGTH) * (SI(g_s.s[a], NONE) + SI(g_s.s[b], NONE));
+            if (fabs(d2 - reach * reach) < 1e-5 * reach * reach) continue; /* at the bound: not judged */
+            const int over = d2 < reach * reach;
+            touching += over;
+            if (over != g_s.pair_touch[q]) {
+                CHECK(0, "step %ld: pair %d (%d, %d) at %.4f of its contact distance: found %d, overlaps %d", k, q, a, b,
+                      sqrt(d2) / reach, g_s.pair_touch[q], over);
+                bad = 1;
+            }
+        }
+#endif
         if (g_s.rebuilds == rebuilds) continue;
         rebuilds = g_s.rebuilds;
         checked++;
@@ -1009,11 +1035,14 @@ static void test_collision_pairs(void)
             }
     }
     printf("    collision pairs: %ld rebuilds checked (%d voxels), %ld pairs listed as the rule says, %ld near pairs left out as "
-           "within two links, %ld at the bound not judged\n",
-           checked, g_m.nv, pairs, links_out, unjudged);
+           "within two links, %ld at the bound not judged; %ld steps' contacts checked, %ld overlapping pairs found\n",
+           checked, g_m.nv, pairs, links_out, unjudged, tested_steps, touching);
     if (bad) return; /* the first wrong pair is the message */
     CHECK(checked >= 5, "only %ld rebuilds in the run: the test shakes too little", checked);
     CHECK(links_out > 0 && pairs > 0, "the scene has no pair of one kind (%ld listed, %ld within two links)", pairs, links_out);
+#if !defined(AM_COMPACT)
+    CHECK(touching > 0, "no pair ever overlapped: the contacts of the steps were not put to the test");
+#endif
     CHECK(!g_s.diverged, "diverged");
 }
 

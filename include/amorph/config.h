@@ -27,6 +27,7 @@
 #else
 #define AM_MAX_PAIRS (12 * AM_MAX_VOXELS)
 #define AM_COLL_BUCKETS 4096
+#define AM_COLL_GAP_BINS 32     /* the candidate pairs binned by their distance at the rebuild */
 #endif
 #define AM_NAME_MAX 24          /* material name, including the terminating NUL */
 #define AM_ERR_MAX 256          /* recommended size of an error message buffer */
