@@ -52,6 +52,8 @@ done
 
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
 # of each representation that reached it, (n) the number of those runs
+set -- "$DIR"/representations/*-[0-9]*/log.csv
+[ -f "$1" ] && {
 echo
 echo "| evaluations | DCT | CPPN | GMX |"
 echo "|---:|---|---|---|"
@@ -76,7 +78,8 @@ awk -F, '
         }
         print line
       }
-    }' "$DIR"/representations/*-[0-9]*/log.csv
+    }' "$@"
+}
 
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the
@@ -90,7 +93,8 @@ for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do
     gzip -dc "$f" | awk -F, -v rep="$rep" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
         { print rep, int($col["evaluation"] / 500), $col["voxels"] }'
 done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
-    END { split("dct cppn gmx", order, " ")
+    END { if (NR == 0) exit
+          split("dct cppn gmx", order, " ")
           for (w = 0; w <= top; w++) { line = "| " (w * 500 + 1) "-" (w + 1) * 500 " |"
               for (r = 1; r <= 3; r++) line = line ((order[r], w) in n ? sprintf(" %.0f (%d bodies) |", s[order[r], w] / n[order[r], w], n[order[r], w]) : " |")
               print line } }'
@@ -102,6 +106,7 @@ echo
 echo "| run | evaluations | hours | paused generations |"
 echo "|---|---:|---:|---:|"
 for log in "$DIR"/*/*/log.csv; do
+    [ -f "$log" ] || continue
     run=${log%/log.csv}
     col=$(head -n 1 "$log" | tr ',' '\n' | grep -n '^wall_s$' | cut -d: -f1)
     med=$(tail -n +2 "$log" | cut -d, -f"$col" | sort -g | awk '{ a[NR] = $1 } END { print NR ? a[int((NR + 1) / 2)] : 0 }')
@@ -109,11 +114,12 @@ for log in "$DIR"/*/*/log.csv; do
         { w = $c + 0; if (w > 5 * med) { w = med; p++ } t += w; e = $ce } END { printf "| %s | %d | %.2f | %d |\n", name, e, t / 3600, p }' "$log"
 done
 
-if [ "$PICTURES" = "--pictures" ]; then
+if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     "$AMORPH" plot "$DIR/representations" --title "best fitness so far: DCT, CPPN and GMX at 20^3 (mean +- 1 standard error)" \
         --out "$DIR/representations/fitness.svg" >/dev/null
     set --
-    for d in three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
-    "$AMORPH" plot "$DIR/representations/gmx-1" "$@" --title "the other experiments against the seed's settings (gmx-1)" \
-        --out "$DIR/others.svg" >/dev/null
+    for d in representations/gmx-1 three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
+    if [ $# -gt 0 ]; then
+        "$AMORPH" plot "$@" --title "the other experiments against the seed's settings (gmx-1)" --out "$DIR/others.svg" >/dev/null
+    fi
 fi
