@@ -6,8 +6,9 @@
 # AMORPH: the amorph binary; DIR: where the run folders go (DIR/representations/dct-1 ...);
 # STAGE: fig6-2000 (the nine Figure 6 runs to 2,000 evaluations, interleaved so every
 # representation has runs early), others-2000 (one run of each other experiment's variants that
-# differ from the seed's settings), fig6-5000 (the nine runs extended to 5,000).
-# Every run uses one thread (the machine's other core stays free); results do not depend on it.
+# differ from the seed's settings), fig6-5000 (the nine runs extended to 5,000; any fig6-N takes
+# them to N, the seed's were 20,000).
+# Every run uses one thread (results do not depend on it).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
 # fig6-2000): a run folder that the other runner is working in is skipped, and that runner
 # finishes it.
@@ -47,8 +48,8 @@ fig6() {
 }
 
 case $STAGE in
-fig6-2000) fig6 2000 ;;
-fig6-5000) fig6 5000 ;;
+fig6-*[!0-9]* | fig6-) echo "run.sh: '$STAGE': fig6-N takes a number of evaluations" >&2; exit 2 ;;
+fig6-*) fig6 "${STAGE#fig6-}" ;;
 others-2000)
     # the variants of the other experiments (amorph experiment --help) that differ from the seed's
     # settings; the seed's settings themselves are representations/gmx-1
@@ -60,5 +61,5 @@ others-2000)
     run "$DIR/friction/k0.1_s5.0-1" 2000 mu_kinetic=0.1 mu_static=5.0 seed=1
     run "$DIR/friction/k0.4_s0.5-1" 2000 mu_kinetic=0.4 mu_static=0.5 seed=1
     ;;
-*) echo "run.sh: unknown stage '$STAGE' (fig6-2000, others-2000, fig6-5000)" >&2; exit 2 ;;
+*) echo "run.sh: unknown stage '$STAGE' (fig6-2000, others-2000, fig6-5000, fig6-N)" >&2; exit 2 ;;
 esac
