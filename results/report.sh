@@ -12,7 +12,8 @@
 # the mean size of the bodies each representation evaluated, every 500 evaluations; and the
 # compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
 # DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs) and
-# DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1).
+# DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1)
+# and DIR/gaits.svg (each best robot's travel in each of its 30 cycles, a row per run).
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
 # the same files on every float build.
 set -eu
@@ -122,4 +123,33 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     if [ $# -gt 0 ]; then
         "$AMORPH" plot "$@" --title "the other experiments against the seed's settings (gmx-1)" --out "$DIR/others.svg" >/dev/null
     fi
+    # gaits.svg: a row per run, the travel of each of its best robot's 30 cycles as bars on one
+    # scale, with its gait and sustained figure: a flop's bars stop, a scoot's go on
+    for g in "$DIR"/*/*/gait30.json; do
+        [ -f "$g" ] || continue
+        run=${g%/gait30.json}
+        echo "${run#"$DIR"/} $(json "$g" gait) $(json "$g" sustained) $(jarr "$g" cycle_travel)"
+    done | awk '
+        { name[NR] = $1; gait[NR] = $2; sus[NR] = $3; n[NR] = NF - 3
+          for (c = 4; c <= NF; c++) { v[NR, c - 3] = $c * 1000; if ($c * 1000 > top) top = $c * 1000 } }
+        END {
+            if (NR == 0) exit
+            if (top <= 0) top = 1
+            W = 960; rowh = 54; left = 300; bw = (W - left - 20) / 30; H = 60 + NR * rowh
+            printf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\" font-family=\"sans-serif\" font-size=\"12\">\n", W, H, W, H
+            printf "<rect width=\"%d\" height=\"%d\" fill=\"white\"/>\n", W, H
+            printf "<text x=\"10\" y=\"20\" font-size=\"14\" font-weight=\"bold\">travel of the centre of mass in each of 30 actuation cycles (mm; bar height %.2f mm at the most)</text>\n", top
+            for (r = 1; r <= NR; r++) {
+                y0 = 40 + (r - 1) * rowh; base = y0 + rowh - 12
+                printf "<text x=\"10\" y=\"%d\">%s</text>\n", y0 + 20, name[r]
+                printf "<text x=\"10\" y=\"%d\" fill=\"#555\">%s, sustained %.2f</text>\n", y0 + 36, gait[r], sus[r]
+                printf "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#999\"/>\n", left, base, W - 20, base
+                for (c = 1; c <= n[r]; c++) {
+                    hgt = v[r, c] / top * (rowh - 16); if (hgt < 0) hgt = 0
+                    printf "<rect class=\"bar\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n", left + (c - 1) * bw + 1, base - hgt, bw - 2, hgt, c <= 10 ? "#1f77b4" : "#9ecae1"
+                }
+            }
+            printf "<text x=\"%d\" y=\"%d\" fill=\"#555\">dark: the 10 evolved cycles; light: the 20 after them</text>\n", left, H - 2
+            print "</svg>"
+        }' >"$DIR/gaits.svg.new" && mv "$DIR/gaits.svg.new" "$DIR/gaits.svg"
 fi

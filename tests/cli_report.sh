@@ -2,7 +2,7 @@
 # on small runs made here, with their log.csv replaced by rows whose answers are known: the Figure 6
 # table's means and standard errors (over the runs that reached each 500 evaluations), the mean
 # body size per 500 evaluations from evals.csv.gz, the compute with a paused generation counted
-# at the median, a row per run with its 30-cycle gait, and the plots. Float desktop builds (the
+# at the median, a row per run with its 30-cycle gait, and the plots (gaits.svg's bars too). Float desktop builds (the
 # report simulates the runs' best robots). Run from the repository root.
 . tests/shlib.sh
 
@@ -56,6 +56,9 @@ for run in representations/dct-1 representations/dct-2 representations/gmx-1 fri
 done
 check "the Figure 6 plot" grep -q '<svg' "$R/representations/fitness.svg"
 check "the plot of the other experiments" grep -q '<svg' "$R/others.svg"
+# gaits.svg: a row of 30 bars per run (4 runs here), the rows named after the runs
+check "gaits.svg: $(grep -c 'class="bar"' "$R/gaits.svg") bars, want 120" [ "$(grep -c 'class="bar"' "$R/gaits.svg")" -eq 120 ]
+check "gaits.svg names the runs" sh -c "grep -q '>representations/dct-2<' '$R/gaits.svg' && grep -q '>friction/k0.1_s5.0-1<' '$R/gaits.svg'"
 # the same folders give the same files (the report leaves out wall times)
 cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
 expect_ok sh results/report.sh "$AMORPH" "$R"
