@@ -25,6 +25,9 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
     for f in config.txt best.genome best.lattice summary.txt summary.json; do
         [ -f "$run/$f" ] && cp "$run/$f" "$out/$f"
     done
+    # the summaries name the folder the run was made in; the copy names itself
+    [ -f "$out/summary.txt" ] && sed -i "s|^run = .*|run = results/$name|" "$out/summary.txt"
+    [ -f "$out/summary.json" ] && sed -i "s|\"run\": \"[^\"]*\"|\"run\": \"results/$name\"|" "$out/summary.json"
     head -n $((gens + 2)) "$run/log.csv" >"$out/log.csv"
     head -n $((evals + 1)) "$run/evals.csv" | gzip -9n >"$out/evals.csv.gz"
     rm -f "$out/evals.csv"
