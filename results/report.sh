@@ -11,7 +11,8 @@
 # runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them;
 # the mean size of the bodies each representation evaluated, every 500 evaluations; and the
 # compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
-# DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs) and
+# DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs that have
+# reached FIG6_MIN_EVALS evaluations, 2,000 unless set, or from every run when none has),
 # DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1)
 # and DIR/gaits.svg (each best robot's travel in each of its 30 cycles, a row per run).
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
@@ -116,8 +117,15 @@ for log in "$DIR"/*/*/log.csv; do
 done
 
 if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
-    "$AMORPH" plot "$DIR/representations" --title "best fitness so far: DCT, CPPN and GMX at 20^3 (mean +- 1 standard error)" \
-        --out "$DIR/representations/fitness.svg" >/dev/null
+    # the runs that have reached FIG6_MIN_EVALS (2,000: the first stage of results/run.sh), so
+    # that a run just started does not end its representation's mean where it stands; every run
+    # when none has
+    min=${FIG6_MIN_EVALS:-2000}
+    fig6() {
+        "$AMORPH" plot "$DIR/representations" --min-evals "$1" --out "$DIR/representations/fitness.svg" \
+            --title "best fitness so far: DCT, CPPN and GMX at 20^3 (mean +- 1 standard error of the runs with $1 evaluations or more)"
+    }
+    fig6 "$min" >/dev/null 2>&1 || fig6 0 >/dev/null
     set --
     for d in representations/gmx-1 three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
     if [ $# -gt 0 ]; then

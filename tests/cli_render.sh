@@ -109,6 +109,19 @@ cp -R tests/data/plot-exp/dct-1 tests/data/plot-exp/dct-2 tests/data/plot-exp/dc
     tests/data/plot-exp/gmx-2 tests/data/plot-exp/gmx-3 "$TMPD/runsonly/"
 expect_ok "$AMORPH" plot "$TMPD/runsonly" --out "$TMPD/runsonly.svg"
 check "plot: a folder of run folders should draw what its experiment folder draws" cmp -s "$TMPD/exp-only.svg" "$TMPD/runsonly.svg"
+# --min-evals: a run short of N is left out of its variant's mean (a third run of 20 evaluations
+# would otherwise end the mean at 20)
+mkdir -p "$TMPD/short/a-1" "$TMPD/short/a-2" "$TMPD/short/a-3"
+printf 'generation,evaluations,best\n0,20,0.001\n1,40,0.002\n2,60,0.004\n' >"$TMPD/short/a-1/log.csv"
+printf 'generation,evaluations,best\n0,20,0.003\n1,40,0.003\n2,60,0.005\n' >"$TMPD/short/a-2/log.csv"
+printf 'generation,evaluations,best\n0,20,0.009\n' >"$TMPD/short/a-3/log.csv"
+expect_ok "$AMORPH" plot "$TMPD/short" --out "$TMPD/short-all.svg"
+expect_ok "$AMORPH" plot "$TMPD/short" --min-evals 60 --out "$TMPD/short-60.svg"
+check "plot --min-evals: the legend should count 2 runs" grep -q 'a, 2 runs' "$TMPD/short-60.svg"
+check "plot without --min-evals: the legend should count 3 runs" grep -q 'a, 3 runs' "$TMPD/short-all.svg"
+check "plot --min-evals: the mean should step 3 times (20, 40, 60): '$(dpath "$TMPD/short-60.svg" mean 1)'" steps "$(dpath "$TMPD/short-60.svg" mean 1)" 3
+expect_fail 2 "no run has logged 100 evaluations" "$AMORPH" plot "$TMPD/short" --min-evals 100 --out "$TMPD/x.svg"
+expect_fail 2 "--min-evals needs a whole number" "$AMORPH" plot "$TMPD/short" --min-evals -1 --out "$TMPD/x.svg"
 # runs logging at different evaluations (populations of 20 and 30): the mean steps wherever one
 # of them does, from 30 (both have a value) to 60 (both still logged): at 30, 40 and 60
 mkdir -p "$TMPD/mixed/a-1" "$TMPD/mixed/a-2"

@@ -32,6 +32,7 @@ typedef struct plot_series {
 } plot_series;
 
 static plot_run plot_runs[PLOT_MAX_RUNS];
+static long plot_min_evals; /* --min-evals: a folder of runs leaves out the runs short of it */
 static plot_series plot_ser[PLOT_MAX_SERIES];
 static int plot_nruns, plot_nser;
 static double plot_x[PLOT_MAX_POINTS], plot_y[PLOT_MAX_POINTS];
@@ -147,20 +148,31 @@ static int load_experiment(const char* dir)
     }
     if (n == 0) return tool_usage_error("plot: %s: neither a run folder (log.csv) nor a folder of run folders (<variant>-<k>/log.csv)", dir);
     qsort(names, (size_t)n, sizeof names[0], cmp_names);
-    int s = -1;
+    int s = -1, kept = 0;
     for (int i = 0; i < n; i++) {
         char label[96], sub[PLOT_PATH_MAX + 128];
         snprintf(label, sizeof label, "%.*s", (int)(strrchr(names[i], '-') - names[i]), names[i]);
-        if (s < 0 || strcmp(plot_ser[s].label, label)) {
+        /* a variant's line begins with its first run kept */
+        int fresh = s < 0 || strcmp(plot_ser[s].label, label);
+        const int s_run = fresh ? plot_nser : s;
+        snprintf(sub, sizeof sub, "%s/%.95s", dir, names[i]);
+        int rc = load_run(sub, s_run);
+        if (rc) return rc;
+        const plot_run* r = &plot_runs[plot_nruns - 1];
+        if (plot_x[r->first + r->n - 1] < (double)plot_min_evals) { /* short of --min-evals: left out */
+            plot_used = r->first;
+            plot_nruns--;
+            continue;
+        }
+        if (fresh) {
             s = new_series(label);
             if (s < 0) return tool_usage_error("plot: more than %d lines", PLOT_MAX_SERIES);
             plot_ser[s].experiment = 1;
         }
-        snprintf(sub, sizeof sub, "%s/%.95s", dir, names[i]);
-        int rc = load_run(sub, s);
-        if (rc) return rc;
         plot_ser[s].runs[plot_ser[s].nruns++] = plot_nruns - 1;
+        kept++;
     }
+    if (kept == 0) return tool_usage_error("plot: %s: no run has logged %ld evaluations (--min-evals)", dir, plot_min_evals);
     return 0;
 }
 
@@ -413,13 +425,16 @@ static const char plot_help[] =
     "DIR), or any folder of run folders named <variant>-<k>, gives one line per variant: the mean\n"
     "of its runs with a band of one standard error, and each run faintly, as the seed's Figure 6.\n"
     "  --out FILE.svg   the picture (written atomically); required\n"
-    "  --title TEXT     the heading (\"best fitness against evaluations\")\n";
+    "  --title TEXT     the heading (\"best fitness against evaluations\")\n"
+    "  --min-evals N    in a folder of runs, leave out the runs that have logged fewer than N\n"
+    "                   evaluations (each mean runs as far as the shortest run it keeps)\n";
 
 int cmd_plot(tool_ctx* c, int argc, char** argv)
 {
     (void)c;
     const char* out = 0;
     const char* title = "best fitness against evaluations";
+    long min_evals = 0;
     static char* dirs[PLOT_MAX_RUNS];
     int nd = 0;
     for (int i = 1; i < argc; i++) {
@@ -434,6 +449,9 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--title")) {
             if (!v) return tool_usage_error("plot: --title needs a text");
             title = v, i++;
+        } else if (!strcmp(a, "--min-evals")) {
+            if (!tool_parse_long(v, 0, 1000000000L, &min_evals)) return tool_usage_error("plot: --min-evals needs a whole number 0..1000000000");
+            i++;
         } else if (a[0] == '-' && a[1]) {
             return tool_unknown_option("plot", a);
         } else {
@@ -445,6 +463,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
     if (!out) return tool_usage_error("plot: --out FILE.svg is required");
     size_t n = strlen(out);
     if (n == 0 || out[n - 1] == '/') return tool_usage_error("plot: --out needs a file name");
+    plot_min_evals = min_evals;
     int rc = plot_load(nd, dirs);
     if (rc) return rc;
     return plot_svg_write(title, out);
