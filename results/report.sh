@@ -123,7 +123,7 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     min=${FIG6_MIN_EVALS:-2000}
     fig6() {
         "$AMORPH" plot "$DIR/representations" --min-evals "$1" --out "$DIR/representations/fitness.svg" \
-            --title "best fitness so far: DCT, CPPN and GMX at 20^3 (mean +- 1 standard error of the runs with $1 evaluations or more)"
+            --title "DCT, CPPN and GMX at 20^3: the runs with $1 evaluations or more"
     }
     fig6 "$min" >/dev/null 2>&1 || fig6 0 >/dev/null
     set --
