@@ -21,7 +21,7 @@ static uint8_t film_png[FILM_MAX_PIXELS * 3 + FILM_MAX_H * 4 + (FILM_MAX_PIXELS 
 typedef struct film_opts {
     int panels;         /* pictures side by side, >= 3 */
     int width, height;  /* pixels of the whole strip */
-    int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body) */
+    int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body either way) */
 } film_opts;
 
 static const uint8_t col_floor[3] = {236, 236, 230}, col_grid[3] = {206, 206, 198}, col_shadow[3] = {196, 196, 190},
@@ -128,7 +128,7 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
     const float* f = mo->pose + (long)fr * mo->nv * 7;
     for (int i = 0; i < mo->nv; i++) {
         double h[3];
-        tool_motion_half(mo, fr, i, h);
+        am_mesh_half(tool_mesh(), f, i, h);
         double r = (h[0] + h[1]) * 0.5, x = (double)f[7 * i], y = (double)f[7 * i + 1];
         double q[4][3] = {{x - r, y - r, 0}, {x + r, y - r, 0}, {x + r, y + r, 0}, {x - r, y + r, 0}};
         for (int k = 0; k < 4; k++) {
@@ -169,7 +169,7 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
         double qn = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         if (!(qn > 0.5)) q[0] = 1, q[1] = q[2] = q[3] = 0, qn = 1;
         for (int k = 0; k < 4; k++) q[k] /= qn;
-        tool_motion_half(mo, fr, i, h);
+        am_mesh_half(tool_mesh(), f, i, h);
         const uint8_t* col = mo->model->palette.mat[mo->model->mat[i]].color;
         am_raster_box(c, cam, p, q, h, col, light, 0.35);
     }
@@ -293,7 +293,8 @@ static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     int rc = tool_record_motion(c, lat, env, eval, 400, &mo, what);
     if (rc) return rc;
     char err[AM_ERR_MAX];
-    if (!o->boxes && am_mesh_build(tool_mesh(), lat, AM_MESH_BODY, err, sizeof err) != AM_OK)
+    /* the body's mesh: its surface, and each voxel's half size for the boxes and the shadows */
+    if (am_mesh_build(tool_mesh(), lat, AM_MESH_BODY, err, sizeof err) != AM_OK)
         return tool_usage_error("%s: %s", what, err);
     am_canvas cv = {o->width, o->height, film_rgb, film_depth};
     film_draw(&mo, o, &cv);

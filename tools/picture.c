@@ -99,32 +99,6 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3])
     for (int k = 0; k < 3; k++) com[k] = m > 0 ? com[k] / m : 0;
 }
 
-void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3])
-{
-    const float* f = mo->pose + (long)frame * mo->nv * 7;
-    double L = am_to_si(mo->model, mo->model->L, AM_DIM_LENGTH), sum = 0;
-    int have = 0;
-    for (int a = 0; a < 3; a++) {
-        double s = 0;
-        int n = 0;
-        for (int d = 2 * a; d < 2 * a + 2; d++) {
-            int j = am_neighbour(mo->model, d, i);
-            if (j < 0) continue;
-            double dx = (double)f[7 * j] - (double)f[7 * i], dy = (double)f[7 * j + 1] - (double)f[7 * i + 1],
-                   dz = (double)f[7 * j + 2] - (double)f[7 * i + 2];
-            s += sqrt(dx * dx + dy * dy + dz * dz);
-            n++;
-        }
-        half[a] = n ? 0.5 * s / n : -1;
-        if (n) sum += half[a], have++;
-    }
-    /* an axis without neighbours takes the mean of the others, a lone voxel the nominal size */
-    for (int a = 0; a < 3; a++)
-        if (half[a] < 0) half[a] = have ? sum / have : 0.5 * L;
-    for (int a = 0; a < 3; a++)
-        if (half[a] > L) half[a] = L; /* a torn-apart link must not draw a giant box */
-}
-
 int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd)
 {
     char err[AM_ERR_MAX];

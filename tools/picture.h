@@ -26,9 +26,6 @@ int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, co
                        const char* what);
 /* mass-weighted centre of frame `frame`, m */
 void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
-/* half-extents of voxel i in frame `frame` along its own axes: half the mean distance to its lattice
- * neighbours on each axis (so thermal expansion shows), m */
-void tool_motion_half(const tool_motion* mo, int frame, int i, double half[3]);
 
 /* the surface mesh render, view and export share (amorph/mesh.h), static storage of tools/picture.c
  * (one at a time), and room for its vertex positions (3 per vertex, m) */
