@@ -62,6 +62,14 @@ static long cell_coord(am_real x, am_real inv_h) { return (long)am_floor(AM_MUL(
 #endif
 
 #if !defined(AM_COMPACT)
+/* the width of a bin of the pairs' distances: AM_COLL_GAP_BINS over the 2 slack between the
+ * contact range and h (not positive when there is no slack: every step rebuilds then, and every
+ * pair goes in the first bin) */
+static am_real gap_width(const am_model* m)
+{
+    return AM_MUL(AM_MUL(CAND_FACTOR, m->L) - m->coll_range, AM_R(1.0 / AM_COLL_GAP_BINS));
+}
+
 /* the bin of a pair d2 = d0^2 apart at the rebuild: floor((d0 - range) / width), in [0, bins) */
 static int gap_bin(am_real d2, am_real range, am_real inv_w)
 {
@@ -110,10 +118,7 @@ static void rebuild(const am_model* m, am_state* s)
     const am_real lattice_far = AM_MUL(AM_R(2.5), m->L);
     am_index* end = s->bucket_end;
 #if !defined(AM_COMPACT)
-    /* the bins of the pairs' distances: AM_COLL_GAP_BINS over the 2 slack between the contact range
-     * and h (all in the first when there is no slack: every step rebuilds then) */
-    s->gap_width = AM_MUL(h - m->coll_range, AM_R(1.0 / AM_COLL_GAP_BINS));
-    const am_real inv_w = s->gap_width > AM_R(0) ? AM_DIV(AM_R(1), s->gap_width) : AM_R(0);
+    const am_real w = gap_width(m), inv_w = w > AM_R(0) ? AM_DIV(AM_R(1), w) : AM_R(0);
 #endif
     /* the surface voxels sorted by bucket (a counting sort), ascending within each bucket */
     for (int b = 0; b < AM_COLL_BUCKETS; b++) end[b] = 0;
@@ -177,7 +182,8 @@ static void rebuild(const am_model* m, am_state* s)
                         /* a far pair is out on one axis already (and its square might leave a
                          * fixed-point range) */
                         if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
-                        if (AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez) >= h2) continue;
+                        const am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
+                        if (d2 >= h2) continue;
                         if (am_fabs(m->x0[0][j] - m->x0[0][i]) + am_fabs(m->x0[1][j] - m->x0[1][i]) + am_fabs(m->x0[2][j] - m->x0[2][i]) <
                                 lattice_far &&
                             within_two_links(m, i, j))
@@ -189,7 +195,7 @@ static void rebuild(const am_model* m, am_state* s)
                         s->pa[np] = (am_index)i;
                         s->pb[np] = (am_index)j;
 #if !defined(AM_COMPACT)
-                        s->pair_touch[np] = (uint8_t)gap_bin(AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez), m->coll_range, inv_w);
+                        s->pair_touch[np] = (uint8_t)gap_bin(d2, m->coll_range, inv_w);
 #endif
                         np++;
                     }
@@ -344,8 +350,9 @@ void am_sim_collide(const am_model* m, am_state* s)
     const int np = s->npairs;
     memset(touch, 0, (size_t)(np > 0 ? np : 0));
     int nb = AM_COLL_GAP_BINS;
-    if (s->gap_width > AM_R(0)) {
-        const am_real u = AM_DIV(AM_MUL(AM_R(2), am_sqrt(most)) + AM_MUL(AM_R(1.0 / 1024), m->L), s->gap_width);
+    const am_real w = gap_width(m);
+    if (w > AM_R(0)) {
+        const am_real u = AM_DIV(AM_MUL(AM_R(2), am_sqrt(most)) + AM_MUL(AM_R(1.0 / 1024), m->L), w);
         if (u < AM_INT(AM_COLL_GAP_BINS - 1)) nb = (int)AM_FLOOR_INT(u) + 1;
     }
     const int ntest = np > 0 ? s->gap_end[nb - 1] : 0;

@@ -271,12 +271,11 @@ typedef struct am_state {
     int32_t bucket_seen[AM_COLL_BUCKETS];  /* the last voxel + 1 that visited the bucket, */
     am_index bucket_cursor[AM_COLL_BUCKETS]; /* and the bucket's first entry after that voxel */
     /* the candidate pairs by how far apart they were at the rebuild: bin b of AM_COLL_GAP_BINS
-     * holds the pairs whose distance then exceeded the contact range by b to b + 1 widths
-     * gap_width, at pair_by_gap[b ? gap_end[b - 1] : 0, gap_end[b]); a step tests only the bins a
-     * pair can have crossed since (sim_collide.c) */
+     * holds the pairs whose distance then exceeded the contact range by b to b + 1 bin widths
+     * (the model's slack / AM_COLL_GAP_BINS), at pair_by_gap[b ? gap_end[b - 1] : 0, gap_end[b]);
+     * a step tests only the bins a pair can have crossed since (sim_collide.c) */
     am_index pair_by_gap[AM_MAX_PAIRS];
     int32_t gap_end[AM_COLL_GAP_BINS];
-    am_real gap_width;
     uint8_t pair_touch[AM_MAX_PAIRS];    /* scratch: the step's overlapping pairs, then bins */
 #endif
     am_index bucket_end[AM_COLL_BUCKETS]; /* broad-phase scratch: the surface voxels sorted by */
