@@ -41,4 +41,17 @@ for ck in results/*/*/checkpoint.txt; do
     fi
 done
 if [ $n -gt 0 ]; then ok; else ko "results/: no run folder found"; fi
+# docs/results.md tells what the shipped runs show: every table row of results/report.md (which
+# report.sh writes from the folders) stands in it word for word, so re-shipped runs cannot leave
+# the page describing the runs before them
+if [ -f results/report.md ]; then
+    rows=0
+    while IFS= read -r row; do
+        case "$row" in "|"*) ;; *) continue ;; esac
+        rows=$((rows + 1))
+        if grep -qxF -- "$row" docs/results.md; then ok
+        else ko "docs/results.md: lacks results/report.md's row '$row' (run results/report.sh and copy its tables)"; fi
+    done <results/report.md
+    if [ $rows -gt 0 ]; then ok; else ko "results/report.md: no table row"; fi
+fi
 summary cli_results
