@@ -217,109 +217,66 @@ static int32_t sh_remove(const char* name)
 
 #define PORT_PATH_MAX 512 /* longest path the port handles, with its suffix */
 
-/* ---- streams: a fixed table of host handles; the temporary of a written stream is path.tmp ---- */
+/* ---- streams: port/common/stream_table.h over semihosting handles ---- */
 
 #define PORT_STREAMS AM_PORT_STREAMS
+#define PORT_TMP_CAP PORT_PATH_MAX
+typedef int32_t port_handle;
 
-static struct {
-    int32_t handle;       /* semihosting handle, -1 when the slot is free */
-    uint8_t writing;      /* 1: an atomic replace of path through path.tmp */
-    uint8_t failed;       /* 1 after a failed write: the stream will be dropped */
-    const char* path;     /* the caller's, valid until am_port_close */
-} streams[PORT_STREAMS] = {{-1, 0, 0, 0}, {-1, 0, 0, 0}};
-
-/* path.tmp into out (PORT_PATH_MAX bytes); 0 when it does not fit */
-static int tmp_name(char* out, const char* path)
+/* the temporary beside path: path.tmp (one program per board); 0 when it does not fit */
+static int sys_tmp_name(char* out, size_t cap, const char* path)
 {
     size_t pl = strlen(path);
-    if (pl + 5 > PORT_PATH_MAX) return 0;
+    if (pl + 5 > cap) return 0;
     memcpy(out, path, pl);
     memcpy(out + pl, ".tmp", 5);
     return 1;
 }
 
-static int free_slot(void)
+static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
 {
-    for (int k = 0; k < PORT_STREAMS; k++)
-        if (streams[k].handle < 0) return k;
-    return -1;
-}
-
-static int slot_ok(am_port_stream s)
-{
-    return s >= 0 && s < PORT_STREAMS && streams[s].handle >= 0;
-}
-
-/* stream slot k from now on for the open host handle h of path; returns k */
-static int claim(int k, int32_t h, const char* path, int writing)
-{
-    streams[k].handle = h;
-    streams[k].writing = writing;
-    streams[k].failed = 0;
-    streams[k].path = path;
-    return k;
-}
-
-am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
-{
-    char tmp[PORT_PATH_MAX];
-    *s = -1;
-    if (!tmp_name(tmp, path)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    int32_t h = sh_open(tmp, SH_MODE_WB);
-    if (h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create (host errno %d)", tmp, (int)sh_call(SH_SYS_ERRNO, 0));
-    *s = claim(k, h, path, 1);
+    *h = sh_open(tmp, SH_MODE_WB);
+    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create (host errno %d)", tmp, (int)sh_call(SH_SYS_ERRNO, 0));
     return AM_OK;
 }
 
-am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz)
+static am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
 {
-    if (!slot_ok(s) || !streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for writing", s);
-    if (streams[s].failed || write_all(streams[s].handle, data, n) != 0) {
-        streams[s].failed = 1;
-        return am_fail(err, errsz, AM_ERR_IO, "%s: write error", streams[s].path);
-    }
+    *h = sh_open(path, SH_MODE_RB);
+    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open (host errno %d)", path, (int)sh_call(SH_SYS_ERRNO, 0));
     return AM_OK;
 }
 
-am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
+static am_status sys_write(port_handle h, const void* data, long n, const char* path, char* err, int errsz)
 {
-    *s = -1;
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    int32_t h = sh_open(path, SH_MODE_RB);
-    if (h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open (host errno %d)", path, (int)sh_call(SH_SYS_ERRNO, 0));
-    *s = claim(k, h, path, 0);
+    if (write_all(h, data, n) != 0) return am_fail(err, errsz, AM_ERR_IO, "%s: write error", path);
     return AM_OK;
 }
 
-am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
+static am_status sys_read(port_handle h, void* buf, long cap, long* got, const char* path, char* err, int errsz)
 {
-    *got = 0;
-    if (!slot_ok(s) || streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for reading", s);
-    if (cap <= 0) return AM_OK;
-    int32_t n = sh_read(streams[s].handle, buf, (uint32_t)cap);
-    if (n < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: read error", streams[s].path);
+    int32_t n = sh_read(h, buf, (uint32_t)cap);
+    if (n < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: read error", path);
     *got = n;
     return AM_OK;
 }
 
-am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
+static void sys_close(port_handle h)
 {
-    if (!slot_ok(s)) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open", s);
-    const char* path = streams[s].path;
-    int32_t h = streams[s].handle;
-    int writing = streams[s].writing, bad = streams[s].failed;
-    streams[s].handle = -1;
-    if (sh_close(h) != 0) bad = 1;
-    if (!writing) return AM_OK;
-    char tmp[PORT_PATH_MAX];
-    tmp_name(tmp, path); /* fitted at open */
-    if (!commit || bad) {
+    sh_close(h);
+}
+
+static void sys_drop(port_handle h, const char* tmp)
+{
+    sh_close(h);
+    sh_remove(tmp);
+}
+
+static am_status sys_commit(port_handle h, const char* tmp, const char* path, char* err, int errsz)
+{
+    if (sh_close(h) != 0) {
         sh_remove(tmp);
-        if (!commit) return AM_OK;
-        return am_fail(err, errsz, AM_ERR_IO, "%s: write error", path);
+        return am_fail(err, errsz, AM_ERR_IO, "%s: cannot finish writing", path);
     }
     /* a POSIX host's rename replaces path atomically; a host whose rename refuses to replace
      * (Windows) gets the old file removed first, which is not atomic */
@@ -329,6 +286,8 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     }
     return AM_OK;
 }
+
+#include "../common/stream_table.h"
 
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
 {

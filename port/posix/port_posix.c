@@ -111,118 +111,66 @@ static int write_all(int fd, const void* data, long n)
     return 0;
 }
 
-/* ---- streams: a fixed table; only the main thread uses files ---- */
+/* ---- streams: port/common/stream_table.h over file descriptors ---- */
 
 #define PORT_STREAMS 8
-
-static struct {
-    int used;             /* 1 while the slot is open */
-    int writing;          /* 1: an atomic replace of path through the temporary */
-    int failed;           /* 1 after a failed write: the stream will be dropped */
-    int fd;
-    const char* path;     /* the caller's, valid until am_port_close */
-} streams[PORT_STREAMS];
+#define PORT_TMP_CAP 4096
+typedef int port_handle;
 
 /* the temporary beside path: path.tmp.<pid>; 0 when the name does not fit */
-static int tmp_name(char* out, size_t cap, const char* path)
+static int sys_tmp_name(char* out, size_t cap, const char* path)
 {
     int n = snprintf(out, cap, "%s.tmp.%ld", path, (long)getpid());
     return n >= 0 && (size_t)n < cap;
 }
 
-static int free_slot(void)
+static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
 {
-    for (int k = 0; k < PORT_STREAMS; k++)
-        if (!streams[k].used) return k;
-    return -1;
-}
-
-static int slot_ok(am_port_stream s)
-{
-    return s >= 0 && s < PORT_STREAMS && streams[s].used;
-}
-
-/* stream slot k from now on for the open file fd of path; returns k */
-static int claim(int k, int fd, const char* path, int writing)
-{
-    streams[k].used = 1;
-    streams[k].writing = writing;
-    streams[k].failed = 0;
-    streams[k].fd = fd;
-    streams[k].path = path;
-    return k;
-}
-
-am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
-{
-    char tmp[4096];
-    *s = -1;
-    if (!tmp_name(tmp, sizeof tmp, path)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
-    *s = claim(k, fd, path, 1);
+    *h = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
     return AM_OK;
 }
 
-am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz)
+static am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
 {
-    if (!slot_ok(s) || !streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for writing", s);
-    if (streams[s].failed) return am_fail(err, errsz, AM_ERR_IO, "%s: write error: an earlier write failed", streams[s].path);
-    int e = write_all(streams[s].fd, data, n);
-    if (e != 0) {
-        streams[s].failed = 1;
-        return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", streams[s].path, strerror(e));
-    }
+    *h = open_regular(path, err, errsz);
+    return *h < 0 ? AM_ERR_IO : AM_OK;
+}
+
+static am_status sys_write(port_handle h, const void* data, long n, const char* path, char* err, int errsz)
+{
+    int e = write_all(h, data, n);
+    if (e != 0) return am_fail(err, errsz, AM_ERR_IO, "%s: write error: %s", path, strerror(e));
     return AM_OK;
 }
 
-am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
+static am_status sys_read(port_handle h, void* buf, long cap, long* got, const char* path, char* err, int errsz)
 {
-    *s = -1;
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    int fd = open_regular(path, err, errsz);
-    if (fd < 0) return AM_ERR_IO;
-    *s = claim(k, fd, path, 0);
-    return AM_OK;
-}
-
-am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
-{
-    *got = 0;
-    if (!slot_ok(s) || streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for reading", s);
-    if (cap <= 0) return AM_OK;
     for (;;) {
-        ssize_t n = read(streams[s].fd, buf, (size_t)cap);
+        ssize_t n = read(h, buf, (size_t)cap);
         if (n >= 0) {
             *got = (long)n;
             return AM_OK;
         }
-        if (errno != EINTR) return am_fail(err, errsz, AM_ERR_IO, "%s: read error: %s", streams[s].path, strerror(errno));
+        if (errno != EINTR) return am_fail(err, errsz, AM_ERR_IO, "%s: read error: %s", path, strerror(errno));
     }
 }
 
-am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
+static void sys_close(port_handle h)
 {
-    if (!slot_ok(s)) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open", s);
-    const char* path = streams[s].path;
-    int fd = streams[s].fd, writing = streams[s].writing, failed = streams[s].failed;
-    streams[s].used = 0;
-    if (!writing) {
-        close(fd);
-        return AM_OK;
-    }
-    char tmp[4096];
-    tmp_name(tmp, sizeof tmp, path); /* fitted at open */
-    if (!commit || failed) {
-        close(fd);
-        unlink(tmp);
-        return commit ? am_fail(err, errsz, AM_ERR_IO, "%s: not replaced: a write failed", path) : AM_OK;
-    }
-    int bad = fsync(fd) != 0, e = errno;
-    if (close(fd) != 0 && !bad) bad = 1, e = errno;
+    close(h);
+}
+
+static void sys_drop(port_handle h, const char* tmp)
+{
+    close(h);
+    unlink(tmp);
+}
+
+static am_status sys_commit(port_handle h, const char* tmp, const char* path, char* err, int errsz)
+{
+    int bad = fsync(h) != 0, e = errno;
+    if (close(h) != 0 && !bad) bad = 1, e = errno;
     if (bad) {
         unlink(tmp);
         return am_fail(err, errsz, AM_ERR_IO, "%s: cannot finish writing: %s", path, strerror(e));
@@ -234,6 +182,8 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     }
     return AM_OK;
 }
+
+#include "../common/stream_table.h"
 
 int am_port_processes(void)
 {

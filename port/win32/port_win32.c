@@ -150,95 +150,59 @@ static int write_all(HANDLE h, const void* data, long n)
     return 1;
 }
 
-/* ---- streams: a fixed table; only the main thread uses files ---- */
+/* ---- streams: port/common/stream_table.h over file handles ---- */
 
 #define PORT_STREAMS 8
-
-static struct {
-    int used;             /* 1 while the slot is open */
-    int writing;          /* 1: an atomic replace of path through the temporary */
-    int failed;           /* 1 after a failed write: the stream will be dropped */
-    HANDLE h;
-    const char* path;     /* the caller's, valid until am_port_close */
-} streams[PORT_STREAMS];
+#define PORT_TMP_CAP PORT_PATH
+typedef HANDLE port_handle;
 
 /* the temporary beside path: path.tmp.<process id>, the POSIX port's form, so that
  * am_port_remove_stale knows them; 0 when the name does not fit */
-static int tmp_name(char* out, size_t cap, const char* path)
+static int sys_tmp_name(char* out, size_t cap, const char* path)
 {
     int n = snprintf(out, cap, "%s.tmp.%lu", path, (unsigned long)GetCurrentProcessId());
     return n >= 0 && (size_t)n < cap;
 }
 
-static int free_slot(void)
+static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
 {
-    for (int k = 0; k < PORT_STREAMS; k++)
-        if (!streams[k].used) return k;
-    return -1;
-}
-
-static int slot_ok(am_port_stream s)
-{
-    return s >= 0 && s < PORT_STREAMS && streams[s].used;
-}
-
-/* stream slot k from now on for the open file h of path; returns k */
-static int claim(int k, HANDLE h, const char* path, int writing)
-{
-    streams[k].used = 1;
-    streams[k].writing = writing;
-    streams[k].failed = 0;
-    streams[k].h = h;
-    streams[k].path = path;
-    return k;
-}
-
-am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
-{
-    char tmp[PORT_PATH];
-    *s = -1;
-    if (!tmp_name(tmp, sizeof tmp, path)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     /* nobody else opens a temporary while it is written */
-    HANDLE h = CreateFileA(tmp, GENERIC_WRITE, 0, NULL, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, NULL);
-    if (h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot create", tmp);
-    *s = claim(k, h, path, 1);
+    *h = CreateFileA(tmp, GENERIC_WRITE, 0, NULL, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, NULL);
+    if (*h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot create", tmp);
     return AM_OK;
 }
 
-am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz)
+static am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
 {
-    if (!slot_ok(s) || !streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for writing", s);
-    if (streams[s].failed) return am_fail(err, errsz, AM_ERR_IO, "%s: write error: an earlier write failed", streams[s].path);
-    if (!write_all(streams[s].h, data, n)) {
-        streams[s].failed = 1;
-        return fail_last(err, errsz, AM_ERR_IO, "write error", streams[s].path);
-    }
+    *h = open_regular(path, err, errsz);
+    return *h == INVALID_HANDLE_VALUE ? AM_ERR_IO : AM_OK;
+}
+
+static am_status sys_write(port_handle h, const void* data, long n, const char* path, char* err, int errsz)
+{
+    if (!write_all(h, data, n)) return fail_last(err, errsz, AM_ERR_IO, "write error", path);
     return AM_OK;
 }
 
-am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
+static am_status sys_read(port_handle h, void* buf, long cap, long* got, const char* path, char* err, int errsz)
 {
-    *s = -1;
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
-    HANDLE h = open_regular(path, err, errsz);
-    if (h == INVALID_HANDLE_VALUE) return AM_ERR_IO;
-    *s = claim(k, h, path, 0);
-    return AM_OK;
-}
-
-am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
-{
-    *got = 0;
-    if (!slot_ok(s) || streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for reading", s);
-    if (cap <= 0) return AM_OK;
-    long n = read_some(streams[s].h, buf, cap);
-    if (n < 0) return fail_last(err, errsz, AM_ERR_IO, "read error", streams[s].path);
+    long n = read_some(h, buf, cap);
+    if (n < 0) return fail_last(err, errsz, AM_ERR_IO, "read error", path);
     *got = n;
     return AM_OK;
 }
+
+static void sys_close(port_handle h)
+{
+    CloseHandle(h);
+}
+
+static void sys_drop(port_handle h, const char* tmp)
+{
+    CloseHandle(h);
+    DeleteFileA(tmp);
+}
+
 
 /* MoveFileEx over path; another program (a virus scanner, an indexer, an editor) that holds the
  * old file open without FILE_SHARE_DELETE makes it fail for a moment, so it is tried again, up to
@@ -253,24 +217,8 @@ static int replace(const char* tmp, const char* path)
     }
 }
 
-am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
+static am_status sys_commit(port_handle h, const char* tmp, const char* path, char* err, int errsz)
 {
-    if (!slot_ok(s)) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open", s);
-    const char* path = streams[s].path;
-    HANDLE h = streams[s].h;
-    int writing = streams[s].writing, failed = streams[s].failed;
-    streams[s].used = 0;
-    if (!writing) {
-        CloseHandle(h);
-        return AM_OK;
-    }
-    char tmp[PORT_PATH];
-    tmp_name(tmp, sizeof tmp, path); /* fitted at open */
-    if (!commit || failed) {
-        CloseHandle(h);
-        DeleteFileA(tmp);
-        return commit ? am_fail(err, errsz, AM_ERR_IO, "%s: not replaced: a write failed", path) : AM_OK;
-    }
     /* the bytes on the disk before the name points at them */
     int ok = FlushFileBuffers(h) != 0;
     DWORD e = ok ? 0 : GetLastError();
@@ -288,6 +236,8 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
     }
     return AM_OK;
 }
+
+#include "../common/stream_table.h"
 
 int am_port_processes(void)
 {
