@@ -385,30 +385,31 @@ am_status am_port_list_dir(const char* dir, char* names, long cap, int* count, c
     return st;
 }
 
-/* ---- parallel map ---- */
+/* ---- parallel map: port/common/parallel_map.h on POSIX threads ---- */
 
-typedef struct map_job {
-    pthread_mutex_t lock;
-    int next;             /* next item to hand out */
-    int n;
-    am_port_task task;
-    void* ctx;
-} map_job;
+typedef pthread_mutex_t port_mutex;
+typedef pthread_t port_thread;
 
-typedef struct map_worker {
-    map_job* job;
-    int id;
-} map_worker;
+#include "../common/parallel_map.h"
 
-static void map_loop(map_job* job, int worker)
+static int sys_mutex_init(port_mutex* mu)
 {
-    for (;;) {
-        pthread_mutex_lock(&job->lock);
-        int item = job->next < job->n ? job->next++ : -1;
-        pthread_mutex_unlock(&job->lock);
-        if (item < 0) return;
-        job->task(job->ctx, item, worker);
-    }
+    return pthread_mutex_init(mu, NULL) == 0;
+}
+
+static void sys_mutex_lock(port_mutex* mu)
+{
+    pthread_mutex_lock(mu);
+}
+
+static void sys_mutex_unlock(port_mutex* mu)
+{
+    pthread_mutex_unlock(mu);
+}
+
+static void sys_mutex_destroy(port_mutex* mu)
+{
+    pthread_mutex_destroy(mu);
 }
 
 static void* map_thread(void* arg)
@@ -418,37 +419,16 @@ static void* map_thread(void* arg)
     return NULL;
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
+static am_status sys_thread_start(port_thread* t, map_worker* w, char* err, int errsz)
 {
-    (void)out; /* the workers share this memory: each result is in place */
-    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
-    if (workers > PORT_MAX_THREADS) workers = PORT_MAX_THREADS;
-    if (workers > n) workers = n > 0 ? n : 1;
-    map_job job;
-    job.next = 0;
-    job.n = n;
-    job.task = task;
-    job.ctx = ctx;
-    if (pthread_mutex_init(&job.lock, NULL) != 0) return am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot create a mutex");
-    pthread_t th[PORT_MAX_THREADS];
-    map_worker w[PORT_MAX_THREADS];
-    int started = 0;
-    am_status st = AM_OK;
-    /* the calling thread is worker 0; the others are threads of their own */
-    for (int i = 1; i < workers; i++) {
-        w[i].job = &job;
-        w[i].id = i;
-        int e = pthread_create(&th[i], NULL, map_thread, &w[i]);
-        if (e != 0) {
-            st = am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot start a thread: %s", strerror(e));
-            break;
-        }
-        started = i;
-    }
-    map_loop(&job, 0); /* finishes every item even when a thread failed to start */
-    for (int i = 1; i <= started; i++) pthread_join(th[i], NULL);
-    pthread_mutex_destroy(&job.lock);
-    return st;
+    int e = pthread_create(t, NULL, map_thread, w);
+    if (e != 0) return am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot start a thread: %s", strerror(e));
+    return AM_OK;
+}
+
+static void sys_thread_join(port_thread t)
+{
+    pthread_join(t, NULL);
 }
 
 /* ---- interruption ---- */

@@ -483,31 +483,33 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     return st;
 }
 
-/* ---- parallel map: the calling thread is worker 0, the others are threads of their own; a
- * critical section hands out the items in order ---- */
+/* ---- parallel map: port/common/parallel_map.h on Windows threads (a critical section hands
+ * out the items) ---- */
 
-typedef struct map_job {
-    CRITICAL_SECTION lock;
-    int next;             /* next item to hand out */
-    int n;
-    am_port_task task;
-    void* ctx;
-} map_job;
+typedef CRITICAL_SECTION port_mutex;
+typedef HANDLE port_thread;
 
-typedef struct map_worker {
-    map_job* job;
-    int id;
-} map_worker;
+#include "../common/parallel_map.h"
 
-static void map_loop(map_job* job, int worker)
+static int sys_mutex_init(port_mutex* mu)
 {
-    for (;;) {
-        EnterCriticalSection(&job->lock);
-        int item = job->next < job->n ? job->next++ : -1;
-        LeaveCriticalSection(&job->lock);
-        if (item < 0) return;
-        job->task(job->ctx, item, worker);
-    }
+    InitializeCriticalSection(mu);
+    return 1;
+}
+
+static void sys_mutex_lock(port_mutex* mu)
+{
+    EnterCriticalSection(mu);
+}
+
+static void sys_mutex_unlock(port_mutex* mu)
+{
+    LeaveCriticalSection(mu);
+}
+
+static void sys_mutex_destroy(port_mutex* mu)
+{
+    DeleteCriticalSection(mu);
 }
 
 /* _beginthreadex rather than CreateThread: the task uses the C runtime (its per-thread state is
@@ -519,40 +521,18 @@ static unsigned __stdcall map_thread(void* arg)
     return 0;
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
+static am_status sys_thread_start(port_thread* t, map_worker* w, char* err, int errsz)
 {
-    (void)out; /* the workers share this memory: each result is in place */
-    if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);
-    if (workers > PORT_MAX_THREADS) workers = PORT_MAX_THREADS;
-    if (workers > n) workers = n > 0 ? n : 1;
-    map_job job;
-    job.next = 0;
-    job.n = n;
-    job.task = task;
-    job.ctx = ctx;
-    InitializeCriticalSection(&job.lock);
-    HANDLE th[PORT_MAX_THREADS];
-    map_worker w[PORT_MAX_THREADS];
-    int started = 0;
-    am_status st = AM_OK;
-    for (int i = 1; i < workers; i++) {
-        w[i].job = &job;
-        w[i].id = i;
-        uintptr_t t = _beginthreadex(NULL, 0, map_thread, &w[i], 0, NULL);
-        if (t == 0) {
-            st = am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot start a thread");
-            break;
-        }
-        th[i] = (HANDLE)t;
-        started = i;
-    }
-    map_loop(&job, 0); /* finishes every item even when a thread failed to start */
-    for (int i = 1; i <= started; i++) {
-        WaitForSingleObject(th[i], INFINITE);
-        CloseHandle(th[i]);
-    }
-    DeleteCriticalSection(&job.lock);
-    return st;
+    uintptr_t h = _beginthreadex(NULL, 0, map_thread, w, 0, NULL);
+    if (h == 0) return am_fail(err, errsz, AM_ERR_IO, "parallel map: cannot start a thread");
+    *t = (HANDLE)h;
+    return AM_OK;
+}
+
+static void sys_thread_join(port_thread t)
+{
+    WaitForSingleObject(t, INFINITE);
+    CloseHandle(t);
 }
 
 /* ---- interruption: Ctrl-C and Ctrl-Break of the console ----
