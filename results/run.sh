@@ -6,8 +6,9 @@
 # AMORPH: the amorph binary; DIR: where the run folders go (DIR/representations/dct-1 ...);
 # STAGE: fig6-2000 (the nine Figure 6 runs to 2,000 evaluations, interleaved so every
 # representation has runs early), others-2000 (one run of each other experiment's variants that
-# differ from the seed's settings), fig6-5000 (the nine runs extended to 5,000; any fig6-N takes
-# them to N, the seed's were 20,000).
+# differ from the seed's settings), fig6-N (the nine runs extended to N evaluations; the seed's
+# were 20,000). Taken in rounds (fig6-3000, fig6-4000, ...), all nine reach a count before any
+# goes beyond it.
 # Every run uses one thread (results do not depend on it).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
 # fig6-2000): a run folder that the other runner is working in is skipped, and that runner
@@ -61,5 +62,5 @@ others-2000)
     run "$DIR/friction/k0.1_s5.0-1" 2000 mu_kinetic=0.1 mu_static=5.0 seed=1
     run "$DIR/friction/k0.4_s0.5-1" 2000 mu_kinetic=0.4 mu_static=0.5 seed=1
     ;;
-*) echo "run.sh: unknown stage '$STAGE' (fig6-2000, others-2000, fig6-5000, fig6-N)" >&2; exit 2 ;;
+*) echo "run.sh: unknown stage '$STAGE' (fig6-2000, others-2000, fig6-N)" >&2; exit 2 ;;
 esac
