@@ -6,9 +6,13 @@
 # each best robot's gait30.json and best.png and results/report.md, the table of docs/results.md.
 #   sh results/ship.sh AMORPH SRC
 # A run still going on is copied at its last checkpoint: its log.csv and evals.csv are cut back to
-# the checkpoint's generation and evaluation, as a resume would cut them.
+# the checkpoint's generation and evaluation, as a resume would cut them, its best robot must be
+# the checkpoint's (copied again, up to SHIP_TRIES times SHIP_WAIT seconds apart, while a
+# generation ending meanwhile has moved one of them on), and its summaries, of an earlier
+# command, are left out.
 set -eu
 AMORPH=$1 SRC=$2
+TRIES=${SHIP_TRIES:-10} WAIT=${SHIP_WAIT:-5}
 DST=$(dirname "$0")
 [ -x "$AMORPH" ] || { echo "ship.sh: $AMORPH: not an executable" >&2; exit 2; }
 for ck in "$SRC"/*/*/checkpoint.txt; do
@@ -17,21 +21,47 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
     name=${run#"$SRC"/}
     out=$DST/$name
     mkdir -p "$out"
-    # the checkpoint first: the tables are cut back to it, so they agree even while the run goes on
-    # ("last G E ...": generations 0..G logged, E evaluations)
-    cp "$run/checkpoint.txt" "$out/checkpoint.txt.new"
-    gens=$(awk '$1 == "last" { print $2; exit }' "$out/checkpoint.txt.new")
-    evals=$(awk '$1 == "evaluations" && NF == 2 { print $2; exit }' "$out/checkpoint.txt.new")
-    for f in config.txt best.genome best.lattice summary.txt summary.json; do
-        [ -f "$run/$f" ] && cp "$run/$f" "$out/$f"
+    # the checkpoint and the best robot of one moment, gathered in $new first: a generation that
+    # ends between the copies may have moved either on, so the best robot is simulated and must
+    # end in the checkpoint's best state; else all are copied again. Nothing of the run in results/
+    # changes until they agree.
+    new=$out/.ship
+    try=0
+    while :; do
+        try=$((try + 1))
+        rm -rf "$new"
+        mkdir -p "$new"
+        cp "$run/checkpoint.txt" "$new/"
+        for f in config.txt best.genome best.lattice; do
+            [ -f "$run/$f" ] && cp "$run/$f" "$new/"
+        done
+        want=$(awk '$1 == "individual" && $2 == "best" { print $9; exit }' "$new/checkpoint.txt")
+        [ -n "$want" ] || break
+        got=$("$AMORPH" sim "$new" --json 2>/dev/null | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
+        [ "$got" = "$want" ] && break
+        if [ "$try" -ge "$TRIES" ]; then
+            rm -rf "$new"
+            echo "ship.sh: $run: best.genome ends in state $got, checkpoint.txt's best in $want" >&2
+            exit 1
+        fi
+        sleep "$WAIT"
     done
-    # the summaries name the folder the run was made in; the copy names itself
-    [ -f "$out/summary.txt" ] && sed -i "s|^run = .*|run = results/$name|" "$out/summary.txt"
-    [ -f "$out/summary.json" ] && sed -i "s|\"run\": \"[^\"]*\"|\"run\": \"results/$name\"|" "$out/summary.json"
-    head -n $((gens + 2)) "$run/log.csv" >"$out/log.csv"
-    head -n $((evals + 1)) "$run/evals.csv" | gzip -9n >"$out/evals.csv.gz"
-    rm -f "$out/evals.csv"
-    mv "$out/checkpoint.txt.new" "$out/checkpoint.txt"
+    # ("last G E ...": generations 0..G logged, E evaluations)
+    gens=$(awk '$1 == "last" { print $2; exit }' "$new/checkpoint.txt")
+    evals=$(awk '$1 == "evaluations" && NF == 2 { print $2; exit }' "$new/checkpoint.txt")
+    # the summaries are of the run's last finished command: kept when they are of this checkpoint,
+    # dropped while the run goes on beyond them; they name the folder the run was made in, the
+    # copy names itself
+    if [ -f "$run/summary.txt" ] && [ "$(sed -n 's/^evaluations = //p' "$run/summary.txt")" = "$evals" ]; then
+        cp "$run/summary.txt" "$run/summary.json" "$new/"
+        sed -i "s|^run = .*|run = results/$name|" "$new/summary.txt"
+        sed -i "s|\"run\": \"[^\"]*\"|\"run\": \"results/$name\"|" "$new/summary.json"
+    fi
+    head -n $((gens + 2)) "$run/log.csv" >"$new/log.csv"
+    head -n $((evals + 1)) "$run/evals.csv" | gzip -9n >"$new/evals.csv.gz"
+    rm -f "$out/summary.txt" "$out/summary.json" "$out/evals.csv"
+    mv "$new"/* "$out/"
+    rmdir "$new"
 done
 sh "$DST/report.sh" "$AMORPH" "$DST" --pictures >"$DST/report.md"
 du -sh "$DST"

@@ -3,7 +3,9 @@
 # table's means and standard errors (over the runs that reached each 500 evaluations), the mean
 # body size per 500 evaluations from evals.csv.gz, the compute with a paused generation counted
 # at the median, a row per run with its 30-cycle gait, and the plots (gaits.svg's bars too). Float desktop builds (the
-# report simulates the runs' best robots). Run from the repository root.
+# report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
+# beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
+# its checkpoint's refused. Run from the repository root.
 . tests/shlib.sh
 
 if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
@@ -67,4 +69,34 @@ cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
 expect_ok sh results/report.sh "$AMORPH" "$R"
 check "a second report gives the same gait30.json" cmp -s "$TMPD/gait-a.json" "$R/representations/dct-1/gait30.json"
 expect_fail 2 "no such folder" sh results/report.sh "$AMORPH" "$TMPD/none"
+
+# --- results/ship.sh (copied with report.sh into a folder of its own, which it fills) ---
+S=$TMPD/ship-src D=$TMPD/ship-dst
+mkdir -p "$S/representations" "$D"
+cp results/ship.sh results/report.sh "$D/"
+# dct-1 finished at 8 evaluations, then resumed towards 16 and killed after 12 (a generation's end:
+# its checkpoint is of 12, its summaries still of the command that ended at 8); gmx-1 finished
+# shellcheck disable=SC2086
+expect_ok "$AMORPH" evolve $SMALL --representation dct --seed 1 --out "$S/representations/dct-1"
+AMORPH_TEST_INTERRUPT=KILL:12 "$AMORPH" evolve --resume "$S/representations/dct-1" --evaluations 16 --quiet >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+check "the resumed run was killed (exit $rc) at 12 evaluations" [ $rc -eq 137 ] && grep -qx 'evaluations 12' "$S/representations/dct-1/checkpoint.txt"
+# shellcheck disable=SC2086
+expect_ok "$AMORPH" evolve $SMALL --representation gmx --seed 1 --out "$S/representations/gmx-1"
+expect_ok sh "$D/ship.sh" "$AMORPH" "$S"
+check "ship: the finished run's summary names its copy" grep -qx 'run = results/representations/gmx-1' "$D/representations/gmx-1/summary.txt"
+check "ship: summary.json too" grep -q '"run": "results/representations/gmx-1"' "$D/representations/gmx-1/summary.json"
+check "ship: no summary for the run gone on beyond it" [ ! -f "$D/representations/dct-1/summary.txt" ] && [ ! -f "$D/representations/dct-1/summary.json" ]
+check "ship: evals.csv.gz cut to the checkpoint's 12 rows" [ "$(gzip -dc "$D/representations/dct-1/evals.csv.gz" | wc -l)" -eq 13 ]
+check "ship: log.csv cut to the checkpoint's 3 generations" [ "$(wc -l <"$D/representations/dct-1/log.csv")" -eq 4 ]
+want=$(awk '$1 == "individual" && $2 == "best" { print $9 }' "$D/representations/dct-1/checkpoint.txt")
+expect_ok "$AMORPH" sim "$D/representations/dct-1" --json
+check "ship: the copied best robot ends in the checkpoint's best state $want" grep -q "\"hash\": \"$want\"" "$TMPD/out"
+check "ship: the report" grep -q '| representations/dct-1 | 12 |' "$D/report.md"
+check "ship: no folder of its own left behind" [ ! -d "$D/representations/dct-1/.ship" ]
+# a best robot that is not the checkpoint's (another run's genome): refused, the copy unchanged
+cp "$S/representations/gmx-1/best.genome" "$S/representations/dct-1/best.genome"
+cp "$D/representations/dct-1/best.genome" "$TMPD/shipped.genome"
+SHIP_TRIES=2 SHIP_WAIT=0 expect_fail 1 "best.genome ends in state .*, checkpoint.txt's best in $want" sh "$D/ship.sh" "$AMORPH" "$S"
+check "ship: the refused run's copy unchanged" cmp -s "$TMPD/shipped.genome" "$D/representations/dct-1/best.genome"
+check "ship: no folder of its own left behind after a refusal" [ ! -d "$D/representations/dct-1/.ship" ]
 summary cli_report
