@@ -56,6 +56,12 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
         cp "$run/summary.txt" "$run/summary.json" "$new/"
         sed -i "s|^run = .*|run = results/$name|" "$new/summary.txt"
         sed -i "s|\"run\": \"[^\"]*\"|\"run\": \"results/$name\"|" "$new/summary.json"
+        # a resume with nothing left to do rewrites them with its own wall time only: the copy
+        # already shipped stays (no change in git for a finished run)
+        if [ -f "$out/summary.txt" ] && [ -f "$out/summary.json" ] &&
+            [ "$(grep -v '^wall_s = ' "$out/summary.txt")" = "$(grep -v '^wall_s = ' "$new/summary.txt")" ]; then
+            cp "$out/summary.txt" "$out/summary.json" "$new/"
+        fi
     fi
     head -n $((gens + 2)) "$run/log.csv" >"$new/log.csv"
     head -n $((evals + 1)) "$run/evals.csv" | gzip -9n >"$new/evals.csv.gz"

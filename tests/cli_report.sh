@@ -93,6 +93,13 @@ expect_ok "$AMORPH" sim "$D/representations/dct-1" --json
 check "ship: the copied best robot ends in the checkpoint's best state $want" grep -q "\"hash\": \"$want\"" "$TMPD/out"
 check "ship: the report" grep -q '| representations/dct-1 | 12 |' "$D/report.md"
 check "ship: no folder of its own left behind" [ ! -d "$D/representations/dct-1/.ship" ]
+# a resume with nothing left to do rewrites the summaries with its own wall time: the shipped ones stay
+cp "$D/representations/gmx-1/summary.txt" "$TMPD/shipped-summary.txt"
+cp "$S/representations/gmx-1/summary.txt" "$TMPD/run-summary.txt"
+expect_ok "$AMORPH" evolve --resume "$S/representations/gmx-1" --quiet
+check "the no-op resume rewrote the run's wall time" sh -c "! cmp -s '$S/representations/gmx-1/summary.txt' '$TMPD/run-summary.txt'"
+expect_ok sh "$D/ship.sh" "$AMORPH" "$S"
+check "ship: the shipped summary of a finished run stays as it was" cmp -s "$TMPD/shipped-summary.txt" "$D/representations/gmx-1/summary.txt"
 # a best robot that is not the checkpoint's (another run's genome): refused, the copy unchanged
 cp "$S/representations/gmx-1/best.genome" "$S/representations/dct-1/best.genome"
 cp "$D/representations/dct-1/best.genome" "$TMPD/shipped.genome"
