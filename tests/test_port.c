@@ -192,6 +192,19 @@ static void test_streams(void)
     for (int k = 0; k < AM_PORT_STREAMS; k++)
         CHECK(am_port_open_read(p, &many[k], err, sizeof err) == AM_OK, "stream %d of %d: %s", k + 1, AM_PORT_STREAMS, err);
     for (int k = 0; k < AM_PORT_STREAMS; k++) am_port_close(many[k], 0, NULL, 0);
+    /* a full table: the next open, for reading or writing, is refused with the file's name and
+     * a handle of -1; a close frees a slot */
+    am_port_stream full[64];
+    int nfull = 0;
+    while (nfull < 64 && am_port_open_read(p, &full[nfull], err, sizeof err) == AM_OK) nfull++;
+    CHECK(nfull >= AM_PORT_STREAMS && nfull < 64 && full[nfull] == -1 && strstr(err, "files open at once") && strstr(err, "streamed.txt"),
+          "the table full after %d streams: '%s'", nfull, err);
+    err[0] = 0;
+    CHECK(am_port_open_write(p, &w, err, sizeof err) == AM_ERR_IO && w == -1 && strstr(err, "files open at once"), "open_write into a full table: '%s'", err);
+    if (nfull > 0) CHECK(am_port_close(full[--nfull], 0, err, sizeof err) == AM_OK, "close: %s", err);
+    CHECK(am_port_open_read(p, &full[nfull], err, sizeof err) == AM_OK, "open after a close freed a slot: %s", err);
+    nfull++;
+    while (nfull > 0) am_port_close(full[--nfull], 0, NULL, 0);
     CHECK(am_port_read(many[0], buf, sizeof buf, &got, err, sizeof err) == AM_ERR_ARG, "read on a closed stream");
     CHECK(am_port_close(many[0], 0, err, sizeof err) == AM_ERR_ARG, "close of a closed stream");
     /* failures: a missing file, a missing directory */

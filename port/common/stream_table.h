@@ -41,10 +41,12 @@ static struct {
     uint8_t failed;   /* 1 after a failed write: the stream will be dropped */
 } streams[PORT_STREAMS];
 
-static int free_slot(void)
+/* a free slot for a stream of path, or -1 after the message */
+static int free_slot(const char* path, char* err, int errsz)
 {
     for (int k = 0; k < PORT_STREAMS; k++)
         if (!streams[k].used) return k;
+    am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
     return -1;
 }
 
@@ -69,8 +71,8 @@ am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int
     char tmp[PORT_TMP_CAP];
     *s = -1;
     if (!sys_tmp_name(tmp, sizeof tmp, path)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
+    const int k = free_slot(path, err, errsz);
+    if (k < 0) return AM_ERR_IO;
     port_handle h;
     am_status st = sys_create(tmp, &h, err, errsz);
     if (st != AM_OK) return st;
@@ -90,8 +92,8 @@ am_status am_port_write(am_port_stream s, const void* data, long n, char* err, i
 am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
 {
     *s = -1;
-    int k = free_slot();
-    if (k < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: more than %d files open at once", path, PORT_STREAMS);
+    const int k = free_slot(path, err, errsz);
+    if (k < 0) return AM_ERR_IO;
     port_handle h;
     am_status st = sys_open_read(path, &h, err, errsz);
     if (st != AM_OK) return st;
