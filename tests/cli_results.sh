@@ -53,5 +53,15 @@ if [ -f results/report.md ]; then
         else ko "docs/results.md: lacks results/report.md's row '$row' (run results/report.sh and copy its tables)"; fi
     done <results/report.md
     if [ $rows -gt 0 ]; then ok; else ko "results/report.md: no table row"; fi
+    # and no row of an older report stays: a row that names a shipped run, a window of
+    # evaluations or the runs behind a mean is report.sh's, so it must be in report.md
+    grep -E '^\| ([a-z-]+/[^ |]+|[0-9]+-[0-9]+) \||^\| [0-9]+ \|.*runs?\) \|' docs/results.md >"$TMPD/docrows" || true
+    n_doc=0
+    while IFS= read -r row; do
+        n_doc=$((n_doc + 1))
+        if grep -qxF -- "$row" results/report.md; then ok
+        else ko "docs/results.md: row '$row' is not in results/report.md (an older report's?)"; fi
+    done <"$TMPD/docrows"
+    if [ $n_doc -gt 0 ]; then ok; else ko "docs/results.md: no row of report.sh's tables found"; fi
 fi
 summary cli_results
