@@ -8,7 +8,7 @@
 # representation has runs early), others-2000 (one run of each other experiment's variants that
 # differ from the seed's settings), fig6-N (the nine runs extended to N evaluations; the seed's
 # were 20,000). Taken in rounds (fig6-3000, fig6-4000, ...), all nine reach a count before any
-# goes beyond it.
+# goes beyond it; a run already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
 # fig6-2000): a run folder that the other runner is working in is skipped, and that runner
@@ -21,6 +21,12 @@ run() {
     folder=$1 evals=$2
     shift 2
     err=$DIR/.run.$$.err
+    done_evals=$(sed -n 's/^evaluations \([0-9][0-9]*\)$/\1/p' "$folder/checkpoint.txt" 2>/dev/null)
+    if [ -n "$done_evals" ] && [ "$done_evals" -gt "$evals" ]; then
+        # a later round's run: it is past this round, so nothing to do
+        echo "$(date -u +%FT%TZ) $folder already at $done_evals evaluations"
+        return 0
+    fi
     if [ -f "$folder/checkpoint.txt" ]; then
         "$AMORPH" evolve --resume "$folder" --evaluations "$evals" --threads 1 --quiet 2>"$err"
     else

@@ -5,7 +5,8 @@
 # at the median, a row per run with its 30-cycle gait, and the plots (gaits.svg's bars too). Float desktop builds (the
 # report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
-# its checkpoint's refused. Run from the repository root.
+# its checkpoint's refused. And results/run.sh's rounds, with a stand-in for amorph. Run from the
+# repository root.
 . tests/shlib.sh
 
 if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
@@ -106,4 +107,39 @@ cp "$D/representations/dct-1/best.genome" "$TMPD/shipped.genome"
 SHIP_TRIES=2 SHIP_WAIT=0 expect_fail 1 "best.genome ends in state .*, checkpoint.txt's best in $want" sh "$D/ship.sh" "$AMORPH" "$S"
 check "ship: the refused run's copy unchanged" cmp -s "$TMPD/shipped.genome" "$D/representations/dct-1/best.genome"
 check "ship: no folder of its own left behind after a refusal" [ ! -d "$D/representations/dct-1/.ship" ]
+# --- results/run.sh, with a stand-in for amorph that records its calls (the real runs take hours):
+# a round starts the missing runs and resumes the others, leaves a run already beyond the round's
+# count alone, skips a folder another runner works in, stops at a failing run, refuses a bad stage
+F=$TMPD/fake-amorph RD=$TMPD/rounds
+cat >"$F" <<'FAKE'
+#!/bin/sh
+echo "$*" >>"$RD/calls"
+while [ $# -gt 0 ]; do
+    case $1 in --resume | --out) dir=$2 ;; --evaluations) n=$2 ;; esac
+    shift
+done
+echo "${dir#"$RD"/representations/}" >>"$RD/order"
+case "$dir" in *"$FAKE_BUSY") echo "amorph: $dir: another amorph is working in this folder" >&2; exit 1 ;; esac
+case "$dir" in *"$FAKE_FAIL") echo "amorph: $dir: no space left" >&2; exit 1 ;; esac
+mkdir -p "$dir" && printf 'evaluations = %s\n' "$n" >"$dir/summary.txt"
+FAKE
+chmod +x "$F"
+mkdir -p "$RD/representations/dct-1" "$RD/representations/gmx-2"
+printf 'evaluations = 4000\nevaluations 3640\n' >"$RD/representations/dct-1/checkpoint.txt"
+printf 'evaluations = 5000\nevaluations 5000\n' >"$RD/representations/gmx-2/checkpoint.txt"
+export RD FAKE_BUSY=cppn-3 FAKE_FAIL=none
+sh results/run.sh "$F" "$RD" fig6-4000 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+check "run.sh: a round with a busy folder succeeds (exit $rc: $(cat "$TMPD/err"))" [ $rc -eq 0 ]
+check "run.sh: eight calls, gmx-2 (at 5000) left alone: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 8 ] && ! grep -q gmx-2 "$RD/calls"
+check "run.sh: gmx-2 reported as beyond the round" grep -q "representations/gmx-2 already at 5000 evaluations\$" "$TMPD/out"
+check "run.sh: dct-1 (at 3640) resumed to 4000" grep -qx -- "evolve --resume $RD/representations/dct-1 --evaluations 4000 --threads 1 --quiet" "$RD/calls"
+check "run.sh: cppn-2 started with its representation and seed" grep -qx -- "evolve --representation cppn --seed 2 --evaluations 4000 --threads 1 --quiet --no-pictures --out $RD/representations/cppn-2" "$RD/calls"
+check "run.sh: the runs in the interleaved order: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 gmx-1 dct-2 cppn-2 dct-3 cppn-3 gmx-3 " ]
+check "run.sh: the busy folder skipped" grep -q "representations/cppn-3 skipped: another runner is working in it\$" "$TMPD/out"
+check "run.sh: a started run reported at its count" grep -q "representations/gmx-3 4000 evaluations\$" "$TMPD/out"
+rm -f "$RD/calls" "$RD/order"
+FAKE_BUSY=none FAKE_FAIL=cppn-1 expect_fail 1 "cppn-1: no space left" sh results/run.sh "$F" "$RD" fig6-4000
+check "run.sh: no run after the failing one: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 " ]
+expect_fail 2 "fig6-N takes a number of evaluations" sh results/run.sh "$F" "$RD" fig6-4k
+expect_fail 2 "unknown stage 'fig7-2000'" sh results/run.sh "$F" "$RD" fig7-2000
 summary cli_report
