@@ -9,8 +9,9 @@
 # per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
 # Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
 # runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them;
-# the mean size of the bodies each representation evaluated, every 500 evaluations; and the
-# compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
+# the mean size of the bodies each representation evaluated, every 500 evaluations; the other
+# experiments' runs, each at 2,000 evaluations (OTHERS_EVALS) against the range of the GMX runs
+# (the seed's settings) at that count; and the compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
 # DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs that have
 # reached FIG6_MIN_EVALS evaluations, 2,000 unless set, or from every run when none has),
 # DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1)
@@ -100,6 +101,51 @@ done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
           for (w = 0; w <= top; w++) { line = "| " (w * 500 + 1) "-" (w + 1) * 500 " |"
               for (r = 1; r <= 3; r++) line = line ((order[r], w) in n ? sprintf(" %.0f (%d bodies) |", s[order[r], w] / n[order[r], w], n[order[r], w]) : " |")
               print line } }'
+
+# the other experiments: each run's best fitness after OTHERS_EVALS evaluations (2,000, their
+# length) against the seed's settings at the same count, the GMX runs of Figure 6 (the
+# representation and settings the other runs start from): their mean +- standard error and range,
+# and whether the run is above, within or below that range; the settings a run changes are the
+# lines of its config.txt that differ from representations/gmx-1's (but for the evaluations, the
+# seed and the threads); the gait is its best robot's over 30 cycles (gait30.json)
+n_at=${OTHERS_EVALS:-2000}
+# best_at RUN: the best fitness so far at n_at evaluations, from log.csv; nothing when the run
+# has not got there
+best_at() {
+    awk -F, -v n="$n_at" 'FNR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; best = -1; next }
+        { e = $col["evaluations"] + 0; if (e <= n && $col["best"] + 0 > best) best = $col["best"] + 0; if (e >= n) got = 1 }
+        END { if (got) printf "%.4f\n", best }' "$1/log.csv"
+}
+base=$DIR/representations/gmx-1/config.txt
+if [ -f "$base" ]; then
+    set --
+    for log in "$DIR"/representations/gmx-[0-9]*/log.csv; do
+        [ -f "$log" ] && set -- "$@" "$(best_at "${log%/log.csv}")"
+    done
+    range=$(printf '%s\n' "$@" | awk 'NF { k++; s += $1; s2 += $1 * $1; if (k == 1 || $1 < lo) lo = $1; if (k == 1 || $1 > hi) hi = $1 }
+        END { if (!k) exit; m = s / k; v = k > 1 ? (s2 - k * m * m) / (k - 1) : 0
+              printf "%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(v > 0 ? v / k : 0), lo, hi }')
+    set -- "$DIR"/*/*/config.txt
+    for cfg in "$@"; do case $cfg in "$DIR"/representations/*) shift ;; *) set -- "$@" "$1"; shift ;; esac; done
+    if [ -n "$range" ] && [ -f "$1" ]; then
+        echo
+        echo "| run | settings | best fitness at $n_at evaluations (m) | against the seed's settings | gait (30 cycles) |"
+        echo "|---|---|---:|---|---|"
+        echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d runs) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $2, $3, $4, $5 }'
+        for cfg in "$@"; do
+            run=${cfg%/config.txt}
+            b=$(best_at "$run")
+            [ -n "$b" ] || continue
+            changed=$(awk -F' = ' 'NR == FNR { if (NF == 2) v[$1] = $2; next }
+                NF == 2 && $1 != "evaluations" && $1 != "seed" && $1 != "threads" && v[$1] != $2 { s = s (s ? ", " : "") $1 "=" $2 }
+                END { print s ? s : "the seed'"'"'s" }' "$base" "$cfg")
+            where=$(echo "$b $range" | awk '{ print ($1 > $6 ? "above the range" : $1 < $5 ? "below the range" : "within the range") }')
+            gait=""
+            [ -f "$run/gait30.json" ] && gait=$(json "$run/gait30.json" gait)
+            echo "| ${run#"$DIR"/} | $changed | $b | $where | $gait |"
+        done
+    fi
+fi
 
 # compute: hours of one thread per run, the sum of log.csv's wall_s. A generation that took more
 # than 5 times the run's median was paused (the runners are stopped while other work needs the

@@ -2,8 +2,9 @@
 # on small runs made here, with their log.csv replaced by rows whose answers are known: the Figure 6
 # table's means and standard errors (over the runs that reached each 500 evaluations), the mean
 # body size per 500 evaluations from evals.csv.gz, the compute with a paused generation counted
-# at the median, a row per run with its 30-cycle gait, and the plots (gaits.svg's bars too). Float desktop builds (the
-# report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
+# at the median, a row per run with its 30-cycle gait, the other experiments against the range of
+# the seed's settings, and the plots (gaits.svg's bars too). Float desktop builds (the report
+# simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
 # its checkpoint's refused. And results/run.sh's rounds, with a stand-in for amorph. Run from the
 # repository root.
@@ -70,6 +71,35 @@ cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
 expect_ok sh results/report.sh "$AMORPH" "$R"
 check "a second report gives the same gait30.json" cmp -s "$TMPD/gait-a.json" "$R/representations/dct-1/gait30.json"
 expect_fail 2 "no such folder" sh results/report.sh "$AMORPH" "$TMPD/none"
+# the other experiments' table, on folders of config.txt and log.csv only: the seed's settings are
+# gmx-1 (0.014 at 500) and gmx-2 (0.018 at 500; its 0.030 at 750 is past the count): mean 0.016,
+# standard error 0.002, range 0.014 to 0.018; friction/a (0.020) is above it, dynamic/b (0.015,
+# another seed) within, dynamic/c (0.010) below; three/d has not reached 500 evaluations
+O=$TMPD/others
+mkdir -p "$O/representations/gmx-1" "$O/representations/gmx-2" "$O/friction/a" "$O/dynamic/b" "$O/dynamic/c" "$O/three/d"
+cfg=$R/representations/gmx-1/config.txt
+cp "$cfg" "$O/representations/gmx-1/config.txt"
+sed 's/^seed = .*/seed = 2/' "$cfg" >"$O/representations/gmx-2/config.txt"
+sed 's/^mu_kinetic = .*/mu_kinetic = 0.1/; s/^mu_static = .*/mu_static = 5/' "$cfg" >"$O/friction/a/config.txt"
+sed 's/^seed = .*/seed = 7/; s/^evaluations = .*/evaluations = 900/; s/^damping_internal = .*/damping_internal = 0.1/' "$cfg" >"$O/dynamic/b/config.txt"
+sed 's/^period_steps = .*/period_steps = 50/' "$cfg" >"$O/dynamic/c/config.txt"
+sed 's/^materials = .*/materials = 3/' "$cfg" >"$O/three/d/config.txt"
+printf '%s\n0,250,0.010,0,0,0,0,1\n1,500,0.014,0,0,0,0,1\n' "$h" >"$O/representations/gmx-1/log.csv"
+printf '%s\n0,500,0.018,0,0,0,0,1\n1,750,0.030,0,0,0,0,1\n' "$h" >"$O/representations/gmx-2/log.csv"
+printf '%s\n0,250,0.020,0,0,0,0,1\n1,500,0.019,0,0,0,0,1\n' "$h" >"$O/friction/a/log.csv"
+printf '%s\n0,500,0.015,0,0,0,0,1\n' "$h" >"$O/dynamic/b/log.csv"
+printf '%s\n0,500,0.010,0,0,0,0,1\n' "$h" >"$O/dynamic/c/log.csv"
+printf '%s\n0,250,0.040,0,0,0,0,1\n' "$h" >"$O/three/d/log.csv"
+OTHERS_EVALS=500 expect_ok sh results/report.sh "$AMORPH" "$O"
+# orow KEY: the row of the others' table that starts with "| KEY |"
+orow() { awk -v k="| $1 |" '/^\| run \| settings \|/ { t = 1 } t && !NF { t = 0 } t && index($0, k) == 1' "$TMPD/out"; }
+check "others: the header names the count: '$(grep -F '| run | settings |' "$TMPD/out")'" grep -qxF "| run | settings | best fitness at 500 evaluations (m) | against the seed's settings | gait (30 cycles) |" "$TMPD/out"
+check "others: the seed's settings: '$(orow 'representations/gmx-\*')'" [ "$(orow 'representations/gmx-*')" = "| representations/gmx-* | the seed's (GMX, 2 runs) | 0.0160 +- 0.0020 (0.0140 to 0.0180) | | |" ]
+check "others: friction/a above: '$(orow friction/a)'" [ "$(orow friction/a)" = "| friction/a | mu_static=5, mu_kinetic=0.1 | 0.0200 | above the range |  |" ]
+check "others: dynamic/b within (its seed and evaluations are not settings): '$(orow dynamic/b)'" [ "$(orow dynamic/b)" = "| dynamic/b | damping_internal=0.1 | 0.0150 | within the range |  |" ]
+check "others: dynamic/c below: '$(orow dynamic/c)'" [ "$(orow dynamic/c)" = "| dynamic/c | period_steps=50 | 0.0100 | below the range |  |" ]
+check "others: no row for a run short of the count: '$(orow three/d)'" [ -z "$(orow three/d)" ]
+
 
 # --- results/ship.sh (copied with report.sh into a folder of its own, which it fills) ---
 S=$TMPD/ship-src D=$TMPD/ship-dst
