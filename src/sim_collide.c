@@ -20,11 +20,9 @@
 /* 1 when voxels i and j are joined by one link or by two. Links join voxels one lattice step
  * apart along their direction, so a path of one or two links from i to j is a way of writing the
  * lattice offset of j from i as that many unit steps: only offsets of one or two steps can be, and
- * only the (at most two) orders of their steps need looking at */
-static int within_two_links(const am_model* m, int i, int j)
+ * only the (at most two) orders of their steps need looking at; d is the offset of j from i */
+static int within_two_links(const am_model* m, int i, int j, const int d[3])
 {
-    const int nx = m->nx, ny = m->ny, ci = m->cell[i], cj = m->cell[j];
-    const int d[3] = {cj % nx - ci % nx, (cj / nx) % ny - (ci / nx) % ny, cj / (nx * ny) - ci / (nx * ny)};
     int step[2], n = 0;
     for (int a = 0; a < 3; a++)
         for (int k = d[a] < 0 ? -d[a] : d[a]; k > 0; k--) {
@@ -38,6 +36,14 @@ static int within_two_links(const am_model* m, int i, int j)
         if (v >= 0 && am_neighbour(m, step[1 - o], v) == j) return 1;
     }
     return 0;
+}
+
+/* the lattice offset along one axis of two voxels whose rest centres are e apart there, for
+ * offsets of at most 2: rest centres sit on a lattice of pitch L, so e is within rounding of a
+ * multiple of L (and no division into lattice indices is needed) */
+static int lattice_offset(am_real e, am_real half_L, am_real three_half_L)
+{
+    return (e > half_L) + (e > three_half_L) - (e < -half_L) - (e < -three_half_L);
 }
 
 static uint32_t bucket_of(long cx, long cy, long cz)
@@ -115,7 +121,7 @@ static void rebuild(const am_model* m, am_state* s)
     const am_real h = AM_MUL(CAND_FACTOR, m->L), h2 = AM_MUL(h, h), inv_h = AM_DIV(AM_R(1), h);
     /* two voxels within two links are at most two lattice steps apart (Manhattan), so a pair whose
      * rest centres are further apart than 2.5 edges needs no look at the links */
-    const am_real lattice_far = AM_MUL(AM_R(2.5), m->L);
+    const am_real lattice_far = AM_MUL(AM_R(2.5), m->L), half_L = AM_MUL(AM_R(0.5), m->L), three_half_L = AM_MUL(AM_R(1.5), m->L);
     am_index* end = s->bucket_end;
 #if !defined(AM_COMPACT)
     const am_real w = gap_width(m), inv_w = w > AM_R(0) ? AM_DIV(AM_R(1), w) : AM_R(0);
@@ -179,15 +185,23 @@ static void rebuild(const am_model* m, am_state* s)
                     for (; k < k1; k++) {
                         const int j = s->bucket_item[k];
                         am_real ex = ITEM_POS(0, k) - pix, ey = ITEM_POS(1, k) - piy, ez = ITEM_POS(2, k) - piz;
-                        /* a far pair is out on one axis already (and its square might leave a
+#if defined(AM_REAL_FIXED_POINT)
+                        /* a far pair is out on one axis already (and its square might leave the
                          * fixed-point range) */
                         if (am_fabs(ex) >= h || am_fabs(ey) >= h || am_fabs(ez) >= h) continue;
+#endif
+                        /* in floating point |e| >= h on one axis gives d2 >= h2 too (rounding
+                         * keeps the order of squares and of sums of non-negatives), so the one
+                         * test, without a branch per axis, takes the same pairs */
                         const am_real d2 = AM_MUL(ex, ex) + AM_MUL(ey, ey) + AM_MUL(ez, ez);
                         if (d2 >= h2) continue;
-                        if (am_fabs(m->x0[0][j] - m->x0[0][i]) + am_fabs(m->x0[1][j] - m->x0[1][i]) + am_fabs(m->x0[2][j] - m->x0[2][i]) <
-                                lattice_far &&
-                            within_two_links(m, i, j))
-                            continue;
+                        const am_real rx = m->x0[0][j] - m->x0[0][i], ry = m->x0[1][j] - m->x0[1][i], rz = m->x0[2][j] - m->x0[2][i];
+                        if (am_fabs(rx) + am_fabs(ry) + am_fabs(rz) < lattice_far) {
+                            /* at most two steps on each axis */
+                            const int d[3] = {lattice_offset(rx, half_L, three_half_L), lattice_offset(ry, half_L, three_half_L),
+                                              lattice_offset(rz, half_L, three_half_L)};
+                            if (within_two_links(m, i, j, d)) continue;
+                        }
                         if (np >= AM_MAX_PAIRS) {
                             s->pairs_overflow = 1;
                             continue;
@@ -363,6 +377,15 @@ void am_sim_collide(const am_model* m, am_state* s)
         for (int q = 0; q < n; q++) touch[s->pair_by_gap[k + q]] = (uint8_t)hit[q];
     }
     for (int k = 0; k < np; k++) {
+        /* few pairs touch: eight flags at a time while they are all clear */
+        if ((k & 7) == 0 && np - k >= 8) {
+            uint64_t eight;
+            memcpy(&eight, touch + k, sizeof eight);
+            if (!eight) {
+                k += 7;
+                continue;
+            }
+        }
         if (!touch[k]) continue;
 #else
     int32_t touch[PAIR_CHUNK];
