@@ -22,10 +22,18 @@ am_eval_def am_default_eval(void)
     return d;
 }
 
-double am_kinetic_energy(const am_model* m, const am_state* s)
+/* the kinetic energy (model units) of the free voxels into *e and, with speeds, the sum of the
+ * squares of every voxel's velocity components into *v2: one pass, so that the two sums' chains of
+ * additions overlap (each in voxel order: the same values as two passes) */
+static inline void motion_sums(const am_model* m, const am_state* s, int speeds, double* e_out, double* v2_out)
 {
-    double e = 0;
+    double e = 0, v2 = 0;
     for (int i = 0; i < m->nv; i++) {
+        if (speeds)
+            for (int c = 0; c < 3; c++) {
+                const double vc = AM_TO_DOUBLE(am_sim_vel(m, s, c, i));
+                v2 += vc * vc;
+            }
         if (m->fixed[i]) continue;
         double p2 = 0, h2 = 0;
         for (int c = 0; c < 3; c++) {
@@ -34,6 +42,14 @@ double am_kinetic_energy(const am_model* m, const am_state* s)
         }
         e += 0.5 * p2 * AM_TO_DOUBLE(m->inv_mass[AM_VC(m, i)]) + 0.5 * h2 * AM_TO_DOUBLE(m->inv_inertia[AM_VC(m, i)]);
     }
+    *e_out = e;
+    *v2_out = v2;
+}
+
+double am_kinetic_energy(const am_model* m, const am_state* s)
+{
+    double e, v2;
+    motion_sums(m, s, 0, &e, &v2);
     return e * am_unit(m, AM_DIM_ENERGY);
 }
 
@@ -211,16 +227,13 @@ am_real am_dt_search(const am_model* m, am_state* scratch)
     return AM_MUL(AM_R(0.95), stable);
 }
 
-/* the RMS voxel speed, m/s */
-static double rms_speed(const am_model* m, const am_state* s)
+/* the kinetic energy (J, as am_kinetic_energy) into *ke and the RMS voxel speed (m/s) into *speed */
+static void ke_and_speed(const am_model* m, const am_state* s, double* ke, double* speed)
 {
-    double sum = 0;
-    for (int i = 0; i < m->nv; i++)
-        for (int c = 0; c < 3; c++) {
-            const double vc = AM_TO_DOUBLE(am_sim_vel(m, s, c, i));
-            sum += vc * vc;
-        }
-    return sqrt(sum / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
+    double e, v2;
+    motion_sums(m, s, 1, &e, &v2);
+    *ke = e * am_unit(m, AM_DIM_ENERGY);
+    *speed = sqrt(v2 / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
 }
 
 /* every voxel's linear and angular momentum to zero (kinetic damping's stop) */
@@ -349,8 +362,8 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     while (s->step < def->relax_max_steps && !s->diverged) {
         am_step(m, s);
         am_record_frame(m, s, rec);
-        double ke = am_kinetic_energy(m, s);
-        speed = rms_speed(m, s);
+        double ke;
+        ke_and_speed(m, s, &ke, &speed);
         if (release < 0) {
             if (ke < ke_prev) { /* past a peak: stop */
                 stop_all(m, s);
