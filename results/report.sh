@@ -8,7 +8,8 @@
 # evolved cycles (`amorph render`, 1200 x 300 pixels). Then it prints Markdown: a table with a row
 # per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
 # Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
-# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them;
+# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them, and
+# each run's best so far every 1,000;
 # the mean size of the bodies each representation evaluated, every 500 evaluations; the other
 # experiments' runs, each at 2,000 evaluations (OTHERS_EVALS) against the range of the GMX runs
 # (the seed's settings) at that count; and the compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
@@ -83,6 +84,26 @@ awk -F, '
       }
     }' "$@"
 }
+
+# each Figure 6 run's best fitness so far (m) at every 1,000 evaluations it reached: the runs
+# behind the means above
+set -- "$DIR"/representations/*-[0-9]*/log.csv
+[ -f "$1" ] && awk -F, '
+    FNR == 1 { n = split(FILENAME, p, "/"); run = "representations/" p[n - 1]; runs[++nr] = run
+               for (c = 1; c <= NF; c++) col[$c] = c; best = -1; prev = 0; next }
+    { e = $col["evaluations"] + 0; before = best; if ($col["best"] + 0 > best) best = $col["best"] + 0
+      for (m = 1000 * (int(prev / 1000) + 1); m <= e; m += 1000) at[run, m] = m == e ? best : before
+      prev = e; if (e > top) top = e }
+    END {
+      head = "| run |"; sep = "|---|"
+      for (m = 1000; m <= top; m += 1000) { head = head " " m " |"; sep = sep "---:|" }
+      print ""; print head; print sep
+      for (r = 1; r <= nr; r++) {
+        line = "| " runs[r] " |"
+        for (m = 1000; m <= top; m += 1000) line = line (((runs[r], m) in at) ? sprintf(" %.4f |", at[runs[r], m]) : " |")
+        print line
+      }
+    }' "$@"
 
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the

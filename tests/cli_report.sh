@@ -1,10 +1,10 @@
 # tests/cli_report.sh: results/report.sh, which writes the tables and pictures of docs/results.md,
 # on small runs made here, with their log.csv replaced by rows whose answers are known: the Figure 6
-# table's means and standard errors (over the runs that reached each 500 evaluations), the mean
-# body size per 500 evaluations from evals.csv.gz, the compute with a paused generation counted
-# at the median, a row per run with its 30-cycle gait, the other experiments against the range of
-# the seed's settings, and the plots (gaits.svg's bars too). Float desktop builds (the report
-# simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
+# table's means and standard errors (over the runs that reached each 500 evaluations), each run's
+# best so far every 1,000, the mean body size per 500 evaluations from evals.csv.gz, the compute
+# with a paused generation counted at the median, a row per run with its 30-cycle gait, the other
+# experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
+# Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
 # its checkpoint's refused. And results/run.sh's rounds, with a stand-in for amorph. Run from the
 # repository root.
@@ -44,6 +44,10 @@ check "Figure 6 row at 500: '$(row 500)'" [ "$(row 500)" = "| 500 | 0.0140 +- 0.
 check "Figure 6 row at 1000: '$(row 1000)'" [ "$(row 1000)" = "| 1000 | 0.0200 (1 run) |  |  |" ]
 # the best so far, not the generation's best: dct-1 at 750 logged 0.011 under an earlier 0.012
 check "Figure 6 row at 750 should not exist (marks every 500): '$(row 750)'" [ -z "$(row 750)" ]
+# each run's best so far at every 1,000: dct-1 0.020 at 1000 (its best so far: 0.020 came at
+# 1000); dct-2 and gmx-1 never got there, so their cells are empty
+runs1000=$(awk '/^\| run \| 1000 \|$/ { t = 1 } t && !NF { exit } t' "$TMPD/report.md" | tr '\n' '/')
+check "the per-run table: '$runs1000'" [ "$runs1000" = "| run | 1000 |/|---|---:|/| representations/dct-1 | 0.0200 |/| representations/dct-2 | |/| representations/gmx-1 | |/" ]
 # body size: the mean of the voxels column of every evaluation of the representation's runs
 want=$(for run in dct-1 dct-2; do gzip -dc "$R/representations/$run/evals.csv.gz"; done |
     awk -F, '$1 != "evaluation" { s += $7; n++ } END { printf "%.0f (%d bodies)", s / n, n }')
