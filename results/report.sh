@@ -9,14 +9,14 @@
 # per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
 # Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
 # runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them, and
-# each run's best so far every 1,000;
-# the mean size of the bodies each representation evaluated, every 500 evaluations; the other
-# experiments' runs, each at 2,000 evaluations (OTHERS_EVALS) against the range of the GMX runs
-# (the seed's settings) at that count; and the compute each run took (the sum of log.csv's wall_s). With --pictures it also draws
-# DIR/representations/fitness.svg (`amorph plot`: the seed's Figure 6 from the runs that have
-# reached FIG6_MIN_EVALS evaluations, 2,000 unless set, or from every run when none has),
-# DIR/others.svg (every other experiment's runs against the seed's settings, representations/gmx-1)
-# and DIR/gaits.svg (each best robot's travel in each of its 30 cycles, a row per run).
+# each run's best so far every 1,000; the mean size of the bodies each representation evaluated,
+# every 500 evaluations; the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
+# against the range of the GMX runs (the seed's settings) at that count; and the compute each run
+# took (the sum of log.csv's wall_s). With --pictures it also draws DIR/representations/fitness.svg
+# (`amorph plot`: the seed's Figure 6 from the runs that have reached FIG6_MIN_EVALS evaluations,
+# 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
+# against the seed's settings, representations/gmx-1) and DIR/gaits.svg (each best robot's travel
+# in each of its 30 cycles, a row per run).
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
 # the same files on every float build.
 set -eu
@@ -146,14 +146,18 @@ if [ -f "$base" ]; then
     range=$(printf '%s\n' "$@" | awk 'NF { k++; s += $1; s2 += $1 * $1; if (k == 1 || $1 < lo) lo = $1; if (k == 1 || $1 > hi) hi = $1 }
         END { if (!k) exit; m = s / k; v = k > 1 ? (s2 - k * m * m) / (k - 1) : 0
               printf "%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(v > 0 ? v / k : 0), lo, hi }')
-    set -- "$DIR"/*/*/config.txt
-    for cfg in "$@"; do case $cfg in "$DIR"/representations/*) shift ;; *) set -- "$@" "$1"; shift ;; esac; done
-    if [ -n "$range" ] && [ -f "$1" ]; then
+    others=""
+    for cfg in "$DIR"/*/*/config.txt; do
+        case $cfg in "$DIR"/representations/*) ;; *) [ -f "$cfg" ] && others=yes ;; esac
+    done
+    if [ -n "$range" ] && [ -n "$others" ]; then
         echo
         echo "| run | settings | best fitness at $n_at evaluations (m) | against the seed's settings | gait (30 cycles) |"
         echo "|---|---|---:|---|---|"
         echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d runs) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $2, $3, $4, $5 }'
-        for cfg in "$@"; do
+        for cfg in "$DIR"/*/*/config.txt; do
+            case $cfg in "$DIR"/representations/*) continue ;; esac
+            [ -f "$cfg" ] || continue
             run=${cfg%/config.txt}
             b=$(best_at "$run")
             [ -n "$b" ] || continue
