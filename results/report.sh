@@ -154,7 +154,7 @@ if [ -f "$base" ]; then
         echo
         echo "| run | settings | best fitness at $n_at evaluations (m) | against the seed's settings | gait (30 cycles) |"
         echo "|---|---|---:|---|---|"
-        echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d runs) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $2, $3, $4, $5 }'
+        echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d run%s) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $1 == 1 ? "" : "s", $2, $3, $4, $5 }'
         for cfg in "$DIR"/*/*/config.txt; do
             case $cfg in "$DIR"/representations/*) continue ;; esac
             [ -f "$cfg" ] || continue

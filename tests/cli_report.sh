@@ -6,8 +6,8 @@
 # experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
-# its checkpoint's refused. And results/run.sh's rounds, with a stand-in for amorph. Run from the
-# repository root.
+# its checkpoint's refused. results/tables.sh copying a report's tables into a page. And
+# results/run.sh's rounds, with a stand-in for amorph. Run from the repository root.
 . tests/shlib.sh
 
 if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
@@ -103,6 +103,26 @@ check "others: friction/a above: '$(orow friction/a)'" [ "$(orow friction/a)" = 
 check "others: dynamic/b within (its seed and evaluations are not settings): '$(orow dynamic/b)'" [ "$(orow dynamic/b)" = "| dynamic/b | damping_internal=0.1 | 0.0150 | within the range |  |" ]
 check "others: dynamic/c below: '$(orow dynamic/c)'" [ "$(orow dynamic/c)" = "| dynamic/c | period_steps=50 | 0.0100 | below the range |  |" ]
 check "others: no row for a run short of the count: '$(orow three/d)'" [ -z "$(orow three/d)" ]
+
+# --- results/tables.sh: the report's tables copied over a page's older ones, the prose around
+# them kept (the page here: each table of the first report with one stale row, and the per-run
+# table without its 1000 column, as before the runs reached 1,000); a table the page lacks refused
+awk '/^\|/ { if (!t) { n++; print; t = 1; h = $0 } else if (t == 1) { print (h == "| run | 1000 |" ? "|---|" : $0); print "| stale | row |"; t = 2 } next }
+     { if (t) { print ""; print "prose " n } t = 0 } END { if (t) { print ""; print "prose " n } }' "$TMPD/report.md" | sed 's/^| run | 1000 |$/| run |/' >"$TMPD/page.md"
+check "tables.sh: the stale page has the per-run table without its column" grep -qxF "| run |" "$TMPD/page.md"
+expect_ok sh results/tables.sh "$TMPD/report.md" "$TMPD/page.md"
+# the page's tables, one per line, must be the report's
+tabs() { awk '/^\|/ { printf "%s/", $0; next } { print "" }' "$1" | grep -v '^$'; }
+check "tables.sh: the page's tables are the report's now" [ "$(tabs "$TMPD/page.md")" = "$(tabs "$TMPD/report.md")" ]
+check "tables.sh: the prose kept: $(grep -c '^prose' "$TMPD/page.md") paragraphs" [ "$(grep -c '^prose [1-5]$' "$TMPD/page.md")" -eq 5 ]
+check "tables.sh: no stale row left" sh -c "! grep -q 'stale' '$TMPD/page.md'"
+cp "$TMPD/page.md" "$TMPD/page0.md"
+cp "$TMPD/report.md" "$TMPD/report2.md"
+printf '\n| a new | table |\n|---|---|\n| 1 | 2 |\n' >>"$TMPD/report2.md"
+expect_fail 1 "page.md: no table headed \"\| a new \| table \|\"" sh results/tables.sh "$TMPD/report2.md" "$TMPD/page.md"
+check "tables.sh: the page unchanged after a refusal" cmp -s "$TMPD/page0.md" "$TMPD/page.md"
+check "tables.sh: no temporary file left" [ -z "$(ls "$TMPD" | grep 'page.md.tables')" ]
+expect_fail 2 "none.md: no such file" sh results/tables.sh "$TMPD/none.md" "$TMPD/page.md"
 
 
 # --- results/ship.sh (copied with report.sh into a folder of its own, which it fills) ---

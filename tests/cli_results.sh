@@ -50,7 +50,7 @@ if [ -f results/report.md ]; then
         case "$row" in "|"*) ;; *) continue ;; esac
         rows=$((rows + 1))
         if grep -qxF -- "$row" docs/results.md; then ok
-        else ko "docs/results.md: lacks results/report.md's row '$row' (run results/report.sh and copy its tables)"; fi
+        else ko "docs/results.md: lacks results/report.md's row '$row' (sh results/tables.sh copies report.md's tables into the page)"; fi
     done <results/report.md
     if [ $rows -gt 0 ]; then ok; else ko "results/report.md: no table row"; fi
     # and no row of an older report stays: a row that names a shipped run, a window of
