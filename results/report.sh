@@ -55,14 +55,15 @@ for cfg in "$DIR"/*/*/config.txt; do
 done
 
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
-# of each representation that reached it, (n) the number of those runs
+# of each representation that reached it, (n) the number of those runs; then each run's best so
+# far at every 1,000 evaluations it reached, the runs behind the means
 set -- "$DIR"/representations/*-[0-9]*/log.csv
 [ -f "$1" ] && {
 echo
 echo "| evaluations | DCT | CPPN | GMX |"
 echo "|---:|---|---|---|"
 awk -F, '
-    FNR == 1 { n = split(FILENAME, p, "/"); run = p[n - 1]; rep = run; sub(/-[0-9]+$/, "", rep); runs[run] = rep
+    FNR == 1 { n = split(FILENAME, p, "/"); run = p[n - 1]; rep = run; sub(/-[0-9]+$/, "", rep); runs[run] = rep; names[++nr] = run
                for (c = 1; c <= NF; c++) col[$c] = c; best = -1; prev = 0; next }
     { e = $col["evaluations"] + 0; before = best; if ($col["best"] + 0 > best) best = $col["best"] + 0
       # each multiple of 500 in (prev, e]: the best of the rows at or below it
@@ -82,28 +83,16 @@ awk -F, '
         }
         print line
       }
-    }' "$@"
-}
-
-# each Figure 6 run's best fitness so far (m) at every 1,000 evaluations it reached: the runs
-# behind the means above
-set -- "$DIR"/representations/*-[0-9]*/log.csv
-[ -f "$1" ] && awk -F, '
-    FNR == 1 { n = split(FILENAME, p, "/"); run = "representations/" p[n - 1]; runs[++nr] = run
-               for (c = 1; c <= NF; c++) col[$c] = c; best = -1; prev = 0; next }
-    { e = $col["evaluations"] + 0; before = best; if ($col["best"] + 0 > best) best = $col["best"] + 0
-      for (m = 1000 * (int(prev / 1000) + 1); m <= e; m += 1000) at[run, m] = m == e ? best : before
-      prev = e; if (e > top) top = e }
-    END {
       head = "| run |"; sep = "|---|"
       for (m = 1000; m <= top; m += 1000) { head = head " " m " |"; sep = sep "---:|" }
       print ""; print head; print sep
       for (r = 1; r <= nr; r++) {
-        line = "| " runs[r] " |"
-        for (m = 1000; m <= top; m += 1000) line = line (((runs[r], m) in at) ? sprintf(" %.4f |", at[runs[r], m]) : " |")
+        line = "| representations/" names[r] " |"
+        for (m = 1000; m <= top; m += 1000) line = line (((names[r], m) in at) ? sprintf(" %.4f |", at[names[r], m]) : " |")
         print line
       }
     }' "$@"
+}
 
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the
@@ -146,29 +135,26 @@ if [ -f "$base" ]; then
     range=$(printf '%s\n' "$@" | awk 'NF { k++; s += $1; s2 += $1 * $1; if (k == 1 || $1 < lo) lo = $1; if (k == 1 || $1 > hi) hi = $1 }
         END { if (!k) exit; m = s / k; v = k > 1 ? (s2 - k * m * m) / (k - 1) : 0
               printf "%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(v > 0 ? v / k : 0), lo, hi }')
-    others=""
-    for cfg in "$DIR"/*/*/config.txt; do
-        case $cfg in "$DIR"/representations/*) ;; *) [ -f "$cfg" ] && others=yes ;; esac
-    done
-    if [ -n "$range" ] && [ -n "$others" ]; then
+    rows=$(for cfg in "$DIR"/*/*/config.txt; do
+        case $cfg in "$DIR"/representations/*) continue ;; esac
+        [ -f "$cfg" ] || continue
+        run=${cfg%/config.txt}
+        b=$(best_at "$run")
+        [ -n "$b" ] || continue
+        changed=$(awk -F' = ' 'NR == FNR { if (NF == 2) v[$1] = $2; next }
+            NF == 2 && $1 != "evaluations" && $1 != "seed" && $1 != "threads" && v[$1] != $2 { s = s (s ? ", " : "") $1 "=" $2 }
+            END { print s ? s : "the seed'"'"'s" }' "$base" "$cfg")
+        where=$(echo "$b $range" | awk '{ print ($1 > $6 ? "above the range" : $1 < $5 ? "below the range" : "within the range") }')
+        gait=""
+        [ -f "$run/gait30.json" ] && gait=$(json "$run/gait30.json" gait)
+        echo "| ${run#"$DIR"/} | $changed | $b | $where | $gait |"
+    done)
+    if [ -n "$range" ] && [ -n "$rows" ]; then
         echo
         echo "| run | settings | best fitness at $n_at evaluations (m) | against the seed's settings | gait (30 cycles) |"
         echo "|---|---|---:|---|---|"
         echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d run%s) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $1 == 1 ? "" : "s", $2, $3, $4, $5 }'
-        for cfg in "$DIR"/*/*/config.txt; do
-            case $cfg in "$DIR"/representations/*) continue ;; esac
-            [ -f "$cfg" ] || continue
-            run=${cfg%/config.txt}
-            b=$(best_at "$run")
-            [ -n "$b" ] || continue
-            changed=$(awk -F' = ' 'NR == FNR { if (NF == 2) v[$1] = $2; next }
-                NF == 2 && $1 != "evaluations" && $1 != "seed" && $1 != "threads" && v[$1] != $2 { s = s (s ? ", " : "") $1 "=" $2 }
-                END { print s ? s : "the seed'"'"'s" }' "$base" "$cfg")
-            where=$(echo "$b $range" | awk '{ print ($1 > $6 ? "above the range" : $1 < $5 ? "below the range" : "within the range") }')
-            gait=""
-            [ -f "$run/gait30.json" ] && gait=$(json "$run/gait30.json" gait)
-            echo "| ${run#"$DIR"/} | $changed | $b | $where | $gait |"
-        done
+        echo "$rows"
     fi
 fi
 

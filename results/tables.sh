@@ -34,10 +34,11 @@ awk -v report="$REPORT" -v page="$PAGE" '
     END {
         for (t = 1; t <= nt; t++) {
             if (nb[t] < 0) { printf "tables.sh: %s: the table headed \"%s\" has no separator line\n", report, head[t] > "/dev/stderr"; exit 1 }
-            at[t] = 0
-            for (i = 1; i < n; i++) if (key(line[i]) == key(head[t]) && line[i + 1] ~ /^\|[-:|]+\|$/) { at[t] = i; break }
-            if (!at[t]) { printf "tables.sh: %s: no table headed \"%s\" (put it in by hand the first time)\n", page, head[t] > "/dev/stderr"; exit 1 }
-            from[i] = t
+            at = 0
+            for (i = 1; i < n && !at; i++) if (key(line[i]) == key(head[t]) && line[i + 1] ~ /^\|[-:|]+\|$/) at = i
+            if (!at) { printf "tables.sh: %s: no table headed \"%s\" (put it in by hand the first time)\n", page, head[t] > "/dev/stderr"; exit 1 }
+            if (at in from) { printf "tables.sh: %s: two tables headed like \"%s\"\n", report, head[t] > "/dev/stderr"; exit 1 }
+            from[at] = t
         }
         for (i = 1; i <= n; i++) {
             if (!(i in from)) { print line[i]; continue }

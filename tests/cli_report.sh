@@ -122,6 +122,10 @@ printf '\n| a new | table |\n|---|---|\n| 1 | 2 |\n' >>"$TMPD/report2.md"
 expect_fail 1 "page.md: no table headed \"\| a new \| table \|\"" sh results/tables.sh "$TMPD/report2.md" "$TMPD/page.md"
 check "tables.sh: the page unchanged after a refusal" cmp -s "$TMPD/page0.md" "$TMPD/page.md"
 check "tables.sh: no temporary file left" [ -z "$(ls "$TMPD" | grep 'page.md.tables')" ]
+cp "$TMPD/report.md" "$TMPD/report3.md"
+printf '\n| run | 2000 |\n|---|---:|\n| x | 1 |\n' >>"$TMPD/report3.md"
+expect_fail 1 "report3.md: two tables headed like \"\| run \| 2000 \|\"" sh results/tables.sh "$TMPD/report3.md" "$TMPD/page.md"
+check "tables.sh: the page unchanged after two tables of one header" cmp -s "$TMPD/page0.md" "$TMPD/page.md"
 expect_fail 2 "none.md: no such file" sh results/tables.sh "$TMPD/none.md" "$TMPD/page.md"
 
 
