@@ -32,6 +32,15 @@ W() {
     return $r
 }
 L="$AMORPH"
+# one wine server for the whole test, persistent, stopped at the end: left to itself it exits 3 s
+# after its last program, and a program started just then may fail to start (the likely cause of
+# an exit 127 with nothing run that CI saw once, at the KILL:20 step below). The first W makes the
+# prefix (tools/wine.sh), whose server is then replaced by the persistent one.
+WP=${AMORPH_WINEPREFIX:-$(pwd)/build/wine}
+W --help >/dev/null 2>&1
+WINEPREFIX="$WP" wineserver -k 2>/dev/null
+WINEPREFIX="$WP" wineserver -p 2>/dev/null
+trap 'WINEPREFIX="$WP" wineserver -k 2>/dev/null; rm -rf "$TMPD"' EXIT
 
 # --- the two builds compute the same thing ---
 bw=$(W --help 2>/dev/null | grep '^build:')
@@ -85,7 +94,7 @@ same "$d" "$TMPD/whole" "resumed after TERM:24"
 d="$TMPD/kill"
 AMORPH_TEST_INTERRUPT=KILL:20 W evolve $S --out "$d" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 if [ $rc -eq 137 ] && [ "$(rows "$d")" -eq 2 ] && grep -qx "evaluations 16" "$d/checkpoint.txt"; then ok
-else ko "KILL:20: exit $rc, $(rows "$d") rows, checkpoint at $(grep '^evaluations [0-9]' "$d/checkpoint.txt")"; fi
+else ko "KILL:20: exit $rc, $(rows "$d") rows, checkpoint at $(grep '^evaluations [0-9]' "$d/checkpoint.txt"): $(head -c 300 "$TMPD/err")"; fi
 echo partial >"$d/checkpoint.txt.tmp.12345"
 echo partial >"$d/log.csv.tmp.7"
 echo mine >"$d/notes.tmp.txt"
