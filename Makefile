@@ -96,7 +96,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h) port/common/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -143,10 +143,17 @@ check-fma: $(LIB_OBJ)
 	if [ -n "$$bad" ]; then echo "check-fma: fused multiply-add found:"; echo "$$bad"; echo "check-fma: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-fma: no fused multiply-add in $(words $(LIB_OBJ)) objects of src/"
 
+# a shell test's `check DESC CMD...` judges CMD alone: in `check DESC A && B`, B could never fail
+# the suite (tests/lint_checks.awk)
+check-tests:
+	@if ! bad=$$(awk -f tests/lint_checks.awk tests/*.sh); then echo "check-tests: a check chained outside its command:"; \
+	    echo "$$bad"; echo "check-tests: 0 passed, 1 failed"; exit 1; fi; \
+	echo "check-tests: no check in tests/*.sh chains a condition it does not judge"
+
 unit: $(TEST_BIN) $(BUILD)/amorph
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
-test: all check-alloc check-fma
+test: all check-alloc check-fma check-tests
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph

@@ -57,13 +57,13 @@ for m in 1 2; do
     # (a) the robot is drawn in its materials' colours
     info=$("$PNG" --png-info "$TMPD/shot$m.png" $COLS 2>&1)
     set -- $info
-    check "screenshot at t=$t: $info (want 900 x 600 and >= 500 pixels of each material)" \
-        [ "$1" = 900 ] && [ "$2" = 600 ] && [ "${3:-0}" -ge 500 ] && [ "${4:-0}" -ge 500 ] && [ "${5:-0}" -ge 200 ]
+    if [ "$1" = 900 ] && [ "$2" = 600 ] && [ "${3:-0}" -ge 500 ] && [ "${4:-0}" -ge 500 ] && [ "${5:-0}" -ge 200 ]; then ok
+    else ko "screenshot at t=$t: $info (want 900 x 600 and >= 500 pixels of each material)"; fi
 done
 # (b) it moved: the frames differ and so do the robot's pixels
 f1=$(sed -n 's/.*data-frame="\([0-9]*\)".*/\1/p' "$TMPD/dom1.html")
 f2=$(sed -n 's/.*data-frame="\([0-9]*\)".*/\1/p' "$TMPD/dom2.html")
-check "the two moments show frames '$f1' and '$f2'" [ -n "$f1" ] && [ -n "$f2" ] && [ "$f1" -lt "$f2" ]
+if [ -n "$f1" ] && [ -n "$f2" ] && [ "$f1" -lt "$f2" ]; then ok; else ko "the two moments show frames '$f1' and '$f2'"; fi
 diff=$("$PNG" --png-diff "$TMPD/shot1.png" "$TMPD/shot2.png" $COLS 2>&1)
 check "robot pixels changed between t=0.25 and t=0.75: $diff (want >= 300)" [ "${diff:-0}" -ge 300 ] 2>/dev/null
 
@@ -82,12 +82,12 @@ check "the page should open at the settled frame $sf, opened at '$(attr start da
 check "the relaxation should be hidden by default: data-relax '$(attr start data-relax)'" [ "$(attr start data-relax)" = 0 ]
 check "the clock at the start should read cycle 0.00: '$(clock start)'" sh -c "echo '$(clock start)' | grep -qE '^t = [0-9]+\.[0-9]{2} ms, cycle 0\.00$'"
 dom "relax=1&paused=1" relax
-check "#relax=1 should open at frame 0: '$(attr relax data-frame)', relax '$(attr relax data-relax)'" \
-    [ "$(attr relax data-frame)" = 0 ] && [ "$(attr relax data-relax)" = 1 ]
+if [ "$(attr relax data-frame)" = 0 ] && [ "$(attr relax data-relax)" = 1 ]; then ok
+else ko "#relax=1 should open at frame 0: '$(attr relax data-frame)', relax '$(attr relax data-relax)'"; fi
 check "the clock at frame 0 should read relaxing: '$(clock relax)'" [ "$(clock relax)" = "t = 0.00 ms, relaxing" ]
 dom "frame=1&paused=1" frame1
-check "#frame=1 should show frame 1 with the relaxation: '$(attr frame1 data-frame)', relax '$(attr frame1 data-relax)'" \
-    [ "$(attr frame1 data-frame)" = 1 ] && [ "$(attr frame1 data-relax)" = 1 ]
+if [ "$(attr frame1 data-frame)" = 1 ] && [ "$(attr frame1 data-relax)" = 1 ]; then ok
+else ko "#frame=1 should show frame 1 with the relaxation: '$(attr frame1 data-frame)', relax '$(attr frame1 data-relax)'"; fi
 # cycles count from the relaxation's last step: the last frame is the end of the 2 cycles
 dom "t=1&paused=1" end
 check "the clock at the end should read cycle 2.00: '$(clock end)'" sh -c "echo '$(clock end)' | grep -qE '^t = [0-9.]+ ms, cycle 2\.00$'"
@@ -100,25 +100,25 @@ st=$(sed -n 's/.*"steps": \[\([0-9,]*\)\].*/\1/p' "$TMPD/long.html" | tr ',' '\n
 lsf=$(sed -n 's/.*"settled_frame": \([0-9]*\).*/\1/p' "$TMPD/long.html")
 sstep=$(echo "$st" | sed -n "$((lsf + 1))p"); last=$(echo "$st" | tail -n 1)
 want=$(awk -v l="$last" 'BEGIN { printf "%.2f", (l - 423) / 500 }')
-check "long page: the settled frame's step '$sstep' should not be the relaxation's 423" [ -n "$sstep" ] && [ "$sstep" != 423 ]
+if [ -n "$sstep" ] && [ "$sstep" != 423 ]; then ok; else ko "long page: the settled frame's step '$sstep' should not be the relaxation's 423"; fi
 check "the clock past 1 s should read seconds and cycle $want (last step $last): '$(clock long)'" \
     sh -c "echo '$(clock long)' | grep -qE '^t = 1\.[0-9]{3} s, cycle $want\$'"
 # no relaxation recorded: nothing to skip, the check box stays on
 expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 2 --relax-max 0 --frames 60 --out "$TMPD/norelax.html"
 URL="file://$(cd "$TMPD" && pwd)/norelax.html"
 dom "paused=1" norelax
-check "no relaxation: frame 0 and relax 1, got '$(attr norelax data-frame)' and '$(attr norelax data-relax)'" \
-    [ "$(attr norelax data-frame)" = 0 ] && [ "$(attr norelax data-relax)" = 1 ]
+if [ "$(attr norelax data-frame)" = 0 ] && [ "$(attr norelax data-relax)" = 1 ]; then ok
+else ko "no relaxation: frame 0 and relax 1, got '$(attr norelax data-frame)' and '$(attr norelax data-relax)'"; fi
 URL=$URL0
 
 # (e) the continuous surface (on by default) against the boxes at one moment: no light background
 # pixel enclosed by the robot's with the surface on, and the two pictures differ on the robot
 chrome "$URL#t=0.5&paused=1&surface=0" --screenshot="$TMPD/boxes.png" >/dev/null
 chrome "$URL#t=0.5&paused=1" --screenshot="$TMPD/surface.png" >/dev/null
-check "chromium took no screenshots of surface and boxes" [ -s "$TMPD/boxes.png" ] && [ -s "$TMPD/surface.png" ]
+if [ -s "$TMPD/boxes.png" ] && [ -s "$TMPD/surface.png" ]; then ok; else ko "chromium took no screenshots of surface and boxes"; fi
 holes=$("$PNG" --png-holes "$TMPD/surface.png" $COLS 2>&1)
 set -- $holes
-check "surface: $1 background pixels inside the robot ($holes; want 0 of >= 20000 robot pixels)" [ "$1" = 0 ] && [ "${2:-0}" -ge 20000 ]
+if [ "$1" = 0 ] && [ "${2:-0}" -ge 20000 ]; then ok; else ko "surface: $1 background pixels inside the robot ($holes; want 0 of >= 20000 robot pixels)"; fi
 diff=$("$PNG" --png-diff "$TMPD/surface.png" "$TMPD/boxes.png" $COLS 2>&1)
 check "surface and boxes differ in $diff robot pixels (want >= 2000)" [ "${diff:-0}" -ge 2000 ] 2>/dev/null
 chrome "$URL#t=0.5&paused=1&surface=0" --dump-dom >"$TMPD/dom4.html"

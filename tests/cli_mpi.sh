@@ -55,8 +55,8 @@ for np in 1 2 3 2x2 3static; do
     [ "$np" = 3static ] && deal=static
     M "$n" -x AMORPH_MPI_DEAL=$deal "$MPX" evolve $RUN --threads $th --out "$TMPD/r$np" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
     h=$(sumval "$TMPD/r$np" run_hash)
-    check "evolve on $np ranks: exit $rc, run hash '$h' (one thread: $ref), stderr: $(head -c 200 "$TMPD/err")" \
-        [ $rc -eq 0 ] && [ "$h" = "$ref" ]
+    if [ $rc -eq 0 ] && [ "$h" = "$ref" ]; then ok
+    else ko "evolve on $np ranks: exit $rc, run hash '$h' (one thread: $ref), stderr: $(head -c 200 "$TMPD/err")"; fi
     check "evolve on $np ranks: log, evals.csv, best genome or checkpoint differ from one thread's" same "$TMPD/r$np" "$TMPD/ref"
     check "evolve on $np ranks: the summary printed $(grep -c run_hash "$TMPD/out") times (want once, by rank 0)" \
         [ "$(grep -c '^run_hash' "$TMPD/out")" -eq 1 ]
@@ -78,18 +78,18 @@ done
 # rank 0 (the one that writes) killed as it is about to start its 20th evaluation of the run,
 # counted over its own share (AMORPH_TEST_RANK names the rank, docs/cluster.md)
 M 3 -x AMORPH_TEST_INTERRUPT=KILL:20 "$MPX" evolve $RUN --threads 1 --out "$TMPD/k0" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "rank 0 killed: exit $rc (want non-zero, not 124: a hang)" [ $rc -ne 0 ] && [ $rc -ne 124 ]
-check "rank 0 killed: the run's log has $(nowall "$TMPD/k0/log.csv" | wc -l) lines, want 2 to 6 (stopped mid-run)" \
-    [ "$(wc -l <"$TMPD/k0/log.csv")" -ge 2 ] && [ "$(wc -l <"$TMPD/k0/log.csv")" -lt 7 ]
+if [ $rc -ne 0 ] && [ $rc -ne 124 ]; then ok; else ko "rank 0 killed: exit $rc (want non-zero, not 124: a hang)"; fi
+if [ "$(wc -l <"$TMPD/k0/log.csv")" -ge 2 ] && [ "$(wc -l <"$TMPD/k0/log.csv")" -lt 7 ]; then ok
+else ko "rank 0 killed: the run's log has $(nowall "$TMPD/k0/log.csv" | wc -l) lines, want 2 to 6 (stopped mid-run)"; fi
 M 2 "$MPX" evolve --resume "$TMPD/k0" --threads 1 --quiet --no-pictures >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "rank 0 killed, resumed on 2 ranks: exit $rc, hash '$(sumval "$TMPD/k0" run_hash)' (want $ref)" \
-    [ $rc -eq 0 ] && [ "$(sumval "$TMPD/k0" run_hash)" = "$ref" ]
+if [ $rc -eq 0 ] && [ "$(sumval "$TMPD/k0" run_hash)" = "$ref" ]; then ok
+else ko "rank 0 killed, resumed on 2 ranks: exit $rc, hash '$(sumval "$TMPD/k0" run_hash)' (want $ref)"; fi
 check "rank 0 killed, resumed: results differ from the uninterrupted run's" same "$TMPD/k0" "$TMPD/ref"
 # rank 1 killed: rank 0, waiting for it, is stopped by mpirun and says so in one line
 M 3 -x AMORPH_TEST_RANK=1 -x AMORPH_TEST_INTERRUPT=KILL:10 "$MPX" evolve $RUN --threads 1 --out "$TMPD/k1" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "rank 1 killed: exit $rc (want non-zero, not 124: a hang)" [ $rc -ne 0 ] && [ $rc -ne 124 ]
-check "rank 1 killed: stderr should be amorph's one line: $(head -c 300 "$TMPD/err")" \
-    sh -c "[ \$(wc -l <'$TMPD/err') -eq 1 ] && grep -q 'mpirun is stopping the job' '$TMPD/err'"
+if [ $rc -ne 0 ] && [ $rc -ne 124 ]; then ok; else ko "rank 1 killed: exit $rc (want non-zero, not 124: a hang)"; fi
+if sh -c "[ \$(wc -l <'$TMPD/err') -eq 1 ] && grep -q 'mpirun is stopping the job' '$TMPD/err'"; then ok
+else ko "rank 1 killed: stderr should be amorph's one line: $(head -c 300 "$TMPD/err")"; fi
 expect_ok "$AMORPH" evolve --resume "$TMPD/k1" --threads 2 --quiet --no-pictures
 check "rank 1 killed, resumed on one machine: hash '$(sumval "$TMPD/k1" run_hash)' (want $ref)" [ "$(sumval "$TMPD/k1" run_hash)" = "$ref" ]
 check "rank 1 killed, resumed: results differ from the uninterrupted run's" same "$TMPD/k1" "$TMPD/ref"
@@ -121,17 +121,17 @@ check "mpirun kill, resumed: hash '$(sumval "$TMPD/sk" run_hash)' (want $ref)" [
 
 # --- an interruption on one rank is agreed by all: the generation ends, every rank stops ---
 M 3 -x AMORPH_TEST_RANK=1 -x AMORPH_TEST_INTERRUPT=INT:5 "$MPX" evolve $RUN --threads 1 --out "$TMPD/int" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "SIGINT on rank 1: exit $rc (want 130), stderr: $(head -c 300 "$TMPD/err")" \
-    [ $rc -eq 130 ] && [ "$(grep -c 'interrupted after' "$TMPD/err")" -eq 1 ]
+if [ $rc -eq 130 ] && [ "$(grep -c 'interrupted after' "$TMPD/err")" -eq 1 ]; then ok
+else ko "SIGINT on rank 1: exit $rc (want 130), stderr: $(head -c 300 "$TMPD/err")"; fi
 M 2 "$MPX" evolve --resume "$TMPD/int" --threads 1 --quiet --no-pictures >"$TMPD/out" 2>&1
 check "SIGINT on rank 1, resumed on 2 ranks: hash '$(sumval "$TMPD/int" run_hash)' (want $ref)" [ "$(sumval "$TMPD/int" run_hash)" = "$ref" ]
 
 # --- bad input: one line, once ---
 M 3 "$MPX" evolve --population 7 --out "$TMPD/bad" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "bad population under MPI: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")" \
-    [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ] && grep -q population "$TMPD/err"
+if [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ] && grep -q population "$TMPD/err"; then ok
+else ko "bad population under MPI: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")"; fi
 M 2 "$MPX" evolve --resume "$TMPD/nothing-here" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
-check "resume of a missing folder under MPI: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")" \
-    [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ]
+if [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ]; then ok
+else ko "resume of a missing folder under MPI: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")"; fi
 
 summary cli_mpi

@@ -40,10 +40,10 @@ check "STL: endsolid per solid" [ "$(grep -c '^endsolid' "$TMPD/w.stl")" -eq 3 ]
 facets=$(awk '{n += $2} END {print n}' "$TMPD/w.solids")
 check "AMF: unit" grep -q '<amf unit="millimeter"' "$TMPD/w.amf"
 check "AMF: 3 volumes" [ "$(grep -c '<volume materialid="[123]">' "$TMPD/w.amf")" -eq 3 ]
-check "AMF: 3 materials with colours" [ "$(grep -c '<material id=' "$TMPD/w.amf")" -eq 3 ] && \
-    [ "$(grep -c '<color><r>' "$TMPD/w.amf")" -eq 3 ]
+if [ "$(grep -c '<material id=' "$TMPD/w.amf")" -eq 3 ] && \
+    [ "$(grep -c '<color><r>' "$TMPD/w.amf")" -eq 3 ]; then ok; else ko "AMF: 3 materials with colours"; fi
 check "AMF: $(grep -c '<triangle>' "$TMPD/w.amf") triangles, STL $facets facets" [ "$(grep -c '<triangle>' "$TMPD/w.amf")" -eq "$facets" ]
-check "AMF: one object, closed" [ "$(grep -c '<object id=' "$TMPD/w.amf")" -eq 1 ] && tail -n 1 "$TMPD/w.amf" | grep -q '^</amf>$'
+if [ "$(grep -c '<object id=' "$TMPD/w.amf")" -eq 1 ] && tail -n 1 "$TMPD/w.amf" | grep -q '^</amf>$'; then ok; else ko "AMF: one object, closed"; fi
 # every triangle names a vertex that exists
 nvert=$(grep -c '<vertex>' "$TMPD/w.amf")
 maxv=$(sed -n 's/.*<v1>\([0-9]*\)<\/v1><v2>\([0-9]*\)<\/v2><v3>\([0-9]*\)<\/v3>.*/\1\n\2\n\3/p' "$TMPD/w.amf" | sort -n | tail -n 1)
@@ -52,8 +52,8 @@ check "AMF: vertex $maxv of $nvert" [ "$maxv" -lt "$nvert" ]
 # a simulated moment: still closed, same facets, moved and deformed
 expect_ok "$AMORPH" export "$W" --cycles 1 --relax-max 400 --step 500 --stl "$TMPD/w500.stl"
 stlcheck "$TMPD/w500.stl" >"$TMPD/w500.solids"
-check "STL at step 500: $(tr '\n' ';' <"$TMPD/w500.solids")" [ "$(awk '{b += $4} END {print b}' "$TMPD/w500.solids")" -eq 0 ] && \
-    [ "$(awk '{n += $2} END {print n}' "$TMPD/w500.solids")" -eq "$facets" ]
+if [ "$(awk '{b += $4} END {print b}' "$TMPD/w500.solids")" -eq 0 ] && \
+    [ "$(awk '{n += $2} END {print n}' "$TMPD/w500.solids")" -eq "$facets" ]; then ok; else ko "STL at step 500: $(tr '\n' ';' <"$TMPD/w500.solids")"; fi
 check "STL at step 500 equals the rest shape" sh -c "! cmp -s '$TMPD/w.stl' '$TMPD/w500.stl'"
 check "STL at step 500: volumes not within 20% of rest: $(tr '\n' ';' <"$TMPD/w500.solids")" \
     awk '{r = $1 == "active90" ? 12000 : 24000; if ($3 < 0.8 * r || $3 > 1.2 * r) exit 1}' "$TMPD/w500.solids"
@@ -75,7 +75,7 @@ printf 'amorph-lattice 1\nsize 2 1 1\nlayer 0\n..\n' >"$TMPD/empty.lattice"
 expect_fail 2 "no voxel" "$AMORPH" export "$TMPD/empty.lattice" --stl "$TMPD/x.stl"
 expect_fail 1 "nodir" "$AMORPH" export "$W" --stl "$TMPD/nodir/x.stl"
 expect_fail 1 "nodir" "$AMORPH" export "$W" --amf "$TMPD/nodir/x.amf"
-check "failed commands left an output file" [ ! -e "$TMPD/x.stl" ] && [ ! -e "$TMPD/x.amf" ] && [ ! -e "$TMPD/x.lattice" ]
+if [ ! -e "$TMPD/x.stl" ] && [ ! -e "$TMPD/x.amf" ] && [ ! -e "$TMPD/x.lattice" ]; then ok; else ko "failed commands left an output file"; fi
 cp "$TMPD/w.stl" "$TMPD/keep.stl"
 expect_fail 2 "past the longest" "$AMORPH" export "$W" --cycles 1 --relax-max 400 --step 999999 --stl "$TMPD/keep.stl"
 check "a failed export changed the existing file" cmp -s "$TMPD/w.stl" "$TMPD/keep.stl"

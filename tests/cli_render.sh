@@ -21,15 +21,15 @@ expect_ok "$AMORPH" render "$W" $QUICK --out "$TMPD/w.png"
 info=$("$PNG" --png-info "$TMPD/w.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
 check "render: not a valid PNG: $info" [ $? -eq 0 ]
 set -- $info
-check "render: size $1 x $2, want 1600 x 400" [ "$1" = 1600 ] && [ "$2" = 400 ]
-check "render: too few passive/active/active90 pixels: $info" [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ] && [ "${5:-0}" -gt 1000 ]
+if [ "$1" = 1600 ] && [ "$2" = 400 ]; then ok; else ko "render: size $1 x $2, want 1600 x 400"; fi
+if [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ] && [ "${5:-0}" -gt 1000 ]; then ok; else ko "render: too few passive/active/active90 pixels: $info"; fi
 
 # the continuous surface (the default) against --boxes: no light background pixel enclosed by the
 # robot's (the surface has no gap), and the two pictures differ on the robot
 expect_ok "$AMORPH" render "$W" $QUICK --boxes --out "$TMPD/wb.png"
 holes=$("$PNG" --png-holes "$TMPD/w.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
 set -- $holes
-check "render: $1 background pixels inside the surface ($holes)" [ "$1" = 0 ] && [ "${2:-0}" -gt 50000 ]
+if [ "$1" = 0 ] && [ "${2:-0}" -gt 50000 ]; then ok; else ko "render: $1 background pixels inside the surface ($holes)"; fi
 diff=$("$PNG" --png-diff "$TMPD/w.png" "$TMPD/wb.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
 check "render: surface and --boxes differ in $diff robot pixels (want >= 5000)" [ "${diff:-0}" -ge 5000 ] 2>/dev/null
 
@@ -37,7 +37,7 @@ check "render: surface and --boxes differ in $diff robot pixels (want >= 5000)" 
 expect_ok "$AMORPH" render --scene sphere:6 --cycles 1 --relax-max 300 --frames 4 --width 800 --height 260 --out "$TMPD/s.png"
 info=$("$PNG" --png-info "$TMPD/s.png" $PASSIVE $ACTIVE 2>&1)
 set -- $info
-check "render --width 800 --height 260: got $info" [ "$1" = 800 ] && [ "$2" = 260 ] && [ "${3:-0}" -gt 500 ] && [ "${4:-0}" -gt 500 ]
+if [ "$1" = 800 ] && [ "$2" = 260 ] && [ "${3:-0}" -gt 500 ] && [ "${4:-0}" -gt 500 ]; then ok; else ko "render --width 800 --height 260: got $info"; fi
 
 # a run folder stands for its best robot (a small run of amorph evolve)
 cat >"$TMPD/small.cfg" <<'CFG'
@@ -73,15 +73,15 @@ check "view: no closing tag" grep -q '</html>' "$TMPD/w.html"
 # plot: a single run and an experiment folder (a band per variant)
 expect_ok "$AMORPH" plot tests/data/plot-run --out "$TMPD/one.svg"
 check "plot: not an SVG" grep -q '<svg xmlns="http://www.w3.org/2000/svg"' "$TMPD/one.svg"
-check "plot: one run should be one line and no band" [ "$(grep -c 'class="run"' "$TMPD/one.svg")" -eq 1 ] && [ "$(grep -c 'class="band"' "$TMPD/one.svg")" -eq 0 ]
+if [ "$(grep -c 'class="run"' "$TMPD/one.svg")" -eq 1 ] && [ "$(grep -c 'class="band"' "$TMPD/one.svg")" -eq 0 ]; then ok; else ko "plot: one run should be one line and no band"; fi
 check "plot: axis labels" grep -q '>evaluations</text>' "$TMPD/one.svg"
 expect_ok "$AMORPH" plot tests/data/plot-exp "$TMPD/run" --out "$TMPD/exp.svg" --title "representations"
-check "plot: two variants should give two bands and two mean lines" [ "$(grep -c 'class="band"' "$TMPD/exp.svg")" -eq 2 ] && [ "$(grep -c 'class="mean"' "$TMPD/exp.svg")" -eq 2 ]
+if [ "$(grep -c 'class="band"' "$TMPD/exp.svg")" -eq 2 ] && [ "$(grep -c 'class="mean"' "$TMPD/exp.svg")" -eq 2 ]; then ok; else ko "plot: two variants should give two bands and two mean lines"; fi
 check "plot: 6 experiment runs and 1 run" [ "$(grep -c 'class="run"' "$TMPD/exp.svg")" -eq 7 ]
 check "plot: legend" grep -q '>dct, 3 runs<' "$TMPD/exp.svg"
 check "plot: legend" grep -q '>gmx, 3 runs<' "$TMPD/exp.svg"
 check "plot: title" grep -q '>representations</text>' "$TMPD/exp.svg"
-check "plot: unbalanced tags" [ "$(grep -c '<svg' "$TMPD/exp.svg")" -eq 1 ] && tail -n 1 "$TMPD/exp.svg" | grep -q '^</svg>$'
+if [ "$(grep -c '<svg' "$TMPD/exp.svg")" -eq 1 ] && tail -n 1 "$TMPD/exp.svg" | grep -q '^</svg>$'; then ok; else ko "plot: unbalanced tags"; fi
 # steps per generation: the best so far holds its value until the next logged generation, so a
 # curve is "Mx,y" then one "Hx Vy" (across, then up or down) per further row, x rising
 # dpath FILE CLASS N: the d of the N-th path of that class
@@ -100,7 +100,7 @@ check "plot: the band should be steps out and back: '$(dpath "$TMPD/exp.svg" ban
 expect_ok "$AMORPH" plot tests/data/plot-exp --out "$TMPD/exp-only.svg"
 for l in xlabel ylabel; do
     a=$(sed -n "s/.*class=\"$l\"[^>]*>\([^<]*\)<.*/\1/p" "$TMPD/one.svg"); b=$(sed -n "s/.*class=\"$l\"[^>]*>\([^<]*\)<.*/\1/p" "$TMPD/exp-only.svg")
-    check "plot: the $l of a run ('$a') and of an experiment ('$b') should be equal" [ -n "$a" ] && [ "$a" = "$b" ]
+    if [ -n "$a" ] && [ "$a" = "$b" ]; then ok; else ko "plot: the $l of a run ('$a') and of an experiment ('$b') should be equal"; fi
 done
 check "plot: the x axis should be evaluations" grep -q 'class="xlabel"[^>]*>evaluations<' "$TMPD/exp-only.svg"
 # a folder of run folders without experiment.txt (results/run.sh's layout) plots as the experiment
@@ -166,7 +166,7 @@ printf 'generation,evaluations,best\n0,20,0.001\n1,40\n' >"$TMPD/badrun/log.csv"
 expect_fail 2 "badrun/log.csv:3: 2 fields, the header has 3 columns" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
 printf 'generation,evals,fitness\n0,20,0.001\n' >"$TMPD/badrun/log.csv"
 expect_fail 2 "log.csv:1: not a log.csv header: no 'evaluations' column" "$AMORPH" plot "$TMPD/badrun" --out "$TMPD/x.svg"
-check "failed commands left an output file" [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.html" ] && [ ! -e "$TMPD/x.svg" ]
+if [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.html" ] && [ ! -e "$TMPD/x.svg" ]; then ok; else ko "failed commands left an output file"; fi
 # unwritable outputs: a folder that does not exist, a file in place of a folder; an older file stays whole
 expect_fail 1 "nodir" "$AMORPH" render "$W" $QUICK --out "$TMPD/nodir/x.png"
 touch "$TMPD/afile"
