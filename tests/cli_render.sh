@@ -109,6 +109,18 @@ cp -R tests/data/plot-exp/dct-1 tests/data/plot-exp/dct-2 tests/data/plot-exp/dc
     tests/data/plot-exp/gmx-2 tests/data/plot-exp/gmx-3 "$TMPD/runsonly/"
 expect_ok "$AMORPH" plot "$TMPD/runsonly" --out "$TMPD/runsonly.svg"
 check "plot: a folder of run folders should draw what its experiment folder draws" cmp -s "$TMPD/exp-only.svg" "$TMPD/runsonly.svg"
+# DIR/VARIANT: one variant's runs of a folder of runs, drawn as a folder holding only them draws it
+mkdir -p "$TMPD/gmxonly"
+cp -R tests/data/plot-exp/gmx-1 tests/data/plot-exp/gmx-2 tests/data/plot-exp/gmx-3 "$TMPD/gmxonly/"
+expect_ok "$AMORPH" plot "$TMPD/gmxonly" --out "$TMPD/gmxonly.svg"
+expect_ok "$AMORPH" plot tests/data/plot-exp/gmx/ --out "$TMPD/gmxvariant.svg"
+check "plot DIR/VARIANT: should draw what a folder of that variant's runs draws" cmp -s "$TMPD/gmxonly.svg" "$TMPD/gmxvariant.svg"
+if [ "$(grep -c 'class="band"' "$TMPD/gmxvariant.svg")" -eq 1 ] && [ "$(grep -c 'class="run"' "$TMPD/gmxvariant.svg")" -eq 3 ]; then ok; else ko "plot DIR/VARIANT: one band, three runs"; fi
+expect_ok "$AMORPH" plot tests/data/plot-exp/gmx tests/data/plot-exp/dct-1 --out "$TMPD/gmxdct.svg"
+if grep -q '>dct-1<' "$TMPD/gmxdct.svg" && grep -q '>gmx, 3 runs<' "$TMPD/gmxdct.svg"; then ok; else ko "plot DIR/VARIANT beside a run: two lines"; fi
+expect_fail 2 "tests/data/plot-exp/cppn: no such folder, nor runs cppn-<k> in tests/data/plot-exp" "$AMORPH" plot tests/data/plot-exp/cppn --out "$TMPD/x.svg"
+expect_fail 2 "$TMPD/none/gmx: no such folder" "$AMORPH" plot "$TMPD/none/gmx" --out "$TMPD/x.svg"
+check "plot: a refused plot should write no file" [ ! -e "$TMPD/x.svg" ]
 # --min-evals: a run short of N is left out of its variant's mean (a third run of 20 evaluations
 # would otherwise end the mean at 20)
 mkdir -p "$TMPD/short/a-1" "$TMPD/short/a-2" "$TMPD/short/a-3"
@@ -122,6 +134,18 @@ check "plot without --min-evals: the legend should count 3 runs" grep -q 'a, 3 r
 check "plot --min-evals: the mean should step 3 times (20, 40, 60): '$(dpath "$TMPD/short-60.svg" mean 1)'" steps "$(dpath "$TMPD/short-60.svg" mean 1)" 3
 expect_fail 2 "no run has logged 100 evaluations" "$AMORPH" plot "$TMPD/short" --min-evals 100 --out "$TMPD/x.svg"
 expect_fail 2 "--min-evals needs a whole number" "$AMORPH" plot "$TMPD/short" --min-evals -1 --out "$TMPD/x.svg"
+# --max-evals: rows beyond N are not drawn; it draws what logs cut at N draw
+expect_ok "$AMORPH" plot "$TMPD/short" --max-evals 40 --out "$TMPD/short-max40.svg"
+mkdir -p "$TMPD/cut/a-1" "$TMPD/cut/a-2" "$TMPD/cut/a-3"
+for k in 1 2 3; do head -n 3 "$TMPD/short/a-$k/log.csv" >"$TMPD/cut/a-$k/log.csv"; done
+expect_ok "$AMORPH" plot "$TMPD/cut" --out "$TMPD/cut.svg"
+check "plot --max-evals 40: should draw what logs ending at 40 draw" cmp -s "$TMPD/short-max40.svg" "$TMPD/cut.svg"
+expect_ok "$AMORPH" plot "$TMPD/short" --min-evals 40 --max-evals 40 --out "$TMPD/short-40.svg"
+check "plot --min-evals 40 --max-evals 40: 2 runs, the mean stepping twice (20, 40): '$(dpath "$TMPD/short-40.svg" mean 1)'" \
+    sh -c "grep -q 'a, 2 runs' '$TMPD/short-40.svg' && echo '$(dpath "$TMPD/short-40.svg" mean 1)' | grep -qE '^M[0-9.]+,[0-9.]+ H[0-9.]+ V[0-9.]+$'"
+expect_fail 2 "a-1/log.csv: no generation logged within 10 evaluations" "$AMORPH" plot "$TMPD/short" --max-evals 10 --out "$TMPD/x.svg"
+expect_fail 2 "no run has logged 60 evaluations" "$AMORPH" plot "$TMPD/short" --min-evals 60 --max-evals 40 --out "$TMPD/x.svg"
+expect_fail 2 "--max-evals needs a whole number" "$AMORPH" plot "$TMPD/short" --max-evals 0 --out "$TMPD/x.svg"
 # runs logging at different evaluations (populations of 20 and 30): the mean steps wherever one
 # of them does, from 30 (both have a value) to 60 (both still logged): at 30, 40 and 60
 mkdir -p "$TMPD/mixed/a-1" "$TMPD/mixed/a-2"

@@ -33,6 +33,7 @@ typedef struct plot_series {
 
 static plot_run plot_runs[PLOT_MAX_RUNS];
 static long plot_min_evals; /* --min-evals: a folder of runs leaves out the runs short of it */
+static long plot_max_evals; /* --max-evals: rows beyond it are not drawn (0: all) */
 static plot_series plot_ser[PLOT_MAX_SERIES];
 static int plot_nruns, plot_nser;
 static double plot_x[PLOT_MAX_POINTS], plot_y[PLOT_MAX_POINTS];
@@ -69,6 +70,7 @@ static am_status plot_log_line(void* ctx, int lineno, char* line, long n, char* 
     int is_row = 0;
     am_status st = am_evo_log_read_line(&pr->rd, line, n, &row, &is_row, err, errsz);
     if (st != AM_OK || !is_row) return st;
+    if (plot_max_evals > 0 && row.evaluations > plot_max_evals) return AM_OK; /* read on: the rest is checked */
     double e = (double)row.evaluations;
     if (r->n > 0 && e < plot_x[plot_used - 1])
         return am_fail_at(err, errsz, AM_ERR_PARSE, pr->rd.fname, lineno, "evaluations go backwards (%ld after %.17g)", row.evaluations,
@@ -113,6 +115,7 @@ static int load_run(const char* dir, int series)
         plot_used = r->first; /* the points of a run that failed are not kept */
         return tool_usage_error("plot: %s", err);
     }
+    if (r->n == 0 && plot_max_evals > 0) return tool_usage_error("%s: no generation logged within %ld evaluations (--max-evals)", path, plot_max_evals);
     if (r->n == 0) return tool_usage_error("%s: no generations logged yet", path);
     plot_nruns++;
     return 0;
@@ -129,8 +132,9 @@ static int new_series(const char* label)
 
 static int cmp_names(const void* a, const void* b) { return strcmp((const char*)a, (const char*)b); }
 
-/* an experiment folder: its run subfolders, grouped by variant (the name before the last '-') */
-static int load_experiment(const char* dir)
+/* an experiment folder: its run subfolders, grouped by variant (the name before the last '-');
+ * only: the one variant to keep (named `asked` on the command line), or NULL for all */
+static int load_experiment(const char* dir, const char* only, const char* asked)
 {
     static char names[PLOT_MAX_RUNS][96];
     static char listing[PLOT_MAX_RUNS * 128];
@@ -143,9 +147,11 @@ static int load_experiment(const char* dir)
         snprintf(sub, sizeof sub, "%s/%.95s", dir, name); /* a name that long was skipped above */
         snprintf(csv, sizeof csv, "%s/" RUN_LOG, sub);
         if (!am_port_exists(csv) || !strrchr(name, '-')) continue;
+        if (only && (strlen(only) != (size_t)(strrchr(name, '-') - name) || strncmp(name, only, strlen(only)))) continue;
         if (n >= PLOT_MAX_RUNS) return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
         memcpy(names[n++], name, strlen(name) + 1); /* shorter than names[0]: checked above */
     }
+    if (n == 0 && only) return tool_usage_error("plot: %s: no such folder, nor runs %s-<k> in %s", asked, only, dir);
     if (n == 0) return tool_usage_error("plot: %s: neither a run folder (log.csv) nor a folder of run folders (<variant>-<k>/log.csv)", dir);
     qsort(names, (size_t)n, sizeof names[0], cmp_names);
     int s = -1, kept = 0;
@@ -394,8 +400,22 @@ static int plot_load(int ndirs, char** dirs)
         char csv[PLOT_PATH_MAX + 16];
         if (strlen(dirs[i]) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dirs[i]);
         snprintf(csv, sizeof csv, "%s/" RUN_LOG, dirs[i]);
-        if (!am_port_exists(dirs[i])) return tool_usage_error("plot: %s: no such folder", dirs[i]);
-        if (am_port_exists(csv)) {
+        if (!am_port_exists(dirs[i])) {
+            /* DIR/VARIANT: the runs VARIANT-<k> of the folder of runs DIR, as one line */
+            char parent[PLOT_PATH_MAX], variant[96];
+            snprintf(parent, sizeof parent, "%s", dirs[i]);
+            size_t len = strlen(parent);
+            while (len > 1 && parent[len - 1] == '/') parent[--len] = 0;
+            char* slash = strrchr(parent, '/');
+            snprintf(variant, sizeof variant, "%s", slash ? slash + 1 : parent);
+            if (slash == parent) parent[1] = 0; /* "/x": the root */
+            else if (slash) *slash = 0;
+            else snprintf(parent, sizeof parent, ".");
+            if (!variant[0] || !strcmp(variant, ".") || !strcmp(variant, "..") || !am_port_exists(parent))
+                return tool_usage_error("plot: %s: no such folder", dirs[i]);
+            int rc = load_experiment(parent, variant, dirs[i]);
+            if (rc) return rc;
+        } else if (am_port_exists(csv)) {
             char name[96];
             int s = new_series(base_name(dirs[i], name, sizeof name));
             if (s < 0) return tool_usage_error("plot: more than %d lines", PLOT_MAX_SERIES);
@@ -404,7 +424,7 @@ static int plot_load(int ndirs, char** dirs)
             plot_ser[s].runs[plot_ser[s].nruns++] = plot_nruns - 1;
         } else {
             /* an experiment folder, or any folder of <variant>-<k> run folders (results/run.sh's) */
-            int rc = load_experiment(dirs[i]);
+            int rc = load_experiment(dirs[i], 0, 0);
             if (rc) return rc;
         }
     }
@@ -419,22 +439,24 @@ int tool_write_plot(int ndirs, char** dirs, const char* path)
 }
 
 static const char plot_help[] =
-    "usage: amorph plot DIR... --out FILE.svg [--title TEXT]\n"
+    "usage: amorph plot DIR... --out FILE.svg [--title TEXT] [--min-evals N] [--max-evals N]\n"
     "Plots the best fitness so far against evaluations (the log.csv of each folder) as SVG. A run\n"
     "folder (amorph evolve --out DIR) is one line; an experiment folder (amorph experiment --out\n"
     "DIR), or any folder of run folders named <variant>-<k>, gives one line per variant: the mean\n"
     "of its runs with a band of one standard error, and each run faintly, as the seed's Figure 6.\n"
+    "DIR/VARIANT, where DIR is such a folder, gives the line of its VARIANT-<k> runs alone.\n"
     "  --out FILE.svg   the picture (written atomically); required\n"
     "  --title TEXT     the heading (\"best fitness against evaluations\")\n"
     "  --min-evals N    in a folder of runs, leave out the runs that have logged fewer than N\n"
-    "                   evaluations (each mean runs as far as the shortest run it keeps)\n";
+    "                   evaluations (each mean runs as far as the shortest run it keeps)\n"
+    "  --max-evals N    draw each run up to N evaluations (its rows beyond N are left out)\n";
 
 int cmd_plot(tool_ctx* c, int argc, char** argv)
 {
     (void)c;
     const char* out = 0;
     const char* title = "best fitness against evaluations";
-    long min_evals = 0;
+    long min_evals = 0, max_evals = 0;
     static char* dirs[PLOT_MAX_RUNS];
     int nd = 0;
     for (int i = 1; i < argc; i++) {
@@ -452,6 +474,9 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--min-evals")) {
             if (!tool_parse_long(v, 0, 1000000000L, &min_evals)) return tool_usage_error("plot: --min-evals needs a whole number 0..1000000000");
             i++;
+        } else if (!strcmp(a, "--max-evals")) {
+            if (!tool_parse_long(v, 1, 1000000000L, &max_evals)) return tool_usage_error("plot: --max-evals needs a whole number 1..1000000000");
+            i++;
         } else if (a[0] == '-' && a[1]) {
             return tool_unknown_option("plot", a);
         } else {
@@ -464,6 +489,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
     size_t n = strlen(out);
     if (n == 0 || out[n - 1] == '/') return tool_usage_error("plot: --out needs a file name");
     plot_min_evals = min_evals;
+    plot_max_evals = max_evals;
     int rc = plot_load(nd, dirs);
     if (rc) return rc;
     return plot_svg_write(title, out);
