@@ -15,8 +15,8 @@
 # took (the sum of log.csv's wall_s). With --pictures it also draws DIR/representations/fitness.svg
 # (`amorph plot`: the seed's Figure 6 from the runs that have reached FIG6_MIN_EVALS evaluations,
 # 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
-# against the seed's settings, representations/gmx-1) and DIR/gaits.svg (each best robot's travel
-# in each of its 30 cycles, a row per run).
+# against the mean of the GMX runs, the seed's settings, to OTHERS_EVALS) and DIR/gaits.svg (each
+# best robot's travel in each of its 30 cycles, a row per run).
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
 # the same files on every float build.
 set -eu
@@ -183,10 +183,14 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
             --title "DCT, CPPN and GMX at 20^3: the runs with $1 evaluations or more"
     }
     fig6 "$min" >/dev/null 2>&1 || fig6 0 >/dev/null
+    # others.svg: the GMX runs' mean and band (amorph plot's DIR/VARIANT) and every other
+    # experiment's runs, up to the count their table compares them at
     set --
-    for d in representations/gmx-1 three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
+    for g in "$DIR"/representations/gmx-*/log.csv; do [ -f "$g" ] && set -- "$DIR/representations/gmx"; break; done
+    for d in three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
     if [ $# -gt 0 ]; then
-        "$AMORPH" plot "$@" --title "the other experiments against the seed's settings (gmx-1)" --out "$DIR/others.svg" >/dev/null
+        "$AMORPH" plot "$@" --max-evals "$n_at" --out "$DIR/others.svg" \
+            --title "the other experiments against the seed's settings (the GMX runs), to $n_at evaluations" >/dev/null
     fi
     # gaits.svg: a row per run, the travel of each of its best robot's 30 cycles as bars on one
     # scale, with its gait and sustained figure: a flop's bars stop, a scoot's go on

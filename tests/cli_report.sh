@@ -66,7 +66,8 @@ check "the Figure 6 plot" grep -q '<svg' "$R/representations/fitness.svg"
 check "the Figure 6 plot of every run when none has 2,000 evaluations" grep -q 'dct, 2 runs' "$R/representations/fitness.svg"
 FIG6_MIN_EVALS=750 sh results/report.sh "$AMORPH" "$R" --pictures >/dev/null 2>&1
 check "FIG6_MIN_EVALS=750: only dct-1 in the Figure 6 plot" sh -c "grep -q 'dct, 1 run' '$R/representations/fitness.svg' && ! grep -q 'gmx' '$R/representations/fitness.svg'"
-check "the plot of the other experiments" grep -q '<svg' "$R/others.svg"
+check "the plot of the other experiments: the GMX runs as one line, and the friction run" \
+    sh -c "grep -q '>gmx, 1 run<' '$R/others.svg' && grep -q '>k0.1_s5.0, 1 run<' '$R/others.svg' && ! grep -q '>dct' '$R/others.svg'"
 # gaits.svg: a row of 30 bars per run (4 runs here), the rows named after the runs
 check "gaits.svg: $(grep -c 'class="bar"' "$R/gaits.svg") bars, want 120" [ "$(grep -c 'class="bar"' "$R/gaits.svg")" -eq 120 ]
 check "gaits.svg names the runs" sh -c "grep -q '>representations/dct-2<' '$R/gaits.svg' && grep -q '>friction/k0.1_s5.0-1<' '$R/gaits.svg'"
