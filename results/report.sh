@@ -56,7 +56,8 @@ done
 
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
 # of each representation that reached it, (n) the number of those runs; then each run's best so
-# far at every 1,000 evaluations it reached, the runs behind the means
+# far at every 1,000 evaluations it reached, the runs behind the means; then the ranking at every
+# 1,000 all the runs reached
 set -- "$DIR"/representations/*-[0-9]*/log.csv
 [ -f "$1" ] && {
 echo
@@ -90,6 +91,32 @@ awk -F, '
         line = "| representations/" names[r] " |"
         for (m = 1000; m <= top; m += 1000) line = line (((names[r], m) in at) ? sprintf(" %.4f |", at[names[r], m]) : " |")
         print line
+      }
+      # the ranking: at every 1,000 that all the runs have reached, with two runs or more of each
+      # representation, the representations by mean (equal when the means agree to 0.1 mm, the
+      # table'"'"'s precision), and for each pair whether their bands of one standard error overlap
+      split("GMX CPPN DCT", up, " ")
+      rows = ""
+      for (m = 1000; m <= top; m += 1000) {
+        ok = 1
+        for (r = 1; r <= 3; r++) {
+          k = 0; s = 0; s2 = 0; all = 1
+          for (run in runs) if (runs[run] == tolower(up[r])) { if ((run, m) in at) { v = at[run, m]; k++; s += v; s2 += v * v } else all = 0 }
+          if (!all || k < 2) { ok = 0; break }
+          mu[r] = s / k; var = (s2 - k * mu[r] * mu[r]) / (k - 1); se[r] = sqrt(var > 0 ? var / k : 0)
+        }
+        if (!ok) continue
+        for (r = 1; r <= 3; r++) rk[r] = r
+        for (i = 1; i <= 3; i++) for (j = i + 1; j <= 3; j++) if (mu[rk[j]] > mu[rk[i]]) { t = rk[i]; rk[i] = rk[j]; rk[j] = t }
+        rank = up[rk[1]]
+        for (i = 2; i <= 3; i++) rank = rank (sprintf("%.4f", mu[rk[i - 1]]) == sprintf("%.4f", mu[rk[i]]) ? " = " : " > ") up[rk[i]]
+        line = "| " m " | " rank " |"
+        for (i = 1; i <= 3; i++) for (j = i + 1; j <= 3; j++) line = line (mu[i] - mu[j] > se[i] + se[j] || mu[j] - mu[i] > se[i] + se[j] ? " apart |" : " overlap |")
+        rows = rows line "\n"
+      }
+      if (rows != "") {
+        print ""; print "| evaluations | ranking by mean | GMX and CPPN bands | GMX and DCT bands | CPPN and DCT bands |"
+        print "|---:|---|---|---|---|"; printf "%s", rows
       }
     }' "$@"
 }

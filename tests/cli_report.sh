@@ -1,7 +1,7 @@
 # tests/cli_report.sh: results/report.sh, which writes the tables and pictures of docs/results.md,
 # on small runs made here, with their log.csv replaced by rows whose answers are known: the Figure 6
 # table's means and standard errors (over the runs that reached each 500 evaluations), each run's
-# best so far every 1,000, the mean body size per 500 evaluations from evals.csv.gz, the compute
+# best so far every 1,000, the ranking with its bands apart or overlapping, the mean body size per 500 evaluations from evals.csv.gz, the compute
 # with a paused generation counted at the median, a row per run with its 30-cycle gait, the other
 # experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
@@ -76,6 +76,24 @@ cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
 expect_ok sh results/report.sh "$AMORPH" "$R"
 check "a second report gives the same gait30.json" cmp -s "$TMPD/gait-a.json" "$R/representations/dct-1/gait30.json"
 expect_fail 2 "no such folder" sh results/report.sh "$AMORPH" "$TMPD/none"
+# the ranking table, on folders of log.csv only: at 1000, GMX 0.020/0.022/0.021 (mean 0.021, se
+# 0.00058), CPPN 0.011/0.013 (0.012, 0.001), DCT 0.010/0.012 (0.011, 0.001): GMX apart from both,
+# CPPN and DCT 0.001 apart within 0.002, overlapping; at 2000, GMX 0.031, CPPN 0.01602 and DCT 0.016
+# (equal to 0.1 mm, CPPN the higher); no row at 3000, which gmx-3 did not reach
+K=$TMPD/rank
+for r in dct-1 dct-2 cppn-1 cppn-2 gmx-1 gmx-2 gmx-3; do mkdir -p "$K/representations/$r"; done
+printf '%s\n0,1000,0.010,0,0,0,0,1\n1,2000,0.015,0,0,0,0,1\n2,3000,0.015,0,0,0,0,1\n' "$h" >"$K/representations/dct-1/log.csv"
+printf '%s\n0,1000,0.012,0,0,0,0,1\n1,2000,0.017,0,0,0,0,1\n2,3000,0.017,0,0,0,0,1\n' "$h" >"$K/representations/dct-2/log.csv"
+printf '%s\n0,1000,0.011,0,0,0,0,1\n1,2000,0.0160,0,0,0,0,1\n2,3000,0.02,0,0,0,0,1\n' "$h" >"$K/representations/cppn-1/log.csv"
+printf '%s\n0,1000,0.013,0,0,0,0,1\n1,2000,0.01604,0,0,0,0,1\n2,3000,0.02,0,0,0,0,1\n' "$h" >"$K/representations/cppn-2/log.csv"
+printf '%s\n0,1000,0.020,0,0,0,0,1\n1,2000,0.030,0,0,0,0,1\n2,3000,0.04,0,0,0,0,1\n' "$h" >"$K/representations/gmx-1/log.csv"
+printf '%s\n0,1000,0.022,0,0,0,0,1\n1,2000,0.031,0,0,0,0,1\n2,3000,0.04,0,0,0,0,1\n' "$h" >"$K/representations/gmx-2/log.csv"
+printf '%s\n0,1000,0.021,0,0,0,0,1\n1,2000,0.032,0,0,0,0,1\n' "$h" >"$K/representations/gmx-3/log.csv"
+expect_ok sh results/report.sh "$AMORPH" "$K"
+ranking=$(awk '/^\| evaluations \| ranking by mean \|/ { t = 1 } t && !NF { exit } t' "$TMPD/out" | tr '\n' '/')
+check "the ranking table: '$ranking'" [ "$ranking" = "| evaluations | ranking by mean | GMX and CPPN bands | GMX and DCT bands | CPPN and DCT bands |/|---:|---|---|---|---|/| 1000 | GMX > CPPN > DCT | apart | apart | overlap |/| 2000 | GMX > CPPN = DCT | apart | apart | overlap |/" ]
+check "no ranking table without two runs of each representation" sh -c "! grep -q 'ranking by mean' '$TMPD/report.md'"
+
 # the other experiments' table, on folders of config.txt and log.csv only: the seed's settings are
 # gmx-1 (0.014 at 500) and gmx-2 (0.018 at 500; its 0.030 at 750 is past the count): mean 0.016,
 # standard error 0.002, range 0.014 to 0.018; friction/a (0.020) is above it, dynamic/b (0.015,
