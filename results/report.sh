@@ -217,7 +217,7 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     for d in three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
     if [ $# -gt 0 ]; then
         "$AMORPH" plot "$@" --max-evals "$n_at" --out "$DIR/others.svg" \
-            --title "the other experiments against the seed's settings (the GMX runs), to $n_at evaluations" >/dev/null
+            --title "the other experiments against the GMX runs (the seed's settings)" >/dev/null
     fi
     # gaits.svg: a row per run, the travel of each of its best robot's 30 cycles as bars on one
     # scale, with its gait and sustained figure: a flop's bars stop, a scoot's go on
