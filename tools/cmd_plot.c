@@ -407,7 +407,9 @@ static int plot_load(int ndirs, char** dirs)
             size_t len = strlen(parent);
             while (len > 1 && parent[len - 1] == '/') parent[--len] = 0;
             char* slash = strrchr(parent, '/');
-            snprintf(variant, sizeof variant, "%s", slash ? slash + 1 : parent);
+            const char* v = slash ? slash + 1 : parent;
+            if (strlen(v) >= sizeof variant) return tool_usage_error("plot: %s: no such folder", dirs[i]);
+            memcpy(variant, v, strlen(v) + 1);
             if (slash == parent) parent[1] = 0; /* "/x": the root */
             else if (slash) *slash = 0;
             else snprintf(parent, sizeof parent, ".");
