@@ -44,13 +44,22 @@ static char plot_svg[PLOT_SVG_MAX];
 
 static const char* const plot_colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
-static const char* base_name(const char* path, char* buf, int n)
+/* a path's last component: it starts at the returned offset and ends at *end (trailing '/' left
+ * out) */
+static size_t last_component(const char* path, size_t* end)
 {
     size_t len = strlen(path);
     while (len > 1 && path[len - 1] == '/') len--;
     size_t s = len;
     while (s > 0 && path[s - 1] != '/') s--;
-    snprintf(buf, (size_t)n, "%.*s", (int)(len - s), path + s);
+    *end = len;
+    return s;
+}
+
+static const char* base_name(const char* path, char* buf, int n)
+{
+    size_t end, s = last_component(path, &end);
+    snprintf(buf, (size_t)n, "%.*s", (int)(end - s), path + s);
     return buf;
 }
 
@@ -403,17 +412,11 @@ static int plot_load(int ndirs, char** dirs)
         if (!am_port_exists(dirs[i])) {
             /* DIR/VARIANT: the runs VARIANT-<k> of the folder of runs DIR, as one line */
             char parent[PLOT_PATH_MAX], variant[96];
-            snprintf(parent, sizeof parent, "%s", dirs[i]);
-            size_t len = strlen(parent);
-            while (len > 1 && parent[len - 1] == '/') parent[--len] = 0;
-            char* slash = strrchr(parent, '/');
-            const char* v = slash ? slash + 1 : parent;
-            if (strlen(v) >= sizeof variant) return tool_usage_error("plot: %s: no such folder", dirs[i]);
-            memcpy(variant, v, strlen(v) + 1);
-            if (slash == parent) parent[1] = 0; /* "/x": the root */
-            else if (slash) *slash = 0;
-            else snprintf(parent, sizeof parent, ".");
-            if (!variant[0] || !strcmp(variant, ".") || !strcmp(variant, "..") || !am_port_exists(parent))
+            size_t end, at = last_component(dirs[i], &end);
+            if (at == 0) snprintf(parent, sizeof parent, ".");
+            else snprintf(parent, sizeof parent, "%.*s", (int)(at > 1 ? at - 1 : 1), dirs[i]); /* no '/' but the root's */
+            base_name(dirs[i], variant, sizeof variant);
+            if (end - at >= sizeof variant || !variant[0] || !strcmp(variant, ".") || !strcmp(variant, "..") || !am_port_exists(parent))
                 return tool_usage_error("plot: %s: no such folder", dirs[i]);
             int rc = load_experiment(parent, variant, dirs[i]);
             if (rc) return rc;
