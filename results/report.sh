@@ -70,16 +70,23 @@ awk -F, '
       # each multiple of 500 in (prev, e]: the best of the rows at or below it
       for (m = 500 * (int(prev / 500) + 1); m <= e; m += 500) at[run, m] = m == e ? best : before
       prev = e; if (e > top) top = e }
+    # stats(REP, M): over the runs of representation REP (in file order) that reached M evaluations,
+    # K their number, MEAN their mean best so far and SE its standard error; ALL is 0 when one of
+    # REP'"'"'s runs did not reach M
+    function stats(rep, m,    i, v, s, s2, var) {
+      K = 0; s = 0; s2 = 0; ALL = 1
+      for (i = 1; i <= nr; i++) if (runs[names[i]] == rep) {
+        if ((names[i], m) in at) { v = at[names[i], m]; K++; s += v; s2 += v * v } else ALL = 0
+      }
+      MEAN = K ? s / K : 0; var = K > 1 ? (s2 - K * MEAN * MEAN) / (K - 1) : 0; SE = sqrt(var > 0 ? var / K : 0)
+    }
     END {
       split("dct cppn gmx", order, " ")
       for (m = 500; m <= top; m += 500) {
         line = "| " m " |"
         for (r = 1; r <= 3; r++) {
-          k = 0; s = 0; s2 = 0
-          for (run in runs) if (runs[run] == order[r] && ((run, m) in at)) { v = at[run, m]; k++; s += v; s2 += v * v }
-          if (k == 0) cell = ""
-          else if (k == 1) cell = sprintf("%.4f (1 run)", s)
-          else { mean = s / k; var = (s2 - k * mean * mean) / (k - 1); cell = sprintf("%.4f +- %.4f (%d runs)", mean, sqrt(var > 0 ? var / k : 0), k) }
+          stats(order[r], m)
+          cell = K == 0 ? "" : K == 1 ? sprintf("%.4f (1 run)", MEAN) : sprintf("%.4f +- %.4f (%d runs)", MEAN, SE, K)
           line = line " " cell " |"
         }
         print line
@@ -99,12 +106,7 @@ awk -F, '
       rows = ""
       for (m = 1000; m <= top; m += 1000) {
         ok = 1
-        for (r = 1; r <= 3; r++) {
-          k = 0; s = 0; s2 = 0; all = 1
-          for (run in runs) if (runs[run] == tolower(up[r])) { if ((run, m) in at) { v = at[run, m]; k++; s += v; s2 += v * v } else all = 0 }
-          if (!all || k < 2) { ok = 0; break }
-          mu[r] = s / k; var = (s2 - k * mu[r] * mu[r]) / (k - 1); se[r] = sqrt(var > 0 ? var / k : 0)
-        }
+        for (r = 1; r <= 3 && ok; r++) { stats(tolower(up[r]), m); ok = ALL && K >= 2; mu[r] = MEAN; se[r] = SE }
         if (!ok) continue
         for (r = 1; r <= 3; r++) rk[r] = r
         for (i = 1; i <= 3; i++) for (j = i + 1; j <= 3; j++) if (mu[rk[j]] > mu[rk[i]]) { t = rk[i]; rk[i] = rk[j]; rk[j] = t }
