@@ -3,7 +3,8 @@
 #   make test                 every test (the README's test command; also builds the -O0, fixed-point
 #                             and board-profile variants the shell tests compare against)
 #   make bench                benchmarks that print figures (bench-board: a board's cost under QEMU;
-#                             bench-mpi: MPI ranks against threads)
+#                             bench-mpi: MPI ranks against threads; convergence: the default step
+#                             against a ten times smaller one on every kind of body)
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
@@ -96,7 +97,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h) port/common/*.h)
 
-.PHONY: all test unit bench asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all test unit bench convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -192,6 +193,13 @@ check-fixed:
 
 bench: all
 	$(BUILD)/amorph bench
+
+# does the default step give the small-step answer? the calibration bars, 30 random bodies (10 per
+# representation) and every shipped best robot at 0.9 and 0.1 dt_rec, the period held in seconds,
+# plus the margins (friction +-10%, internal damping 0.5 and 1.0, 1.2 times the step): a table and
+# a pass/fail line (docs/physics.md, Time step). About half an hour on two cores.
+convergence: all
+	$(BUILD)/amorph bench --convergence $(sort $(patsubst %/checkpoint.txt,%,$(wildcard results/*/*/checkpoint.txt)))
 
 # what a board costs: instructions per voxel-step and per evaluation on the Cortex-M3 (fixed and
 # soft float) and Cortex-M4F builds under QEMU with -icount (tools/bench_board.sh states the method)

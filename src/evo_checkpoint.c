@@ -104,9 +104,9 @@ am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int 
                 (unsigned long long)e->rng.s[1], (unsigned long long)e->rng.s[2], (unsigned long long)e->rng.s[3]);
     am_text_put(&s, "generation %ld\nevaluations %ld\nhistory %016llx\n", e->generation, e->evaluations,
                 (unsigned long long)e->history);
-    am_text_put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx\n", e->last.generation, e->last.evaluations,
+    am_text_put(&s, "last %ld %ld %016llx %016llx %016llx %d %d %016llx %d\n", e->last.generation, e->last.evaluations,
                 dbits(e->last.best), dbits(e->last.mean), dbits(e->last.median), e->last.diverged, e->last.empty,
-                dbits(e->last.wall_s));
+                dbits(e->last.wall_s), e->last.unsettled);
     for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
     if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
     if (st != AM_OK) return st;
@@ -371,13 +371,16 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
         r->seen_evals = 1;
     } else if (strcmp(tok[0], "history") == 0 && ntok == 2 && hex64(tok[1], &e->history)) {
         r->seen_hist = 1;
-    } else if (strcmp(tok[0], "last") == 0 && ntok == 9) {
+    } else if (strcmp(tok[0], "last") == 0 && (ntok == 9 || ntok == 10)) {
+        /* the tenth token, the unsettled evaluations, is absent from checkpoints older than it (0) */
         uint64_t b[4];
-        long dv, em;
+        long dv, em, un = 0;
         if (!to_long(tok[1], 0, 2000000000L, &e->last.generation) || !to_long(tok[2], 0, 2000000000L, &e->last.evaluations) ||
             !hex64(tok[3], &b[0]) || !hex64(tok[4], &b[1]) || !hex64(tok[5], &b[2]) || !to_long(tok[6], 0, AM_MAX_POPULATION, &dv) ||
-            !to_long(tok[7], 0, AM_MAX_POPULATION, &em) || !hex64(tok[8], &b[3]))
+            !to_long(tok[7], 0, AM_MAX_POPULATION, &em) || !hex64(tok[8], &b[3]) ||
+            (ntok == 10 && !to_long(tok[9], 0, AM_MAX_POPULATION, &un)))
             BAD("%s:%d: malformed 'last' line", fname, r->line);
+        e->last.unsettled = (int)un;
         e->last.best = bits_d(b[0]);
         e->last.mean = bits_d(b[1]);
         e->last.median = bits_d(b[2]);

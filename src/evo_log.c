@@ -21,13 +21,13 @@
 
 const char* am_evo_log_header(void)
 {
-    return "generation,evaluations,best,mean,median,diverged,empty,wall_s";
+    return "generation,evaluations,best,mean,median,diverged,empty,wall_s,unsettled";
 }
 
 int am_evo_log_row(const am_evo_stats* s, char* buf, int cap)
 {
-    int n = snprintf(buf, (size_t)cap, "%ld,%ld,%.9g,%.9g,%.9g,%d,%d,%.3f", s->generation, s->evaluations, s->best, s->mean,
-                     s->median, s->diverged, s->empty, s->wall_s);
+    int n = snprintf(buf, (size_t)cap, "%ld,%ld,%.9g,%.9g,%.9g,%d,%d,%.3f,%d", s->generation, s->evaluations, s->best, s->mean,
+                     s->median, s->diverged, s->empty, s->wall_s, s->unsettled);
     return n < 0 ? 0 : n;
 }
 
@@ -75,9 +75,9 @@ int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_ev
 /* ---- reading log.csv ---- */
 
 /* the names of am_evo_log_header, in its order; the first LOG_REQUIRED must be in a header */
-static const char* const log_names[AM_EVO_LOG_COLUMNS] = {"generation", "evaluations", "best",  "mean",
-                                                          "median",     "diverged",    "empty", "wall_s"};
-enum { LOG_GENERATION, LOG_EVALUATIONS, LOG_BEST, LOG_MEAN, LOG_MEDIAN, LOG_DIVERGED, LOG_EMPTY, LOG_WALL_S };
+static const char* const log_names[AM_EVO_LOG_COLUMNS] = {"generation", "evaluations", "best",   "mean",     "median",
+                                                          "diverged",   "empty",       "wall_s", "unsettled"};
+enum { LOG_GENERATION, LOG_EVALUATIONS, LOG_BEST, LOG_MEAN, LOG_MEDIAN, LOG_DIVERGED, LOG_EMPTY, LOG_WALL_S, LOG_UNSETTLED };
 #define LOG_REQUIRED 3
 #define LOG_FIELD_MAX 64  /* a longer field is not a number this reader takes */
 
@@ -145,15 +145,15 @@ static am_status log_bad(am_evo_log_reader* r, int k, int c, const char* what, c
 }
 
 /* field [s, e) in column c, the header's column of name k: a count into *w (generation,
- * evaluations, diverged, empty) or a finite number into *v */
+ * evaluations, diverged, empty, unsettled) or a finite number into *v */
 static am_status log_field(am_evo_log_reader* r, int k, int c, const char* s, const char* e, double* v, long* w, char* err,
                            int errsz)
 {
     char buf[LOG_FIELD_MAX], what[64];
     size_t n = (size_t)(e - s);
     if (n == 0) return log_fail(r, err, errsz, "%s (column %d): empty, expected a number", log_names[k], c + 1);
-    if (k == LOG_GENERATION || k == LOG_EVALUATIONS || k == LOG_DIVERGED || k == LOG_EMPTY) {
-        long hi = k == LOG_DIVERGED || k == LOG_EMPTY ? INT_MAX : LONG_MAX;
+    if (k == LOG_GENERATION || k == LOG_EVALUATIONS || k == LOG_DIVERGED || k == LOG_EMPTY || k == LOG_UNSETTLED) {
+        long hi = k == LOG_DIVERGED || k == LOG_EMPTY || k == LOG_UNSETTLED ? INT_MAX : LONG_MAX;
         long x = 0;
         int ok = n < sizeof buf;
         if (ok) {
@@ -196,7 +196,7 @@ static am_status log_row(am_evo_log_reader* r, const char* s, const char* end, a
     for (const char* p = s; p < end; p++) fields += *p == ',';
     if (fields != r->columns)
         return log_fail(r, err, errsz, "%d field%s, the header has %d columns", fields, fields == 1 ? "" : "s", r->columns);
-    am_evo_stats out = {0, 0, 0.0, (double)NAN, (double)NAN, -1, -1, (double)NAN};
+    am_evo_stats out = {0, 0, 0.0, (double)NAN, (double)NAN, -1, -1, (double)NAN, -1};
     const char* p = s;
     for (int c = 0; c < fields; c++) {
         const char* q = p;
@@ -215,6 +215,7 @@ static am_status log_row(am_evo_log_reader* r, const char* s, const char* end, a
             case LOG_MEDIAN: out.median = v; break;
             case LOG_DIVERGED: out.diverged = (int)w; break;
             case LOG_EMPTY: out.empty = (int)w; break;
+            case LOG_UNSETTLED: out.unsettled = (int)w; break;
             default: out.wall_s = v; break;
             }
         }

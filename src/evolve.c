@@ -86,9 +86,23 @@ void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     if (detail) *detail = r.detail;
 }
 
-am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
+am_status am_evo_check_run(const am_evo_def* d, char* err, int errsz)
 {
     am_status st = am_evo_check(d, err, errsz);
+    if (st != AM_OK) return st;
+    /* a body settles after at least 50 calm steps and the release window (sim_eval.c): a run whose
+     * relaxation cannot hold them would score no evaluation (docs/evolve.md) */
+    if (d->eval.relax_max_steps < d->eval.release_steps + 50)
+        return am_fail(err, errsz, AM_ERR_RANGE,
+                       "relax_max_steps = %ld leaves no room to settle: the release window (release_steps = %ld) and 50 calm steps "
+                       "need %ld, and a body that does not settle gets no score",
+                       d->eval.relax_max_steps, d->eval.release_steps, d->eval.release_steps + 50);
+    return AM_OK;
+}
+
+am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
+{
+    am_status st = am_evo_check_run(d, err, errsz);
     if (st != AM_OK) return st;
     memset(e, 0, sizeof *e);
     e->def = *d;
@@ -173,7 +187,7 @@ static void population_stats(const am_evo* e, am_evo_stats* s)
     int n = 0;
     double sum = 0.0;
     for (int i = 0; i < e->def.population; i++) {
-        if (e->pop[i].diverged) continue;
+        if (e->pop[i].diverged || e->pop[i].fitness < 0.0) continue; /* no score: diverged, or not settled */
         double f = e->pop[i].fitness;
         int j = n++;
         while (j > 0 && v[j - 1] > f) {
@@ -221,7 +235,7 @@ void am_evo_gen_begin(am_evo* e)
     e->gen_b = 0;
     e->gen_m = 0;
     e->gen_steps = e->gen_voxel_steps = 0;
-    e->gen_diverged = e->gen_empty = 0;
+    e->gen_diverged = e->gen_empty = e->gen_unsettled = 0;
     for (int i = 0; i < n; i++) e->gen_parent[i] = i;
     if (e->generation > 0) {
         /* random pairs: a Fisher-Yates shuffle of the population */
@@ -315,6 +329,7 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         e->history = ind_hash(e->history, c);
         e->gen_diverged += c->diverged;
         e->gen_empty += c->empty;
+        e->gen_unsettled += !c->diverged && !c->empty && !e->eval[j].settled;
         e->gen_steps += c->steps;
         e->gen_voxel_steps += c->steps * c->voxels;
         if (!e->has_best || better(c, &e->best)) {
@@ -348,6 +363,7 @@ void am_evo_gen_end(am_evo* e)
     s.evaluations = e->evaluations;
     s.diverged = e->gen_diverged;
     s.empty = e->gen_empty;
+    s.unsettled = e->gen_unsettled;
     population_stats(e, &s);
     s.wall_s = am_port_now() - e->gen_t0;
     e->last = s;

@@ -134,7 +134,7 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
     size_t kind_len = colon ? (size_t)(colon - name) : strlen(name);
     char qb[AM_QUOTE_BUF];
     if (!colon || !parse_size(colon + 1, &n) || n < 1)
-        return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': expected NAME:N with N >= 1 (cube:N, sphere:D, cantilever:N, chain:N)",
+        return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': expected NAME:N with N >= 1 (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N)",
                        am_quote(qb, sizeof qb, name, -1));
     const am_param L = AM_P(0.01);
     am_status st;
@@ -163,11 +163,23 @@ am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz
         for (int x = 0; x < n; x++) lat->cell[am_lattice_index(lat, x, 0, 2)] = (uint8_t)(x == 0 ? fixed : 1);
         return AM_OK;
     }
+    /* the calibration bars (docs/validation.md): N x 3 x 3 on the floor, x < N/2 actuated; the rest
+     * passive (halfbar) or actuated half a period later (antibar) */
+    if (kind_len == 7 && (strncmp(name, "halfbar", 7) == 0 || strncmp(name, "antibar", 7) == 0)) {
+        if (n < 2) return am_fail(err, errsz, AM_ERR_ARG, "scene '%s': a bar needs N >= 2", am_quote(qb, sizeof qb, name, -1));
+        if ((st = am_lattice_init(lat, n, 3, 3, L, err, errsz)) != AM_OK) return st;
+        const int active = am_palette_find(&lat->palette, "active") + 1;
+        const int rest = name[0] == 'h' ? am_palette_find(&lat->palette, "passive") + 1 : am_palette_find(&lat->palette, "active180") + 1;
+        for (int z = 0; z < 3; z++)
+            for (int y = 0; y < 3; y++)
+                for (int x = 0; x < n; x++) lat->cell[am_lattice_index(lat, x, y, z)] = (uint8_t)(2 * x < n ? active : rest);
+        return AM_OK;
+    }
     if (kind_len == 5 && strncmp(name, "chain", 5) == 0) {
         if ((st = am_lattice_init(lat, n, 1, 1, L, err, errsz)) != AM_OK) return st;
         memset(lat->cell, 1, (size_t)n);
         return AM_OK;
     }
-    return am_fail(err, errsz, AM_ERR_ARG, "unknown scene '%s' (cube:N, sphere:D, cantilever:N, chain:N)",
+    return am_fail(err, errsz, AM_ERR_ARG, "unknown scene '%s' (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N)",
                    am_quote(qb, sizeof qb, name, (long)kind_len));
 }

@@ -166,12 +166,19 @@ static void record_extra(const am_model* m, const am_state* s, am_record* rec)
 
 /* 100 steps after every voxel is displaced by up to 2% of L and turned by up to 0.02 rad in a
  * fixed pseudo-random pattern, so that every mode, symmetric or not, starts with a finite
- * amplitude; gravity and floor as configured. In a stable damped run the strain energy falls to
- * the slowly growing level of the gravity load; an unstable mode grows by orders of magnitude. */
+ * amplitude, and with the actuation switched on at its peak; gravity and floor as configured. In a
+ * stable damped run the strain energy settles to the level of the thermal and gravity loads; an
+ * unstable mode grows by orders of magnitude. */
 static int stable_at(const am_model* m, am_state* s, am_real dt)
 {
     am_state_reset(m, s);
     s->dt = dt;
+    s->period_steps = am_period_steps(m, &m->env, dt);
+    /* the actuation from its peak: a thermal step load on every actuated voxel (large deformations
+     * are where a step first fails: the actuated sphere:20 runs stable at rest at 2 dt_rec, and
+     * diverges actuated at 1.6) */
+    s->actuate = m->any_cte;
+    s->actuation_step0 = -(long)(s->period_steps / 4);
     am_rng r;
     am_rng_seed(&r, UINT64_C(0x5eed0f57ab1e));
     const am_real amp = AM_MUL(AM_R(0.02), m->L);
@@ -236,6 +243,9 @@ static void ke_and_speed(const am_model* m, const am_state* s, double* ke, doubl
     *speed = sqrt(v2 / (double)(m->nv)) * am_unit(m, AM_DIM_VELOCITY);
 }
 
+/* the calm steps (of the default step) that end settling: the RMS speed below settle_speed */
+#define CALM_STEPS 50L
+
 /* every voxel's linear and angular momentum to zero (kinetic damping's stop) */
 static void stop_all(const am_model* m, am_state* s)
 {
@@ -263,7 +273,7 @@ static void gait_begin(am_gait* g, const double c0[3])
  * at the step that ends a cycle, its figures and centre of mass */
 static void gait_step(const am_model* m, const am_state* s, am_gait* g, long k)
 {
-    const long period = m->env.period_steps;
+    const long period = s->period_steps;
     const long cyc = k / period, in = k % period;
     if (cyc >= AM_GAIT_MAX_CYCLES) return;
     int touching = 0;
@@ -336,8 +346,15 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->links = m->links;
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
-    if (def->dt_search) s->dt = dt;
+    if (def->dt_search) {
+        s->dt = dt;
+        s->period_steps = am_period_steps(m, &m->env, dt); /* a period in seconds at the searched step */
+    }
     out->dt = am_to_si(m, s->dt, AM_DIM_TIME);
+    out->period_steps = s->period_steps;
+    /* the relaxation's step counts are steps of the default step (amorph/sim.h) */
+    const long relax_max = am_steps_at(m, s, def->relax_max_steps), relax_min = am_steps_at(m, s, def->relax_min_steps);
+    const long release_steps = am_steps_at(m, s, def->release_steps), calm_steps = am_steps_at(m, s, CALM_STEPS);
     am_record* rec = def->record;
     if (rec) {
         rec->frames = 0;
@@ -354,12 +371,11 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
      * RMS speed has stayed below settle_speed for CALM_STEPS steps, the release: the model's damping
      * alone for release_steps; the body has settled when the RMS speed stays below settle_speed
      * through it, else settling goes on. */
-    enum { CALM_STEPS = 50 };
     const double calm_speed = (double)def->settle_speed;
     long calm = 0, release = -1; /* release: steps into the release window, -1 while settling */
     double ke_prev = 0, worst = 0, speed = 0;
     s->glob_scale = AM_R(0);
-    while (s->step < def->relax_max_steps && !s->diverged) {
+    while (s->step < relax_max && !s->diverged) {
         am_step(m, s);
         am_record_frame(m, s, rec);
         double ke;
@@ -372,7 +388,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
             }
             ke_prev = ke;
             calm = speed < calm_speed ? calm + 1 : 0;
-            if (calm >= CALM_STEPS && s->step >= def->relax_min_steps) {
+            if (calm >= calm_steps && s->step >= relax_min) {
                 release = 0;
                 worst = 0;
                 s->glob_scale = AM_R(1);
@@ -384,7 +400,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
                 calm = 0;
                 ke_prev = ke;
                 s->glob_scale = AM_R(0);
-            } else if (++release >= def->release_steps) {
+            } else if (++release >= release_steps) {
                 out->settled = 1;
                 break;
             }
@@ -400,7 +416,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     /* movement: `cycles` whole actuation periods */
     s->actuate = 1;
     s->actuation_step0 = s->step;
-    long n = (long)def->cycles * m->env.period_steps;
+    long n = (long)def->cycles * s->period_steps;
     am_gait* gait = def->gait;
     if (gait) gait_begin(gait, c0);
     for (long k = 0; k < n && !s->diverged; k++) {
@@ -419,9 +435,12 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->dy = c1[1] - c0[1];
     out->dz = c1[2] - c0[2];
     out->diverged = s->diverged;
-    if (s->diverged) out->fitness = -1.0;
-    else if (def->fitness == AM_FIT_PLUS_X) out->fitness = out->dx;
-    else if (def->fitness == AM_FIT_3D) out->fitness = sqrt(out->dx * out->dx + out->dy * out->dy + out->dz * out->dz);
-    else out->fitness = sqrt(out->dx * out->dx + out->dy * out->dy);
+    if (s->diverged) out->travel = 0.0;
+    else if (def->fitness == AM_FIT_PLUS_X) out->travel = out->dx;
+    else if (def->fitness == AM_FIT_3D) out->travel = sqrt(out->dx * out->dx + out->dy * out->dy + out->dz * out->dz);
+    else out->travel = sqrt(out->dx * out->dx + out->dy * out->dy);
+    /* a body that diverged, or did not come to rest before the actuation started (its travel
+     * counts motion the actuation did not make: docs/evolve.md), has no score */
+    out->fitness = s->diverged || !out->settled ? -1.0 : out->travel;
     out->hash = am_state_hash(m, s);
 }

@@ -165,9 +165,20 @@ static inline am_real am_acc(am_real v, am_real* rem, am_real a, am_real b)
     return r;
 }
 #define AM_ACC(v, rem, a, b) am_acc((v), &(rem), (a), (b))
+#define AM_ACC_X(v, rem, a, b) am_acc((v), &(rem), (a), (b))
 #define AM_REM_CLEAR(rem) ((rem) = 0)
 #else
 #define AM_ACC(v, rem, a, b) ((v) + AM_MUL((a), (b)))
+/* v + a b for a position: the increment plus the remainder carried from the last step is added,
+ * and what the addition lost is the next remainder (Fast2Sum: exact when |v| >= |increment|, the
+ * case that matters; a displacement near 0 loses nothing worth carrying) */
+static inline am_real am_acc_x(am_real v, am_real* rem, am_real a, am_real b)
+{
+    const am_real y = AM_MUL(a, b) + *rem, t = v + y;
+    *rem = y - (t - v);
+    return t;
+}
+#define AM_ACC_X(v, rem, a, b) am_acc_x((v), &(rem), (a), (b))
 #define AM_REM_CLEAR(rem) ((void)0)
 #endif
 
@@ -178,6 +189,9 @@ static inline am_real am_sim_reduced_mass(am_real ma, am_real mb) { return AM_DI
 
 /* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
 am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
+/* its change for a small change dT of T (its derivative times dT), s being am_sim_scale's value (0
+ * where it clamps); with dT = dT/dt, the scale's rate of change */
+am_real am_sim_scale_rate(int cte_mode, am_real cte, am_real T, am_real dT, am_real s);
 /* velocity component c of voxel i outside the step's loops: kept in the state on the desktop,
  * derived from the momentum where read on a board (the same value: the step computes it so; the
  * step's own loops do the same for the spins, see sim_step.c) */

@@ -63,6 +63,7 @@ am_env am_default_env(void)
     e.temp_base = AM_P(0);
     e.temp_amplitude = AM_P(30);
     e.period_steps = 500;
+    e.period_s = AM_P(0);
     e.dt_frac = AM_P(0.9);
     e.lift = AM_P(0);
     e.zeta_internal_scale = AM_P(1);
@@ -93,6 +94,7 @@ static am_status check_env(const am_env* e, char* err, int errsz)
     if (!(e->gravity >= AM_P(0)) || !am_param_finite(e->gravity))
         return am_fail(err, errsz, AM_ERR_RANGE, "gravity must be >= 0 m/s^2");
     if (e->period_steps < 1) return am_fail(err, errsz, AM_ERR_RANGE, "period_steps must be >= 1");
+    if (!(e->period_s >= AM_P(0)) || !am_param_finite(e->period_s)) return am_fail(err, errsz, AM_ERR_RANGE, "period_s must be >= 0 s");
     if (!(e->dt_frac > AM_P(0)) || !am_param_finite(e->dt_frac))
         return am_fail(err, errsz, AM_ERR_RANGE, "dt_frac must be positive");
     if (!am_param_finite(e->temp_base) || !am_param_finite(e->temp_amplitude) || !am_param_finite(e->lift) || e->lift < AM_P(0))
@@ -109,6 +111,13 @@ am_real am_sim_scale(int cte_mode, am_real cte, am_real T)
     am_real arg = AM_R(1) + AM_MUL(cte, T);
     if (arg < AM_R(0.01)) arg = AM_R(0.01); /* a voxel never shrinks to nothing */
     return cte_mode == AM_CTE_LINEAR ? arg : am_cbrt(arg);
+}
+
+am_real am_sim_scale_rate(int cte_mode, am_real cte, am_real T, am_real dT, am_real s)
+{
+    if (AM_R(1) + AM_MUL(cte, T) < AM_R(0.01)) return AM_R(0); /* clamped: the scale holds */
+    const am_real a = AM_MUL(cte, dT); /* the change of 1 + cte T */
+    return cte_mode == AM_CTE_LINEAR ? a : AM_DIV(a, AM_MUL(AM_R(3), AM_MUL(s, s)));
 }
 
 void am_layers_clear(am_layers* l)
@@ -292,15 +301,16 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             m->b1[lc] = AM_MUL(E, L);
             m->b2[lc] = AM_MUL(AM_R(0.5), AM_MUL(E, L2));
             m->b3[lc] = AM_DIV(AM_MUL(E, L3), AM_R(6));
-            /* internal damping as a fraction of the critical damping of the link's own two-body
-             * modes: reduced mass with the axial stiffness E L, reduced inertia with the bending
-             * stiffness b3 */
+            /* internal damping: the element's stiffness applied to its rates of deformation, times
+             * the retardation time beta = zeta sqrt(2 mu / (E L)) (Kelvin-Voigt; 2 mu is the voxel
+             * mass for two equal voxels: the reference simulator's convention). For the small-angle
+             * element that is a dashpot c_t = beta E L on the relative velocity of the link's
+             * midpoint and c_r = beta E L^3 / 12 = c_t L^2 / 12 on the relative spin, which the step
+             * derives from c_t (docs/physics.md, Damping) */
             am_real mu = am_sim_reduced_mass(m->mass[AM_VC(m, a)], m->mass[AM_VC(m, j)]);
-            am_real mu_I = am_sim_inertia(mu, L);
             am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
                                 PV(env->zeta_internal_scale, 1.0));
-            m->c_t[lc] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu, AM_MUL(E, L))));
-            m->c_r[lc] = AM_MUL(AM_MUL(AM_R(2), zi), am_sqrt(AM_MUL(mu_I, m->b3[lc])));
+            m->c_t[lc] = AM_MUL(zi, am_sqrt(AM_MUL(AM_MUL(AM_R(2), mu), AM_MUL(E, L))));
             nl++;
         }
         m->axis_end[axis] = nl;
@@ -361,7 +371,29 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     m->max_speed = AM_MUL(AM_R(10), am_sqrt(c2));
 #endif
     m->dt_rec = am_dt_analytic(m);
+    if (env->period_s > AM_P(0)) {
+        /* the period in seconds as steps of the model's step */
+        const double dt = am_dt_si(m, env->dt_frac), k = (double)env->period_s / dt;
+        if (!(k <= 1e7))
+            return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (at most 10^7)", (double)env->period_s, k, dt);
+        m->env.period_steps = am_period_steps(m, env, AM_MUL(PV(env->dt_frac, 1.0), m->dt_rec));
+    }
     return AM_OK;
+}
+
+int am_period_steps(const am_model* m, const am_env* env, am_real dt)
+{
+    if (!(env->period_s > AM_P(0))) return env->period_steps;
+    const double k = (double)env->period_s / am_to_si(m, dt, AM_DIM_TIME);
+    return !(k >= 1.5) ? 1 : k >= 1e7 ? 10000000 : (int)floor(k + 0.5);
+}
+
+long am_steps_at(const am_model* m, const am_state* s, long n)
+{
+    const am_real ref = AM_MUL(PV(AM_P(AM_REF_DT_FRAC), 1.0), m->dt_rec);
+    if (n <= 0 || s->dt == ref) return n;
+    const double k = (double)n * AM_TO_DOUBLE(ref) / AM_TO_DOUBLE(s->dt);
+    return k < 1 ? 1 : k >= 4e18 ? (long)4e18 : (long)floor(k + 0.5);
 }
 
 am_real am_dt_analytic(const am_model* m)
@@ -384,6 +416,7 @@ void am_state_reset(const am_model* m, am_state* s)
     s->step = 0;
     s->t = AM_R(0);
     s->dt = AM_MUL(PV(m->env.dt_frac, 1.0), m->dt_rec);
+    s->period_steps = m->env.period_steps;
     s->actuate = 0;
     s->actuation_step0 = 0;
     s->diverged = 0;
@@ -395,12 +428,13 @@ void am_state_reset(const am_model* m, am_state* s)
     s->scales_valid = 0; /* the first step sets scales and rest lengths */
     s->damp_dt = AM_R(0);   /* and the damping for dt */
     s->glob_scale = AM_R(1);
-#if defined(AM_REAL_FIXED_POINT)
     memset(s->x_rem, 0, sizeof s->x_rem);
+#if defined(AM_REAL_FIXED_POINT)
     memset(s->p_rem, 0, sizeof s->p_rem);
     memset(s->h_rem, 0, sizeof s->h_rem);
 #endif
     for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale[k] = AM_R(1);
+    for (int k = 0; k < AM_MAX_MATERIALS; k++) s->mat_scale_rate[k] = AM_R(0);
     for (int k = 0; k < AM_MAX_MATERIALS * AM_MAX_MATERIALS; k++) {
         s->pair_rest[k] = m->L;
         s->pair_inv_rest[k] = AM_DIV(AM_R(1), m->L);
@@ -423,6 +457,9 @@ void am_state_reset(const am_model* m, am_state* s)
         s->q[0][i] = AM_R(1);
         s->q[1][i] = s->q[2][i] = s->q[3][i] = AM_R(0);
         s->s[i] = AM_R(1);
+#if !defined(AM_COMPACT)
+        s->s_rate[i] = AM_R(0);
+#endif
         /* voxels start stuck where they touch the floor */
         s->contact[i] = (uint8_t)(m->env.floor && m->x0[2][i] <= AM_MUL(AM_R(0.5), m->L) ? 1 : 0);
     }

@@ -56,6 +56,16 @@ typedef am_real link_row[AM_MAX_LINKS + 1];
  * the results go to the per-link arrays (o = 0); on a board v and w are the momenta p and h, scaled
  * where read by the voxel's 1/m and 1/I (the values the desktop keeps), and the results go to a
  * chunk's buffer (o = the chunk's first link). */
+/* the rate of change of voxel i's linear scale (thermal expansion): a link's rest length changes at
+ * half_L times the sum of its voxels' (kept per voxel on the desktop, per material on a board) */
+#if defined(AM_COMPACT)
+#define SRATE(i) srate[vmat[i]]
+#define SRATE_ARG(m, s) (s)->mat_scale_rate
+#else
+#define SRATE(i) srate[i]
+#define SRATE_ARG(m, s) (s)->s_rate
+#endif
+
 #if defined(AM_COMPACT)
 typedef am_real out_row[LINK_CHUNK];
 #define KIN_PARAM , const am_real* restrict vim, const am_real* restrict wim, const am_matid* restrict vmat
@@ -75,6 +85,16 @@ static void voxel_scales(int nv, const am_matid* restrict mat, const am_real* re
     for (int i = 0; i < nv; i++) scale[i] = mat_scale[mat[i]];
 }
 
+/* the actuation's angular frequency 2 pi / (period_steps dt), 1/s */
+static am_real actuation_omega(const am_state* s)
+{
+#if defined(AM_REAL_FIXED_POINT)
+    return AM_RATIO((int64_t)AM_R(6.283185307179586477), (int64_t)s->dt * s->period_steps);
+#else
+    return AM_DIV(AM_MUL(AM_R(2), AM_PI), AM_MUL_INT(s->dt, s->period_steps));
+#endif
+}
+
 #if !defined(AM_COMPACT)
 /* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
  * material's argument plus its own phase, then each link's rest length from its two voxels. With
@@ -85,20 +105,26 @@ static void voxel_actuation(const am_model* m, am_state* s)
     int changed = !s->scales_valid;
     am_real arg0 = AM_R(0);
     if (s->actuate) {
-        long ph = (s->step - s->actuation_step0) % e->period_steps; /* exact phase in steps */
+        long ph = (s->step - s->actuation_step0) % s->period_steps; /* exact phase in steps */
 #if defined(AM_REAL_FIXED_POINT)
-        arg0 = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)e->period_steps * AM_FIX_ONE);
+        arg0 = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)s->period_steps * AM_FIX_ONE);
 #else
-        arg0 = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps));
+        arg0 = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(s->period_steps));
 #endif
     }
     if (s->actuate) {
+        const am_real wt = actuation_omega(s);
         for (int i = 0; i < m->nv; i++) {
             const int k = m->mat[i];
-            am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin((arg0 + m->mat_phase[k]) + m->vphase[i]));
+            const am_real arg = (arg0 + m->mat_phase[k]) + m->vphase[i];
+            am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin(arg));
             am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
             changed |= sc != s->s[i];
             s->s[i] = sc;
+            const am_real rate = m->mat_cte[k] == AM_R(0) ? AM_R(0)
+                : AM_MUL(am_sim_scale_rate(e->cte_mode, m->mat_cte[k], T, AM_MUL(m->temp_amplitude, am_cos(arg)), sc), wt);
+            changed |= rate != s->s_rate[i];
+            s->s_rate[i] = rate;
         }
     } else {
         /* held at temp_base (relaxation): every voxel of a material has its material's scale, found
@@ -107,8 +133,9 @@ static void voxel_actuation(const am_model* m, am_state* s)
             s->mat_scale[k] = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], m->temp_base);
         for (int i = 0; i < m->nv; i++) {
             const am_real sc = s->mat_scale[m->mat[i]];
-            changed |= sc != s->s[i];
+            changed |= (sc != s->s[i]) | (s->s_rate[i] != AM_R(0));
             s->s[i] = sc;
+            s->s_rate[i] = AM_R(0);
         }
     }
     if (!changed) return;
@@ -133,26 +160,34 @@ static void actuation(const am_model* m, am_state* s)
 #endif
     const am_env* e = &m->env;
     int changed = !s->scales_valid;
+    const am_real wt = actuation_omega(s); /* d(phase)/dt */
     for (int k = 0; k < m->palette.count; k++) {
-        am_real T = m->temp_base;
+        am_real T = m->temp_base, dT = AM_R(0);
         if (s->actuate) {
-            long ph = (s->step - s->actuation_step0) % e->period_steps; /* exact phase in steps */
+            long ph = (s->step - s->actuation_step0) % s->period_steps; /* exact phase in steps */
 #if defined(AM_REAL_FIXED_POINT)
-            am_real arg = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)e->period_steps * AM_FIX_ONE) + m->mat_phase[k];
+            am_real arg = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)s->period_steps * AM_FIX_ONE) + m->mat_phase[k];
 #else
-            am_real arg = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(e->period_steps)) + m->mat_phase[k];
+            am_real arg = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(s->period_steps)) + m->mat_phase[k];
 #endif
             T += AM_MUL(m->temp_amplitude, am_sin(arg));
+            dT = AM_MUL(m->temp_amplitude, am_cos(arg)); /* dT / d(phase) */
         }
         am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
         changed |= sc != s->mat_scale[k];
         s->mat_scale[k] = sc;
+        const am_real rate = m->mat_cte[k] == AM_R(0) ? AM_R(0) : AM_MUL(am_sim_scale_rate(e->cte_mode, m->mat_cte[k], T, dT, sc), wt);
+        changed |= rate != s->mat_scale_rate[k];
+        s->mat_scale_rate[k] = rate;
     }
     /* voxel scales and rest lengths only when a material's scale moved (never, for a passive
      * body or during relaxation) */
     if (!changed) return;
     s->scales_valid = 1;
     voxel_scales(m->nv, m->mat, s->mat_scale, s->s);
+#if !defined(AM_COMPACT)
+    voxel_scales(m->nv, m->mat, s->mat_scale_rate, s->s_rate);
+#endif
     /* a link's rest length is the mean of its voxels' edges: one per pair of materials */
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
     for (int i = 0; i < m->palette.count; i++)
@@ -164,7 +199,7 @@ static void actuation(const am_model* m, am_state* s)
 }
 
 /* the constants of one link and its current rest length */
-typedef struct link_par { am_real k_ax, a2, b1, b2, b3, c_t, c_r, rest, inv_rest; } link_par;
+typedef struct link_par { am_real k_ax, a2, b1, b2, b3, c_t, c_r, rest, inv_rest, rest_rate; } link_par;
 /* what a link hands to its two voxels: force on the negative end (the positive end gets -F),
  * moments on both ends, and the axial strain */
 typedef struct link_out { vec3 F, M, Mp; am_real strain; } link_out;
@@ -179,6 +214,20 @@ static inline int large_switch(const link_kin* k, int was_large, am_real inv_res
     return (lateral > AM_MUL(lat_lim, k->p.x)) | (axial > ax_lim) | !(k->p.x > AM_R(0));
 }
 
+/* internal damping of a link of world offset d, acting at its midpoint against the rate of
+ * deformation: the relative velocity of the two ends there less what a rigid rotation would give
+ * (c_t), and the relative spin (c_r); va, vb, wa, wb are the velocities and spins of the negative
+ * and positive voxels. Fd is the force on the negative end, Md its moment. The forces derive from
+ * the dissipation function (c_t |rate|^2 + c_r |wb - wa|^2) / 2: their power is minus twice it, so
+ * they only ever remove energy, and a rigid motion is not damped. */
+static inline void link_damping(vec3 d, am_real c_t, am_real c_r, vec3 va, vec3 vb, vec3 wa, vec3 wb, vec3* Fd, vec3* Md)
+{
+    const vec3 half_d = v3_scale(d, AM_R(0.5));
+    const vec3 rate = v3_sub(v3_sub(vb, va), v3_cross(v3_add(wa, wb), half_d));
+    *Fd = v3_scale(rate, c_t);
+    *Md = v3_add(v3_cross(half_d, *Fd), v3_scale(v3_sub(wb, wa), c_r));
+}
+
 /* the Euler-Bernoulli frame element in the local frame plus internal damping, turned to world
  * axes; va, vb, wa, wb are the velocities and spins of the negative and positive voxels */
 static inline link_out link_element(const link_kin* k, int large, int axis, link_par c, vec3 va, vec3 vb, vec3 wa, vec3 wb)
@@ -188,7 +237,9 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
     const am_real b1 = c.b1, b2 = c.b2, b3 = c.b3;
     link_out o;
     o.strain = AM_MUL(k->p.x - c.rest, c.inv_rest);
-    vec3 F = v3(AM_MUL(c.k_ax, o.strain),
+    /* the axial damping acts on the mechanical extension: the rate of the rest length (thermal
+     * expansion) is taken out of the relative velocity's axial part, along the link's local axis */
+    vec3 F = v3(AM_MUL(c.k_ax, o.strain) - AM_MUL(c.c_t, c.rest_rate),
                 AM_MUL(b1, k->p.y) - AM_MUL(b2, k->t1.z + k->t2.z),
                 AM_MUL(b1, k->p.z) + AM_MUL(b2, k->t1.y + k->t2.y));
     vec3 M = v3(AM_MUL(c.a2, k->t2.x - k->t1.x),
@@ -206,14 +257,10 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
     F = q_rot(k->qn, from_local(F, axis));
     M = q_rot(k->qn, from_local(M, axis));
 
-    /* internal damping, acting at the link's midpoint against the rate of deformation: the
-     * relative velocity of the two ends there less what a rigid rotation would give, and the
-     * relative spin. Its power is -c |rate|^2, so it only ever removes energy. */
-    vec3 half_d = v3_scale(k->d, AM_R(0.5));
-    vec3 rate = v3_sub(v3_sub(vb, va), v3_cross(v3_add(wa, wb), half_d));
-    vec3 Fd = v3_scale(rate, c.c_t);
+    vec3 Fd, Md;
+    link_damping(k->d, c.c_t, c.c_r, va, vb, wa, wb, &Fd, &Md);
     o.F = v3_add(F, Fd);
-    o.M = v3_add(M, v3_add(v3_cross(half_d, Fd), v3_scale(v3_sub(wb, wa), c.c_r)));
+    o.M = v3_add(M, Md);
 
     /* the positive end's moment from the balance of the element, so that the link exerts no
      * net torque (angular momentum is conserved exactly); at rest length this is the
@@ -246,11 +293,13 @@ static inline link_out link_element(const link_kin* k, int large, int axis, link
     const int live = axis != 0 || slot_mx[l] == (l)
 /* the results of entry l at j: zeros for an empty lane (what the zero link nl holds); the strain
  * check for links only */
-#define STORE_RESULTS(j_)                                                                                      \
+#define STORE_FORCES(j_)                                                                                       \
     const int j = (j_);                                                                                        \
     fn[0][j] = live ? r.F.x : AM_R(0); fn[1][j] = live ? r.F.y : AM_R(0); fn[2][j] = live ? r.F.z : AM_R(0);      \
     mn[0][j] = live ? r.M.x : AM_R(0); mn[1][j] = live ? r.M.y : AM_R(0); mn[2][j] = live ? r.M.z : AM_R(0);      \
-    mp[0][j] = live ? r.Mp.x : AM_R(0); mp[1][j] = live ? r.Mp.y : AM_R(0); mp[2][j] = live ? r.Mp.z : AM_R(0);   \
+    mp[0][j] = live ? r.Mp.x : AM_R(0); mp[1][j] = live ? r.Mp.y : AM_R(0); mp[2][j] = live ? r.Mp.z : AM_R(0)
+#define STORE_RESULTS(j_)                                                                                      \
+    STORE_FORCES(j_);                                                                                          \
     strain[j] = live ? r.strain : AM_R(0);                                                                      \
     bad |= live & !(am_fabs(r.strain) <= AM_DIVERGE_STRAIN)
 
@@ -262,8 +311,9 @@ static int small_pass(int l0, int l1, int axis, am_real L, const am_index* restr
                       const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                       const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                       const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
-                      const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
-                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
+                      const am_real* restrict c_t, am_real kr, const am_pair* restrict lpair,
+                      const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                      const am_real* restrict srate, am_real half_L KIN_PARAM,
                       const am_index* restrict slot_mx, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp,
                       am_real* restrict strain, int o)
 {
@@ -275,7 +325,8 @@ static int small_pass(int l0, int l1, int axis, am_real L, const am_index* restr
                       LINK_OFFSET(x, a, b), axis, &k);
         const am_real rest = pair_rest[lpair[l]], inv_rest = pair_inv_rest[lpair[l]];
         any_large |= live & large_switch(&k, 0, inv_rest);
-        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
+        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], AM_MUL(c_t[LCI(l)], kr), rest, inv_rest,
+                      AM_MUL(half_L, SRATE(a) + SRATE(b))};
         link_out r = link_element(&k, 0, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
         STORE_RESULTS(l - o);
     }
@@ -289,8 +340,9 @@ static int full_pass(int l0, int l1, int axis, am_real L, const am_index* restri
                      const vox_row* restrict x, const vox_row* restrict q, const vox_row* restrict v,
                      const vox_row* restrict w, const am_real* restrict k_ax, const am_real* restrict a2,
                      const am_real* restrict b1, const am_real* restrict b2, const am_real* restrict b3,
-                     const am_real* restrict c_t, const am_real* restrict c_r, const am_pair* restrict lpair,
-                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest KIN_PARAM,
+                     const am_real* restrict c_t, am_real kr, const am_pair* restrict lpair,
+                     const am_real* restrict pair_rest, const am_real* restrict pair_inv_rest,
+                     const am_real* restrict srate, am_real half_L KIN_PARAM,
                      const am_index* restrict slot_mx, am_flag* restrict large, out_row* restrict fn,
                      out_row* restrict mn, out_row* restrict mp, am_real* restrict strain, int o)
 {
@@ -309,12 +361,49 @@ static int full_pass(int l0, int l1, int axis, am_real L, const am_index* restri
 #else
         link_kin_large(&k, lg);
 #endif
-        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], c_r[LCI(l)], rest, inv_rest};
+        link_par c = {k_ax[LCI(l)], a2[LCI(l)], b1[LCI(l)], b2[LCI(l)], b3[LCI(l)], c_t[LCI(l)], AM_MUL(c_t[LCI(l)], kr), rest, inv_rest,
+                      AM_MUL(half_L, SRATE(a) + SRATE(b))};
         link_out r = link_element(&k, lg, axis, c, VEL3(v, a), VEL3(v, b), SPIN3(w, a), SPIN3(w, b));
         large[l] = (am_flag)lg;
         STORE_RESULTS(l - o);
     }
     return bad;
+}
+
+/* The damping correction of the links [l0, l1), all along one axis (docs/physics.md, Damping): each
+ * link's damping impulse for the velocity increments dv and spin increments dw of its ends (the
+ * step's accelerations times alpha dt^2), with the link's offset at the start of the step; the
+ * impulse on the negative end and its moment, and the positive end's moment from the balance, as
+ * in link_element. On the desktop dv and dw are the rows v and w (voxel_totals puts them there);
+ * on a board the totals fc and mc, scaled where read by the voxel's 1/m or 1/I and by sc. No
+ * branch: the compiler vectorises it. */
+#if defined(AM_COMPACT)
+#define DAMP_PARAM , const am_real* restrict vim, const am_real* restrict wim, const am_matid* restrict vmat, am_real sc
+#define DAMP_ARG(m, s) , (m)->inv_mass, (m)->inv_inertia, (m)->mat, (s)->damp_scale
+#define DVEL3(r, i) v3(AM_MUL(AM_MUL(r[0][i], vim[vmat[i]]), sc), AM_MUL(AM_MUL(r[1][i], vim[vmat[i]]), sc), \
+                       AM_MUL(AM_MUL(r[2][i], vim[vmat[i]]), sc))
+#define DSPIN3(r, i) v3(AM_MUL(AM_MUL(r[0][i], wim[vmat[i]]), sc), AM_MUL(AM_MUL(r[1][i], wim[vmat[i]]), sc), \
+                        AM_MUL(AM_MUL(r[2][i], wim[vmat[i]]), sc))
+#else
+#define DAMP_PARAM
+#define DAMP_ARG(m, s)
+#define DVEL3(r, i) VEL3(r, i)
+#define DSPIN3(r, i) SPIN3(r, i)
+#endif
+static inline void damp_pass(int l0, int l1, int axis, am_real L, const am_index* restrict lneg, const am_index* restrict lpos,
+                      const vox_row* restrict x, const vox_row* restrict dv, const vox_row* restrict dw,
+                      const am_real* restrict c_t, am_real kr, const am_pair* restrict lpair DAMP_PARAM,
+                      const am_index* restrict slot_mx, out_row* restrict fn, out_row* restrict mn, out_row* restrict mp, int o)
+{
+    (void)lpair; /* read through LCI in the board profile only */
+    for (int l = l0; l < l1; l++) {
+        LINK_ENDS(l);
+        const vec3 d = LINK_OFFSET(x, a, b);
+        link_out r;
+        link_damping(d, c_t[LCI(l)], AM_MUL(c_t[LCI(l)], kr), DVEL3(dv, a), DVEL3(dv, b), DSPIN3(dw, a), DSPIN3(dw, b), &r.F, &r.M);
+        r.Mp = v3_sub(v3_cross(d, r.F), r.M);
+        STORE_FORCES(l - o);
+    }
 }
 
 #if defined(AM_COMPACT)
@@ -375,10 +464,10 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
         for (int l = c0; l < c1; l++) was_large |= s->large[l];
         if (!was_large)
             r = small_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
-                           s->damp_t, s->damp_r, rest_at, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
+                           s->damp_t, s->damp_kr, rest_at, s->pair_rest, s->pair_inv_rest, SRATE_ARG(m, s), AM_MUL(AM_R(0.5), m->L) KIN_ARG(m), m->slot[1], fn, mn, mp, strain, o);
         if (r & 2)
             r = full_pass(c0, c1, axis, m->L, m->lneg, m->lpos, x, q, v, w, m->k_ax, m->a2, m->b1, m->b2, m->b3,
-                          s->damp_t, s->damp_r, rest_at, s->pair_rest, s->pair_inv_rest KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
+                          s->damp_t, s->damp_kr, rest_at, s->pair_rest, s->pair_inv_rest, SRATE_ARG(m, s), AM_MUL(AM_R(0.5), m->L) KIN_ARG(m), m->slot[1], s->large, fn, mn, mp,
                           strain, o);
         bad |= r & 1;
 #if defined(AM_COMPACT)
@@ -386,6 +475,35 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 #endif
     }
     return bad;
+}
+
+/* the damping correction of the links [l0, l1), all along one axis: on the desktop into the
+ * per-link arrays (voxel_rotate gathers them into the momenta); on a board chunk by chunk, the
+ * last chunk first, added to the momenta p and h straight away (add_links: the same sums) */
+static void damp_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
+{
+#if defined(AM_COMPACT)
+    const vox_row *dv = (const vox_row*)s->fc, *dw = (const vox_row*)s->mc;
+    out_row fn[3], mn[3], mp[3];
+    const int chunks = (l1 - l0 + LINK_CHUNK - 1) / LINK_CHUNK;
+    for (int k = chunks - 1; k >= 0; k--) {
+        const int c0 = l0 + LINK_CHUNK * k, c1 = l1 - c0 < LINK_CHUNK ? l1 : c0 + LINK_CHUNK;
+        damp_pass(c0, c1, axis, m->L, m->lneg, m->lpos, (const vox_row*)s->x, dv, dw, s->damp_t, s->damp_kr, m->lpair DAMP_ARG(m, s),
+                  m->slot[1], fn, mn, mp, c0);
+        add_links(c0, c1, m->lneg, m->lpos, (const out_row*)fn, (const out_row*)mn, (const out_row*)mp, s->p, s->h);
+    }
+#else
+    /* per axis, so that each call's axis is a constant (gcc then vectorises the copies) */
+    if (axis == 0)
+        damp_pass(l0, l1, 0, m->L, m->lneg, m->lpos, (const vox_row*)s->x, (const vox_row*)s->v, (const vox_row*)s->w, s->damp_t,
+                  s->damp_kr, m->lpair DAMP_ARG(m, s), m->slot[1], s->fn, s->mn, s->mp, 0);
+    else if (axis == 1)
+        damp_pass(l0, l1, 1, m->L, m->lneg, m->lpos, (const vox_row*)s->x, (const vox_row*)s->v, (const vox_row*)s->w, s->damp_t,
+                  s->damp_kr, m->lpair DAMP_ARG(m, s), m->slot[1], s->fn, s->mn, s->mp, 0);
+    else
+        damp_pass(l0, l1, 2, m->L, m->lneg, m->lpos, (const vox_row*)s->x, (const vox_row*)s->v, (const vox_row*)s->w, s->damp_t,
+                  s->damp_kr, m->lpair DAMP_ARG(m, s), m->slot[1], s->fn, s->mn, s->mp, 0);
+#endif
 }
 
 /* the floor's penetration of voxel i: half its current edge less its height (z = x0 + displacement) */
@@ -406,7 +524,8 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
         return 0;
     }
     const am_real N = AM_MUL(m->k_floor[AM_VC(m, i)], pen); /* the spring force: friction's N */
-    am_real Fn = N - AM_MUL(m->c_col[AM_VC(m, i)], am_sim_vel(m, s, 2, i));
+    /* the normal velocity from the momentum (the velocity row is scratch in the step) */
+    am_real Fn = N - AM_MUL(m->c_col[AM_VC(m, i)], AM_MUL(s->p[2][i], m->inv_mass[AM_VC(m, i)]));
     F->z += Fn < AM_R(0) ? AM_R(0) : Fn; /* the floor pushes, never pulls */
 
     /* squared norms as wide products: in the fixed-point build these impulses are small and their
@@ -416,55 +535,60 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     const am_real js = AM_MUL(AM_MUL(m->mu_s[AM_VC(m, i)], N), dt); /* static friction's bound */
     const am_wide p2 = AM_MULW(px, px) + AM_MULW(py, py);
     if (s->contact[i] == 0) s->contact[i] = p2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
-    am_real ux, uy; /* the unit direction friction acts along */
-    if (s->contact[i] == 2 && p2 > AM_MULW(jk, jk)) {
-        /* sliding, and kinetic friction alone does not stop it within the step: against the motion */
-#if defined(AM_REAL_FIXED_POINT)
-        am_real n = AM_WIDE_SQRT(p2);
-        ux = -AM_DIV(px, n);
-        uy = -AM_DIV(py, n);
-#else
-        am_real inv = AM_DIV(AM_R(1), am_sqrt(p2));
-        ux = -AM_MUL(px, inv);
-        uy = -AM_MUL(py, inv);
-#endif
+    /* q = p_h + F_h dt: the horizontal momentum at the end of the step without friction */
+    const am_real fx = AM_MUL(F->x, dt), fy = AM_MUL(F->y, dt), qx = px + fx, qy = py + fy;
+    const am_wide q2 = AM_MULW(qx, qx) + AM_MULW(qy, qy), qp = AM_MULW(qx, px) + AM_MULW(qy, py);
+    am_real dx, dy; /* kinetic friction acts against this direction, */
+    am_wide d2;     /* of this squared length */
+    if (s->contact[i] == 2 && p2 > AM_R(0) && q2 > AM_MULW(jk, jk)) {
+        /* sliding, and kinetic friction cannot bring it to rest within the step: it cannot cancel q
+         * (in the floor's plane a sliding voxel stops only if friction can take all its motion; one
+         * whose velocity swings past zero sideways keeps sliding). Against the motion, or against
+         * the motion it turns to when the step reverses it */
+        const int rev = !(qp > 0);
+        dx = rev ? qx : px;
+        dy = rev ? qy : py;
+        d2 = rev ? q2 : p2;
     } else {
-        /* at rest, or kinetic friction alone stops it within the step: static friction holds it if
-         * the impulse that stops it, j = -(p_h + F_h dt), is within mu_s N dt */
-        const am_real jx = -(px + AM_MUL(F->x, dt)), jy = -(py + AM_MUL(F->y, dt));
-        const am_wide j2 = AM_MULW(jx, jx) + AM_MULW(jy, jy);
-        if (j2 <= AM_MULW(js, js) || j2 <= AM_MULW(jk, jk)) {
+        /* at rest, or it comes to rest within the step: static friction holds it if it can at rest
+         * (|F_h| <= mu_s N) and the impulse that stops it, j = -q, is within the bound */
+        const am_wide f2 = AM_MULW(fx, fx) + AM_MULW(fy, fy);
+        const am_wide js2 = AM_MULW(js, js), jk2 = AM_MULW(jk, jk), lim2 = js2 > jk2 ? js2 : jk2;
+        if (q2 <= lim2 && f2 <= lim2) {
             s->contact[i] = 1;
             return 1;
         }
-        /* it breaks loose (or keeps sliding): kinetic friction against the motion it would have */
+        /* it breaks loose (or keeps sliding): against the motion it would have, q (or F_h when q is
+         * zero: then f2 > lim2 >= 0) */
         s->contact[i] = 2;
-#if defined(AM_REAL_FIXED_POINT)
-        am_real n = AM_WIDE_SQRT(j2);
-        ux = AM_DIV(jx, n);
-        uy = AM_DIV(jy, n);
-#else
-        am_real inv = AM_DIV(AM_R(1), am_sqrt(j2));
-        ux = AM_MUL(jx, inv);
-        uy = AM_MUL(jy, inv);
-#endif
+        const int use_q = q2 > 0;
+        dx = use_q ? qx : fx;
+        dy = use_q ? qy : fy;
+        d2 = use_q ? q2 : f2;
     }
+#if defined(AM_REAL_FIXED_POINT)
+    const am_real dn = AM_WIDE_SQRT(d2), ux = -AM_DIV(dx, dn), uy = -AM_DIV(dy, dn);
+#else
+    const am_real inv = AM_DIV(AM_R(1), am_sqrt(d2)), ux = -AM_MUL(dx, inv), uy = -AM_MUL(dy, inv);
+#endif
     const am_real fk = AM_MUL(m->mu_k[AM_VC(m, i)], N);
     F->x += AM_MUL(fk, ux);
     F->y += AM_MUL(fk, uy);
     return 0;
 }
 
-/* per voxel: the total force without the floor into f, and the whole rotational update
- * h += M dt, q = quat(w dt) q. On the desktop f holds the collision force on entry and each voxel
- * gathers its six links in a fixed order: + slots (this voxel is the negative end) add the link's
- * force, - slots subtract it and take the positive end's moment. On a board f and mt hold those
- * totals already (add_links) but for the zeros of missing links. No branch: the compiler
- * vectorises it. */
+/* Pass A, per voxel: the total force without the floor into f and the total moment into mt, from
+ * the state at the start of the step. On the desktop f holds the collision force on entry and each
+ * voxel gathers its six links in a fixed order: + slots (this voxel is the negative end) add the
+ * link's force, - slots subtract it and take the positive end's moment; then the velocity and spin
+ * rows v and w, read here for the global damping, are overwritten by what the damping correction
+ * reads: the increments the totals would give in alpha dt^2 (sc), F sc / m and M sc / I. On a board
+ * f and mt hold the totals already (add_links) but for the zeros of missing links; the correction
+ * scales them where it reads them. No branch: the compiler vectorises it. */
 #if defined(AM_COMPACT)
 #define TOTAL_PARAM const uint8_t* restrict surface, const am_index* restrict slot_px, const am_index* restrict slot_py, \
-                    const am_index* restrict slot_pz, int nl, const vox_row* restrict mt
-#define TOTAL_ARG(m, s) (m)->surface, (m)->slot[0], (m)->slot[2], (m)->slot[4], (m)->nl, (const vox_row*)(s)->mc
+                    const am_index* restrict slot_pz, int nl
+#define TOTAL_ARG(m, s) (m)->surface, (m)->slot[0], (m)->slot[2], (m)->slot[4], (m)->nl
 #define VEL_PARAM , const am_real* restrict inv_mass
 #define VEL_ARG(m) , (m)->inv_mass
 #define VGET(r, c, i) AM_MUL(r[c][i], inv_mass[VCI(i)])
@@ -474,41 +598,46 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
                     const vox_row* restrict mext
 #define TOTAL_ARG(m, s) (const am_index(*)[AM_MAX_VOXELS])(m)->slot, (const link_row*)(s)->fn, (const link_row*)(s)->mn, \
                         (const link_row*)(s)->mp, (const vox_row*)(s)->fext, (const vox_row*)(s)->mext
-#define VEL_PARAM
-#define VEL_ARG(m)
+#define VEL_PARAM , const am_real* restrict inv_mass
+#define VEL_ARG(m) , (m)->inv_mass
 #define VGET(r, c, i) r[c][i]
 #endif
-static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, TOTAL_PARAM, const am_real* restrict mass,
-                                const am_real* restrict c_glob_t, const am_real* restrict c_glob_r,
-                                const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
-                                const am_matid* restrict mat, const vox_row* restrict v VEL_PARAM, vox_row* restrict f,
-                                vox_row* restrict h, vox_row* restrict w, vox_row* restrict q REM_PARAM(h_rem))
+/* the desktop's gather of a voxel's six link results, in slot order (+x, -x, +y, -y, +z, -z): the +x
+ * and -x results at lanes i + 1 and i (contiguous; zeros where empty), the others through the slots.
+ * F and M are updated in place. */
+#define GATHER_LINKS(F, M, i)                                                                                   \
+    for (int d = 0; d < 3; d++) {                                                                               \
+        const int lp = d == 0 ? (i) + 1 : slot[2 * d][i], ln = d == 0 ? (i) : slot[2 * d + 1][i];              \
+        F = v3_add(F, v3(fn[0][lp], fn[1][lp], fn[2][lp]));                                                     \
+        M = v3_add(M, v3(mn[0][lp], mn[1][lp], mn[2][lp]));                                                     \
+        F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));                                                     \
+        M = v3_add(M, v3(mp[0][ln], mp[1][ln], mp[2][ln]));                                                     \
+    }
+static void voxel_totals(int nv, am_real g, am_real sc, int collisions, TOTAL_PARAM, const am_real* restrict mass,
+                         const am_real* restrict c_glob_t, const am_real* restrict c_glob_r, const am_real* restrict inv_inertia,
+                         const am_matid* restrict mat, vox_row* restrict v, vox_row* restrict w VEL_PARAM,
+                         vox_row* restrict f, vox_row* restrict mt)
 {
     (void)mat; /* read through VCI in the board profile only */
     for (int i = 0; i < nv; i++) {
 #if defined(AM_COMPACT)
         (void)collisions;
+        (void)sc;
         vec3 F = v3(f[0][i], f[1][i], f[2][i]), M = v3(mt[0][i], mt[1][i], mt[2][i]);
         /* a missing + link adds a zero force, any missing link a zero moment: x + 0 is x but for
          * x = -0, and where in the sum it comes does not matter */
         const vec3 zero = v3(AM_R(0), AM_R(0), AM_R(0));
         if ((slot_px[i] == nl) | (slot_py[i] == nl) | (slot_pz[i] == nl)) F = v3_add(F, zero);
         if (surface[i]) M = v3_add(M, zero);
-        const vec3 wi = v3(AM_MUL(h[0][i], inv_inertia[VCI(i)]), AM_MUL(h[1][i], inv_inertia[VCI(i)]),
-                           AM_MUL(h[2][i], inv_inertia[VCI(i)]));
+        const vec3 wi = v3(AM_MUL(w[0][i], inv_inertia[VCI(i)]), AM_MUL(w[1][i], inv_inertia[VCI(i)]),
+                           AM_MUL(w[2][i], inv_inertia[VCI(i)]));
 #else
+        (void)inv_mass;
         /* fc is zero without self-collision, and then holds the last step's total: not read */
         vec3 F = v3(fext[0][i] + (collisions ? f[0][i] : AM_R(0)), fext[1][i] + (collisions ? f[1][i] : AM_R(0)),
                     fext[2][i] + (collisions ? f[2][i] : AM_R(0)));
         vec3 M = v3(mext[0][i], mext[1][i], mext[2][i]);
-        for (int d = 0; d < 3; d++) {
-            /* the +x and -x results at lanes i + 1 and i (contiguous; zeros where empty) */
-            int lp = d == 0 ? i + 1 : slot[2 * d][i], ln = d == 0 ? i : slot[2 * d + 1][i];
-            F = v3_add(F, v3(fn[0][lp], fn[1][lp], fn[2][lp]));
-            M = v3_add(M, v3(mn[0][lp], mn[1][lp], mn[2][lp]));
-            F = v3_sub(F, v3(fn[0][ln], fn[1][ln], fn[2][ln]));
-            M = v3_add(M, v3(mp[0][ln], mp[1][ln], mp[2][ln]));
-        }
+        GATHER_LINKS(F, M, i)
         const vec3 wi = v3(w[0][i], w[1][i], w[2][i]);
 #endif
         F.z -= AM_MUL(mass[VCI(i)], g);
@@ -516,16 +645,59 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, T
         F = v3_sub(F, v3(AM_MUL(cg, VGET(v, 0, i)), AM_MUL(cg, VGET(v, 1, i)), AM_MUL(cg, VGET(v, 2, i))));
         M = v3_sub(M, v3(AM_MUL(cgr, wi.x), AM_MUL(cgr, wi.y), AM_MUL(cgr, wi.z)));
         f[0][i] = F.x; f[1][i] = F.y; f[2][i] = F.z;
+        mt[0][i] = M.x; mt[1][i] = M.y; mt[2][i] = M.z;
+#if !defined(AM_COMPACT)
+        /* what the damping correction reads (the board scales the totals where it reads them) */
+        const am_real im = inv_mass[i], ii = inv_inertia[i];
+        v[0][i] = AM_MUL(AM_MUL(F.x, im), sc); v[1][i] = AM_MUL(AM_MUL(F.y, im), sc); v[2][i] = AM_MUL(AM_MUL(F.z, im), sc);
+        w[0][i] = AM_MUL(AM_MUL(M.x, ii), sc); w[1][i] = AM_MUL(AM_MUL(M.y, ii), sc); w[2][i] = AM_MUL(AM_MUL(M.z, ii), sc);
+#endif
+    }
+}
 
-        /* h += M dt; q = quat(w dt) q, renormalised (a fixed voxel keeps no momentum) */
+/* Pass B, per voxel: the damping correction's impulses into the momenta p and h (on the desktop
+ * gathered here from the per-link arrays, in the order of pass A; a board has added them already,
+ * add_links, and adds here the zeros of missing links the gather adds), then the update:
+ * h += M dt, q = quat(w dt) q, renormalised; p += F dt, x += p dt / m (a fixed voxel keeps no
+ * momentum). Returns 1 when some voxel's squared speed is beyond v2_max (or NaN). No branch: the
+ * compiler vectorises it. */
+#if defined(AM_COMPACT)
+#define ROT_PARAM const uint8_t* restrict surface, const am_index* restrict slot_px, const am_index* restrict slot_py, \
+                  const am_index* restrict slot_pz, int nl
+#define ROT_ARG(m, s) (m)->surface, (m)->slot[0], (m)->slot[2], (m)->slot[4], (m)->nl
+#else
+#define ROT_PARAM const am_index (*restrict slot)[AM_MAX_VOXELS], const link_row* restrict fn, \
+                  const link_row* restrict mn, const link_row* restrict mp
+#define ROT_ARG(m, s) (const am_index(*)[AM_MAX_VOXELS])(m)->slot, (const link_row*)(s)->fn, (const link_row*)(s)->mn, \
+                      (const link_row*)(s)->mp
+#endif
+static int voxel_update(int nv, am_real dt, am_real v2_max, ROT_PARAM, const vox_row* restrict f, const vox_row* restrict mt,
+                        const am_real* restrict inv_mass, const am_real* restrict inv_inertia, const uint8_t* restrict fixed,
+                        const am_matid* restrict mat, vox_row* restrict p, vox_row* restrict h, vox_row* restrict v,
+                        vox_row* restrict w, vox_row* restrict q, vox_row* restrict x, vox_row* restrict x_rem
+                        REM_PARAM(p_rem) REM_PARAM(h_rem))
+{
+    (void)mat; /* read through VCI in the board profile only */
+    int bad = 0;
+    for (int i = 0; i < nv; i++) {
+        vec3 P = v3(p[0][i], p[1][i], p[2][i]), H = v3(h[0][i], h[1][i], h[2][i]);
+#if defined(AM_COMPACT)
+        const vec3 zero = v3(AM_R(0), AM_R(0), AM_R(0));
+        if ((slot_px[i] == nl) | (slot_py[i] == nl) | (slot_pz[i] == nl)) P = v3_add(P, zero);
+        if (surface[i]) H = v3_add(H, zero);
+#else
+        GATHER_LINKS(P, H, i)
+#endif
+        /* rotation */
         const am_real ii = inv_inertia[VCI(i)];
-        am_real hx = AM_ACC(h[0][i], h_rem[0][i], M.x, dt), hy = AM_ACC(h[1][i], h_rem[1][i], M.y, dt),
-                hz = AM_ACC(h[2][i], h_rem[2][i], M.z, dt);
+        am_real hx = AM_ACC(H.x, h_rem[0][i], mt[0][i], dt), hy = AM_ACC(H.y, h_rem[1][i], mt[1][i], dt),
+                hz = AM_ACC(H.z, h_rem[2][i], mt[2][i], dt);
         if (fixed[i]) hx = hy = hz = AM_R(0);
         vec3 wn = v3(AM_MUL(hx, ii), AM_MUL(hy, ii), AM_MUL(hz, ii));
         h[0][i] = hx; h[1][i] = hy; h[2][i] = hz;
 #if defined(AM_COMPACT)
         (void)w;
+        (void)v;
 #else
         w[0][i] = wn.x; w[1][i] = wn.y; w[2][i] = wn.z;
 #endif
@@ -542,7 +714,23 @@ static void voxel_forces_rotate(int nv, am_real dt, am_real g, int collisions, T
 #endif
         q[0][i] = AM_MUL(qn.w, inv); q[1][i] = AM_MUL(qn.x, inv);
         q[2][i] = AM_MUL(qn.y, inv); q[3][i] = AM_MUL(qn.z, inv);
+        /* translation */
+        const am_real im = inv_mass[VCI(i)];
+        am_real px = AM_ACC(P.x, p_rem[0][i], f[0][i], dt), py = AM_ACC(P.y, p_rem[1][i], f[1][i], dt),
+                pz = AM_ACC(P.z, p_rem[2][i], f[2][i], dt);
+        if (fixed[i]) px = py = pz = AM_R(0);
+        am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
+        p[0][i] = px; p[1][i] = py; p[2][i] = pz;
+#if !defined(AM_COMPACT)
+        v[0][i] = vx; v[1][i] = vy; v[2][i] = vz;
+#endif
+        x[0][i] = AM_ACC_X(x[0][i], x_rem[0][i], vx, dt);
+        x[1][i] = AM_ACC_X(x[1][i], x_rem[1][i], vy, dt);
+        x[2][i] = AM_ACC_X(x[2][i], x_rem[2][i], vz, dt);
+        am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
+        bad |= !(v2 <= v2_max);
     }
+    return bad;
 }
 
 /* touch[j] = 1 when voxel i0 + j (j < n) reaches below the floor: the test of floor_contact for a
@@ -586,37 +774,14 @@ static void floor_pass(const am_model* m, am_state* s)
                 AM_REM_CLEAR(s->p_rem[1][i]);
             }
             s->fc[0][i] = F.x; s->fc[1][i] = F.y; s->fc[2][i] = F.z;
+#if !defined(AM_COMPACT)
+            /* the damping correction's increment from the total with the floor (as a board reads it) */
+            s->v[0][i] = AM_MUL(AM_MUL(F.x, m->inv_mass[i]), s->damp_scale);
+            s->v[1][i] = AM_MUL(AM_MUL(F.y, m->inv_mass[i]), s->damp_scale);
+            s->v[2][i] = AM_MUL(AM_MUL(F.z, m->inv_mass[i]), s->damp_scale);
+#endif
         }
     }
-}
-
-/* p += F dt; x += p dt / m for every voxel (a fixed voxel keeps no momentum); returns 1 when
- * some voxel's squared speed is beyond v2_max (or NaN) */
-static int voxel_translate(int nv, am_real dt, am_real v2_max, const vox_row* restrict f, const am_real* restrict inv_mass,
-                           const uint8_t* restrict fixed, const am_matid* restrict mat, vox_row* restrict p, vox_row* restrict v,
-                           vox_row* restrict x REM_PARAM(p_rem) REM_PARAM(x_rem))
-{
-    (void)mat; /* read through VCI in the board profile only */
-    int bad = 0;
-    for (int i = 0; i < nv; i++) {
-        const am_real im = inv_mass[VCI(i)];
-        am_real px = AM_ACC(p[0][i], p_rem[0][i], f[0][i], dt), py = AM_ACC(p[1][i], p_rem[1][i], f[1][i], dt),
-                pz = AM_ACC(p[2][i], p_rem[2][i], f[2][i], dt);
-        if (fixed[i]) px = py = pz = AM_R(0);
-        am_real vx = AM_MUL(px, im), vy = AM_MUL(py, im), vz = AM_MUL(pz, im);
-        p[0][i] = px; p[1][i] = py; p[2][i] = pz;
-#if defined(AM_COMPACT)
-        (void)v; /* derived where read */
-#else
-        v[0][i] = vx; v[1][i] = vy; v[2][i] = vz;
-#endif
-        x[0][i] = AM_ACC(x[0][i], x_rem[0][i], vx, dt);
-        x[1][i] = AM_ACC(x[1][i], x_rem[1][i], vy, dt);
-        x[2][i] = AM_ACC(x[2][i], x_rem[2][i], vz, dt);
-        am_real v2 = AM_MUL(vx, vx) + AM_MUL(vy, vy) + AM_MUL(vz, vz);
-        bad |= !(v2 <= v2_max);
-    }
-    return bad;
 }
 
 #if defined(AM_COMPACT)
@@ -633,13 +798,25 @@ static void totals_start(int nv, int collisions, const vox_row* restrict fext, c
 }
 #endif
 
-/* the largest fraction of a link's two-body relative velocity its damping may remove in one step
- * (docs/physics.md, Damping) */
-#define AM_DAMP_CAP AM_R(0.15)
-/* the damping for this dt: each link's c_t and c_r, capped at AM_DAMP_CAP mu / dt (mu the link's
- * reduced mass or inertia), so that one step removes at most that fraction of its two-body relative
- * motion (docs/physics.md, Damping), and the global damping times glob_scale, capped likewise by the
- * voxel's mass and inertia. Once per dt and scale, not per step. */
+/* The internal damping's correction (docs/physics.md, Damping). The step's damping acts on the
+ * velocities at its start (explicit) plus a correction: the damping of the velocity increments the
+ * step's total forces give in alpha dt^2, added as an impulse. Per mode of damping rate lambda
+ * (x = lambda dt) that multiplies the velocity by 1 - x + alpha x^2 instead of the explicit 1 - x:
+ * alpha = 1/4 is two half steps of the damping, stable while x < 4. x is at most AM_DAMP_MODES
+ * times the largest c_t dt / mu of the body's links (the checkerboard modes of a lattice of equal
+ * links, where translation and rotation combine). Up to AM_DAMP_X_EQUAL alpha is 1/4; beyond it
+ * alpha falls so that the fastest mode keeps a factor 0.8, down to AM_DAMP_X_MAX, past which the
+ * damping coefficients are scaled down (the only place the model's damping changes: docs). */
+#define AM_DAMP_MODES AM_R(7)
+#define AM_DAMP_X_EQUAL AM_R(3.6)
+#define AM_DAMP_X_MAX AM_R(6.5)
+/* the largest fraction of a voxel's velocity the global damping may remove in one step (explicit;
+ * never reached at the seed's 0.01 of critical: docs/physics.md, Damping) */
+#define AM_GLOB_CAP AM_R(0.15)
+
+/* the damping for this dt: the link coefficients the step applies (the model's, or scaled down
+ * past AM_DAMP_X_MAX) and the correction's alpha dt^2; the global damping times glob_scale, capped
+ * by AM_GLOB_CAP. Once per dt and scale, not per step. */
 static void damping_for_dt(const am_model* m, am_state* s)
 {
     s->damp_dt = s->dt;
@@ -650,24 +827,26 @@ static void damping_for_dt(const am_model* m, am_state* s)
 #else
     const int n = m->nl;
 #endif
-    for (int c = 0; c < n; c++) {
-#if defined(AM_COMPACT)
-        const int ma = c / AM_MAX_MATERIALS, mb = c % AM_MAX_MATERIALS;
-        if (ma >= m->palette.count || mb >= m->palette.count) {
-            s->damp_t[c] = s->damp_r[c] = AM_R(0);
-            continue;
-        }
-        const am_real mass_a = m->mass[ma], mass_b = m->mass[mb];
-#else
-        const am_real mass_a = m->mass[m->lneg[c]], mass_b = m->mass[m->lpos[c]];
-#endif
-        const am_real mu = am_sim_reduced_mass(mass_a, mass_b), mu_I = am_sim_inertia(mu, L);
-        const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu), dt) : m->c_t[c];
-        const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mu_I), dt) : m->c_r[c];
-        s->damp_t[c] = am_min(m->c_t[c], cap_t);
-        s->damp_r[c] = am_min(m->c_r[c], cap_r);
+    /* the fastest damped mode: AM_DAMP_MODES times the largest c_t dt / mu over the body's links */
+    am_real r = AM_R(0);
+    for (int l = 0; l < m->nl; l++) {
+        if (!am_link_live(m, l)) continue;
+        const am_real mass_a = m->mass[AM_VC(m, m->lneg[l])], mass_b = m->mass[AM_VC(m, m->lpos[l])];
+        r = am_max(r, AM_DIV(AM_MUL(m->c_t[AM_LC(m, l)], dt), am_sim_reduced_mass(mass_a, mass_b)));
     }
-    /* global damping: the same cap on a voxel's own velocity (never reached at the seed's 0.01) */
+    am_real x = AM_MUL(AM_DAMP_MODES, r), scale = AM_R(1);
+    if (x > AM_DAMP_X_MAX) {
+        scale = AM_DIV(AM_DAMP_X_MAX, x);
+        x = AM_DAMP_X_MAX;
+    }
+    am_real alpha = AM_R(0.25);
+    if (x > AM_DAMP_X_EQUAL) alpha = am_min(alpha, AM_DIV(x - AM_R(0.2), AM_MUL(x, x)));
+    s->damp_scale = AM_MUL(alpha, AM_MUL(dt, dt));
+    s->damp_on = x > AM_R(0);
+    s->damp_limited = scale < AM_R(1);
+    for (int c = 0; c < n; c++) s->damp_t[c] = scale < AM_R(1) ? AM_MUL(m->c_t[c], scale) : m->c_t[c];
+    s->damp_kr = AM_DIV(AM_MUL(L, L), AM_R(12)); /* c_r = c_t L^2 / 12 (sim_model.c) */
+    /* global damping: explicit, capped by the voxel's own mass and inertia */
 #if defined(AM_COMPACT)
     const int nvc = m->palette.count;
 #else
@@ -675,8 +854,8 @@ static void damping_for_dt(const am_model* m, am_state* s)
 #endif
     for (int c = 0; c < nvc; c++) {
         const am_real mass = m->mass[c], inertia = am_sim_inertia(mass, L);
-        const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, mass), dt) : m->c_glob_t[c];
-        const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_DAMP_CAP, inertia), dt) : m->c_glob_r[c];
+        const am_real cap_t = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_GLOB_CAP, mass), dt) : m->c_glob_t[c];
+        const am_real cap_r = dt > AM_R(0) ? AM_DIV(AM_MUL(AM_GLOB_CAP, inertia), dt) : m->c_glob_r[c];
         s->glob_t[c] = am_min(AM_MUL(k, m->c_glob_t[c]), cap_t);
         s->glob_r[c] = am_min(AM_MUL(k, m->c_glob_r[c]), cap_r);
     }
@@ -692,21 +871,24 @@ void am_step(const am_model* m, am_state* s)
 #if defined(AM_COMPACT)
     totals_start(m->nv, m->env.collisions, (const vox_row*)s->fext, (const vox_row*)s->mext, s->fc, s->mc);
     /* a board keeps no velocities: the voxel passes read the momenta for them and store none */
-    const vox_row* v = (const vox_row*)s->p;
-    vox_row *w = NULL, *v_out = NULL;
+    vox_row *v = s->p, *w = s->h, *w_out = NULL, *v_out = NULL;
 #else
-    const vox_row* v = (const vox_row*)s->v;
-    vox_row *w = s->w, *v_out = s->v;
+    vox_row *v = s->v, *w = s->w, *w_out = s->w, *v_out = s->v;
 #endif
     int bad = link_forces(m, s, 1, m->axis_end[0] - 1, 0); /* lanes 0 and nv are always empty */
     bad |= link_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
     bad |= link_forces(m, s, m->axis_end[1], m->nl, 2);
-    /* semi-implicit Euler: rotation and total force, floor and friction, translation */
-    voxel_forces_rotate(m->nv, s->dt, m->gravity, m->env.collisions, TOTAL_ARG(m, s), m->mass, s->glob_t, s->glob_r,
-                        m->inv_inertia, m->fixed, m->mat, v VEL_ARG(m), s->fc, s->h, w, s->q REM_ARG(s->h_rem));
+    /* semi-implicit Euler: the totals, the damping correction, rotation, floor and friction,
+     * translation */
+    voxel_totals(m->nv, m->gravity, s->damp_scale, m->env.collisions, TOTAL_ARG(m, s), m->mass, s->glob_t, s->glob_r,
+                 m->inv_inertia, m->mat, v, w VEL_ARG(m), s->fc, s->mc);
     if (m->env.floor) floor_pass(m, s);
-    bad |= voxel_translate(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), (const vox_row*)s->fc, m->inv_mass,
-                           m->fixed, m->mat, s->p, v_out, s->x REM_ARG(s->p_rem) REM_ARG(s->x_rem));
+    damp_forces(m, s, 1, m->axis_end[0] - 1, 0);
+    damp_forces(m, s, m->axis_end[0], m->axis_end[1], 1);
+    damp_forces(m, s, m->axis_end[1], m->nl, 2);
+    bad |= voxel_update(m->nv, s->dt, AM_MUL(m->max_speed, m->max_speed), ROT_ARG(m, s), (const vox_row*)s->fc,
+                        (const vox_row*)s->mc, m->inv_mass, m->inv_inertia, m->fixed, m->mat, s->p, s->h, v_out, w_out, s->q, s->x,
+                        s->x_rem REM_ARG(s->p_rem) REM_ARG(s->h_rem));
     s->step++;
     s->t = AM_MUL_INT(s->dt, s->step);
     if (bad) {

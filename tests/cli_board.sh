@@ -84,8 +84,9 @@ workspace = 8
 population = 20
 cycles = 1
 period_steps = 100
-relax_max_steps = 150
+relax_max_steps = 400
 relax_min_steps = 50
+release_steps = 100
 seed = 5
 CFG
 E="$B evolve --config $TMPD/big.cfg --quiet"
@@ -123,8 +124,9 @@ workspace = 6
 population = 6
 cycles = 1
 period_steps = 100
-relax_max_steps = 150
+relax_max_steps = 400
 relax_min_steps = 50
+release_steps = 100
 gmx_points = 12
 CFG
 expect_ok "$B" experiment three-materials --evals 12 --runs 2 --config "$TMPD/small.cfg" --out "$TMPD/exp" --quiet

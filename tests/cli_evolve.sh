@@ -13,8 +13,9 @@ population = 6
 evaluations = 36
 cycles = 2
 period_steps = 100
-relax_max_steps = 300
+relax_max_steps = 400
 relax_min_steps = 50
+release_steps = 100
 gmx_points = 24
 seed = 11
 CFG
@@ -25,7 +26,7 @@ expect_ok $E --out "$TMPD/a" --threads 1
 for f in config.txt log.csv evals.csv best.genome best.lattice summary.txt checkpoint.txt; do
     if [ -s "$TMPD/a/$f" ]; then ok; else ko "run folder lacks $f"; fi
 done
-if [ "$(head -n 1 "$TMPD/a/log.csv")" = "generation,evaluations,best,mean,median,diverged,empty,wall_s" ]; then ok
+if [ "$(head -n 1 "$TMPD/a/log.csv")" = "generation,evaluations,best,mean,median,diverged,empty,wall_s,unsettled" ]; then ok
 else ko "log header: $(head -n 1 "$TMPD/a/log.csv")"; fi
 rows=$(($(wc -l <"$TMPD/a/log.csv") - 1))
 if [ "$rows" -eq 6 ]; then ok; else ko "36 evaluations of 6 should log 6 generations, got $rows rows"; fi
@@ -51,10 +52,12 @@ else ko "evals.csv rows: $(tail -n +2 "$EV" | head -3)"; fi
 best_row=$(tail -n +2 "$EV" | awk -F, '$15 == 0 && (!n++ || $10 > b) { b = $10; h = $19 } END { print h }')
 if [ -n "$best_row" ] && [ "$best_row" = "$(sumval "$TMPD/a" best_state_hash)" ]; then ok
 else ko "evals.csv best row's hash '$best_row', summary $(sumval "$TMPD/a" best_state_hash)"; fi
-# dx, dy give the fitness (horizontal travel), and the placed rows of the last generation with
-# those of earlier ones are the final population (as many as the population)
-if tail -n +2 "$EV" | awk -F, '$15 == 0 { d = sqrt($11 * $11 + $12 * $12) - $10; if (d > 1e-9 || d < -1e-9) bad = 1 } END { exit bad }'; then ok
-else ko "evals.csv fitness is not the horizontal travel dx, dy"; fi
+# dx, dy give the fitness (horizontal travel) of a body that settled; one that did not has no score
+# (-1); and the placed rows of the last generation with those of earlier ones are the final
+# population (as many as the population)
+if tail -n +2 "$EV" | awk -F, '$15 == 0 && $14 == 1 { d = sqrt($11 * $11 + $12 * $12) - $10; if (d > 1e-9 || d < -1e-9) bad = 1 }
+        $15 == 0 && $14 == 0 && $10 != -1 { bad = 1 } $15 == 0 && $14 == 1 { settled++ } END { exit bad || !settled }'; then ok
+else ko "evals.csv fitness is not the horizontal travel dx, dy (or -1 when not settled)"; fi
 # summary.json: one JSON line with the summary's values; --json prints the same as the last line
 SJ="$TMPD/a/summary.json"
 if [ "$(wc -l <"$SJ")" -eq 1 ] && grep -q "^{\"run\": \"$TMPD/a\", \"representation\": \"gmx\", \"evaluations\": 36, " "$SJ" &&

@@ -46,8 +46,9 @@ population = 4
 evaluations = 8
 cycles = 1
 period_steps = 100
-relax_max_steps = 200
+relax_max_steps = 300
 relax_min_steps = 50
+release_steps = 100
 seed = 3
 CFG
 expect_ok "$AMORPH" evolve --config "$TMPD/small.cfg" --quiet --no-pictures --out "$TMPD/run"

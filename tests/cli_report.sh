@@ -17,7 +17,7 @@ if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
 fi
 R=$TMPD/res
 mkdir -p "$R/representations" "$R/friction"
-SMALL="--workspace 6 --population 4 --evaluations 8 --cycles 1 --period_steps 100 --relax_max_steps 150 --relax_min_steps 50 --threads 1 --quiet --no-pictures"
+SMALL="--workspace 6 --population 4 --evaluations 8 --cycles 1 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 --threads 1 --quiet --no-pictures"
 for run in dct-1 dct-2 gmx-1; do
     # shellcheck disable=SC2086
     expect_ok "$AMORPH" evolve $SMALL --representation "${run%-*}" --seed "${run#*-}" --out "$R/representations/$run"

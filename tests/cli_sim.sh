@@ -109,9 +109,39 @@ check "--dt 1 should give fitness -1, got $(field fitness "$TMPD/out")" awk -v f
 check "--dt 1 diverged: settled should be 0: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
 check "--dt 1: JSON with nan or inf: $(head -c 600 "$TMPD/out")" sh -c "! grep -qiE 'nan|inf' '$TMPD/out'"
 check "--dt 1: gait should be diverged: $(head -c 600 "$TMPD/out")" grep -qE '"gait": "diverged"' "$TMPD/out"
-# and said once on stderr (diverged, not also "did not settle")
-check "--dt 1: want one stderr line, got $(lines "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 1 ]
+# and said once on stderr (diverged, not also "did not settle"), beside the note that a step this
+# long makes the 500-step period 500 s
+check "--dt 1: want one warning, got $(grep -c warning "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(grep -c warning "$TMPD/err")" -eq 1 ]
 check "--dt 1: warning: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: sim: warning: cube:4 diverged at step [0-9]+, in the relaxation \(fitness -1\)$' "$TMPD/err"
+check "--dt 1: note: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: note: at this step the actuation period is 500 steps = 500 s, ' "$TMPD/err"
+
+# the period in seconds (docs/evolve.md): --dt_frac alone keeps 500 steps and says that the period
+# changed; --period_s holds it, and the relaxation's step counts scale with the step by themselves
+"$AMORPH" sim --scene halfbar:6 --cycles 1 --dt_frac 0.3 --json >"$TMPD/out" 2>"$TMPD/err"
+check "--dt_frac 0.3: period_steps $(field period_steps "$TMPD/out"), want 500" [ "$(field period_steps "$TMPD/out")" = 500 ]
+check "--dt_frac 0.3: note: $(head -c 300 "$TMPD/err")" \
+    grep -qxE 'amorph: note: at this step the actuation period is 500 steps = 0.007549 s, not the robot.s own 0.02265 s \(--period_s 0.02265 holds it in seconds\)' "$TMPD/err"
+"$AMORPH" sim --scene halfbar:6 --cycles 1 --json >"$TMPD/own.json" 2>"$TMPD/err"
+check "default step: no note: $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 0 ]
+"$AMORPH" sim --scene halfbar:6 --cycles 1 --dt_frac 0.3 --period_s 0.02265 --json >"$TMPD/out" 2>"$TMPD/err"
+check "--period_s held: no note: $(head -c 300 "$TMPD/err")" [ "$(lines "$TMPD/err")" -eq 0 ]
+check "--period_s 0.02265 at 0.3: period_steps $(field period_steps "$TMPD/out"), want 1500" [ "$(field period_steps "$TMPD/out")" = 1500 ]
+check "--period_s: the period in seconds" awk -v a="$(field period_s "$TMPD/out")" -v b="$(field period_s "$TMPD/own.json")" \
+    'BEGIN { exit !(a / b > 0.9999 && a / b < 1.0001) }'
+check "--dt_frac 0.3: the relaxation in seconds ($(field relax_steps "$TMPD/out") steps against $(field relax_steps "$TMPD/own.json"))" \
+    awk -v a="$(field relax_steps "$TMPD/out")" -v b="$(field relax_steps "$TMPD/own.json")" 'BEGIN { exit !(a > 2.5 * b && a < 3.5 * b) }'
+# the same physics at both steps: the half bar's travel within 5% (docs/physics.md, Time step)
+check "--period_s: travel $(field travel "$TMPD/out") at 0.3, $(field travel "$TMPD/own.json") at 0.9" \
+    awk -v a="$(field travel "$TMPD/out")" -v b="$(field travel "$TMPD/own.json")" 'BEGIN { d = a / b - 1; exit !(d > -0.05 && d < 0.05) }'
+# a later --period_steps wins over a period in seconds
+"$AMORPH" sim --scene halfbar:6 --cycles 1 --period_s 0.02265 --period_steps 300 --json >"$TMPD/out" 2>/dev/null
+check "--period_steps after --period_s: $(field period_steps "$TMPD/out")" [ "$(field period_steps "$TMPD/out")" = 300 ]
+expect_fail 2 "^amorph: sim: --period_s = '-1': expected a number in \[0, 10000\]$" "$AMORPH" sim --scene cube:3 --period_s -1
+expect_fail 2 "period_s = 10000 s is .* steps of .* s \(at most 10\^7\)" "$AMORPH" sim --scene cube:3 --period_s 10000
+# an evolution whose relaxation cannot hold the release window would score nothing: refused
+expect_fail 2 "^amorph: evolve: relax_max_steps = 300 leaves no room to settle: the release window \(release_steps = 500\) and 50 calm steps need 550" \
+    "$AMORPH" evolve --workspace 4 --population 2 --evaluations 2 --relax-max-steps 300 --out "$TMPD/nosettle" --quiet
+check "a refused run makes no folder" [ ! -e "$TMPD/nosettle" ]
 
 # bad input: exit 2 and one line on stderr
 expect_fail 2 "." "$AMORPH" sim

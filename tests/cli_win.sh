@@ -56,7 +56,7 @@ hw=$(W repro | sed -n 's/^repro_hash=//p')
 hl=$("$L" repro | sed -n 's/^repro_hash=//p')
 if [ -n "$hl" ] && [ "$hw" = "$hl" ]; then ok; else ko "amorph repro: Windows $hw, Linux $hl"; fi
 
-S="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 150 --relax_min_steps 50 --evaluations 32 --quiet --no-pictures"
+S="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 --evaluations 32 --quiet --no-pictures"
 # same RUN REF: run folder RUN ended exactly like REF (run hash, best genome and lattice, the log
 # without its wall clock, evals.csv)
 same() {

@@ -50,10 +50,10 @@ static log_read g_r;
 static void test_round_trip(void)
 {
     static const am_evo_stats in[4] = {
-        {0, 20, 0.00607548222, 0.00357374351, 0.00343036047, 0, 0, 47.749},
-        {1, 40, 0.125, 0.0625, 0.05, 1, 2, 1.5},
-        {2, 60, -1.0, -1.0, -1.0, 20, 0, 0.0}, /* every member diverged */
-        {123456, 2469120, 1.23456789e-05, 3e-7, 0.5, 3, 17, 3600.125},
+        {0, 20, 0.00607548222, 0.00357374351, 0.00343036047, 0, 0, 47.749, 0},
+        {1, 40, 0.125, 0.0625, 0.05, 1, 2, 1.5, 3},
+        {2, 60, -1.0, -1.0, -1.0, 20, 0, 0.0, 0}, /* every member diverged */
+        {123456, 2469120, 1.23456789e-05, 3e-7, 0.5, 3, 17, 3600.125, 11},
     };
     char text[2048];
     int n = snprintf(text, sizeof text, "%s\n", am_evo_log_header());
@@ -74,7 +74,8 @@ static void test_round_trip(void)
               b->generation, b->evaluations);
         CHECK(a->best == b->best && a->mean == b->mean && a->median == b->median, "row %d: best %.17g mean %.17g median %.17g", i,
               b->best, b->mean, b->median);
-        CHECK(a->diverged == b->diverged && a->empty == b->empty, "row %d: diverged %d empty %d", i, b->diverged, b->empty);
+        CHECK(a->diverged == b->diverged && a->empty == b->empty && a->unsettled == b->unsettled,
+              "row %d: diverged %d empty %d unsettled %d", i, b->diverged, b->empty, b->unsettled);
         NEAR(b->wall_s, a->wall_s, 5e-4); /* written with 3 decimals */
     }
 }
@@ -93,8 +94,8 @@ static void test_columns_by_name(void)
         const am_evo_stats* a = &g_r.row[0];
         CHECK(a->generation == 1 && a->evaluations == 40 && a->best == 0.5 && a->wall_s == 2.25, "row 1: %ld %ld %g %g",
               a->generation, a->evaluations, a->best, a->wall_s);
-        CHECK(isnan(a->mean) && isnan(a->median) && a->diverged == -1 && a->empty == -1, "absent columns: %g %g %d %d", a->mean,
-              a->median, a->diverged, a->empty);
+        CHECK(isnan(a->mean) && isnan(a->median) && a->diverged == -1 && a->empty == -1 && a->unsettled == -1,
+              "absent columns: %g %g %d %d %d", a->mean, a->median, a->diverged, a->empty, a->unsettled);
         CHECK(g_r.row[1].generation == 2 && g_r.row[1].evaluations == 60 && g_r.row[1].best == 0.75, "row 2");
     }
     /* blank lines before the header and between rows are skipped; a header alone is a log with no rows */
@@ -162,6 +163,9 @@ static void test_bad_rows(void)
         expect_refused(text, AM_ERR_PARSE, cases[i].want);
         CHECK(g_r.rows == 1, "case %zu: %d rows read before the bad one", i, g_r.rows);
     }
+    /* the unsettled column (the ninth of today's header) is a count like diverged */
+    snprintf(text, sizeof text, "%s\n0,20,0.5,0.25,0.25,0,0,1.5,-2\n", am_evo_log_header());
+    expect_refused(text, AM_ERR_PARSE, "t.csv:2: unsettled (column 9): not a whole number from 0 to 2147483647: '-2'");
     /* the first failure sticks: a good line after it is refused the same way */
     am_evo_log_reader r;
     am_evo_stats row;
@@ -186,15 +190,16 @@ static void test_crlf_line_ends(void)
     read_text(&g_r, "generation,evaluations,best\r\n0,20,0.5\r\n1,40,0.75\r\n");
     CHECK(g_r.st == AM_OK && g_r.rows == 2, "CRLF: %s, %d rows", g_r.err, g_r.rows);
     CHECK(g_r.rows == 2 && g_r.row[0].best == 0.5 && g_r.row[1].best == 0.75, "CRLF values");
-    /* the whole header: wall_s (its last column) found and read */
-    am_evo_stats s = {4, 100, 0.25, 0.125, 0.125, 0, 1, 2.5};
+    /* the whole header: unsettled (its last column) found and read */
+    am_evo_stats s = {4, 100, 0.25, 0.125, 0.125, 0, 1, 2.5, 2};
     char text[512], row[256];
     am_evo_log_row(&s, row, (int)sizeof row);
     snprintf(text, sizeof text, "%s\r\n%s\r\n\r\n", am_evo_log_header(), row);
     read_text(&g_r, text);
     CHECK(g_r.st == AM_OK && g_r.rows == 1 && g_r.r.col[AM_EVO_LOG_COLUMNS - 1] == AM_EVO_LOG_COLUMNS - 1,
-          "CRLF full header: %s, %d rows, wall_s at %d", g_r.err, g_r.rows, g_r.r.col[AM_EVO_LOG_COLUMNS - 1]);
-    CHECK(g_r.rows == 1 && g_r.row[0].wall_s == 2.5 && g_r.row[0].empty == 1, "CRLF wall_s %g", g_r.rows ? g_r.row[0].wall_s : -1);
+          "CRLF full header: %s, %d rows, unsettled at %d", g_r.err, g_r.rows, g_r.r.col[AM_EVO_LOG_COLUMNS - 1]);
+    CHECK(g_r.rows == 1 && g_r.row[0].wall_s == 2.5 && g_r.row[0].empty == 1 && g_r.row[0].unsettled == 2, "CRLF wall_s %g",
+          g_r.rows ? g_r.row[0].wall_s : -1);
     /* only one CR is a line end: a field ending in another is not a number */
     expect_refused("generation,evaluations,best\r\n0,20,0.5\r\r\n", AM_ERR_PARSE, "t.csv:2: best (column 3): not a number");
 }

@@ -29,8 +29,9 @@ static am_evo_def small_def(int repr)
     d.evaluations = 24;
     d.eval.cycles = 2;
     d.env.period_steps = 100;
-    d.eval.relax_max_steps = 300;
+    d.eval.relax_max_steps = 400;
     d.eval.relax_min_steps = 50;
+    d.eval.release_steps = 100; /* room to settle (am_evo_check_run) */
     d.seed = 7;
     return d;
 }
@@ -205,6 +206,32 @@ static void test_crowding_rule(void)
     }
     CHECK(replaced_total > 0, "no offspring ever replaced a member in 3 generations");
     CHECK(g_a.has_best && g_a.best.fitness == g_a.last.best, "best ever %.9g vs population best %.9g", g_a.best.fitness, g_a.last.best);
+}
+
+/* a generation counts its unsettled evaluations (log.csv's unsettled), scores them -1 and leaves
+ * them out of the population's mean and median, as diverged ones (docs/evolve.md) */
+static void test_unsettled_generation(void)
+{
+    am_evo_def d = small_def(AM_REPR_GMX); /* 400 relaxation steps: room for the release window of 100, not for every body */
+    char err[AM_ERR_MAX];
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    int unsettled = 0, scored = 0;
+    double sum = 0;
+    for (int i = 0; i < d.population; i++) {
+        const am_evo_ind* p = &g_a.pop[i];
+        const int u = !p->diverged && !p->empty && !g_a.eval[i].settled;
+        unsettled += u;
+        if (u) CHECK(p->fitness == -1.0, "member %d did not settle yet scored %g", i, p->fitness);
+        if (!p->diverged && p->fitness >= 0) sum += p->fitness, scored++;
+    }
+    CHECK(unsettled > 0 && scored > 0, "generation 0 should hold both kinds: %d unsettled, %d scored", unsettled, scored);
+    CHECK(g_a.last.unsettled == unsettled, "the generation counted %d unsettled, its members show %d", g_a.last.unsettled, unsettled);
+    if (scored) NEAR(g_a.last.mean, sum / scored, 1e-12);
+    /* a relaxation too short for the release window is refused before anything runs */
+    d.eval.relax_max_steps = 120;
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_ERR_RANGE && strstr(err, "relax_max_steps = 120 leaves no room to settle"), "%s",
+          err);
 }
 
 static void test_workers_give_identical_runs(void)
@@ -621,11 +648,11 @@ static void test_generations_in_lockstep(void)
 
 static void test_log_row(void)
 {
-    am_evo_stats s = {3, 80, 0.125, 0.0625, 0.05, 1, 2, 1.5};
+    am_evo_stats s = {3, 80, 0.125, 0.0625, 0.05, 1, 2, 1.5, 4};
     char row[256];
     int n = am_evo_log_row(&s, row, sizeof row);
-    CHECK(n > 0 && strcmp(row, "3,80,0.125,0.0625,0.05,1,2,1.500") == 0, "row '%s'", row);
-    CHECK(strcmp(am_evo_log_header(), "generation,evaluations,best,mean,median,diverged,empty,wall_s") == 0, "header");
+    CHECK(n > 0 && strcmp(row, "3,80,0.125,0.0625,0.05,1,2,1.500,4") == 0, "row '%s'", row);
+    CHECK(strcmp(am_evo_log_header(), "generation,evaluations,best,mean,median,diverged,empty,wall_s,unsettled") == 0, "header");
 }
 
 int main(int argc, char** argv)
@@ -636,6 +663,7 @@ int main(int argc, char** argv)
     RUN(test_config_text_round_trip);
     RUN(test_config_bad_tokens_quoted);
     RUN(test_log_row);
+    RUN(test_unsettled_generation);
     RUN(test_crowding_rule);
     RUN(test_workers_give_identical_runs);
     RUN(test_checkpoint_resume_equals_uninterrupted);

@@ -45,10 +45,37 @@ static int count_id(const am_lattice* l, int id)
     return n;
 }
 
+/* the calibration bars: N x 3 x 3, the x < N/2 half of the active material, the rest passive
+ * (halfbar) or of the material actuated half a period later (antibar); a bar needs N >= 2 */
+static void test_bars(void)
+{
+    char err[AM_ERR_MAX] = "";
+    CHECK(am_scene_build(&lat_a, "halfbar:6", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(lat_a.nx == 6 && lat_a.ny == 3 && lat_a.nz == 3 && am_lattice_count(&lat_a) == 54, "halfbar:6 is %d x %d x %d, %d voxels",
+          lat_a.nx, lat_a.ny, lat_a.nz, am_lattice_count(&lat_a));
+    const int active = am_palette_find(&lat_a.palette, "active") + 1, passive = am_palette_find(&lat_a.palette, "passive") + 1;
+    const int a180 = am_palette_find(&lat_a.palette, "active180") + 1;
+    int bad = 0;
+    for (int z = 0; z < 3; z++)
+        for (int y = 0; y < 3; y++)
+            for (int x = 0; x < 6; x++) bad += lat_a.cell[am_lattice_index(&lat_a, x, y, z)] != (x < 3 ? active : passive);
+    CHECK(bad == 0, "halfbar:6: %d cells of the wrong material", bad);
+    CHECK(am_scene_build(&lat_a, "antibar:6", err, sizeof err) == AM_OK, "%s", err);
+    bad = 0;
+    for (int z = 0; z < 3; z++)
+        for (int y = 0; y < 3; y++)
+            for (int x = 0; x < 6; x++) bad += lat_a.cell[am_lattice_index(&lat_a, x, y, z)] != (x < 3 ? active : a180);
+    CHECK(bad == 0, "antibar:6: %d cells of the wrong material", bad);
+    NEAR(lat_a.palette.mat[a180 - 1].phase, 3.14159265358979, 1e-6);
+    CHECK(am_scene_build(&lat_a, "halfbar:1", err, sizeof err) == AM_ERR_ARG && strcmp(err, "scene 'halfbar:1': a bar needs N >= 2") == 0,
+          "%s", err);
+}
+
 static void test_scenes_round_trip(void)
 {
     static const char* const scenes[] = {"cube:1", "cube:2", "cube:5", "cube:20", "sphere:1", "sphere:7", "sphere:20",
-                                         "cantilever:2", "cantilever:10", "cantilever:20", "chain:1", "chain:3", "chain:20"};
+                                         "cantilever:2", "cantilever:10", "cantilever:20", "chain:1", "chain:3", "chain:20",
+                                         "halfbar:2", "halfbar:6", "antibar:6", "antibar:20"};
     char err[AM_ERR_MAX] = "";
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         if (atoi(strchr(scenes[i], ':') + 1) > AM_MAX_DIM) continue; /* the board profile */
@@ -508,6 +535,7 @@ static void test_bad_tokens_quoted(void)
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
+    RUN(test_bars);
     RUN(test_scenes_round_trip);
     RUN(test_lattice_equal_sees_differences);
     RUN(test_scene_facts);

@@ -786,6 +786,9 @@ static void test_coulomb_bound(void)
     bar_half_actuated((double)am_default_material().mu_static, (double)am_default_material().mu_kinetic);
     am_env env = am_default_env();
     env.collisions = 0;
+    /* no internal damping: its correction (docs/physics.md, Damping) damps the step's increments
+     * after the floor, so with it the two steps below would differ by more than the floor's impulse */
+    env.zeta_internal_scale = AM_P(0);
     if (!build(&env)) return;
     env.floor = 0;
     CHECK(am_model_build(&g_m_nofloor, &g_lat, &env, g_err, (int)sizeof g_err) == AM_OK, "%s", g_err);

@@ -126,6 +126,55 @@ static void test_fitness_modes(void)
     CHECK(h.fitness < 1e-9, "a passive cube moved %g m", h.fitness);
 }
 
+/* a body that does not settle within the relaxation has no score (docs/evolve.md): fitness -1,
+ * its travel measured all the same; the same body given room settles and scores its travel */
+static void test_unsettled_no_score(void)
+{
+    build("sphere:6");
+    am_eval_def def = am_default_eval();
+    def.cycles = 2;
+    def.relax_max_steps = 300; /* less than the release window: it cannot settle */
+    am_result r;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(!r.settled && !r.diverged && r.relax_steps == 300, "settled %d diverged %d after %ld steps", r.settled, r.diverged,
+          r.relax_steps);
+    CHECK(r.fitness == -1.0, "an unsettled body scored %g", r.fitness);
+    NEAR(r.travel, sqrt(r.dx * r.dx + r.dy * r.dy), 0);
+    CHECK(r.travel > 1e-5, "its travel is still measured: %g m", r.travel);
+    def.relax_max_steps = am_default_eval().relax_max_steps;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(r.settled && r.fitness == r.travel && r.fitness > 0, "given room: settled %d, fitness %g, travel %g", r.settled, r.fitness,
+          r.travel);
+}
+
+/* the relaxation's step counts are steps of the default step: at a third of it they are three
+ * times as many, the same time in seconds; the period in seconds is held the same way */
+static void test_steps_in_seconds(void)
+{
+    char err[AM_ERR_MAX];
+    CHECK(am_scene_build(&g_lat, "halfbar:6", err, sizeof err) == AM_OK, "%s", err);
+    am_env env = am_default_env();
+    am_eval_def def = am_default_eval();
+    def.cycles = 1;
+    def.relax_max_steps = 1000; /* too short to settle: the count is what it ran */
+    def.release_steps = 2000;
+    am_result a, b;
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    am_evaluate(&g_m, &g_s, &def, &a);
+    CHECK(am_steps_at(&g_m, &g_s, 1000) == 1000 && a.relax_steps == 1000, "at the default step: %ld relaxation steps", a.relax_steps);
+    const double period = a.period_steps * a.dt;
+    env.dt_frac = AM_P(0.3);
+    env.period_s = (am_param)period;
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    am_evaluate(&g_m, &g_s, &def, &b);
+    CHECK(b.relax_steps == 3000, "at 0.3 dt_rec: %ld relaxation steps, want 3000", b.relax_steps);
+    CHECK(b.period_steps == 1500 && b.move_steps == 1500, "at 0.3 dt_rec: period %d steps, movement %ld", b.period_steps, b.move_steps);
+    NEAR(b.period_steps * b.dt, period, 1e-6 * period);
+    /* a period in seconds too long for 10^7 steps is refused with the numbers */
+    env.period_s = AM_P(1e4);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "period_s = 10000 s is"), "%s", err);
+}
+
 /* bad models are statuses with messages, never crashes */
 static void test_model_errors(void)
 {
@@ -321,6 +370,8 @@ int main(int argc, char** argv)
     RUN(test_recording);
     RUN(test_recording_sink);
     RUN(test_fitness_modes);
+    RUN(test_unsettled_no_score);
+    RUN(test_steps_in_seconds);
     RUN(test_model_errors);
     RUN(test_link_layout);
     RUN(test_dt_search);

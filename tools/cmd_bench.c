@@ -258,6 +258,7 @@ static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--dt-frac F] [--repeat N]\n"
     "       amorph bench --evolve [--evals N] [--threads T]\n"
     "       amorph bench --kernels\n"
+    "       amorph bench --convergence [--fine F] [--random N] [--threads T] [ROBOT...]\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
     "Each scene's line: the time step (dt_frac of the analytic limit, dt_s), voxel steps per second\n"
@@ -269,7 +270,13 @@ static const char bench_help[] =
     "map's own cost per item (map_us_per_item: maps of 20 items that only hand back a result). Under\n"
     "mpirun (the MPI build), every rank runs T threads: tools/bench_mpi.sh sets ranks against threads.\n"
     "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
-    "vectorisable loops" TOOL_DESKTOP_ONLY ".\n";
+    "vectorisable loops" TOOL_DESKTOP_ONLY ".\n"
+    "--convergence: does the default step give the small-step answer? The calibration bars\n"
+    "(halfbar:6, antibar:6), N random bodies of each representation (10) and every ROBOT (a run\n"
+    "folder: its best robot in its own settings) at their own step and at F dt_rec (0.1), the period\n"
+    "held in seconds and the relaxation scaled; then the margins at the default step (friction\n"
+    "-10% and +10%, internal damping 0.5 and 1.0, 1.2 times the step). A table, a summary line and\n"
+    "pass or FAIL (docs/physics.md, Time step; make convergence)" TOOL_DESKTOP_ONLY ".\n";
 
 int cmd_bench(tool_ctx* c, int argc, char** argv)
 {
@@ -298,6 +305,8 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--dt-frac")) {
             if (!tool_parse_real(v, 1e-6, 100, &dt_frac)) return tool_usage_error("bench: --dt-frac needs a number in [1e-6, 100]");
             i++;
+        } else if (!strcmp(a, "--convergence")) {
+            return bench_convergence(c, argc, argv, i + 1);
         } else if (!strcmp(a, "--kernels")) {
             kernels = 1;
         } else if (!strcmp(a, "--evolve")) {

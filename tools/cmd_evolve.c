@@ -460,6 +460,8 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
             am_evo_write(&d, 1, &out.text, err, sizeof err);
             return tool_out_close(&out, 1);
         }
+        char err[AM_ERR_MAX];
+        if (am_evo_check_run(&d, err, sizeof err) != AM_OK) return tool_usage_error("evolve: %s", err);
     } else if (o.print_config) return tool_usage_error("evolve: --print-config and --resume: print a run's settings with cat DIR/config.txt");
     char dir[EXP_DIR_MAX];
     if (strlen(o.resume ? o.resume : o.out ? o.out : "") >= sizeof dir) return tool_usage_error("evolve: folder name too long");

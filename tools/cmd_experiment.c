@@ -149,7 +149,7 @@ static TOOL_NOINLINE int experiment_open(am_evo* e, const am_evo_def* base, cons
     am_evo_def d = *base;
     if (apply_settings(&d, v->settings)) return 2;
     d.seed = base->seed + (uint64_t)(k - 1);
-    if (am_evo_check(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", v->name, err);
+    if (am_evo_check_run(&d, err, sizeof err) != AM_OK) return tool_usage_error("experiment %s: %s", v->name, err);
     if (snprintf(rdir, EXP_RUN_DIR_MAX, "%s/%s-%ld", dir, v->name, k) >= EXP_RUN_DIR_MAX)
         return tool_usage_error("experiment: folder name too long");
     snprintf(label, 96, "%s-%ld", v->name, k);

@@ -323,7 +323,7 @@ static const char render_help[] =
     "the initial shape, the settled shape, then snapshots of the motion, with the centre of mass\n"
     "path and the direction of travel. ROBOT is a lattice, genome or VXA file or a run folder (its\n"
     "best robot in the run's environment); NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
-    "chain:N).\n"
+    "chain:N, halfbar:N, antibar:N).\n"
     "  --out FILE.png     the picture (written atomically); required\n"
     "  --frames N         pictures side by side, 3..16 (6: initial, settled, 4 of the motion)\n"
     "  --width W          pixels, 200..4096 (1600)\n"

@@ -22,7 +22,7 @@ int cmd_repro(tool_ctx* c, int argc, char** argv)
     memset(&o, 0, sizeof o);
     static const char* const ref[][2] = {
         {"representation", "gmx"}, {"workspace", "6"}, {"population", "8"}, {"evaluations", "24"}, {"cycles", "1"},
-        {"period_steps", "100"}, {"relax_min_steps", "50"}, {"relax_max_steps", "150"}, {"gmx_points", "12"},
+        {"period_steps", "100"}, {"relax_min_steps", "50"}, {"relax_max_steps", "400"}, {"release_steps", "100"}, {"gmx_points", "12"},
         {"seed", "2024"}, {"threads", "1"},
     };
     for (size_t k = 0; k < sizeof ref / sizeof ref[0]; k++) {

@@ -10,7 +10,7 @@ static const char sim_help[] =
     "Simulates one robot (relaxation, then actuation cycles) and prints its fitness and diagnostics.\n"
     "FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, with its environment) or a\n"
     "run folder of amorph evolve (its best robot, in the run's environment, evaluation and materials);\n"
-    "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N), in the seed's environment.\n"
+    "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N), in the seed's environment.\n"
     TOOL_ROBOT_HELP
     "  --json             one JSON object instead of name = value lines\n"
     "  --trajectory FILE  writes the trajectory: a row every K steps and at the ends of the relaxation\n"
@@ -19,10 +19,14 @@ static const char sim_help[] =
     "                     FILE ends in .jsonl\n"
     "  --every K          a trajectory row every K steps, 1..1000000000 (period_steps / 10: 10 a cycle)\n"
     "  --trajectory-format csv|jsonl   the trajectory's format, whatever FILE's name\n"
-    "A run that diverged or did not settle prints one warning line on stderr; the exit status is\n"
-    "still 0 (it is a result). Besides the fitness: residual_speed (m/s, the largest RMS voxel speed\n"
-    "through the release window, or the last one when the relaxation ran out first) and\n"
-    "kinetic_resets (the relaxation's kinetic damping stops; docs/physics.md, Evaluation).\n";
+    "A run that diverged or did not settle has no score (fitness -1; travel is the displacement either\n"
+    "way) and prints one warning line on stderr; the exit status is still 0 (it is a result).\n"
+    "Besides the fitness: residual_speed (m/s, the largest RMS voxel speed through the release\n"
+    "window, or the last one when the relaxation ran out first), kinetic_resets (the relaxation's\n"
+    "kinetic damping stops; docs/physics.md, Evaluation), period_steps and period_s (the actuation\n"
+    "period). A convergence study holds the physics in seconds: --dt_frac F --period_s P (the\n"
+    "relaxation's step counts are steps of the default step and scale by themselves); --dt_frac alone\n"
+    "keeps period_steps, and a note on stderr says the period in seconds changed.\n";
 
 /* the result and the gait of the movement segment (docs/results.md, Gaits), on the standard output */
 static int print_result(const char* robot, const am_lattice* lat, const am_result* r, double wall, const am_gait* g, int fitness, int json)
@@ -46,6 +50,7 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_begin(q, &out.text, json);
     tool_rec_str(q, "robot", robot);
     tool_rec_num(q, "fitness", r->fitness);
+    tool_rec_num(q, "travel", r->travel);
     tool_rec_num(q, "dx", r->dx);
     tool_rec_num(q, "dy", r->dy);
     tool_rec_num(q, "dz", r->dz);
@@ -54,6 +59,8 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_nums(q, "material_voxels", used, nused);
     tool_rec_int(q, "links", r->links);
     tool_rec_num(q, "dt", r->dt);
+    tool_rec_int(q, "period_steps", r->period_steps);
+    tool_rec_num(q, "period_s", r->period_steps * r->dt);
     tool_rec_int(q, "steps", r->steps);
     tool_rec_int(q, "relax_steps", r->relax_steps);
     tool_rec_int(q, "move_steps", r->move_steps);
@@ -170,7 +177,8 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
                 at <= res.relax_steps ? "relaxation" : "actuation", res.fitness);
     } else if (!res.settled) {
         fprintf(stderr, "amorph: sim: warning: %s did not settle within %ld relaxation steps (residual speed %.2e m/s, "
-                "release window %ld steps)\n", file, res.relax_steps, res.residual_speed, def.release_steps);
+                "release window %ld steps): no score (fitness -1; it travelled %.4g m)\n", file, res.relax_steps, res.residual_speed,
+                am_steps_at(&c->work[0].model, &c->work[0].state, def.release_steps), res.travel);
     }
     return 0;
 }

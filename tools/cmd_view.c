@@ -212,7 +212,7 @@ static const char view_help[] =
     "starts, the relaxation skipped (its check box, or #relax=1, shows it). URL hash parameters pick\n"
     "a moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
     "genome or VXA file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
-    "chain:N).\n"
+    "chain:N, halfbar:N, antibar:N).\n"
     "  --out FILE.html    the page (written atomically); required\n"
     "  --frames N         frames recorded, 2..1000 (200; fewer for big bodies)\n"
     "  --title TEXT       the page's heading (the robot's name)\n"

@@ -145,7 +145,7 @@ for name in cortex-m3 cortex-m4 rv32; do
 done
 # byte order: a run checkpointed by the x86-64 build resumes on the big-endian s390x build (and on
 # 32-bit i686) to the run the x86-64 build makes uninterrupted: same run hash, same best genome
-SMALL="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 150 --relax_min_steps 50 --quiet --no-pictures --threads 1"
+SMALL="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 --quiet --no-pictures --threads 1"
 native=$(build_of "BUILD=build/repro/gcc-O3-native-$REAL")/amorph
 cross_resume() {
     name=$1 runner=$2

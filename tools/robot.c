@@ -70,7 +70,7 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
     const char* arg = argv[*i];
     const char* v = *i + 1 < argc ? argv[*i + 1] : NULL;
     if (!strcmp(arg, "--scene")) {
-        if (!v) return tool_usage_error("%s: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N)", cmd);
+        if (!v) return tool_usage_error("%s: --scene needs a name (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N)", cmd);
         if (a->name) return two_robots(cmd, a->name, v);
         a->name = v, a->is_scene = 1, (*i)++;
         return 1;
@@ -249,7 +249,10 @@ static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_
         const char* key = a->key[k];
         am_status st = am_evo_set(&d, key, a->val[k], err, errsz);
         if (st != AM_OK) return st;
-        if (!strcmp(key, "period_steps")) *period_set = 1;
+        if (!strcmp(key, "period_steps")) {
+            *period_set = 1;
+            d.env.period_s = AM_P(0); /* the period in steps, as this setting says (a later period_s wins) */
+        }
         if (!strcmp(key, "relax_max_steps") && d.eval.relax_min_steps > d.eval.relax_max_steps)
             d.eval.relax_min_steps = d.eval.relax_max_steps;
         if (am_evo_key_group(key) != AM_KEYS_MATERIALS) continue;
@@ -361,21 +364,37 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #endif
     else st = load_file(c, a->name, a->vxd, lat, r, &period_s, err, errsz);
     if (st != AM_OK) return st;
+    if (period_s > 0) r->env.period_s = AM_PARAM_FROM_DOUBLE(period_s); /* a VXA file's period, in seconds */
+    const am_env own = r->env; /* the robot's own, before the settings */
     int period_set = 0;
     st = apply_settings(a, lat, r, &period_set, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
-    if (period_set) period_s = 0;
-    if (a->dt_s <= 0 && period_s <= 0) return AM_OK;
+    const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
+    if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
     double dt;
     st = tool_robot_dt(c, lat, &r->env, &dt, err, errsz);
     if (st != AM_OK) return st;
+    /* dt_rec, of the model just built, does not depend on dt_frac */
+    const am_model* m = &c->work[0].model;
+    const double dt_rec = am_to_si(m, m->dt_rec, AM_DIM_TIME);
     if (a->dt_s > 0) {
-        /* dt_rec, of the model just built, does not depend on dt_frac */
-        const am_model* m = &c->work[0].model;
-        r->env.dt_frac = AM_PARAM_FROM_DOUBLE(a->dt_s / am_to_si(m, m->dt_rec, AM_DIM_TIME));
+        r->env.dt_frac = AM_PARAM_FROM_DOUBLE(a->dt_s / dt_rec);
         dt = am_dt_si(m, r->env.dt_frac);
     }
-    if (period_s > 0) r->env.period_steps = am_vxa_period_steps(period_s, dt);
+    /* a period in seconds becomes steps of this step (as am_model_build makes it), so that what the
+     * commands count in steps (frames, trajectory rows) follows it */
+    if (r->env.period_s > AM_P(0)) {
+        if (!((double)r->env.period_s / dt <= 1e7))
+            return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (at most 10^7)", (double)r->env.period_s,
+                           (double)r->env.period_s / dt, dt);
+        r->env.period_steps = am_period_steps(m, &r->env, am_from_si(m, dt, AM_DIM_TIME));
+    }
+    /* a step of another length with the period held in steps changes the experiment: say so */
+    const double own_s = own.period_s > AM_P(0) ? (double)own.period_s : own.period_steps * (double)own.dt_frac * dt_rec;
+    const double now_s = r->env.period_steps * dt;
+    if (dt_changed && !(fabs(now_s - own_s) <= 0.01 * own_s))
+        fprintf(stderr, "amorph: note: at this step the actuation period is %d steps = %.4g s, not the robot's own %.4g s "
+                        "(--period_s %.4g holds it in seconds)\n", r->env.period_steps, now_s, own_s, own_s);
     return AM_OK;
 }

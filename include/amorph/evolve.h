@@ -51,6 +51,10 @@ am_evo_def am_default_evo(void);
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
 /* checks the whole definition (relations between keys); messages name the key */
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
+/* am_evo_check, and that the definition can evolve: a relaxation long enough for a body to settle
+ * (relax_max_steps at least release_steps + 50), as a run needs and a configuration to print does
+ * not (am_evo_init checks it) */
+am_status am_evo_check_run(const am_evo_def* d, char* err, int errsz);
 /* 1 when key is a configuration key */
 int am_evo_is_key(const char* key);
 /* what a key sets: the robot's environment (gravity, period_steps, ...), its evaluation (cycles,
@@ -88,7 +92,7 @@ void am_evo_palette_into(const am_evo_def* d, am_palette* out);
 /* one evaluated individual */
 typedef struct am_evo_ind {
     am_genome genome;
-    double fitness;           /* m; 0 for an empty body; meaningless when diverged */
+    double fitness;           /* m; 0 for an empty body; -1 (no score) when diverged or unsettled */
     int voxels;               /* voxels of the expressed body */
     int diverged;             /* 1: the simulation diverged (always loses) */
     int empty;                /* 1: the body was empty (fitness 0, not simulated) */
@@ -136,10 +140,11 @@ typedef struct am_evo_hooks {
 typedef struct am_evo_stats {
     long generation;          /* 0: the initial population */
     long evaluations;         /* evaluations done so far */
-    double best, mean, median; /* of the population's fitness (diverged members left out) */
+    double best, mean, median; /* of the population's fitness (diverged and unsettled members left out) */
     int diverged;             /* diverged evaluations in this generation */
     int empty;                /* empty bodies in this generation */
     double wall_s;            /* wall time of this generation, s */
+    int unsettled;            /* evaluations whose body did not settle (no score: docs/evolve.md) */
 } am_evo_stats;
 
 /* a run: population, offspring, the random stream and counters. Large: declare it static.
@@ -174,7 +179,7 @@ typedef struct am_evo {
     am_rng gen_saved;                         /* the stream before the generation (a cancel restores it) */
     double gen_t0;                            /* am_port_now() at its start */
     long gen_steps, gen_voxel_steps;          /* its time steps so far */
-    int gen_diverged, gen_empty;              /* its diverged and empty evaluations so far */
+    int gen_diverged, gen_empty, gen_unsettled; /* its diverged, empty and unsettled evaluations so far */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */
@@ -322,12 +327,13 @@ int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
  * one call per line, end. The header is the first line that is not blank; the reader finds its
  * columns there by name, so a log with its columns in another order, or with columns it does not
  * know, still reads. generation, evaluations and best are required; mean, median, diverged,
- * empty and wall_s fill their fields when the header has them, else they are left NAN (mean,
- * median, wall_s) or -1 (diverged, empty). Blank lines are skipped and a CR before the newline is
- * dropped. Messages are "fname:line: problem": a header without a required column (or naming one
- * twice), a row without as many fields as the header, a field that is not a finite number (or, for
- * generation, evaluations, diverged and empty, not a whole number from 0). */
-#define AM_EVO_LOG_COLUMNS 8          /* the columns of am_evo_log_header */
+ * empty, wall_s and unsettled fill their fields when the header has them, else they are left NAN
+ * (mean, median, wall_s) or -1 (diverged, empty, unsettled). Blank lines are skipped and a CR before
+ * the newline is dropped. Messages are "fname:line: problem": a header without a required column
+ * (or naming one twice), a row without as many fields as the header, a field that is not a finite
+ * number (or, for generation, evaluations, diverged, empty and unsettled, not a whole number from
+ * 0). */
+#define AM_EVO_LOG_COLUMNS 9          /* the columns of am_evo_log_header */
 typedef struct am_evo_log_reader {
     const char* fname;                /* for messages; must stay valid while reading */
     int line;                         /* lines read */

@@ -31,6 +31,9 @@ typedef struct am_env {
     am_param temp_base;        /* temperature offset at rest, degrees (0) */
     am_param temp_amplitude;   /* actuation amplitude A, degrees (30) */
     int period_steps;         /* actuation period P in time steps (500); > 0 */
+    am_param period_s;         /* s: when > 0, the period in seconds instead: am_model_build makes it
+                               * period_steps of the model's step (and am_evaluate of a searched step);
+                               * 0 (the default): period_steps as given */
     am_param dt_frac;          /* time step as a fraction of the analytic dt_rec */
     am_param lift;             /* m: the body's lowest face starts this high above the floor (0) */
     am_param zeta_internal_scale; /* multiplies every material's internal damping (1) */
@@ -122,8 +125,8 @@ typedef struct am_model {
     am_real b1[AM_LC_CAP];      /* shear 12EI/L^3, N/m */
     am_real b2[AM_LC_CAP];      /* coupling 6EI/L^2, N */
     am_real b3[AM_LC_CAP];      /* bending 2EI/L, N m */
-    am_real c_t[AM_LC_CAP];     /* internal translational damping, N s/m */
-    am_real c_r[AM_LC_CAP];     /* internal rotational damping, N m s */
+    am_real c_t[AM_LC_CAP];     /* internal damping on the midpoint's relative velocity, N s/m (the
+                                 * relative spin's is c_t L^2 / 12, N m s: docs/physics.md, Damping) */
     /* per material: actuation */
     am_real mat_cte[AM_MAX_MATERIALS];
     am_real mat_phase[AM_MAX_MATERIALS];
@@ -208,6 +211,8 @@ typedef struct am_record {
 /* the mutable state of one simulation */
 typedef struct am_state {
     long step;               /* steps taken */
+    int period_steps;        /* the actuation period in steps (the model's env.period_steps, or
+                              * env.period_s at this state's dt; am_state_reset, am_evaluate) */
     am_real t;               /* simulated time, s */
     am_real dt;              /* time step, s */
     int actuate;             /* 1: temperatures follow the actuation; 0: held at temp_base */
@@ -229,6 +234,9 @@ typedef struct am_state {
     am_real w[3][AM_MAX_VOXELS];  /* angular velocity h/I */
 #endif
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
+#if !defined(AM_COMPACT)
+    am_real s_rate[AM_MAX_VOXELS]; /* its rate of change, 1/s (a board reads mat_scale_rate) */
+#endif
     am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
     am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
     am_real fc[3][AM_MAX_VOXELS];   /* scratch: self-collision force, then the step's total force, N */
@@ -238,21 +246,24 @@ typedef struct am_state {
      * link instead (entry l) */
     am_real pair_rest[AM_REST_CAP];     /* current rest length, m */
     am_real pair_inv_rest[AM_REST_CAP]; /* its inverse, 1/m */
-    /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t and c_r,
-     * each capped so that one step removes at most AM_DAMP_CAP of its link's two-body relative motion
-     * (docs/physics.md, Damping); recomputed when dt or glob_scale changes */
-    am_real damp_t[AM_LC_CAP], damp_r[AM_LC_CAP];
+    /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t (scaled
+     * down only past the limit of docs/physics.md, Damping), L^2 / 12 (c_r = c_t L^2 / 12) and the
+     * scale alpha dt^2 of the damping correction; recomputed when dt or glob_scale changes */
+    am_real damp_t[AM_LC_CAP], damp_kr;
+    am_real damp_scale;                  /* alpha dt^2, s^2 */
+    int damp_on;                         /* 1: some link is damped (the correction runs) */
+    int damp_limited;                    /* 1: the damping is scaled down at this dt (docs/physics.md) */
     am_real glob_t[AM_VC_CAP], glob_r[AM_VC_CAP]; /* the global damping likewise, per voxel constant */
     am_real glob_scale;                  /* multiplies the global damping (1; 0 while the evaluation
                                           * settles a body with kinetic damping) */
     am_real damp_dt, glob_for_scale;     /* the dt and scale they were computed for (0: not yet) */
     /* per link (nl + 1; index nl stays zero) */
     am_flag large[AM_MAX_LINKS + 1];     /* 1 while the large-angle treatment is on */
+    am_real mc[3][AM_MAX_VOXELS];        /* scratch: the step's total moment, N m */
 #if defined(AM_COMPACT)
     /* the board profile keeps no per-link results: the step adds each link's force and moments
      * to its two voxels' totals (fc and mc) as it goes, in the order in which the desktop's voxels
      * gather them, so that every sum is the same (sim_step.c) */
-    am_real mc[3][AM_MAX_VOXELS];        /* scratch: the step's total moment, N m */
 #else
     am_real fn[3][AM_MAX_LINKS + 1];     /* force on the negative voxel, world, N */
     am_real mn[3][AM_MAX_LINKS + 1];     /* moment on the negative voxel, world, N m */
@@ -281,10 +292,16 @@ typedef struct am_state {
     am_index bucket_end[AM_COLL_BUCKETS]; /* broad-phase scratch: the surface voxels sorted by */
     am_index bucket_item[AM_MAX_VOXELS];  /* bucket, bucket b at [b ? end[b-1] : 0, end[b]) */
     am_real mat_scale[AM_MAX_MATERIALS]; /* current linear scale per material */
+    am_real mat_scale_rate[AM_MAX_MATERIALS]; /* its rate of change, 1/s */
+    /* the rounding remainder of x: what the step's v dt lost when added to the displacement, carried
+     * to the next step (compensated summation; in the fixed-point build the Q48 - Q24 part), so
+     * that increments below the displacement's resolution accumulate instead of rounding away
+     * (docs/physics.md, Bodies) */
+    am_real x_rem[3][AM_MAX_VOXELS];
 #if defined(AM_REAL_FIXED_POINT)
-    /* the rounding remainders of x, p and h (Q48 - Q24 parts, error diffusion): a step adds
-     * F dt and v dt exactly, so no increment below the resolution is lost (docs/fixed.md) */
-    am_real x_rem[3][AM_MAX_VOXELS], p_rem[3][AM_MAX_VOXELS], h_rem[3][AM_MAX_VOXELS];
+    /* the rounding remainders of p and h (Q48 - Q24 parts, error diffusion): a step adds F dt
+     * exactly, so no increment below the resolution is lost (docs/fixed.md) */
+    am_real p_rem[3][AM_MAX_VOXELS], h_rem[3][AM_MAX_VOXELS];
 #endif
     int scales_valid;                    /* 0 until voxel scales and rest lengths follow mat_scale */
 } am_state;
@@ -327,6 +344,8 @@ typedef struct am_eval_def {
     int cycles;              /* actuation cycles of the movement segment (10) */
     int fitness;             /* AM_FIT_HORIZONTAL (default), AM_FIT_PLUS_X or AM_FIT_3D */
     int dt_search;           /* 1: the seed's empirical time step search instead of env.dt_frac */
+    /* the relaxation's step counts are steps of the default step, AM_REF_DT_FRAC dt_rec: at another
+     * step (env.dt_frac, dt_search) am_evaluate scales them to last as long in seconds */
     long relax_max_steps;    /* relaxation ends here at the latest (40000) */
     long relax_min_steps;    /* and not before this (200) */
     am_param settle_speed;   /* m/s: relaxed when the RMS voxel speed stays below this (1e-4) */
@@ -338,11 +357,24 @@ typedef struct am_eval_def {
 
 am_eval_def am_default_eval(void);
 
+/* the step the relaxation's step counts refer to, as a fraction of dt_rec: the default dt_frac */
+#define AM_REF_DT_FRAC 0.9
+/* n steps of the default step as steps of s's step: round(n AM_REF_DT_FRAC dt_rec / dt), at least 1
+ * when n > 0 (n itself at the default step) */
+long am_steps_at(const am_model* m, const am_state* s, long n);
+/* the actuation period in steps of a step dt (model units) for env's period: period_steps, or
+ * period_s / dt rounded, 1 to 10^7 */
+int am_period_steps(const am_model* m, const am_env* env, am_real dt);
+
 typedef struct am_result {
-    double fitness;          /* m; -1 when diverged or empty (worst) */
+    double fitness;          /* m; -1 (worst) when the body diverged, did not settle or is empty: the
+                              * score; travel holds the displacement measured either way */
+    double travel;           /* m: the centre of mass displacement measured as the fitness is (0 when
+                              * diverged) */
     double dx, dy, dz;       /* centre of mass displacement in the movement segment, m */
     int voxels, links;
     double dt;               /* s */
+    int period_steps;        /* the actuation period, steps */
     long relax_steps, move_steps, steps;
     int diverged;            /* 1 when the run diverged */
     int settled;             /* 1 when the body came to rest: calm through the release window */
