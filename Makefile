@@ -169,7 +169,7 @@ test: all check-alloc check-fma check-tests
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
 # the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
-# util_math.c with the actuation's sin and cbrt, and am_sim_scale of sim_model.c) cross-compiled
+# util_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of sim_model.c) cross-compiled
 # for a Cortex-M3, which has no FPU, must not call one soft-float helper (__aeabi_f*, __aeabi_d*,
 # libm). Skipped without arm-none-eabi-gcc.
 FIXED_HOT := src/sim_step.c src/sim_collide.c src/util_math.c
@@ -185,9 +185,10 @@ check-fixed:
 	    if [ -n "$$calls" ]; then echo "check-fixed: $$f calls floating point:$$calls"; bad=1; fi; \
 	    echo "check-fixed: $$f calls:$$(arm-none-eabi-nm -u $$o | awk '{printf " %s", $$2}')"; done; \
 	$(M3CC) $(M3FLAGS) -c src/sim_model.c -o $(BUILD)/m3/sim_model.o || exit 1; \
-	scale=$$(arm-none-eabi-objdump -d --disassemble=am_sim_scale $(BUILD)/m3/sim_model.o | awk '/\tbl?\t/ {printf " %s", $$NF}'); \
-	case "$$scale" in *aeabi_[fd]*|*aeabi_[iu]*2[fd]*) echo "check-fixed: am_sim_scale calls floating point:$$scale"; bad=1;; esac; \
-	echo "check-fixed: am_sim_scale (sim_model.c, per material per step) calls:$$scale"; \
+	for fn in am_sim_scale am_sim_scale_rate; do \
+	    scale=$$(arm-none-eabi-objdump -d --disassemble=$$fn $(BUILD)/m3/sim_model.o | awk '/\tbl?\t/ {printf " %s", $$NF}'); \
+	    case "$$scale" in *aeabi_[fd]*|*aeabi_[iu]*2[fd]*) echo "check-fixed: $$fn calls floating point:$$scale"; bad=1;; esac; \
+	    echo "check-fixed: $$fn (sim_model.c, per material per step) calls:$$scale"; done; \
 	if [ $$bad -ne 0 ]; then echo "check-fixed: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-fixed: no floating-point call in $(FIXED_HOT) (Cortex-M3, REAL=fixed, PROFILE=board)"
 

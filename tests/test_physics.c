@@ -571,10 +571,11 @@ static void momentum_case(int damped)
     CHECK(lerr <= 1e-5 * norm3(lin0), "linear momentum error %.3g of |P0|", lerr / norm3(lin0));
     /* undamped: 1e-4; damped: 3e-4 (float rounding of the damping forces: 3e-5 measured, 3e-14 in double) */
 #if defined(AM_REAL_FIXED_POINT)
-    /* fixed point: damped 1e-3 (6.9e-4 measured at the default step, 0.9 dt_rec): the damping
-     * moments are rounded to Q24 in the link frame and rotated back, which does not cancel exactly
-     * between the two ends */
-    double atol = damped ? 1e-3 : 1e-4;
+    /* fixed point: damped 5e-3 (2.6e-3 measured over 10000 steps at the default step, 1.1e-3 over
+     * 2000; 3.2e-4 over 2000 without the damping correction): the damping correction works on the
+     * step's velocity increments, F alpha dt^2 / m, a few hundred ulp of Q24 here, so its impulses and
+     * their moments carry relative roundings of a percent, every step */
+    double atol = damped ? 5e-3 : 1e-4;
 #else
     double atol = damped ? 3e-4 : 1e-4;
 #endif
