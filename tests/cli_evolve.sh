@@ -53,11 +53,12 @@ best_row=$(tail -n +2 "$EV" | awk -F, '$15 == 0 && (!n++ || $10 > b) { b = $10; 
 if [ -n "$best_row" ] && [ "$best_row" = "$(sumval "$TMPD/a" best_state_hash)" ]; then ok
 else ko "evals.csv best row's hash '$best_row', summary $(sumval "$TMPD/a" best_state_hash)"; fi
 # dx, dy give the fitness (horizontal travel) of a body that settled; one that did not has no score
-# (-1); and the placed rows of the last generation with those of earlier ones are the final
-# population (as many as the population)
+# (-1); an empty body scores 0; and the placed rows of the last generation with those of earlier
+# ones are the final population (as many as the population)
 if tail -n +2 "$EV" | awk -F, '$15 == 0 && $14 == 1 { d = sqrt($11 * $11 + $12 * $12) - $10; if (d > 1e-9 || d < -1e-9) bad = 1 }
-        $15 == 0 && $14 == 0 && $10 != -1 { bad = 1 } $15 == 0 && $14 == 1 { settled++ } END { exit bad || !settled }'; then ok
-else ko "evals.csv fitness is not the horizontal travel dx, dy (or -1 when not settled)"; fi
+        $15 == 0 && $16 == 0 && $14 == 0 && $10 != -1 { bad = 1 } $16 == 1 && $10 != 0 { bad = 1 }
+        $15 == 0 && $14 == 1 { settled++ } END { exit bad || !settled }'; then ok
+else ko "evals.csv fitness is not the horizontal travel dx, dy (or -1 when not settled, 0 when empty)"; fi
 # summary.json: one JSON line with the summary's values; --json prints the same as the last line
 SJ="$TMPD/a/summary.json"
 if [ "$(wc -l <"$SJ")" -eq 1 ] && grep -q "^{\"run\": \"$TMPD/a\", \"representation\": \"gmx\", \"evaluations\": 36, " "$SJ" &&
