@@ -4,10 +4,10 @@
 # stopped and started again at will.
 #   sh results/run.sh AMORPH DIR STAGE
 # AMORPH: the amorph binary; DIR: where the run folders go (DIR/representations/dct-1 ...);
-# STAGE: fig6-2000 (the nine Figure 6 runs to 2,000 evaluations, interleaved so every
-# representation has runs early), others-2000 (one run of each other experiment's variants that
-# differ from the seed's settings), fig6-N (the nine runs extended to N evaluations; the seed's
-# were 20,000). Taken in rounds (fig6-3000, fig6-4000, ...), all nine reach a count before any
+# STAGE: fig6-N (the nine Figure 6 runs to N evaluations, interleaved so every representation
+# has runs early; the seed's were 20,000), others-2000 (one run of each other experiment's
+# variants that differ from the seed's settings). Taken in rounds (fig6-500, fig6-1000,
+# fig6-2000, then others-2000 and fig6-3000, fig6-4000, ...), all nine reach a count before any
 # goes beyond it; a run already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
