@@ -212,12 +212,13 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
             --title "DCT, CPPN and GMX at 20^3: the runs with $1 evaluations or more"
     }
     fig6 "$min" >/dev/null 2>&1 || fig6 0 >/dev/null
-    # others.svg: the GMX runs' mean and band (amorph plot's DIR/VARIANT) and every other
-    # experiment's runs, up to the count their table compares them at
+    # others.svg: every other experiment's runs against the GMX runs' mean and band (amorph plot's
+    # DIR/VARIANT), up to the count their table compares them at; none when no other experiment has
+    # runs (the GMX runs alone are Figure 6's)
     set --
-    for g in "$DIR"/representations/gmx-*/log.csv; do [ -f "$g" ] && set -- "$DIR/representations/gmx"; break; done
     for d in three-materials dynamic friction; do [ -d "$DIR/$d" ] && set -- "$@" "$DIR/$d"; done
     if [ $# -gt 0 ]; then
+        for g in "$DIR"/representations/gmx-*/log.csv; do [ -f "$g" ] && set -- "$DIR/representations/gmx" "$@"; break; done
         "$AMORPH" plot "$@" --max-evals "$n_at" --out "$DIR/others.svg" \
             --title "the other experiments against the GMX runs (the seed's settings)" >/dev/null
     fi

@@ -68,6 +68,12 @@ FIG6_MIN_EVALS=750 sh results/report.sh "$AMORPH" "$R" --pictures >/dev/null 2>&
 check "FIG6_MIN_EVALS=750: only dct-1 in the Figure 6 plot" sh -c "grep -q 'dct, 1 run' '$R/representations/fitness.svg' && ! grep -q 'gmx' '$R/representations/fitness.svg'"
 check "the plot of the other experiments: the GMX runs as one line, and the friction run" \
     sh -c "grep -q '>gmx, 1 run<' '$R/others.svg' && grep -q '>k0.1_s5.0, 1 run<' '$R/others.svg' && ! grep -q '>dct' '$R/others.svg'"
+# with no other experiment's runs there is no plot of them (the GMX runs alone are Figure 6's)
+mkdir -p "$TMPD/res2"
+cp -R "$R/representations" "$TMPD/res2/"
+expect_ok sh results/report.sh "$AMORPH" "$TMPD/res2" --pictures
+if [ -s "$TMPD/res2/gaits.svg" ] && [ ! -e "$TMPD/res2/others.svg" ]; then ok
+else ko "a report without other experiments should draw gaits.svg and no others.svg"; fi
 # gaits.svg: a row of 30 bars per run (4 runs here), the rows named after the runs
 check "gaits.svg: $(grep -c 'class="bar"' "$R/gaits.svg") bars, want 120" [ "$(grep -c 'class="bar"' "$R/gaits.svg")" -eq 120 ]
 check "gaits.svg names the runs" sh -c "grep -q '>representations/dct-2<' '$R/gaits.svg' && grep -q '>friction/k0.1_s5.0-1<' '$R/gaits.svg'"
