@@ -169,9 +169,9 @@ test: all check-alloc check-fma check-tests
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
 # the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
-# util_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of sim_model.c) cross-compiled
-# for a Cortex-M3, which has no FPU, must not call one soft-float helper (__aeabi_f*, __aeabi_d*,
-# libm). Skipped without arm-none-eabi-gcc.
+# util_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of
+# sim_model.c) cross-compiled for a Cortex-M3, which has no FPU, must not call one soft-float
+# helper (__aeabi_f*, __aeabi_d*, libm). Skipped without arm-none-eabi-gcc.
 FIXED_HOT := src/sim_step.c src/sim_collide.c src/util_math.c
 M3CC := arm-none-eabi-gcc
 M3FLAGS := -std=c11 -pedantic-errors $(WARN) -O2 -mcpu=cortex-m3 -mthumb -ffp-contract=off -fwrapv \
