@@ -8,9 +8,10 @@
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
-# Options: ARCH= (-march, default native)  BUILD= (output folder)
+# Options: ARCH= (-march, default native)  BUILD= (output folder)  GATHER=auto|on|off
 #          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
 ARCH    ?= native
+GATHER  ?= auto
 BUILD   ?= build
 REAL    ?= float
 PROFILE ?= desktop
@@ -78,6 +79,16 @@ $(error PROFILE must be desktop or board, not '$(PROFILE)')
 endif
 
 MARCH   := $(if $(ARCH),-march=$(ARCH))
+# Vector gathers under -march=native (docs/benchmarks.md, Build flags): GATHER=auto leaves them out
+# where the CPU's microcode makes them slow (tools/gather_flags.sh; make gather-why says what it
+# decided here), off always, on never. Speed only: the results are the same bit for bit.
+ifeq ($(filter $(GATHER),auto on off),)
+$(error GATHER must be auto, on or off, not '$(GATHER)')
+endif
+GATHER_FLAGS := $(if $(and $(filter native,$(ARCH)),$(filter-out on,$(GATHER))),$(shell sh tools/gather_flags.sh '$(CC)' $(GATHER)))
+MARCH   += $(if $(GATHER_FLAGS),$(GATHER_FLAGS) -DAM_NO_GATHER)
+# make test also builds the other choice and compares its results with this build's (tests/cli_arch.sh)
+GATHER_OTHER := $(if $(GATHER_FLAGS),on,off)
 DEFS    := -DAM_REAL_$(shell echo $(REAL) | tr a-z A-Z) -DAM_PROFILE_$(shell echo $(PROFILE) | tr a-z A-Z)
 WARN    := -Wall -Wextra -Wpedantic -Werror -Wshadow -Wstrict-prototypes -Wmissing-prototypes \
            -Wvla -Wdouble-promotion -Wcast-qual -Wformat=2 -Wundef
@@ -97,7 +108,7 @@ TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h) port/common/*.h)
 
-.PHONY: all test unit bench convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all test unit bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 $(BUILD)/%.o: %.c $(HEADERS) Makefile
@@ -162,8 +173,9 @@ test: all check-alloc check-fma check-tests
 	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all check-alloc; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
 	@if command -v mpicc >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then \
 	    $(MAKE) --no-print-directory PORT=mpi BUILD=$(BUILD)/mpi all check-alloc; else echo "test: no mpicc or mpirun: MPI build skipped"; fi
+	@$(if $(filter native,$(ARCH)),$(MAKE) --no-print-directory BUILD=$(BUILD)/gather-$(GATHER_OTHER) GATHER=$(GATHER_OTHER) all)
 	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows \
-	    MPI_BUILD=$(BUILD)/mpi
+	    MPI_BUILD=$(BUILD)/mpi $(if $(filter native,$(ARCH)),GATHER_BUILD=$(BUILD)/gather-$(GATHER_OTHER))
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory fuzz-smoke
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
@@ -194,6 +206,20 @@ check-fixed:
 
 bench: all
 	$(BUILD)/amorph bench
+
+# voxel-steps per second and instructions per voxel-step of the same code under each -march choice
+# (x86-64: x86-64-v2, x86-64-v3, native with and without gathers; aarch64: armv8-a, native), in
+# turns, medians, each build's result hash (all must be equal); tools/bench_arch.sh
+ARCH_BUILDS_x86_64  := v2:x86-64-v2:on v3:x86-64-v3:on native:native:on native-nogather:native:off
+ARCH_BUILDS_aarch64 := armv8-a:armv8-a:on native:native:on
+ARCH_BUILDS := $(ARCH_BUILDS_$(shell uname -m))
+bench-arch: all
+	@for b in $(ARCH_BUILDS); do n=$${b%%:*}; r=$${b#*:}; \
+	    $(MAKE) --no-print-directory BUILD=$(BUILD)/arch/$$n ARCH=$${r%%:*} GATHER=$${r#*:} $(BUILD)/arch/$$n/amorph >/dev/null || exit 1; done
+	@DEFAULT_DIR=$(BUILD) sh tools/bench_arch.sh $(BUILD) $(foreach b,$(ARCH_BUILDS),$(BUILD)/arch/$(firstword $(subst :, ,$(b))))
+
+gather-why:
+	@sh tools/gather_flags.sh '$(CC)' why
 
 # does the default step give the small-step answer? the calibration bars, 30 random bodies (10 per
 # representation) and every shipped best robot at 0.9 and 0.1 dt_rec, the period held in seconds,

@@ -195,7 +195,7 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
     g_job.nbody = nb;
     g_job.fine = fine;
     const int workers = threads ? threads : am_port_cores();
-    printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+    bench_print_build();
     printf("convergence: %d bodies at the default step and at %g dt_rec (period held in seconds, relaxation scaled), "
            "%d workers\n", nb, fine, workers);
     fflush(stdout);

@@ -46,6 +46,8 @@ static inline am_genome* tool_genome(tool_ctx* c) { return &c->evo.best.genome; 
 
 int cmd_sim(tool_ctx* c, int argc, char** argv);
 int cmd_bench(tool_ctx* c, int argc, char** argv);
+/* the "build ..." line every benchmark starts with: number type, profile, vector extension, gathers */
+void bench_print_build(void);
 /* amorph bench --convergence [options] [ROBOT...], the options from argv[first] (tools/bench_converge.c) */
 int bench_convergence(tool_ctx* c, int argc, char** argv, int first);
 int cmd_random(tool_ctx* c, int argc, char** argv);

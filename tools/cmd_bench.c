@@ -278,6 +278,36 @@ static const char bench_help[] =
     "-10% and +10%, internal damping 0.5 and 1.0, 1.2 times the step). A table, a summary line and\n"
     "pass or FAIL (docs/physics.md, Time step; make convergence)" TOOL_DESKTOP_ONLY ".\n";
 
+/* the build's number type and profile, and what the compiler was allowed to vectorise with: the
+ * widest vector extension it was given and whether gathers were left out (Makefile GATHER=,
+ * docs/benchmarks.md, Build flags); speed only, never the results */
+void bench_print_build(void)
+{
+#if defined(__AVX512F__)
+    const char* vec = "avx512";
+#elif defined(__AVX2__)
+    const char* vec = "avx2";
+#elif defined(__AVX__)
+    const char* vec = "avx";
+#elif defined(__SSE4_2__)
+    const char* vec = "sse4.2";
+#elif defined(__SSE2__)
+    const char* vec = "sse2";
+#elif defined(__ARM_FEATURE_SVE)
+    const char* vec = "sve";
+#elif defined(__ARM_NEON)
+    const char* vec = "neon";
+#else
+    const char* vec = "none";
+#endif
+#if defined(AM_NO_GATHER)
+    const char* gathers = "off";
+#else
+    const char* gathers = "compiler";
+#endif
+    printf("build real=%s profile=%s vector=%s gathers=%s\n", AM_REAL_NAME, AM_PROFILE_NAME, vec, gathers);
+}
+
 int cmd_bench(tool_ctx* c, int argc, char** argv)
 {
     const char* scene = 0;
@@ -323,17 +353,17 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
 #if defined(AM_PROFILE_BOARD)
         return tool_not_in_build("bench --kernels", "the product kernels");
 #else
-        printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+        bench_print_build();
         bench_kernels();
         return 0;
 #endif
     }
     if (threads && !evolve_evals) return tool_usage_error("bench: --threads applies to --evolve");
     if (evolve_evals) {
-        printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+        bench_print_build();
         return bench_evolve(c, evolve_evals, threads);
     }
-    printf("build real=%s profile=%s\n", AM_REAL_NAME, AM_PROFILE_NAME);
+    bench_print_build();
     if (scene) {
         if (coll != 0 && bench_scene(c, scene, steps, 1, dt_frac, repeat)) return 2;
         if (coll != 1 && bench_scene(c, scene, steps, 0, dt_frac, repeat)) return 2;
