@@ -398,6 +398,8 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
         if (!parse_real(ts, te, &v))
             return perr(c, AM_ERR_PARSE, "voxel_size: '%s' is not a finite number", shown(qb, ts, te));
         if (!(v > AM_P(0))) return perr(c, AM_ERR_RANGE, "voxel_size %s must be greater than 0", shown(qb, ts, te));
+        if (!(v >= AM_P(AM_VOXEL_SIZE_MIN) && v <= AM_P(AM_VOXEL_SIZE_MAX)))
+            return perr(c, AM_ERR_RANGE, "voxel_size %s m is outside %g..%g", shown(qb, ts, te), AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX);
         if ((st = no_more(c, "voxel_size", q, end)) != AM_OK) return st;
         lat->voxel_size = v;
         r->have_voxel = 1;

@@ -350,6 +350,9 @@ static void test_bad_cases(void)
         /* voxel size */
         {HDR "voxel_size 0\n", AM_ERR_RANGE, 2, "greater than 0"},
         {HDR "voxel_size -0.01\n", AM_ERR_RANGE, 2, "greater than 0"},
+        /* the configuration's range (issue 31: a subnormal size made the model's scales NaN) */
+        {HDR "voxel_size 1e-45\n", AM_ERR_RANGE, 2, "voxel_size 1e-45 m is outside 1e-05..10"},
+        {HDR "voxel_size 11\n", AM_ERR_RANGE, 2, "outside 1e-05..10"},
         {HDR "voxel_size 1cm\n", AM_ERR_PARSE, 2, "'1cm'"},
         {HDR "voxel_size nan\n", AM_ERR_PARSE, 2, "finite"},
         {HDR "voxel_size\n", AM_ERR_PARSE, 2, "metres"},
