@@ -311,7 +311,7 @@ static int open_own(const char* path, int flags, const char* what, char* err, in
         struct stat sb;
         if (e == ELOOP || (lstat(path, &sb) == 0 && S_ISLNK(sb.st_mode)))
             am_fail(err, errsz, AM_ERR_IO, "%s: a symbolic link: refused (amorph writes no file through a link)", path);
-        else if (e == ENXIO)
+        else if (e == ENXIO || e == EISDIR)
             am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
         else
             am_fail(err, errsz, AM_ERR_IO, "%s: %s: %s", path, what, strerror(e));
