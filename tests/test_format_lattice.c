@@ -345,6 +345,8 @@ static void test_bad_cases(void)
         {HDR "size 3 2.5 2\n", AM_ERR_PARSE, 2, "2.5"},
         {HDR "size 3 2 2x\n", AM_ERR_PARSE, 2, "2x"},
         {HDR "size 3 2 99999999999999999999999\n", AM_ERR_CAPACITY, 2, AM_PROFILE_NAME},
+        /* a number past 10^9 shown as written, not clamped (issue 31) */
+        {HDR "size 3 2 99999999999999999999999\n", AM_ERR_CAPACITY, 2, "size 3 2 99999999999999999999999 exceeds"},
         {over, AM_ERR_CAPACITY, 3, AM_PROFILE_NAME " profile"},
         {over_mat, AM_ERR_CAPACITY, 2 + AM_MAX_MATERIALS, "materials"},
         /* voxel size */
