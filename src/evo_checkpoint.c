@@ -348,14 +348,18 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     }
     if (r->line < r->config_end) {
         /* the configuration: its own line numbers, counted from the line after config-begin */
-        char msg[AM_ERR_MAX];
-        if (am_evo_parse_line(&e->def, text, n, fname, r->line - 2, msg, sizeof msg) != AM_OK)
-            BAD("%s (checkpoint configuration, after line %d)", msg, 2);
+        if (am_evo_parse_line(&e->def, text, n, fname, r->line, err, errsz) != AM_OK) return r->st = AM_ERR_PARSE;
+        const int key = am_evo_line_key(text, n);
+        if (key >= 0 && key < AM_EVO_KEY_MAX) r->key_line[key] = r->line;
         return AM_OK;
     }
     if (r->line == r->config_end) {
-        am_status st = am_evo_check(&e->def, err, errsz);
-        if (st != AM_OK) return r->st = st;
+        /* a relation between keys: the line of the key it names, else config-end's */
+        int key;
+        char msg[AM_ERR_MAX];
+        if (am_evo_check_key(&e->def, &key, msg, sizeof msg) != AM_OK)
+            return r->st = am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: %s", fname,
+                                   key >= 0 && key < AM_EVO_KEY_MAX && r->key_line[key] > 0 ? r->key_line[key] : r->line, msg);
         am_evo_palette_into(&e->def, &e->palette);
         return AM_OK;
     }
@@ -364,6 +368,9 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
     if (strcmp(tok[0], "rng") == 0 && ntok == 5) {
         for (int i = 0; i < 4; i++)
             if (!hex64(tok[1 + i], &e->rng.s[i])) BAD("%s:%d: malformed rng state", fname, r->line);
+        /* xoshiro's one state that never leaves itself: every number after it would be 0 */
+        if ((e->rng.s[0] | e->rng.s[1] | e->rng.s[2] | e->rng.s[3]) == 0)
+            BAD("%s:%d: rng state all zero (a generator that would only ever give 0: damaged)", fname, r->line);
         r->seen_rng = 1;
     } else if (strcmp(tok[0], "generation") == 0 && ntok == 2 && to_long(tok[1], 0, 2000000000L, &e->generation)) {
         r->seen_gen = 1;

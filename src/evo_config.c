@@ -100,7 +100,7 @@ static const key_def keys[] = {
     {"settle_speed", K_PARAM, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
     {"release_steps", K_LONG, OFF(eval.release_steps), 0, 1e8, NULL, 0,
      "settled: calm through this many last relaxation steps (likewise), model damping alone"},
-    {"voxel_size", K_PARAM, OFF(voxel_size), 1e-5, 10, NULL, 0, "cell edge, m"},
+    {"voxel_size", K_PARAM, OFF(voxel_size), AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX, NULL, 0, "cell edge, m"},
     {"dct_k", K_INT, OFF(geno.dct_k), 1, AM_MAX_DCT_K, NULL, 0, "DCT amplitudes per axis"},
     {"cppn_layers", K_INT, OFF(geno.cppn_layers), 1, AM_MAX_CPPN_LAYERS, NULL, 0, "CPPN layers"},
     {"cppn_nodes", K_INT, OFF(geno.cppn_nodes), 1, AM_MAX_CPPN_NODES, NULL, 0, "CPPN nodes per layer"},
@@ -118,6 +118,7 @@ static const key_def keys[] = {
 };
 
 #define KEY_COUNT ((int)(sizeof keys / sizeof keys[0]))
+_Static_assert(sizeof keys / sizeof keys[0] <= AM_EVO_KEY_MAX, "AM_EVO_KEY_MAX: fewer entries than keys");
 
 static const key_def* find_key(const char* name)
 {
@@ -248,23 +249,40 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
     return am_fail(err, errsz, AM_ERR_ARG, "key '%s': internal error", key);
 }
 
+static int key_index(const char* name)
+{
+    for (int i = 0; i < KEY_COUNT; i++)
+        if (strcmp(keys[i].name, name) == 0) return i;
+    return -1;
+}
+
+am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
+{
+    *key = -1;
+    if (d->population < 2 || d->population > AM_MAX_POPULATION || d->population % 2 != 0)
+        return *key = key_index("population"),
+               am_fail(err, errsz, AM_ERR_RANGE, "population = %d: must be even, in [2, %d]", d->population, AM_MAX_POPULATION);
+    if (d->evaluations < d->population)
+        return *key = key_index("evaluations"),
+               am_fail(err, errsz, AM_ERR_RANGE, "evaluations = %ld: at least the population (%d)", d->evaluations, d->population);
+    if (d->eval.relax_min_steps > d->eval.relax_max_steps)
+        return *key = key_index("relax_min_steps"), am_fail(err, errsz, AM_ERR_RANGE, "relax_min_steps = %ld exceeds relax_max_steps = %ld",
+                                                            d->eval.relax_min_steps, d->eval.relax_max_steps);
+    if (d->geno.gmx_points > d->geno.gmx_max_points)
+        return *key = key_index("gmx_points"), am_fail(err, errsz, AM_ERR_RANGE, "gmx_points = %d exceeds gmx_max_points = %d",
+                                                       d->geno.gmx_points, d->geno.gmx_max_points);
+    if (d->geno.repr == AM_REPR_DCT && (d->geno.dct_k > d->geno.nx || d->geno.dct_k > d->geno.ny || d->geno.dct_k > d->geno.nz))
+        return *key = key_index("dct_k"), am_fail(err, errsz, AM_ERR_RANGE, "dct_k = %d exceeds a workspace side (%dx%dx%d)",
+                                                  d->geno.dct_k, d->geno.nx, d->geno.ny, d->geno.nz);
+    if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
+        return *key = key_index("threads"), am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
+    return AM_OK;
+}
+
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz)
 {
-    if (d->population < 2 || d->population > AM_MAX_POPULATION || d->population % 2 != 0)
-        return am_fail(err, errsz, AM_ERR_RANGE, "population = %d: must be even, in [2, %d]", d->population, AM_MAX_POPULATION);
-    if (d->evaluations < d->population)
-        return am_fail(err, errsz, AM_ERR_RANGE, "evaluations = %ld: at least the population (%d)", d->evaluations, d->population);
-    if (d->eval.relax_min_steps > d->eval.relax_max_steps)
-        return am_fail(err, errsz, AM_ERR_RANGE, "relax_min_steps = %ld exceeds relax_max_steps = %ld", d->eval.relax_min_steps,
-                       d->eval.relax_max_steps);
-    if (d->geno.gmx_points > d->geno.gmx_max_points)
-        return am_fail(err, errsz, AM_ERR_RANGE, "gmx_points = %d exceeds gmx_max_points = %d", d->geno.gmx_points, d->geno.gmx_max_points);
-    if (d->geno.repr == AM_REPR_DCT && (d->geno.dct_k > d->geno.nx || d->geno.dct_k > d->geno.ny || d->geno.dct_k > d->geno.nz))
-        return am_fail(err, errsz, AM_ERR_RANGE, "dct_k = %d exceeds a workspace side (%dx%dx%d)", d->geno.dct_k, d->geno.nx,
-                       d->geno.ny, d->geno.nz);
-    if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
-        return am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
-    return AM_OK;
+    int key;
+    return am_evo_check_key(d, &key, err, errsz);
 }
 
 /* ---- text ---- */
@@ -397,6 +415,20 @@ am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char*
     am_status st = am_evo_set(d, key, value, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
     return AM_OK;
+}
+
+int am_evo_line_key(const char* text, long n)
+{
+    char line[512];
+    if (n < 0 || n >= (long)sizeof line) return -1;
+    memcpy(line, text, (size_t)n);
+    line[n] = 0;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* eq = strchr(line, '=');
+    if (!eq) return -1;
+    *eq = 0;
+    return key_index(trim(line));
 }
 
 am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)

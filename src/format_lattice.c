@@ -315,19 +315,21 @@ static am_status parse_size_line(const pctx* c, am_lattice* lat, const char* p, 
 {
     long v[3];
     char qb[AM_QUOTE_BUF];
-    const char *ts = NULL, *te = NULL;
+    const char *ts = NULL, *te = NULL, *first = NULL;
     for (int i = 0; i < 3; i++) {
         if (!next_token(&p, end, &ts, &te)) return perr(c, AM_ERR_PARSE, "size: expected three whole numbers NX NY NZ");
         if (!parse_int(ts, te, &v[i]))
             return perr(c, AM_ERR_PARSE, "size: '%s' is not a whole number", shown(qb, ts, te));
+        if (i == 0) first = ts;
     }
     am_status st = no_more(c, "size", p, end);
     if (st != AM_OK) return st;
+    /* the sizes as written (parse_int clamps a number past 10^9) */
     if (v[0] < 1 || v[1] < 1 || v[2] < 1)
-        return perr(c, AM_ERR_RANGE, "size %ld %ld %ld: every side must be at least 1", v[0], v[1], v[2]);
+        return perr(c, AM_ERR_RANGE, "size %s: every side must be at least 1", shown(qb, first, te));
     if (v[0] > AM_MAX_DIM || v[1] > AM_MAX_DIM || v[2] > AM_MAX_DIM)
-        return perr(c, AM_ERR_CAPACITY, "size %ld %ld %ld exceeds the %s profile's %d cells per side", v[0], v[1], v[2],
-                    AM_PROFILE_NAME, AM_MAX_DIM);
+        return perr(c, AM_ERR_CAPACITY, "size %s exceeds the %s profile's %d cells per side", shown(qb, first, te), AM_PROFILE_NAME,
+                    AM_MAX_DIM);
     lat->nx = (int)v[0];
     lat->ny = (int)v[1];
     lat->nz = (int)v[2];
@@ -398,6 +400,8 @@ static am_status lattice_line(am_lattice_reader* r, const pctx* c, const char* l
         if (!parse_real(ts, te, &v))
             return perr(c, AM_ERR_PARSE, "voxel_size: '%s' is not a finite number", shown(qb, ts, te));
         if (!(v > AM_P(0))) return perr(c, AM_ERR_RANGE, "voxel_size %s must be greater than 0", shown(qb, ts, te));
+        if (!(v >= AM_P(AM_VOXEL_SIZE_MIN) && v <= AM_P(AM_VOXEL_SIZE_MAX)))
+            return perr(c, AM_ERR_RANGE, "voxel_size %s m is outside %g..%g", shown(qb, ts, te), AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX);
         if ((st = no_more(c, "voxel_size", q, end)) != AM_OK) return st;
         lat->voxel_size = v;
         r->have_voxel = 1;

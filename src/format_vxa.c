@@ -26,6 +26,7 @@
 #include "amorph/inflate.h"
 #include "amorph/text.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -185,15 +186,19 @@ static am_status real_of(const vctx* c, int n, am_param* out)
     return AM_OK;
 }
 
-/* a real with a range: lo <= x (or lo < x when open) and x <= hi */
+/* a real with a range: lo <= x (or lo < x when open) and x <= hi; what says the range ("must be
+ * in [0, 1]"), or only its lower bound ("must be 0 or more"), and then a value above hi is "too
+ * large" */
 static am_status real_in(const vctx* c, int n, am_param* out, double lo, int open, double hi, const char* what)
 {
     char qn[AM_QUOTE_BUF];
     am_param x = AM_P(0);
     am_status st = real_of(c, n, &x);
     if (st != AM_OK) return st;
-    if ((open ? !((double)x > lo) : !((double)x >= lo)) || (double)x > hi)
+    const int whole = strchr(what, '[') || strchr(what, '(');
+    if ((open ? !((double)x > lo) : !((double)x >= lo)) || ((double)x > hi && whole))
         return verr(c, n, AM_ERR_RANGE, "<%s> %.9g %s", tag(c, n, qn), (double)x, what);
+    if ((double)x > hi) return verr(c, n, AM_ERR_RANGE, "<%s> %.9g is too large (at most %g)", tag(c, n, qn), (double)x, hi);
     *out = x;
     return AM_OK;
 }
@@ -205,9 +210,11 @@ static am_status int_of(const vctx* c, int n, long lo, long hi, long* out)
     am_status st = text_of(c, n, v, sizeof v, NULL);
     if (st != AM_OK) return st;
     char* end = NULL;
+    errno = 0;
     long x = v[0] ? strtol(v, &end, 10) : 0;
     if (!v[0] || *end) return verr(c, n, AM_ERR_PARSE, "<%s>: '%s' is not a whole number", tag(c, n, qn), val(v, qv));
-    if (x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%s> %ld is outside %ld..%ld", tag(c, n, qn), x, lo, hi);
+    /* the text as written: strtol clamps a number past a long's range */
+    if (errno == ERANGE || x < lo || x > hi) return verr(c, n, AM_ERR_RANGE, "<%s> %s is outside %ld..%ld", tag(c, n, qn), val(v, qv), lo, hi);
     *out = x;
     return AM_OK;
 }
@@ -313,7 +320,10 @@ static am_status read_lattice(vctx* c, int n, am_lattice* lat)
     int at[MAX_TAGS];
     am_status st = children(c, n, tags, 8, at, NULL);
     if (st != AM_OK) return st;
-    if (at[0] >= 0 && (st = real_in(c, at[0], &lat->voxel_size, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
+    /* the configuration's voxel_size range */
+    if (at[0] >= 0 && (st = real_in(c, at[0], &lat->voxel_size, 0, 1, AM_VOXEL_SIZE_MAX, "must be greater than 0")) != AM_OK) return st;
+    if (at[0] >= 0 && !(lat->voxel_size >= AM_P(AM_VOXEL_SIZE_MIN)))
+        return verr(c, at[0], AM_ERR_RANGE, "<Lattice_Dim> %.9g is too small (at least %g m)", (double)lat->voxel_size, AM_VOXEL_SIZE_MIN);
     for (int i = 1; i < 8; i++) {
         double v, want = i <= 3 ? 1 : 0;
         if (at[i] < 0) continue;
@@ -616,7 +626,9 @@ static am_status number_layer(const vctx* c, int k, int z, am_param* out, long p
         }
         char tok[64];
         long n = 0;
-        while (i + n < end && !is_blank(t[i + n]) && t[i + n] != ',' && t[i + n] != ']' && t[i + n] != '<' && n < 63) n++;
+        while (i + n < end && !is_blank(t[i + n]) && t[i + n] != ',' && t[i + n] != ']' && t[i + n] != '<' && n < 64) n++;
+        if (n == 64) /* no number is that long: one value, not two pieces of it */
+            return verr(c, k, AM_ERR_PARSE, "%s layer %d: value %ld is longer than 63 characters", what, z, count);
         memcpy(tok, t + i, (size_t)n);
         tok[n] = 0;
         char* stop = NULL;
@@ -869,6 +881,9 @@ static am_status read_environment(vctx* c, int n, const am_lattice* lat)
         if (enabled && vary) {
             if (!(period > 0))
                 return verr(c, it[5] >= 0 ? it[5] : at[4], AM_ERR_RANGE, "<TempPeriod> %.9g must be greater than 0", period);
+            /* the configuration's range (period_s, s) */
+            if (period > 1e4)
+                return verr(c, it[5] >= 0 ? it[5] : at[4], AM_ERR_RANGE, "<TempPeriod> %.9g is too large (at most 10000 s)", period);
             env->temp_amplitude = (am_param)amp;
             c->info->temp_period = period;
         } else if (enabled) {
@@ -905,7 +920,8 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
         else return verr(c, at[0], AM_ERR_PARSE, "<CTEMode>: '%s' is not volumetric or linear", val(m, qv));
     }
     if (at[1] >= 0) {
-        if ((st = int_of(c, at[1], 1, 1000000000L, &v)) != AM_OK) return st;
+        /* the configuration's range (period_steps) */
+        if ((st = int_of(c, at[1], 2, 10000000L, &v)) != AM_OK) return st;
         env->period_steps = (int)v;
         c->info->period_steps_given = 1;
     }
@@ -1012,7 +1028,16 @@ static am_status read_vxd(vctx* c)
             continue;
         }
         long len = 0;
-        if (attr_text(c, a, p, sizeof p, &len) != AM_OK || len >= VXD_PATH_MAX || strncmp(p, "VXA.", 4) != 0 || strchr(p, ' ')) {
+        if (attr_text(c, a, p, sizeof p, &len) != AM_OK) {
+            /* too long to decode here: its first bytes as written, for the message */
+            const am_xml_doc* d = D(c, a);
+            long v = d->attr[IX(a)].value, ve = d->attr[IX(a)].value_end;
+            len = ve - v < VXD_PATH_MAX ? ve - v : VXD_PATH_MAX;
+            memcpy(p, d->text + v, (size_t)len);
+            p[len] = 0;
+            len = VXD_PATH_MAX;
+        }
+        if (len >= VXD_PATH_MAX || strncmp(p, "VXA.", 4) != 0 || strchr(p, ' ')) {
             warn(c, k, "<%s replace=\"%s\">: not a path of a VXA file (VXA.A.B, under %d bytes): ignored", tag(c, k, qn), val(p, qv),
                  VXD_PATH_MAX);
             continue;
@@ -1085,7 +1110,7 @@ int am_vxa_period_steps(double period_s, double dt)
 {
     double k = dt > 0 ? period_s / dt : 0;
     if (!(k >= 1)) return 1;
-    if (k >= 1e9) return 1000000000;
+    if (k >= 1e7) return 10000000; /* the configuration's largest period_steps */
     return (int)floor(k + 0.5);
 }
 

@@ -163,8 +163,8 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         return am_fail(err, errsz, AM_ERR_CAPACITY, "lattice %d x %d x %d is outside 1..%d per side", lat->nx, lat->ny, lat->nz, AM_MAX_DIM);
     if (lat->palette.count < 1 || lat->palette.count > AM_MAX_MATERIALS)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "palette of %d materials (1..%d)", lat->palette.count, AM_MAX_MATERIALS);
-    if (!(lat->voxel_size > AM_R(0)) || !am_finite(lat->voxel_size))
-        return am_fail(err, errsz, AM_ERR_RANGE, "voxel size must be positive");
+    if (!(lat->voxel_size >= AM_P(AM_VOXEL_SIZE_MIN) && lat->voxel_size <= AM_P(AM_VOXEL_SIZE_MAX)))
+        return am_fail(err, errsz, AM_ERR_RANGE, "voxel size %g m is outside %g..%g", (double)lat->voxel_size, AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX);
     if ((st = check_env(env, err, errsz)) != AM_OK) return st;
     for (int k = 0; k < lat->palette.count; k++)
         if ((st = check_material(&lat->palette.mat[k], k, err, errsz)) != AM_OK) return st;

@@ -163,11 +163,23 @@ int am_parse_double(const char* s, double* out)
 
 /* ---- the temporaries of atomic writes ---- */
 
-const char* am_temp_name_pid(const char* name)
+long am_temp_name_pid(const char* name)
 {
     const char* t = NULL;
     for (const char* p = strstr(name, ".tmp."); p; p = strstr(p + 1, ".tmp.")) t = p;
-    if (!t || t == name) return NULL;
-    const char* pid = t + 5;
-    return *pid && strspn(pid, "0123456789") == strlen(pid) ? pid : NULL;
+    if (!t || t == name) return -1;
+    const char* p = t + 5;
+    size_t digits = strspn(p, "0123456789");
+    if (digits == 0) return -1;
+    /* NAME.tmp.PID, or NAME.tmp.PID.NONCE (1 to 16 lowercase hex digits) */
+    if (p[digits] == '.') {
+        size_t hex = strspn(p + digits + 1, "0123456789abcdef");
+        if (hex == 0 || hex > 16 || p[digits + 1 + hex] != 0) return -1;
+    } else if (p[digits] != 0) {
+        return -1;
+    }
+    long pid = 0;
+    /* a number past 2 * 10^9 (past a 32-bit long) is no process's: a stranger's */
+    for (size_t k = 0; k < digits; k++) pid = pid < 200000000L ? pid * 10 + (p[k] - '0') : 2000000000L;
+    return pid;
 }

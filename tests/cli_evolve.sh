@@ -118,13 +118,22 @@ expect_fail 2 "holds a run already" $E --out "$TMPD/a"
 mkdir "$TMPD/early" && cp "$TMPD/a/config.txt" "$TMPD/early/" && head -n 1 "$TMPD/a/log.csv" >"$TMPD/early/log.csv"
 printf 'evaluation,partial' >"$TMPD/early/evals.csv"
 expect_fail 2 "no checkpoint.txt: the run stopped before its first checkpoint.*start it again with --out" "$AMORPH" evolve --resume "$TMPD/early"
+# the dead process's temporaries go when the run is started over, as on a resume (an older
+# build's NAME.tmp.PID and this one's NAME.tmp.PID.NONCE)
+printf 'config (partial' >"$TMPD/early/config.txt.tmp.999999"
+printf 'checkpoint (partial' >"$TMPD/early/checkpoint.txt.tmp.999999.00112233aabbccdd"
 expect_ok $E --out "$TMPD/early" --threads 1
+if [ ! -e "$TMPD/early/config.txt.tmp.999999" ] && [ ! -e "$TMPD/early/checkpoint.txt.tmp.999999.00112233aabbccdd" ]; then ok
+else ko "--out left a dead process's temporaries: $(ls "$TMPD/early" | tr '\n' ' ')"; fi
+# a run killed before it wrote config.txt (only its lock there) says how to restart as well
+mkdir "$TMPD/early0" && : >"$TMPD/early0/lock"
+expect_fail 2 "no checkpoint.txt: the run stopped before its first checkpoint.*start it again with --out" "$AMORPH" evolve --resume "$TMPD/early0"
 if [ "$(sumval "$TMPD/early" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ] && cmp -s "$TMPD/early/evals.csv" "$TMPD/a/evals.csv"; then ok
 else ko "a run started over in a folder left before its first checkpoint differs"; fi
 
 # --- resume: bad cases leave the run as it was ---
 cp -r "$TMPD/a" "$TMPD/r"
-snap() { (cd "$1" && cat config.txt log.csv best.genome checkpoint.txt | cksum); }
+snap() { (cd "$1" && cat config.txt log.csv best.genome checkpoint.txt lock | cksum); }
 before=$(snap "$TMPD/r")
 expect_fail 2 "configuration changed: population" "$AMORPH" evolve --resume "$TMPD/r" --population 8 --quiet
 sed -i 's/^mu_static = 1$/mu_static = 2/' "$TMPD/r/config.txt"
@@ -166,6 +175,53 @@ if [ "$(cat "$TMPD/stale/notes.tmp.txt")" = "my notes" ] && [ "$(cat "$TMPD/stal
    [ "$(sumval "$TMPD/stale" run_hash)" = "$(sumval "$TMPD/a" run_hash)" ]; then ok
 else ko "--resume touched other files or changed the run: $(ls "$TMPD/stale" | tr '\n' ' ')"; fi
 expect_fail 2 "cannot open" "$AMORPH" evolve --resume "$TMPD/nothere" --quiet
+
+# --- nothing written where the user did not point (issue 31) ---
+# snapall DIR: every entry of DIR, a link as its target, a file by its checksum (the lock included)
+snapall() { (cd "$1" && for f in $(ls -A | sort); do if [ -L "$f" ]; then echo "$f -> $(readlink "$f")"; else echo "$f $(cksum <"$f")"; fi; done); }
+# a refused --out on a run, and a refused --resume, leave the folder byte for byte as it was
+cp -r "$TMPD/a" "$TMPD/refused"
+before=$(snapall "$TMPD/refused")
+expect_fail 2 "holds a run already" $E --out "$TMPD/refused"
+expect_fail 2 "configuration changed: population" "$AMORPH" evolve --resume "$TMPD/refused" --population 8 --quiet
+expect_fail 2 "evaluations = 6 is below the 36 already done" "$AMORPH" evolve --resume "$TMPD/refused" --evaluations 6 --quiet
+if [ "$(snapall "$TMPD/refused")" = "$before" ]; then ok; else ko "a refused command changed the run folder (its lock?)"; fi
+# a run folder from someone else: a lock that is a link is refused, never opened through
+printf 'secret\n' >"$TMPD/victim"
+cp -r "$TMPD/a" "$TMPD/ln"
+ln -sf "$TMPD/victim" "$TMPD/ln/lock"
+before=$(snapall "$TMPD/ln")
+expect_fail 2 "ln/lock: a symbolic link: refused" $E --out "$TMPD/ln"
+expect_fail 2 "ln/lock: a symbolic link: refused" "$AMORPH" evolve --resume "$TMPD/ln" --evaluations 48 --quiet
+rm "$TMPD/ln/lock" && ln "$TMPD/victim" "$TMPD/ln/lock"
+expect_fail 2 "ln/lock: a file with 2 names \(a hard link\): refused" "$AMORPH" evolve --resume "$TMPD/ln" --evaluations 48 --quiet
+rm "$TMPD/ln/lock" && ln -s "$TMPD/victim" "$TMPD/ln/lock"
+if [ "$(cat "$TMPD/victim")" = secret ] && [ "$(snapall "$TMPD/ln")" = "$before" ]; then ok
+else ko "a linked lock was written through: victim '$(cat "$TMPD/victim")'"; fi
+# the tables that a resume appends to: a link in their place is refused before anything is written
+for t in log.csv evals.csv; do
+    rm -rf "$TMPD/ln" && cp -r "$TMPD/a" "$TMPD/ln" && cp "$TMPD/a/$t" "$TMPD/victim" && ln -sf "$TMPD/victim" "$TMPD/ln/$t"
+    before=$(snapall "$TMPD/ln")
+    expect_fail 2 "ln/$t: a symbolic link: refused" "$AMORPH" evolve --resume "$TMPD/ln" --evaluations 48 --quiet --no-pictures
+    if cmp -s "$TMPD/victim" "$TMPD/a/$t" && [ "$(snapall "$TMPD/ln")" = "$before" ]; then ok
+    else ko "a resume appended to a linked $t, or changed the folder"; fi
+done
+# a temporary's name is not predictable, and a file planted at the name it had is never written
+# through: the symlink stays (removed later as stale) and out.lattice is a file of its own
+printf 'secret\n' >"$TMPD/victim"
+(cd "$TMPD" && sh -c 'ln -s "$1" out.lattice.tmp.$$; exec "$2" export --scene cube:2 --lattice out.lattice' sh "$TMPD/victim" "$(cd "$OLDPWD" && realpath "$AMORPH")") 2>"$TMPD/err"
+if [ "$(cat "$TMPD/victim")" = secret ] && [ -f "$TMPD/out.lattice" ] && [ ! -L "$TMPD/out.lattice" ] && grep -q "^size 2 2 2" "$TMPD/out.lattice"; then ok
+else ko "export wrote through a planted temporary: victim '$(cat "$TMPD/victim")', $(cat "$TMPD/err")"; fi
+# a write into a folder that is not there names the user's file, not the temporary
+expect_fail 1 "nodir/out.lattice: cannot create: No such file or directory$" "$AMORPH" export --scene cube:2 --lattice "$TMPD/nodir/out.lattice"
+expect_fail 1 "nodir/t.csv: cannot create: No such file or directory$" "$AMORPH" sim --scene cube:2 --cycles 1 --trajectory "$TMPD/nodir/t.csv"
+# a lock that cannot be opened is not blamed on another amorph
+cp -r "$TMPD/a" "$TMPD/lockdir" && rm "$TMPD/lockdir/lock" && mkdir "$TMPD/lockdir/lock"
+expect_fail 2 "lockdir/lock: not a regular file \(a folder, FIFO or device\): refused$" "$AMORPH" evolve --resume "$TMPD/lockdir" --quiet
+# a relation between keys set in a file names the file and the line
+printf 'seed = 3\npopulation = 3\n' >"$TMPD/odd.cfg"
+expect_fail 2 "^amorph: $TMPD/odd.cfg:2: population = 3: must be even" "$AMORPH" evolve --config "$TMPD/odd.cfg" --out "$TMPD/bad1"
+expect_fail 2 "^amorph: evolve: population = 5: must be even" "$AMORPH" evolve --config "$TMPD/odd.cfg" --population 5 --out "$TMPD/bad1"
 expect_fail 2 "--out does not apply" "$AMORPH" evolve --resume "$TMPD/r" --out "$TMPD/x"
 # a finished run resumed with more evaluations goes on; the result equals a longer run from scratch
 expect_ok "$AMORPH" evolve --resume "$TMPD/r" --evaluations 48 --quiet --no-pictures

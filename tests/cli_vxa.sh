@@ -189,4 +189,21 @@ expect_fail 2 "export: say what to write" "$AMORPH" export --scene cube:2
 expect_fail 2 "export: name a robot" "$AMORPH" export --vxa "$D/x.vxa"
 expect_fail 2 "export: unknown option '--png'" "$AMORPH" export --scene cube:2 --png x.png
 
+# one range per setting wherever it comes from (issue 31): a VXA period of 10^9 steps, a period in
+# seconds past 10^4, a subnormal cell edge (in a VXA or a lattice file) and a 64-character phase
+# are refused with the file and line, never simulated (timeout: an old build ran such a period for days)
+expect_ok "$AMORPH" export --scene cube:2 --vxa "$D/c.vxa"
+sed 's#<PeriodSteps>[^<]*</PeriodSteps>#<PeriodSteps>1000000000</PeriodSteps>#' "$D/c.vxa" >"$D/p9.vxa"
+expect_fail 2 "^amorph: $D/p9.vxa:[0-9]+: <PeriodSteps> 1000000000 is outside 2..10000000$" timeout 60 "$AMORPH" sim "$D/p9.vxa" --cycles 1
+sed 's#<TempPeriod>[^<]*</TempPeriod>#<TempPeriod>1e30</TempPeriod>#' tests/data/evosoro_phase.vxa >"$D/t30.vxa"
+expect_fail 2 "^amorph: $D/t30.vxa:43: <TempPeriod> 1e\+30 is too large \(at most 10000 s\)$" timeout 60 "$AMORPH" sim "$D/t30.vxa" --cycles 1
+sed 's#<Lattice_Dim>[^<]*</Lattice_Dim>#<Lattice_Dim>1e-45</Lattice_Dim>#' "$D/c.vxa" >"$D/sub.vxa"
+expect_fail 2 "^amorph: $D/sub.vxa:[0-9]+: <Lattice_Dim> .* is too small \(at least 1e-05 m\)$" timeout 60 "$AMORPH" sim "$D/sub.vxa" --cycles 1
+expect_ok "$AMORPH" export --scene cube:2 --lattice "$D/c.lattice"
+sed 's/^voxel_size .*/voxel_size 1e-45/' "$D/c.lattice" >"$D/sub.lattice"
+expect_fail 2 "^amorph: $D/sub.lattice:[0-9]+: voxel_size 1e-45 m is outside 1e-05..10$" timeout 60 "$AMORPH" sim "$D/sub.lattice" --cycles 1
+sed 's#CDATA\[0, 0.25, #CDATA[0, 0.25000000000000000000000000000000000000000000000000000000000001, #' tests/data/evosoro_phase.vxa >"$D/long.vxa"
+if grep -q '0.25000000000000000000000000000000000000000000000000000000000001' "$D/long.vxa"; then ok; else ko "the long phase was not planted"; fi
+expect_fail 2 "^amorph: $D/long.vxa:80: <PhaseOffset> layer 0: value 1 is longer than 63 characters$" "$AMORPH" sim "$D/long.vxa" --cycles 1
+
 summary cli_vxa.sh

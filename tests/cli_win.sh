@@ -102,7 +102,7 @@ mkdir "$d/folder.tmp.9"
 expect_ok W evolve --resume "$d" --quiet --no-pictures
 if [ ! -e "$d/checkpoint.txt.tmp.12345" ] && [ ! -e "$d/log.csv.tmp.7" ] && [ -f "$d/notes.tmp.txt" ] && [ -d "$d/folder.tmp.9" ]; then ok
 else ko "stale temporaries after the resume: $(ls "$d" | tr '\n' ' ')"; fi
-if [ -z "$(ls "$d" | grep '\.tmp\.[0-9]*$' | grep -v folder)" ]; then ok; else ko "temporaries left: $(ls "$d" | tr '\n' ' ')"; fi
+if [ -z "$(ls "$d" | grep '\.tmp\.[0-9]' | grep -v folder)" ]; then ok; else ko "temporaries left: $(ls "$d" | tr '\n' ' ')"; fi
 same "$d" "$TMPD/whole" "resumed after KILL:20"
 
 # --- one process per run folder: the first holds itself just before evaluation 17 (STOP: every
@@ -125,6 +125,35 @@ kill -9 $pid 2>/dev/null
 if [ $rc -eq 137 ] && [ "$(rows "$d")" -eq 2 ]; then ok; else ko "the held process: exit $rc, $(rows "$d") rows (want 137, 2)"; fi
 expect_ok W evolve --resume "$d" --quiet --no-pictures
 same "$d" "$TMPD/whole" "resumed after a kill -9 from outside"
+
+# --- nothing written where the user did not point (issue 31) ---
+# snapall DIR: every entry of DIR by its checksum, the lock included
+snapall() { (cd "$1" && for f in $(ls -A | sort); do echo "$f $(cksum <"$f")"; done); }
+# a refused --out on a run and a refused --resume leave the folder byte for byte, lock included
+cp -r "$TMPD/whole" "$TMPD/refused"
+before=$(snapall "$TMPD/refused")
+expect_fail 2 "holds a run already" W evolve $S --out "$TMPD/refused"
+expect_fail 2 "configuration changed: population" W evolve --resume "$TMPD/refused" --population 4 --quiet
+if [ "$(snapall "$TMPD/refused")" = "$before" ]; then ok; else ko "a refused command changed the run folder (its lock?)"; fi
+# a lock or a table that is a file of several names (a hard link) is refused, never written through
+# (wine shows a Unix symbolic link as the file it points to, so only hard links are tried here)
+printf 'secret\n' >"$TMPD/victim"
+cp -r "$TMPD/whole" "$TMPD/hl" && rm "$TMPD/hl/lock" && ln "$TMPD/victim" "$TMPD/hl/lock"
+expect_fail 2 "hl/lock: a file with several names \(a hard link\): refused" W evolve --resume "$TMPD/hl" --evaluations 40 --quiet --no-pictures
+if [ "$(cat "$TMPD/victim")" = secret ]; then ok; else ko "a hard-linked lock was written through: '$(cat "$TMPD/victim")'"; fi
+rm -rf "$TMPD/hl" && cp -r "$TMPD/whole" "$TMPD/hl" && cp "$TMPD/whole/log.csv" "$TMPD/victim" && rm "$TMPD/hl/log.csv" && ln "$TMPD/victim" "$TMPD/hl/log.csv"
+expect_fail 2 "hl/log.csv: a file with several names \(a hard link\): refused" W evolve --resume "$TMPD/hl" --evaluations 40 --quiet --no-pictures
+if cmp -s "$TMPD/victim" "$TMPD/whole/log.csv"; then ok; else ko "rows were appended to a hard-linked log.csv"; fi
+# --out starts over a folder left before its first checkpoint, removing the dead process's temporaries
+mkdir "$TMPD/early" && cp "$TMPD/whole/config.txt" "$TMPD/early/" && echo partial >"$TMPD/early/checkpoint.txt.tmp.999999"
+echo partial >"$TMPD/early/log.csv.tmp.999999.00112233aabbccdd"
+expect_ok W evolve $S --out "$TMPD/early"
+if [ ! -e "$TMPD/early/checkpoint.txt.tmp.999999" ] && [ ! -e "$TMPD/early/log.csv.tmp.999999.00112233aabbccdd" ]; then ok
+else ko "--out left a dead process's temporaries: $(ls "$TMPD/early" | tr '\n' ' ')"; fi
+same "$TMPD/early" "$TMPD/whole" "a run started over by --out"
+# a write into a folder that is not there names the user's file, not its temporary
+expect_fail 1 "nodir/out.lattice: cannot create: " W export --scene cube:2 --lattice "$TMPD/nodir/out.lattice"
+if ! grep -q '\.tmp\.' "$TMPD/w.err"; then ok; else ko "the message names the temporary: $(cat "$TMPD/w.err")"; fi
 
 # --- checkpoints cross: Linux's resumes on Windows, Windows's on Linux ---
 d="$TMPD/fromlin"

@@ -8,12 +8,15 @@ add() { # add KIND FILE
     k=$((k + 1))
     { printf "\\$(printf '%03o' "$1")"; cat "$2"; } >"$out/seed-$k"
 }
-for f in tests/data/*.lattice; do [ -f "$f" ] && add 0 "$f"; done
+# tests/data/hostile: the hostile cases of issue 31 (a period of 10^9 steps, a subnormal cell
+# edge, a 64-character phase, an odd population, the all-zero rng of a resealed checkpoint, a
+# VXD replace path past its buffer), each refused with one line
+for f in tests/data/*.lattice tests/data/*/*.lattice; do [ -f "$f" ] && add 0 "$f"; done
 for f in tests/data/*.genome; do [ -f "$f" ] && add 1 "$f"; done
-for f in tests/data/*.cfg tests/data/*.conf; do [ -f "$f" ] && add 2 "$f"; done
-for f in tests/data/*checkpoint*; do [ -f "$f" ] && add 3 "$f"; done
+for f in tests/data/*.cfg tests/data/*.conf tests/data/*/*.cfg; do [ -f "$f" ] && add 2 "$f"; done
+for f in tests/data/*checkpoint* tests/data/*/*.checkpoint; do [ -f "$f" ] && add 3 "$f"; done
 for f in tests/data/*.vxa tests/data/*/*.vxa; do [ -f "$f" ] && add 4 "$f"; done
-for d in tests/data/voxcraft; do
+for d in tests/data/voxcraft tests/data/hostile/vxd_*; do
     [ -f "$d/base.vxa" ] && [ -f "$d/robot.vxd" ] && { k=$((k + 1)); { printf '\005'; cat "$d/base.vxa"; printf '\001'; cat "$d/robot.vxd"; } >"$out/seed-$k"; }
 done
 for f in tests/data/*/log.csv tests/data/*.csv; do [ -f "$f" ] && add 7 "$f"; done

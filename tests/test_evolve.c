@@ -459,8 +459,19 @@ static void test_checkpoint_bad_tokens_quoted(void)
     expect_checkpoint_message(t, "ck.txt:5: unexpected line '\\x01rng\\t1'");
     /* the configuration inside goes through the configuration's reader */
     expect_checkpoint_message("amorph-checkpoint 2\nconfig-begin\nseed = \x7f\nconfig-end\n",
-                              "ck.txt:1: seed = '\\x7f': expected an integer in [0, 18446744073709551615] "
-                              "(checkpoint configuration, after line 2)");
+                              "ck.txt:3: seed = '\\x7f': expected an integer in [0, 18446744073709551615]");
+    /* the generator's all-zero state (it would only ever give 0) is damage, not a state (issue 31) */
+    expect_checkpoint_message("amorph-checkpoint 2\nconfig-begin\nseed = 1\nconfig-end\nrng 0000000000000000 0000000000000000 0000000000000000 0000000000000000\n",
+                              "ck.txt:5: rng state all zero (a generator that would only ever give 0: damaged)");
+    /* a relation between keys names the file and the line of the key (issue 31: neither) */
+    {
+        char msg[AM_ERR_MAX] = "", w[AM_ERR_MAX];
+        snprintf(g_text2, sizeof g_text2, "amorph-checkpoint 2\nconfig-begin\nseed = 1\npopulation = 3\nconfig-end\nchecksum 0\n");
+        reseal(g_text2);
+        snprintf(w, sizeof w, "ck.txt:4: population = 3: must be even, in [2, %d]", AM_MAX_POPULATION);
+        CHECK(am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", msg, sizeof msg) == AM_ERR_RANGE && !strcmp(msg, w), "message '%s', want '%s'",
+              msg, w);
+    }
     /* 300-character tokens: their first 40 characters and "..." */
     memset(tok, 'v', 300);
     tok[300] = 0;

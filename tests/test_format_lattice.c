@@ -345,11 +345,16 @@ static void test_bad_cases(void)
         {HDR "size 3 2.5 2\n", AM_ERR_PARSE, 2, "2.5"},
         {HDR "size 3 2 2x\n", AM_ERR_PARSE, 2, "2x"},
         {HDR "size 3 2 99999999999999999999999\n", AM_ERR_CAPACITY, 2, AM_PROFILE_NAME},
+        /* a number past 10^9 shown as written, not clamped (issue 31) */
+        {HDR "size 3 2 99999999999999999999999\n", AM_ERR_CAPACITY, 2, "size 3 2 99999999999999999999999 exceeds"},
         {over, AM_ERR_CAPACITY, 3, AM_PROFILE_NAME " profile"},
         {over_mat, AM_ERR_CAPACITY, 2 + AM_MAX_MATERIALS, "materials"},
         /* voxel size */
         {HDR "voxel_size 0\n", AM_ERR_RANGE, 2, "greater than 0"},
         {HDR "voxel_size -0.01\n", AM_ERR_RANGE, 2, "greater than 0"},
+        /* the configuration's range (issue 31: a subnormal size made the model's scales NaN) */
+        {HDR "voxel_size 1e-45\n", AM_ERR_RANGE, 2, "voxel_size 1e-45 m is outside 1e-05..10"},
+        {HDR "voxel_size 11\n", AM_ERR_RANGE, 2, "outside 1e-05..10"},
         {HDR "voxel_size 1cm\n", AM_ERR_PARSE, 2, "'1cm'"},
         {HDR "voxel_size nan\n", AM_ERR_PARSE, 2, "finite"},
         {HDR "voxel_size\n", AM_ERR_PARSE, 2, "metres"},

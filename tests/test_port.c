@@ -2,7 +2,9 @@
  * 1, 2, 3 and 8 workers, with worker ids in range and never two calls at once for one worker id;
  * files are replaced atomically, appended to, and directories made and found; the progress line
  * is silent when stderr is not a terminal; the stale temporaries of atomic writes are removed from
- * a folder, and nothing else. Scratch files go to $BUILD/tests/port_scratch. */
+ * a folder, and nothing else; no file is written through a link planted where amorph writes (a
+ * temporary's predictable name, an appended table, a lock). Scratch files go to
+ * $BUILD/tests/port_scratch. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph.h"
 #include "harness.h"
@@ -337,6 +339,127 @@ static void test_list_dir(void)
     CHECK(am_port_list_dir(p, names, sizeof names, &count, err, sizeof err) == AM_ERR_IO && strstr(err, "none"), "missing: %s", err);
 }
 
+/* the whole text of path into buf (capacity cap), "" when unreadable */
+static const char* text_of(const char* path, char* buf, long cap)
+{
+    char err[AM_ERR_MAX];
+    long len = 0;
+    if (am_port_read_file(path, buf, cap, &len, err, sizeof err) != AM_OK) buf[0] = 0;
+    return buf;
+}
+
+/* a file planted by someone else where amorph writes is never written through (issue 31): a
+ * symbolic or hard link at the name a temporary had (path.tmp.PID), at an appended table, at a
+ * lock; the temporary's name is path.tmp.PID.NONCE, new for every write, and a failure names the
+ * user's path, not the temporary */
+static void test_no_write_through_links(void)
+{
+    char err[AM_ERR_MAX], d[600], p[700], q[800], victim[700], buf[256], names[4096];
+    if (!scratch[0]) return;
+    snprintf(d, sizeof d, "%s/links-%ld", scratch, (long)getpid());
+    CHECK(am_port_make_dir(d, err, sizeof err) == AM_OK, "%s", err);
+    snprintf(victim, sizeof victim, "%s/victim", d);
+    CHECK(am_port_write_file(victim, "secret\n", 7, err, sizeof err) == AM_OK, "%s", err);
+
+    /* the old predictable temporary names, planted as a symbolic and a hard link to the victim */
+    snprintf(p, sizeof p, "%s/out.lattice", d);
+    snprintf(q, sizeof q, "%s.tmp.%ld", p, (long)getpid());
+    CHECK(symlink(victim, q) == 0, "symlink %s", q);
+    CHECK(am_port_write_file(p, "lattice\n", 8, err, sizeof err) == AM_OK, "write beside a planted link: %s", err);
+    struct stat sb;
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "the victim was written through a planted symlink: '%s'", buf);
+    CHECK(lstat(p, &sb) == 0 && S_ISREG(sb.st_mode) && sb.st_nlink == 1, "out.lattice is not a file of its own after the write");
+    unlink(q);
+    CHECK(link(victim, q) == 0, "link %s", q);
+    CHECK(am_port_write_file(p, "lattice2\n", 9, err, sizeof err) == AM_OK, "write beside a planted hard link: %s", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "the victim was written through a planted hard link: '%s'", buf);
+    CHECK(!strcmp(text_of(p, buf, sizeof buf), "lattice2\n"), "out.lattice reads '%s'", buf);
+    unlink(q);
+    /* the file itself a link: replaced by the new file, the link's target untouched */
+    CHECK(unlink(p) == 0 && symlink(victim, p) == 0, "symlink %s", p);
+    CHECK(am_port_write_file(p, "new\n", 4, err, sizeof err) == AM_OK, "replace a link: %s", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n") && lstat(p, &sb) == 0 && S_ISREG(sb.st_mode),
+          "a replace wrote through the link at the path: victim '%s'", buf);
+
+    /* a temporary's name: path.tmp.PID.NONCE (16 hex digits), another one for the next write */
+    am_port_stream w1 = -1, w2 = -1;
+    snprintf(p, sizeof p, "%s/a.txt", d);
+    snprintf(q, sizeof q, "%s/b.txt", d);
+    CHECK(am_port_open_write(p, &w1, err, sizeof err) == AM_OK && am_port_open_write(q, &w2, err, sizeof err) == AM_OK, "%s", err);
+    int count = 0, temps = 0;
+    char first[300] = "";
+    CHECK(am_port_list_dir(d, names, sizeof names, &count, err, sizeof err) == AM_OK, "%s", err);
+    const char* nm = names;
+    for (int k = 0; k < count; k++, nm += strlen(nm) + 1) {
+        const long pid = am_temp_name_pid(nm);
+        if (pid < 0) continue;
+        const char* dot = strrchr(nm, '.');
+        CHECK(pid == (long)getpid() && dot && strlen(dot + 1) == 16, "temporary %s", nm);
+        if (!temps++) snprintf(first, sizeof first, "%s", dot);
+        else CHECK(strcmp(first, dot) != 0, "two temporaries with one nonce %s", dot);
+    }
+    CHECK(temps == 2, "%d temporaries for two open writes", temps);
+    /* this process's own temporaries are not stale */
+    int removed = -1;
+    CHECK(am_port_remove_stale(d, &removed, err, sizeof err) == AM_OK && removed == 0, "removed %d of its own", removed);
+    CHECK(am_port_close(w1, 1, err, sizeof err) == AM_OK && am_port_close(w2, 1, err, sizeof err) == AM_OK, "%s", err);
+
+    /* appends: a symbolic link, a dangling one and a hard link at the table are refused */
+    snprintf(p, sizeof p, "%s/log.csv", d);
+    CHECK(symlink(victim, p) == 0, "symlink %s", p);
+    err[0] = 0;
+    CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && strstr(err, "log.csv: a symbolic link: refused"),
+          "append through a symlink: '%s'", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "a row was appended to the victim: '%s'", buf);
+    snprintf(q, sizeof q, "%s/nowhere", d);
+    CHECK(unlink(p) == 0 && symlink(q, p) == 0, "symlink %s", p);
+    CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && !am_port_exists(q), "append through a dangling link made %s", q);
+    CHECK(unlink(p) == 0 && link(victim, p) == 0, "link %s", p);
+    err[0] = 0;
+    CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && strstr(err, "hard link"), "append to a hard link: '%s'", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "a row was appended to the victim: '%s'", buf);
+    unlink(p);
+    /* a FIFO is refused at once, never waited on */
+    CHECK(mkfifo(p, 0644) == 0, "mkfifo %s", p);
+    err[0] = 0;
+    CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && strstr(err, "not a regular file"), "append to a FIFO: '%s'", err);
+    unlink(p);
+
+    /* the lock: a link is refused and its target left alone; an existing lock file is taken as
+     * it is, its text changed only by am_port_lock_stamp (a refused command writes nothing) */
+    snprintf(p, sizeof p, "%s/lock", d);
+    CHECK(symlink(victim, p) == 0, "symlink %s", p);
+    err[0] = 0;
+    CHECK(am_port_lock(p, err, sizeof err) == AM_ERR_ARG && strstr(err, "symbolic link"), "lock through a symlink: '%s'", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "the lock wrote through a link: '%s'", buf);
+    CHECK(unlink(p) == 0 && link(victim, p) == 0, "link %s", p);
+    CHECK(am_port_lock(p, err, sizeof err) == AM_ERR_ARG && strstr(err, "hard link"), "lock on a hard link: '%s'", err);
+    CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "the lock wrote through a hard link: '%s'", buf);
+    unlink(p);
+    CHECK(am_port_write_file(p, "12345\n", 6, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_port_lock(p, err, sizeof err) == AM_OK, "lock: %s", err);
+    CHECK(!strcmp(text_of(p, buf, sizeof buf), "12345\n"), "taking the lock wrote '%s'", buf);
+    am_port_lock_stamp();
+    char own[32];
+    snprintf(own, sizeof own, "%ld\n", (long)getpid());
+    CHECK(!strcmp(text_of(p, buf, sizeof buf), own), "the stamped lock reads '%s', want the pid", buf);
+    am_port_unlock();
+
+    /* a write into a missing folder names the file, not its temporary */
+    snprintf(p, sizeof p, "%s/no/such/out.lattice", d);
+    err[0] = 0;
+    CHECK(am_port_write_file(p, "x", 1, err, sizeof err) == AM_ERR_IO && strstr(err, "out.lattice: cannot create") && !strstr(err, ".tmp."),
+          "message '%s'", err);
+
+    /* the folder goes */
+    static const char* const files[] = {"victim", "out.lattice", "a.txt", "b.txt", "lock"};
+    for (size_t k = 0; k < sizeof files / sizeof files[0]; k++) {
+        snprintf(p, sizeof p, "%s/%s", d, files[k]);
+        unlink(p);
+    }
+    CHECK(rmdir(d) == 0, "%s: not empty after the test", d);
+}
+
 /* 1 when a child process can take the lock of path (it exits at once, releasing it) */
 static int other_process_can_lock(const char* path)
 {
@@ -383,6 +506,7 @@ int main(int argc, char** argv)
     RUN(test_streams);
     RUN(test_remove_stale);
     RUN(test_locks);
+    RUN(test_no_write_through_links);
     RUN(test_list_dir);
     RUN(test_progress_is_silent_off_a_terminal);
     return SUMMARY();

@@ -191,6 +191,15 @@ static void test_model_errors(void)
     g_lat.cell[1] = 1;
     env.period_steps = 0;
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "period 0 accepted");
+    env.period_steps = 500;
+    /* a cell edge outside the configuration's voxel_size range, however the lattice got it (issue
+     * 31: a subnormal one gave NaN scales, a NaN cast to long in the collision grid) */
+    g_lat.voxel_size = AM_PARAM_FROM_DOUBLE(1e-45);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "voxel size"), "voxel size 1e-45: %s", err);
+    g_lat.voxel_size = AM_P(100);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "outside 1e-05..10"), "voxel size 100: %s", err);
+    g_lat.voxel_size = AM_P(0.01);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "voxel size 0.01: %s", err);
     CHECK(am_lattice_init(&g_lat, AM_MAX_DIM + 1, 1, 1, AM_P(0.01), err, sizeof err) == AM_ERR_CAPACITY, "over capacity");
 }
 

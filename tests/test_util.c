@@ -615,12 +615,13 @@ static void test_parse_numbers(void)
 /* the temporaries' names the ports remove on resume */
 static void test_temp_name_pid(void)
 {
-    const char* pid = am_temp_name_pid("log.csv.tmp.123");
-    CHECK(pid && !strcmp(pid, "123"), "log.csv.tmp.123");
-    pid = am_temp_name_pid("a.tmp.b.tmp.7");
-    CHECK(pid && !strcmp(pid, "7"), "the last .tmp. counts");
-    const char* no[] = {".tmp.5", "x.tmp.", "a.tmp.12x", "c.tmp.-1", "notes.tmp.txt", "plain"};
-    for (size_t k = 0; k < sizeof no / sizeof no[0]; k++) CHECK(!am_temp_name_pid(no[k]), "'%s' is no temporary", no[k]);
+    CHECK(am_temp_name_pid("log.csv.tmp.123") == 123, "log.csv.tmp.123 (an older build's)");
+    CHECK(am_temp_name_pid("a.tmp.b.tmp.7") == 7, "the last .tmp. counts");
+    CHECK(am_temp_name_pid("log.csv.tmp.123.00ab34cd56ef7890") == 123, "NAME.tmp.PID.NONCE");
+    CHECK(am_temp_name_pid("x.tmp.99999999999999999999") == 2000000000L, "a pid past any process's");
+    const char* no[] = {".tmp.5", "x.tmp.", "a.tmp.12x", "c.tmp.-1", "notes.tmp.txt", "plain", "a.tmp.5.", "a.tmp.5.12345678901234567",
+                        "a.tmp.5.ABC", "a.tmp.5.1.2", "a.tmp..1f"};
+    for (size_t k = 0; k < sizeof no / sizeof no[0]; k++) CHECK(am_temp_name_pid(no[k]) == -1, "'%s' is no temporary", no[k]);
 }
 
 int main(int argc, char** argv)

@@ -316,7 +316,7 @@ static void test_vxa_voxcad_conventions(void)
     CHECK(e->temp_amplitude == AM_P(14) && e->temp_base == AM_P(0) && e->dt_frac == AM_P(0.2), "amplitude %g", (double)e->temp_amplitude);
     CHECK(info_a.temp_period == 0.025 && !info_a.period_steps_given, "period %g", info_a.temp_period);
     CHECK(am_vxa_period_steps(info_a.temp_period, 5e-5) == 500 && am_vxa_period_steps(1e-9, 1e-3) == 1 &&
-              am_vxa_period_steps(1, 0) == 1 && am_vxa_period_steps(1e12, 1e-3) == 1000000000,
+              am_vxa_period_steps(1, 0) == 1 && am_vxa_period_steps(1e12, 1e-3) == 10000000,
           "period in steps");
     /* BASE64 layers: bytes 1 2 3, then 0 1 0 */
     CHECK(lat_a.nx == 3 && lat_a.ny == 1 && lat_a.nz == 2 && lat_a.voxel_size == AM_P(0.001), "size");
@@ -464,6 +464,10 @@ static void test_vxa_errors(void)
     expect_vxa(vxa(0, MAT("<Density>-1</Density>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Density> -1 must be greater than 0");
     expect_vxa(vxa(0, MAT("<Poissons_Ratio>0.5</Poissons_Ratio>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Poissons_Ratio> 0.5 must be in [0, 0.5)");
     expect_vxa(vxa(0, MAT("<uStatic>-0.5</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> -0.5 must be 0 or more");
+    expect_vxa(vxa(0, MAT("<uStatic>1267650600228229401496703205376</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> 1.2676506e+30 is too large (at most 1e+30)");
+    /* the cell edge: the configuration's voxel_size range (a subnormal one made NaN scales) */
+    expect_vxa(vxa(0, 0, "<Lattice><Lattice_Dim>1e-45</Lattice_Dim></Lattice>" SH("2", "1", "1"), 0), AM_ERR_RANGE,
+               "t.vxa:7: <Lattice_Dim> 1.40129846e-45 is too small (at least 1e-05 m)");
     expect_vxa(vxa(0, MAT("<CTE>abc</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'abc' is not a finite number");
     expect_vxa(vxa(0, MAT("<CTE>nan</CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: 'nan' is not a finite number");
     expect_vxa(vxa(0, MAT("<CTE></CTE>"), 0, 0), AM_ERR_PARSE, "t.vxa:5: <CTE>: '' is not a finite number");
@@ -494,8 +498,21 @@ static void test_vxa_errors(void)
                "t.vxa:2: <CTEMode>: 'cubic' is not volumetric or linear");
     expect_vxa(vxa("<Amorph Version=\"1\"><Material ID=\"2\"/></Amorph>", 0, 0, 0), AM_ERR_PARSE,
                "t.vxa:2: <Material ID=\"2\"> in <Amorph>: the ID must be a material number 1..1");
+    /* one range per setting wherever it comes from (issue 31): the configuration's period_steps
+     * (2..10^7), period_s (at most 10^4 s) and voxel_size (1e-5..10 m); a number past a long is
+     * shown as written, not clamped; a value above a bound that has no upper text is "too large" */
+    expect_vxa(vxa("<Amorph Version=\"1\"><PeriodSteps>1000000000</PeriodSteps></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <PeriodSteps> 1000000000 is outside 2..10000000");
+    expect_vxa(vxa("<Amorph Version=\"1\"><PeriodSteps>99999999999999999999</PeriodSteps></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <PeriodSteps> 99999999999999999999 is outside 2..10000000");
+    expect_vxa(vxa("<Environment><Thermal><TempEnabled>1</TempEnabled><VaryTempEnabled>1</VaryTempEnabled>"
+                   "<TempPeriod>1e30</TempPeriod></Thermal></Environment>", 0, 0, 0),
+               AM_ERR_RANGE, "t.vxa:2: <TempPeriod> 1e+30 is too large (at most 10000 s)");
+    expect_vxa(vxa("<Amorph Version=\"1\"><Lift>1267650600228229401496703205376</Lift></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <Lift> 1.2676506e+30 is too large (at most 1e+30)");
+    CHECK(am_vxa_period_steps(1e30, 1e-5) == 10000000, "a period in seconds is at most 10^7 steps");
     expect_vxa(vxa("<Amorph Version=\"1\"><PeriodSteps>0</PeriodSteps></Amorph>", 0, 0, 0), AM_ERR_RANGE,
-               "t.vxa:2: <PeriodSteps> 0 is outside 1..1000000000");
+               "t.vxa:2: <PeriodSteps> 0 is outside 2..10000000");
     /* a value too long for the reader's value buffer */
     memset(mats, '1', 1000);
     mats[1000] = 0;
@@ -751,6 +768,11 @@ static void test_vxa_phase_offset(void)
     expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> has 0 <Layer> elements, Z_Voxels says 1");
     snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>", PH("<Layer>1 inf</Layer>"));
     expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> layer 0: value 1 'inf' is not a finite number");
+    /* a number of 64 characters is one (too long) value, not two pieces read as two values
+     * (issue 31: it was split at 63) */
+    snprintf(big, sizeof big, "<VXA><VXC><Palette><Material/></Palette>\n%s</Structure></VXC></VXA>",
+             PH("<Layer>0.25000000000000000000000000000000000000000000000000000000000001</Layer>"));
+    expect_vxa(big, AM_ERR_PARSE, "t.vxa:2: <PhaseOffset> layer 0: value 0 is longer than 63 characters");
 }
 
 /* VoxCAD's cantilever: the clamp and the tip load come from its regions; the tip deflects as the
@@ -865,6 +887,12 @@ static void test_vxa_vxd(void)
     CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, "<VXA/>", "v4.vxd", err, sizeof err) == AM_ERR_PARSE &&
               !strcmp(err, "v4.vxd:1: not a VXD file: the root element is <VXA>, expected <VXD>"),
           "%s", err);
+    /* a replace path too long to read is shown by its start (issue 31: it was shown as "") */
+    static char v6[400];
+    snprintf(v6, sizeof v6, "<VXD>\n<A replace=\"VXA.%0150d\"/></VXD>", 7);
+    CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v6, "v6.vxd", err, sizeof err) == AM_OK &&
+              strstr(info_b.warning, "v6.vxd:2: warning: <A replace=\"VXA.000000000000000000000000000000000000...\">: not a path"),
+          "%s", info_b.warning);
     const char* v5 = "<VXD><A replace=\"VXA.B\"/>\n<C replace=\"VXA.B\"/></VXD>";
     CHECK(am_vxa_parse_vxd(&lat_b, &info_b, &doc, btext, "base.vxa", &vdoc, v5, "v5.vxd", err, sizeof err) == AM_ERR_PARSE &&
               !strcmp(err, "v5.vxd:2: replace=\"VXA.B\" given twice (first on line 1)"),

@@ -190,6 +190,9 @@ typedef am_status (*tool_line_fn)(void* ctx, int lineno, char* line, long n, cha
 am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz);
 /* a configuration file over d (am_evo_parse_line per line); nul_ends as tool_src_open (run_dir.c) */
 am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz);
+/* the same, with the line that set each key (key_line[i] for am_evo_key_name(i), left as it is for
+ * a key no line sets; capacity AM_EVO_KEY_MAX) */
+am_status tool_read_config_lines(const char* path, am_evo_def* d, int nul_ends, int* key_line, char* err, int errsz);
 /* a genome from the lines of src (its start) */
 am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);
 /* the genome of src (at its start) into tool_genome(c), expressed into lat with the built-in

@@ -78,19 +78,38 @@ int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd)
     return 1;
 }
 
+/* key (a flag's) set after the config file: no line of the file holds its value any more */
+static void flag_set(int* key_line, const char* key)
+{
+    char t[80];
+    int n = snprintf(t, sizeof t, "%s =", key);
+    const int k = n > 0 && n < (int)sizeof t ? am_evo_line_key(t, n) : -1;
+    if (k >= 0 && k < AM_EVO_KEY_MAX) key_line[k] = 0;
+}
+
 /* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
  * `extra` more (keys and values, NULL-terminated; may be NULL) */
 TOOL_NOINLINE int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd)
 {
     char err[AM_ERR_MAX];
+    int key_line[AM_EVO_KEY_MAX] = {0}; /* the config file's line that set each key; 0: a default or a flag */
     *d = am_default_evo();
     if (o->config) config = o->config;
-    if (config && tool_read_config(config, d, 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    for (int k = 0; k < o->nflags; k++)
+    if (config && tool_read_config_lines(config, d, 0, key_line, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    for (int k = 0; k < o->nflags; k++) {
         if (am_evo_set(d, o->key[k], o->val[k], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
-    for (int k = 0; extra && extra[k]; k += 2)
+        flag_set(key_line, o->key[k]);
+    }
+    for (int k = 0; extra && extra[k]; k += 2) {
         if (am_evo_set(d, extra[k], extra[k + 1], err, sizeof err) != AM_OK) return tool_usage_error("%s: --%s", cmd, err);
-    if (am_evo_check(d, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
+        flag_set(key_line, extra[k]);
+    }
+    /* a relation between keys: named with the file and line of the key's value when a file set it */
+    int key;
+    if (am_evo_check_key(d, &key, err, sizeof err) != AM_OK) {
+        if (key >= 0 && key < AM_EVO_KEY_MAX && key_line[key] > 0) return tool_usage_error("%s:%d: %s", config, key_line[key], err);
+        return tool_usage_error("%s: %s", cmd, err);
+    }
     return 0;
 }
 
@@ -345,11 +364,31 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 }
 
 
+/* dir holds a run already: --out is refused (nothing written) */
+static int refuse_used(const char* dir)
+{
+    char path[TOOL_PATH_MAX];
+    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
+    if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
+    return 0;
+}
+
+/* A run folder is written only once the command is accepted: a folder in use by another process
+ * is refused first (taking the lock of an existing lock file writes nothing), then the folder is
+ * checked, and only then is the lock file made (when missing), stamped with this process's id and
+ * the run's files written. */
 int open_start(am_evo* e, const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX];
+    const int locked = run_has_lock(dir);
+    if (locked && lock_run(dir)) return 2;
+    if (refuse_used(dir)) return 2;
     if (am_port_make_dir(dir, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    if (lock_run(dir)) return 2;
+    if (!locked && (lock_run(dir) || refuse_used(dir))) return 2;
+    am_port_lock_stamp();
+    /* what a process killed before the first checkpoint left: its files are started over, its
+     * temporaries go */
+    remove_stale(dir);
     return start_prepare(e, d, dir);
 }
 
@@ -370,14 +409,16 @@ static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictu
 }
 
 /* loads the run in dir into e and checks it against the settings the user gives now (flags o,
- * then `extra` keys and values); 0, 1 or 2 */
-static TOOL_NOINLINE int resume_load(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
+ * then `extra` keys and values), its tables included; writes nothing. 0, 1 or 2 */
+static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
     path_join(path, sizeof path, dir, RUN_CONFIG);
-    const int has_config = am_port_exists(path);
+    int started = am_port_exists(path) || run_has_lock(dir);
+    path_join(path, sizeof path, dir, RUN_LOG);
+    started = started || am_port_exists(path);
     path_join(path, sizeof path, dir, RUN_CHECKPOINT);
-    if (has_config && !am_port_exists(path))
+    if (started && !am_port_exists(path))
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
                                 dir, dir);
@@ -394,7 +435,29 @@ static TOOL_NOINLINE int resume_load(am_evo* e, const char* dir, const evo_opts*
     e->def.checkpoint_seconds = d.checkpoint_seconds;
     if (e->def.evaluations < e->evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, e->def.evaluations, e->evaluations);
-    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation")) return 2;
+    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation", 0)) return 2;
+    char hdr[AM_EVO_EVALS_ROW_MAX + 2];
+    int n = evals_header(&e->def, hdr, (int)sizeof hdr);
+    path_join(path, sizeof path, dir, RUN_EVALS);
+    hdr[n - 1] = 0;
+    const int has_evals = am_port_exists(path);
+    if (has_evals && trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation", 0)) return 2;
+    /* the tables are appended to: a link (or a file of several names) in their place is refused
+     * now, before anything is written, not at the first row (appending nothing writes nothing) */
+    char err[AM_ERR_MAX];
+    path_join(path, sizeof path, dir, RUN_LOG);
+    if (am_port_append_file(path, "", 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    path_join(path, sizeof path, dir, RUN_EVALS);
+    if (has_evals && am_port_append_file(path, "", 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    return 0;
+}
+
+/* the accepted run e in dir made ready to go on: its tables cut back to its checkpoint, its
+ * configuration written; 0, 1 or 2 */
+static TOOL_NOINLINE int resume_prepare(const am_evo* e, const char* dir)
+{
+    char path[TOOL_PATH_MAX];
+    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation", 1)) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, RUN_EVALS);
@@ -403,16 +466,23 @@ static TOOL_NOINLINE int resume_load(am_evo* e, const char* dir, const evo_opts*
         if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation")) return 2;
+        if (trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation", 1)) return 2;
     }
     if (write_config(dir, &e->def)) return 1;
     return 0;
 }
 
+/* as open_start: a folder in use is refused first (without writing), the run is checked, and
+ * only an accepted run has its lock stamped and its files written */
 int open_resume(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
 {
-    if (am_port_exists(dir) && lock_run(dir)) return 2;
-    int rc = resume_load(e, dir, o, extra);
+    const int locked = run_has_lock(dir);
+    if (locked && lock_run(dir)) return 2;
+    int rc = resume_check(e, dir, o, extra);
+    if (rc) return rc;
+    if (!locked && (lock_run(dir) || (rc = resume_check(e, dir, o, extra)) != 0)) return rc ? rc : 2;
+    am_port_lock_stamp();
+    rc = resume_prepare(e, dir);
     /* what a kill during a write left: the run's files are whole, their temporaries go */
     if (rc == 0) remove_stale(dir);
     return rc;

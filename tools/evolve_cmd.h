@@ -89,8 +89,9 @@ void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall);
 int write_summary(const char* dir, const am_evo* e, double wall);
 /* one row of log.csv */
 int append_log(const char* dir, const am_evo_stats* s);
-/* dir/file (a table with header hdr) cut back to its first `rows` rows */
-int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit);
+/* dir/file (a table with header hdr) checked to hold its first `rows` rows, and cut back to them
+ * when cut is 1 (cut 0 writes nothing) */
+int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut);
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
 /* the header of a run's evals.csv, with its newline; its length */
@@ -99,8 +100,10 @@ int evals_header(const am_evo_def* d, char* buf, int cap);
 int default_out(char* out, size_t cap);
 /* a new run's files in dir (made and locked): configuration, log headers, first checkpoint */
 int start_prepare(am_evo* e, const am_evo_def* d, const char* dir);
-/* the folder's lock (one process at a time) */
+/* the folder's lock (one process at a time), taken without writing (am_port_lock_stamp does) */
 int lock_run(const char* dir);
+/* 1 when dir holds a lock file already */
+int run_has_lock(const char* dir);
 /* the stale temporaries of atomic writes in dir removed (a warning when one cannot be); no status */
 void remove_stale(const char* dir);
 /* the checkpoint at path read into e */

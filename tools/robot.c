@@ -118,7 +118,7 @@ static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, cons
 {
     static am_xml_doc doc, vxd_doc; /* the XML reader's workspaces, used during this call only */
     static am_vxa_info info;        /* the file's environment and warnings, copied out below */
-    static char vxd_text[1L << 20]; /* the VXD file's text (a structure and its layers) */
+    static char vxd_text[4L << 20]; /* the VXD file's text (a structure and its layers): 4 MiB, as a VXA file's */
     am_status st;
     if (vxd) {
         long len = 0;

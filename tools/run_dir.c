@@ -162,8 +162,9 @@ TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
 
 /* dir/file (a table: log.csv or evals.csv with header hdr) cut back to the header and the first
  * `rows` rows (rows the checkpoint has seen, `unit` its count's name in messages): the file is
- * read line by line, then, when it holds more, copied that far into its replacement */
-TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit)
+ * read line by line, then, when it holds more and cut is 1, copied that far into its replacement
+ * (cut 0 only checks it, writing nothing) */
+TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
     long n, have = 0;
@@ -195,7 +196,7 @@ TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr,
         tool_src_close(&src);
         return tool_usage_error("%s: %ld rows, but the checkpoint is at %s %ld (the table is damaged)", path, have, unit, rows);
     }
-    if (!more) {
+    if (!more || !cut) {
         tool_src_close(&src);
         return 0;
     }
@@ -271,14 +272,25 @@ TOOL_NOINLINE int start_prepare(am_evo* e, const am_evo_def* d, const char* dir)
 
 
 /* owns the run folder dir (its `lock` file) while this process works in it: a second process on
- * the same folder is refused. 0, or 2 after a message */
+ * the same folder is refused. Taking it writes nothing into an existing lock file (the caller
+ * stamps it with am_port_lock_stamp once it has accepted the work); a `lock` that is a link, or
+ * not a regular file, is refused. 0, or 2 after a message */
 TOOL_NOINLINE int lock_run(const char* dir)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     path_join(path, sizeof path, dir, RUN_LOCK);
-    if (am_port_lock(path, err, sizeof err) != AM_OK)
-        return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
+    am_status st = am_port_lock(path, err, sizeof err);
+    if (st == AM_ERR_IO) return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
+    if (st != AM_OK) return tool_usage_error("%s", err);
     return 0;
+}
+
+/* 1 when dir holds a lock file already (a run's, or a run's start) */
+int run_has_lock(const char* dir)
+{
+    char path[TOOL_PATH_MAX];
+    path_join(path, sizeof path, dir, RUN_LOCK);
+    return am_port_exists(path);
 }
 
 
@@ -345,20 +357,29 @@ int tool_is_run_dir(const char* path)
 typedef struct config_ctx {
     am_evo_def* d;
     const char* fname;
+    int* key_line;
 } config_ctx;
 
 static am_status config_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
 {
     config_ctx* c = (config_ctx*)ctx;
-    return am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
+    am_status st = am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
+    const int key = c->key_line && st == AM_OK ? am_evo_line_key(line, n) : -1;
+    if (key >= 0 && key < AM_EVO_KEY_MAX) c->key_line[key] = lineno;
+    return st;
 }
 
 am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz)
 {
+    return tool_read_config_lines(path, d, nul_ends, NULL, err, errsz);
+}
+
+am_status tool_read_config_lines(const char* path, am_evo_def* d, int nul_ends, int* key_line, char* err, int errsz)
+{
     tool_src src;
     am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, nul_ends, err, errsz);
     if (st == AM_OK) {
-        config_ctx c = {d, path};
+        config_ctx c = {d, path, key_line};
         st = tool_src_each(&src, config_line, &c, err, errsz);
     } else if (src.binary) {
         st = tool_src_binary(&src, err, errsz);

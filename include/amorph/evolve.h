@@ -51,6 +51,14 @@ am_evo_def am_default_evo(void);
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
 /* checks the whole definition (relations between keys); messages name the key */
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
+/* am_evo_check, with the index (am_evo_key_name) of the key its message names in *key (-1 when
+ * the definition is whole), so that a caller can say where that key was set ("file:line: ") */
+am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz);
+/* the index of the key a configuration line sets (n characters), or -1 (a comment, a blank or a
+ * malformed line, an unknown key) */
+int am_evo_line_key(const char* text, long n);
+/* more than the configuration keys there are: a table of one entry per key */
+#define AM_EVO_KEY_MAX 64
 /* am_evo_check, and that the definition can evolve: a relaxation long enough for a body to settle
  * (relax_max_steps at least release_steps + 50), as a run needs and a configuration to print does
  * not (am_evo_init checks it) */
@@ -307,6 +315,7 @@ typedef struct am_evo_ckpt_reader {
     long idx;                   /* its index */
     int first;                  /* the first line of its genome */
     char where[96];             /* "fname (genome from line N)", the genome's file name in messages */
+    int key_line[AM_EVO_KEY_MAX]; /* the line that set each key of the configuration, 0 if none */
     am_genome_reader gr;
 } am_evo_ckpt_reader;
 void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);

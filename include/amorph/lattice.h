@@ -34,6 +34,12 @@ typedef struct am_palette {
     am_material mat[AM_MAX_MATERIALS];      /* mat[k - 1] is cell value k */
 } am_palette;
 
+/* the cell edges amorph simulates, m: one range wherever a size comes from (a lattice or VXA file,
+ * the configuration's voxel_size, a model built from any of them); outside it the model's scales
+ * lose their meaning (a subnormal edge makes masses and stiffnesses 0 or infinite) */
+#define AM_VOXEL_SIZE_MIN 1e-5
+#define AM_VOXEL_SIZE_MAX 10.0
+
 typedef struct am_lattice {
     int nx, ny, nz;             /* cells along x, y, z; each 1..AM_MAX_DIM */
     am_param voxel_size;        /* cell edge, m */

@@ -53,17 +53,25 @@ void am_port_progress(const char* line);
  * AM_ERR_IO if unreadable, AM_ERR_CAPACITY if larger than cap - 1. */
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz);
 /* writes n bytes to path atomically: a temporary file beside it, flushed, then renamed over
- * path, so a reader (or a crash) sees either the old file or the whole new one (one write of a
+ * path (a link at path is replaced, never written through), so a reader (or a crash) sees either
+ * the old file or the whole new one (one write of a
  * stream, below; the library provides it over the streams, src/port_file.c: a port does not) */
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz);
-/* appends n bytes to path (created if missing); not atomic (logs) */
+/* appends n bytes to path (created if missing); not atomic (logs). The file is opened without
+ * following a link: a symbolic link, a file with several names (a hard link), a FIFO or a device
+ * at path is refused with AM_ERR_IO, never written (port/baremetal: the host's semihosting cannot
+ * tell, and writes where it points). */
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz);
 /* streams: a file written or read piece by piece, so a text of any length needs only a small
  * buffer. A written stream is an atomic replace like am_port_write_file: its pieces go to a
  * temporary file beside path, which a committing am_port_close flushes and renames over path; a
  * reader (or a crash) sees the old file or the whole new one, never a part. Streams live in a
  * fixed table of the port (at least AM_PORT_STREAMS open at once; no allocation); the handle
- * names a slot. The path string must stay valid and unchanged until am_port_close. */
+ * names a slot. The path string must stay valid and unchanged until am_port_close. The temporary
+ * is made anew, never opened through a file or link planted at its name: the POSIX and Windows
+ * ports name it path.tmp.PID.NONCE (NONCE 16 hex digits, unpredictable) and create it exclusively,
+ * trying another NONCE when the name is taken; port/baremetal's is path.tmp (semihosting has no
+ * exclusive create). A failure to make it names path, not the temporary. */
 #define AM_PORT_STREAMS 2
 typedef int am_port_stream;
 /* starts an atomic replace of path (nothing is visible at path until the commit) */
@@ -85,9 +93,9 @@ am_status am_port_make_dir(const char* path, char* err, int errsz);
 int am_port_exists(const char* path);
 /* removes the temporaries of atomic replaces (above) that a process left in the folder dir when
  * it died before renaming them (a kill during a write), and sets *removed (may be NULL) to their
- * count. The POSIX and Windows ports' temporaries are path.tmp.PID: they remove the regular
- * files directly in dir named NAME.tmp.DIGITS (NAME not empty), except this process's own, and
- * touch nothing else. Call it only while no other process writes files in dir (the caller holds the folder's
+ * count. The POSIX and Windows ports' temporaries are path.tmp.PID.NONCE: they remove the regular
+ * files directly in dir named NAME.tmp.DIGITS.HEX or NAME.tmp.DIGITS (an older build's; NAME not
+ * empty, am_temp_name_pid), except this process's own, and touch nothing else. Call it only while no other process writes files in dir (the caller holds the folder's
  * lock, am_port_lock). AM_ERR_IO when dir cannot be listed or a temporary cannot be removed (the
  * others are removed all the same). A port that cannot list a folder returns AM_OK with 0
  * removed: port/baremetal, whose one temporary per file, path.tmp, is reused and renamed by the
@@ -131,14 +139,19 @@ int am_port_interrupted(void);
 
 /* ---- owning a folder ---- */
 
-/* takes the exclusive lock of the file path (created if missing; the POSIX and Windows ports
- * write the process id into it), held until am_port_unlock or the end of the process, however it
- * ends (kill -9 included: no stale lock is left). Up to AM_PORT_LOCKS locks at a time (an
- * experiment holds one per run folder it runs). AM_ERR_IO when another process holds it (the
- * message names it) or the file cannot be made; AM_ERR_CAPACITY past AM_PORT_LOCKS. A port with
- * one process does nothing. */
+/* takes the exclusive lock of the file path (created empty if missing), held until am_port_unlock
+ * or the end of the process, however it ends (kill -9 included: no stale lock is left). Taking it
+ * writes nothing into an existing file (am_port_lock_stamp does, once the caller has accepted its
+ * work), and the file is opened without following a link: a symbolic link, a file with several
+ * names (a hard link), a FIFO or a device at path is refused. Up to AM_PORT_LOCKS locks at a time
+ * (an experiment holds one per run folder it runs). AM_ERR_IO when another process holds it (the
+ * message names it); AM_ERR_ARG when the file cannot be opened, made or locked (the message says
+ * why); AM_ERR_CAPACITY past AM_PORT_LOCKS. A port with one process does nothing. */
 #define AM_PORT_LOCKS 64
 am_status am_port_lock(const char* path, char* err, int errsz);
+/* writes this process's id into the file of the lock taken last (the POSIX and Windows ports: the
+ * owner, for people and for the message of a refused second process; the lock is what counts) */
+void am_port_lock_stamp(void);
 /* releases every lock this process holds */
 void am_port_unlock(void);
 

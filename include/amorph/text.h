@@ -62,9 +62,10 @@ int am_parse_long(const char* s, long* out);
 int am_parse_u64(const char* s, uint64_t* out);
 int am_parse_double(const char* s, double* out);
 
-/* the PID digits of an atomic write's temporary file name NAME.tmp.PID (NAME not empty, PID
- * decimal digits, as the POSIX and Windows ports name them), or NULL for any other name; the ports'
- * am_port_remove_stale removes the files so named */
-const char* am_temp_name_pid(const char* name);
+/* the process id in an atomic write's temporary file name, NAME.tmp.PID.NONCE as the POSIX and
+ * Windows ports name them (NAME not empty, PID decimal digits, NONCE 1 to 16 lowercase hex digits)
+ * or NAME.tmp.PID as builds before them did; -1 for any other name. A PID of 2 * 10^9 or more
+ * reads as 2 * 10^9. The ports' am_port_remove_stale removes the files so named. */
+long am_temp_name_pid(const char* name);
 
 #endif

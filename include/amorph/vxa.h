@@ -69,7 +69,7 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
 #define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 18L + AM_MAX_DIM * 64L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
- * number, at least 1, at most 1e9 */
+ * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
 int am_vxa_period_steps(double period_s, double dt);
 
 #endif

@@ -223,9 +223,12 @@ static int32_t sh_remove(const char* name)
 #define PORT_TMP_CAP PORT_PATH_MAX
 typedef int32_t port_handle;
 
-/* the temporary beside path: path.tmp (one program per board); 0 when it does not fit */
-static int sys_tmp_name(char* out, size_t cap, const char* path)
+/* the temporary beside path: path.tmp (one program per board; semihosting opens files with fopen's
+ * modes, none of which creates exclusively, so a name nobody could guess buys nothing); 0 when it
+ * does not fit */
+static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
 {
+    (void)nonce;
     size_t pl = strlen(path);
     if (pl + 5 > cap) return 0;
     memcpy(out, path, pl);
@@ -233,10 +236,12 @@ static int sys_tmp_name(char* out, size_t cap, const char* path)
     return 1;
 }
 
-static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
+static am_status sys_create(const char* path, char* tmp, size_t cap, uint64_t* nonce, port_handle* h, char* err, int errsz)
 {
+    *nonce = 0;
+    sys_tmp_name(tmp, cap, path, 0);
     *h = sh_open(tmp, SH_MODE_WB);
-    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create (host errno %d)", tmp, (int)sh_call(SH_SYS_ERRNO, 0));
+    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create (host errno %d)", path, (int)sh_call(SH_SYS_ERRNO, 0));
     return AM_OK;
 }
 
@@ -417,6 +422,10 @@ am_status am_port_lock(const char* path, char* err, int errsz)
 {
     (void)path, (void)err, (void)errsz;
     return AM_OK;
+}
+
+void am_port_lock_stamp(void)
+{
 }
 
 void am_port_unlock(void)

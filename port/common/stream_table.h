@@ -11,10 +11,14 @@
  *   PORT_TMP_CAP   bytes for a temporary's name with its terminating zero (a stack buffer)
  *   port_handle    the system's handle of an open file
  * and these static functions, each of which reports its own failure through am_fail:
- *   int sys_tmp_name(char* out, size_t cap, const char* path)
- *       the temporary of path into out; 0 when it does not fit
- *   am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
- *       tmp created (or emptied) for writing
+ *   int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
+ *       the temporary of path named by nonce into out; 0 when it does not fit
+ *   am_status sys_create(const char* path, char* tmp, size_t cap, uint64_t* nonce, port_handle* h, char* err, int errsz)
+ *       a new temporary for path created for writing, never through a link or a file planted at
+ *       its name (where the port can promise it: an unpredictable nonce and an exclusive create,
+ *       tried again under a new nonce when the name is taken); its name into tmp and its nonce
+ *       into *nonce (the stream keeps the nonce, not the name); a failure names path, the
+ *       user's file, not the temporary
  *   am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
  *       path opened for reading
  *   am_status sys_write(port_handle h, const void* data, long n, const char* path, char* err, int errsz)
@@ -36,6 +40,7 @@
 static struct {
     port_handle h;
     const char* path; /* the caller's, valid until am_port_close */
+    uint64_t nonce;   /* a written stream's temporary: sys_tmp_name(path, nonce) */
     uint8_t used;     /* 1 while the slot is open */
     uint8_t writing;  /* 1: an atomic replace of path through its temporary */
     uint8_t failed;   /* 1 after a failed write: the stream will be dropped */
@@ -70,13 +75,15 @@ am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int
 {
     char tmp[PORT_TMP_CAP];
     *s = -1;
-    if (!sys_tmp_name(tmp, sizeof tmp, path)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
+    if (!sys_tmp_name(tmp, sizeof tmp, path, 0)) return am_fail(err, errsz, AM_ERR_IO, "%s: path too long", path);
     const int k = free_slot(path, err, errsz);
     if (k < 0) return AM_ERR_IO;
     port_handle h;
-    am_status st = sys_create(tmp, &h, err, errsz);
+    uint64_t nonce = 0;
+    am_status st = sys_create(path, tmp, sizeof tmp, &nonce, &h, err, errsz);
     if (st != AM_OK) return st;
     *s = claim(k, h, path, 1);
+    streams[k].nonce = nonce;
     return AM_OK;
 }
 
@@ -121,7 +128,7 @@ am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
         return AM_OK;
     }
     char tmp[PORT_TMP_CAP];
-    sys_tmp_name(tmp, sizeof tmp, path); /* fitted at open */
+    sys_tmp_name(tmp, sizeof tmp, path, streams[s].nonce); /* fitted at open */
     if (!commit || failed) {
         sys_drop(h, tmp);
         return commit ? am_fail(err, errsz, AM_ERR_IO, "%s: not replaced: a write failed", path) : AM_OK;

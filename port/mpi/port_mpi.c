@@ -372,6 +372,11 @@ am_status am_port_lock(const char* path, char* err, int errsz)
     return bcast_status(st, err, errsz);
 }
 
+void am_port_lock_stamp(void)
+{
+    if (rank == 0) am_posix_lock_stamp();
+}
+
 void am_port_unlock(void)
 {
     if (rank == 0) am_posix_unlock();

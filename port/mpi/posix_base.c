@@ -29,6 +29,7 @@
 #define am_port_interrupted am_posix_interrupted
 #define am_port_lock am_posix_lock
 #define am_port_unlock am_posix_unlock
+#define am_port_lock_stamp am_posix_lock_stamp
 #define am_port_getenv am_posix_getenv
 #define am_port_raise am_posix_raise
 

@@ -32,6 +32,7 @@ void am_posix_catch_interrupt(void);
 int am_posix_interrupted(void);
 am_status am_posix_lock(const char* path, char* err, int errsz);
 void am_posix_unlock(void);
+void am_posix_lock_stamp(void);
 const char* am_posix_getenv(const char* name);
 void am_posix_raise(am_port_signal sig);
 

@@ -12,6 +12,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <inttypes.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
@@ -117,18 +118,59 @@ static int write_all(int fd, const void* data, long n)
 #define PORT_TMP_CAP 4096
 typedef int port_handle;
 
-/* the temporary beside path: path.tmp.<pid>; 0 when the name does not fit */
-static int sys_tmp_name(char* out, size_t cap, const char* path)
+/* the temporary beside path: path.tmp.<pid>.<nonce, 16 hex digits>; 0 when the name does not fit */
+static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
 {
-    int n = snprintf(out, cap, "%s.tmp.%ld", path, (long)getpid());
+    int n = snprintf(out, cap, "%s.tmp.%ld.%016" PRIx64, path, (long)getpid(), nonce);
     return n >= 0 && (size_t)n < cap;
 }
 
-static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
+static uint64_t mix64(uint64_t z)
 {
-    *h = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (*h < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
-    return AM_OK;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+/* a temporary's nonce, unpredictable to another user: bytes of /dev/urandom when it can be read
+ * (once), the clocks, this process's addresses (randomised by the system) and id, and a counter,
+ * mixed. Names only: never a result. */
+static uint64_t tmp_nonce(void)
+{
+    static uint64_t seed, count;
+    static int seeded;
+    struct timespec ts;
+    if (!seeded) {
+        int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+        if (fd >= 0) {
+            uint64_t r = 0;
+            if (read(fd, &r, sizeof r) == (ssize_t)sizeof r) seed ^= r;
+            close(fd);
+        }
+        clock_gettime(CLOCK_MONOTONIC, &ts);
+        seed = mix64(seed ^ (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 32));
+        seed = mix64(seed ^ (uint64_t)(uintptr_t)&seed ^ ((uint64_t)(uintptr_t)&ts << 17) ^ (uint64_t)getpid());
+        seeded = 1;
+    }
+    clock_gettime(CLOCK_REALTIME, &ts);
+    count++;
+    return mix64(seed ^ mix64(count ^ ((uint64_t)ts.tv_nsec << 24) ^ (uint64_t)ts.tv_sec));
+}
+
+/* a new temporary for path: created exclusively (a file or link planted at the name is never
+ * opened: the create fails and a new name is tried), never through a link */
+static am_status sys_create(const char* path, char* tmp, size_t cap, uint64_t* nonce, port_handle* h, char* err, int errsz)
+{
+    int e = EEXIST;
+    *h = -1;
+    for (int k = 0; k < 64 && e == EEXIST; k++) {
+        *nonce = tmp_nonce();
+        sys_tmp_name(tmp, cap, path, *nonce);
+        *h = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        if (*h >= 0) return AM_OK;
+        e = errno;
+    }
+    return am_fail(err, errsz, AM_ERR_IO, "%s: cannot create: %s", path, strerror(e));
 }
 
 static am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
@@ -256,10 +298,46 @@ void am_port_progress(const char* line)
 
 /* ---- more files ---- */
 
+/* path opened for appending or locking (flags: O_WRONLY | O_APPEND or O_RDWR, with O_CREAT when
+ * it may be made) when it is a regular file with one name: a symbolic link at path is not
+ * followed, and a link, a file with other names (a hard link: writing it would write them), a
+ * FIFO or a device is refused, never written nor waited on. fd, or -1 after the message (what:
+ * "cannot open for appending", "cannot open") */
+static int open_own(const char* path, int flags, const char* what, char* err, int errsz)
+{
+    int fd = open(path, flags | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        int e = errno;
+        struct stat sb;
+        if (e == ELOOP || (lstat(path, &sb) == 0 && S_ISLNK(sb.st_mode)))
+            am_fail(err, errsz, AM_ERR_IO, "%s: a symbolic link: refused (amorph writes no file through a link)", path);
+        else if (e == ENXIO || e == EISDIR)
+            am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
+        else
+            am_fail(err, errsz, AM_ERR_IO, "%s: %s: %s", path, what, strerror(e));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
+        return -1;
+    }
+    if (st.st_nlink > 1) {
+        close(fd);
+        am_fail(err, errsz, AM_ERR_IO, "%s: a file with %ld names (a hard link): refused (amorph writes no file through a link)", path,
+                (long)st.st_nlink);
+        return -1;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl >= 0) fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    return fd;
+}
+
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
 {
-    int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open for appending: %s", path, strerror(errno));
+    int fd = open_own(path, O_WRONLY | O_CREAT | O_APPEND, "cannot open for appending", err, errsz);
+    if (fd < 0) return AM_ERR_IO;
     int e = write_all(fd, data, n);
     if (e != 0) {
         close(fd);
@@ -277,8 +355,9 @@ static int locks;
 am_status am_port_lock(const char* path, char* err, int errsz)
 {
     if (locks >= AM_PORT_LOCKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: more than %d folder locks at once", path, AM_PORT_LOCKS);
-    int fd = open(path, O_RDWR | O_CREAT, 0644);
-    if (fd < 0) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    /* an existing lock file is opened as it is (no truncation): taking the lock writes nothing */
+    int fd = open_own(path, O_RDWR | O_CREAT, "cannot open", err, errsz);
+    if (fd < 0) return AM_ERR_ARG;
     struct flock fl;
     memset(&fl, 0, sizeof fl);
     fl.l_type = F_WRLCK;
@@ -289,13 +368,20 @@ am_status am_port_lock(const char* path, char* err, int errsz)
         if ((e == EACCES || e == EAGAIN) && fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK) pid = (long)fl.l_pid;
         close(fd);
         if (e == EACCES || e == EAGAIN) return am_fail(err, errsz, AM_ERR_IO, "%s: in use by process %ld", path, pid);
-        return am_fail(err, errsz, AM_ERR_IO, "%s: cannot lock: %s", path, strerror(e));
+        return am_fail(err, errsz, AM_ERR_ARG, "%s: cannot lock: %s", path, strerror(e));
     }
-    char text[32];
-    int n = snprintf(text, sizeof text, "%ld\n", (long)getpid());
-    if (ftruncate(fd, 0) == 0) (void)write_all(fd, text, n); /* the owner, for people: the lock is what counts */
     lock_fd[locks++] = fd;
     return AM_OK;
+}
+
+void am_port_lock_stamp(void)
+{
+    if (locks == 0) return;
+    char text[32];
+    int n = snprintf(text, sizeof text, "%ld\n", (long)getpid());
+    int fd = lock_fd[locks - 1];
+    /* the owner, for people: the lock is what counts */
+    if (ftruncate(fd, 0) == 0 && lseek(fd, 0, SEEK_SET) == 0) (void)write_all(fd, text, n);
 }
 
 void am_port_unlock(void)
@@ -324,8 +410,7 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
     if (removed) *removed = 0;
     DIR* d = opendir(dir);
     if (!d) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
-    char own[32];
-    snprintf(own, sizeof own, "%ld", (long)getpid());
+    const long own = (long)getpid();
     am_status st = AM_OK;
     int n = 0;
     for (;;) {
@@ -335,8 +420,8 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
             if (errno != 0 && st == AM_OK) st = am_fail(err, errsz, AM_ERR_IO, "%s: cannot list the folder: %s", dir, strerror(errno));
             break;
         }
-        const char* pid = am_temp_name_pid(e->d_name);
-        if (!pid || strcmp(pid, own) == 0) continue; /* not a temporary, or one of this process's writes */
+        const long pid = am_temp_name_pid(e->d_name);
+        if (pid < 0 || pid == own) continue; /* not a temporary, or one of this process's writes */
         char path[4096];
         int k = snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (k < 0 || (size_t)k >= sizeof path) {

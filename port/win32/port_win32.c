@@ -156,20 +156,58 @@ static int write_all(HANDLE h, const void* data, long n)
 #define PORT_TMP_CAP PORT_PATH
 typedef HANDLE port_handle;
 
-/* the temporary beside path: path.tmp.<process id>, the POSIX port's form, so that
- * am_port_remove_stale knows them; 0 when the name does not fit */
-static int sys_tmp_name(char* out, size_t cap, const char* path)
+/* the temporary beside path: path.tmp.<process id>.<nonce, 16 hex digits>, the POSIX port's form,
+ * so that am_port_remove_stale knows them; 0 when the name does not fit */
+static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
 {
-    int n = snprintf(out, cap, "%s.tmp.%lu", path, (unsigned long)GetCurrentProcessId());
+    int n = snprintf(out, cap, "%s.tmp.%lu.%08lx%08lx", path, (unsigned long)GetCurrentProcessId(), (unsigned long)(nonce >> 32),
+                     (unsigned long)(nonce & 0xffffffffu));
     return n >= 0 && (size_t)n < cap;
 }
 
-static am_status sys_create(const char* tmp, port_handle* h, char* err, int errsz)
+static uint64_t mix64(uint64_t z)
 {
-    /* nobody else opens a temporary while it is written */
-    *h = CreateFileA(tmp, GENERIC_WRITE, 0, NULL, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, NULL);
-    if (*h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot create", tmp);
-    return AM_OK;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+/* a temporary's nonce, unpredictable to another user: the performance counter and the system time,
+ * this process's addresses (randomised by the system) and id, and a counter, mixed. Names only:
+ * never a result. */
+static uint64_t tmp_nonce(void)
+{
+    static uint64_t seed, count;
+    static int seeded;
+    LARGE_INTEGER t;
+    FILETIME ft;
+    if (!seeded) {
+        GetSystemTimeAsFileTime(&ft);
+        seed = mix64(((uint64_t)ft.dwHighDateTime << 32 | ft.dwLowDateTime) ^ (uint64_t)(uintptr_t)&seed);
+        seed = mix64(seed ^ ((uint64_t)(uintptr_t)&t << 13) ^ (uint64_t)GetCurrentProcessId() ^ ((uint64_t)GetTickCount() << 40));
+        seeded = 1;
+    }
+    QueryPerformanceCounter(&t);
+    count++;
+    return mix64(seed ^ mix64(count ^ (uint64_t)t.QuadPart));
+}
+
+/* a new temporary for path: CREATE_NEW fails on any file or link already at the name (a new name
+ * is tried then), and a reparse point is opened as itself, never followed */
+static am_status sys_create(const char* path, char* tmp, size_t cap, uint64_t* nonce, port_handle* h, char* err, int errsz)
+{
+    DWORD e = ERROR_FILE_EXISTS;
+    *h = INVALID_HANDLE_VALUE;
+    for (int k = 0; k < 64 && (e == ERROR_FILE_EXISTS || e == ERROR_ALREADY_EXISTS); k++) {
+        *nonce = tmp_nonce();
+        sys_tmp_name(tmp, cap, path, *nonce);
+        /* nobody else opens a temporary while it is written */
+        *h = CreateFileA(tmp, GENERIC_WRITE, 0, NULL, CREATE_NEW, FILE_ATTRIBUTE_NORMAL | FILE_FLAG_OPEN_REPARSE_POINT, NULL);
+        if (*h != INVALID_HANDLE_VALUE) return AM_OK;
+        e = GetLastError();
+    }
+    SetLastError(e);
+    return fail_last(err, errsz, AM_ERR_IO, "cannot create", path);
 }
 
 static am_status sys_open_read(const char* path, port_handle* h, char* err, int errsz)
@@ -310,12 +348,39 @@ void am_port_progress(const char* line)
 
 /* ---- more files ---- */
 
+/* path opened with access acc (created when missing) when it is a regular file with one name: a
+ * reparse point (a symbolic link or junction) is opened as itself and refused, as is a file with
+ * other names (a hard link: writing it would write them) or a device. The handle, or
+ * INVALID_HANDLE_VALUE after the message (what: "cannot open for appending", "cannot open") */
+static HANDLE open_own(const char* path, DWORD acc, const char* what, char* err, int errsz)
+{
+    HANDLE h = CreateFileA(path, acc, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, NULL, OPEN_ALWAYS,
+                           FILE_ATTRIBUTE_NORMAL | FILE_FLAG_OPEN_REPARSE_POINT, NULL);
+    if (h == INVALID_HANDLE_VALUE) {
+        fail_last(err, errsz, AM_ERR_IO, what, path);
+        return INVALID_HANDLE_VALUE;
+    }
+    BY_HANDLE_FILE_INFORMATION fi;
+    const char* why = NULL;
+    if (GetFileType(h) != FILE_TYPE_DISK || !GetFileInformationByHandle(h, &fi) || (fi.dwFileAttributes & FILE_ATTRIBUTE_DIRECTORY))
+        why = "not a regular file (a folder, pipe or device): refused";
+    else if (fi.dwFileAttributes & FILE_ATTRIBUTE_REPARSE_POINT)
+        why = "a symbolic link or junction: refused (amorph writes no file through a link)";
+    else if (fi.nNumberOfLinks > 1)
+        why = "a file with several names (a hard link): refused (amorph writes no file through a link)";
+    if (why) {
+        CloseHandle(h);
+        am_fail(err, errsz, AM_ERR_IO, "%s: %s", path, why);
+        return INVALID_HANDLE_VALUE;
+    }
+    return h;
+}
+
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)
 {
     /* FILE_APPEND_DATA alone: every write goes to the end of the file */
-    HANDLE h = CreateFileA(path, FILE_APPEND_DATA, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, NULL, OPEN_ALWAYS,
-                           FILE_ATTRIBUTE_NORMAL, NULL);
-    if (h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot open for appending", path);
+    HANDLE h = open_own(path, FILE_APPEND_DATA | FILE_READ_ATTRIBUTES, "cannot open for appending", err, errsz);
+    if (h == INVALID_HANDLE_VALUE) return AM_ERR_IO;
     if (!write_all(h, data, n)) {
         am_status st = fail_last(err, errsz, AM_ERR_IO, "write error", path);
         CloseHandle(h);
@@ -349,9 +414,9 @@ static unsigned long lock_owner(HANDLE h)
 am_status am_port_lock(const char* path, char* err, int errsz)
 {
     if (locks >= AM_PORT_LOCKS) return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: more than %d folder locks at once", path, AM_PORT_LOCKS);
-    HANDLE h = CreateFileA(path, GENERIC_READ | GENERIC_WRITE, FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, NULL, OPEN_ALWAYS,
-                           FILE_ATTRIBUTE_NORMAL, NULL);
-    if (h == INVALID_HANDLE_VALUE) return fail_last(err, errsz, AM_ERR_IO, "cannot open", path);
+    /* an existing lock file is opened as it is: taking the lock writes nothing */
+    HANDLE h = open_own(path, GENERIC_READ | GENERIC_WRITE, "cannot open", err, errsz);
+    if (h == INVALID_HANDLE_VALUE) return AM_ERR_ARG;
     OVERLAPPED ov;
     memset(&ov, 0, sizeof ov);
     ov.OffsetHigh = LOCK_OFFSET_HIGH;
@@ -365,16 +430,23 @@ am_status am_port_lock(const char* path, char* err, int errsz)
         }
         CloseHandle(h);
         SetLastError(e);
-        return fail_last(err, errsz, AM_ERR_IO, "cannot lock", path);
+        fail_last(err, errsz, AM_ERR_IO, "cannot lock", path);
+        return AM_ERR_ARG;
     }
+    lock_h[locks++] = h;
+    return AM_OK;
+}
+
+void am_port_lock_stamp(void)
+{
+    if (locks == 0) return;
+    HANDLE h = lock_h[locks - 1];
     /* the owner, for people and for the message above: the lock is what counts */
     char text[32];
     int n = snprintf(text, sizeof text, "%lu\n", (unsigned long)GetCurrentProcessId());
     LARGE_INTEGER zero;
     zero.QuadPart = 0;
     if (SetFilePointerEx(h, zero, NULL, FILE_BEGIN) && SetEndOfFile(h)) (void)write_all(h, text, n);
-    lock_h[locks++] = h;
-    return AM_OK;
 }
 
 void am_port_unlock(void)
@@ -452,13 +524,12 @@ am_status am_port_remove_stale(const char* dir, int* removed, char* err, int err
         if (GetLastError() == ERROR_FILE_NOT_FOUND) return AM_OK; /* an empty root folder */
         return fail_last(err, errsz, AM_ERR_IO, "cannot list the folder", dir);
     }
-    char own[32];
-    snprintf(own, sizeof own, "%lu", (unsigned long)GetCurrentProcessId());
+    const long own = (long)GetCurrentProcessId();
     am_status st = AM_OK;
     int n = 0;
     do {
-        const char* pid = am_temp_name_pid(fd.cFileName);
-        if (!pid || strcmp(pid, own) == 0) continue; /* not a temporary, or one of this process's writes */
+        const long pid = am_temp_name_pid(fd.cFileName);
+        if (pid < 0 || pid == own) continue; /* not a temporary, or one of this process's writes */
         /* regular files only: a folder, a link (reparse point) or a device of that name is not ours */
         if (fd.dwFileAttributes & (FILE_ATTRIBUTE_DIRECTORY | FILE_ATTRIBUTE_REPARSE_POINT | FILE_ATTRIBUTE_DEVICE)) continue;
         char path[PORT_PATH];
