@@ -7,6 +7,7 @@
  * host under qemu-user) */
 #define _FILE_OFFSET_BITS 64
 #include "amorph/port.h"
+#include "amorph/rng.h"
 #include "amorph/text.h"
 
 #include <dirent.h>
@@ -43,6 +44,29 @@ double am_port_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* fd, opened non-blocking at path, kept when it is a regular file with at most max_names names
+ * (then made blocking again and returned), else closed and refused (-1 after the message): a FIFO,
+ * device or folder is never waited on nor written; a file with other names (a hard link) is not
+ * written either */
+static int keep_regular(int fd, const char* path, nlink_t max_names, char* err, int errsz)
+{
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
+        return -1;
+    }
+    if (st.st_nlink > max_names) {
+        close(fd);
+        am_fail(err, errsz, AM_ERR_IO, "%s: a file with %ld names (a hard link): refused (amorph writes no file through a link)", path,
+                (long)st.st_nlink);
+        return -1;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl >= 0) fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    return fd;
+}
+
 /* path opened for reading when it is a regular file: a FIFO, device or folder is refused without
  * waiting for a writer (opened non-blocking, checked, then made blocking again); fd, or -1 after
  * the message */
@@ -53,15 +77,7 @@ static int open_regular(const char* path, char* err, int errsz)
         am_fail(err, errsz, AM_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
-    struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(fd);
-        am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
-        return -1;
-    }
-    int fl = fcntl(fd, F_GETFL);
-    if (fl >= 0) fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
-    return fd;
+    return keep_regular(fd, path, (nlink_t)-1, err, errsz);
 }
 
 am_status am_port_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz)
@@ -125,36 +141,28 @@ static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
     return n >= 0 && (size_t)n < cap;
 }
 
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-/* a temporary's nonce, unpredictable to another user: bytes of /dev/urandom when it can be read
- * (once), the clocks, this process's addresses (randomised by the system) and id, and a counter,
- * mixed. Names only: never a result. */
+/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/rng.h),
+ * seeded once from /dev/urandom when it can be read, the clock, this process's address space
+ * (randomised by the system) and its id; each draw also takes the clock. Names only: never a
+ * result. */
 static uint64_t tmp_nonce(void)
 {
-    static uint64_t seed, count;
+    static am_rng rng;
     static int seeded;
     struct timespec ts;
+    clock_gettime(CLOCK_REALTIME, &ts);
     if (!seeded) {
+        uint64_t seed = (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 32) ^ (uint64_t)(uintptr_t)&rng ^ ((uint64_t)getpid() << 20);
         int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
         if (fd >= 0) {
             uint64_t r = 0;
             if (read(fd, &r, sizeof r) == (ssize_t)sizeof r) seed ^= r;
             close(fd);
         }
-        clock_gettime(CLOCK_MONOTONIC, &ts);
-        seed = mix64(seed ^ (uint64_t)ts.tv_nsec ^ ((uint64_t)ts.tv_sec << 32));
-        seed = mix64(seed ^ (uint64_t)(uintptr_t)&seed ^ ((uint64_t)(uintptr_t)&ts << 17) ^ (uint64_t)getpid());
+        am_rng_seed(&rng, seed);
         seeded = 1;
     }
-    clock_gettime(CLOCK_REALTIME, &ts);
-    count++;
-    return mix64(seed ^ mix64(count ^ ((uint64_t)ts.tv_nsec << 24) ^ (uint64_t)ts.tv_sec));
+    return am_rng_u64(&rng) ^ (uint64_t)ts.tv_nsec;
 }
 
 /* a new temporary for path: created exclusively (a file or link planted at the name is never
@@ -317,21 +325,7 @@ static int open_own(const char* path, int flags, const char* what, char* err, in
             am_fail(err, errsz, AM_ERR_IO, "%s: %s: %s", path, what, strerror(e));
         return -1;
     }
-    struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(fd);
-        am_fail(err, errsz, AM_ERR_IO, "%s: not a regular file (a folder, FIFO or device): refused", path);
-        return -1;
-    }
-    if (st.st_nlink > 1) {
-        close(fd);
-        am_fail(err, errsz, AM_ERR_IO, "%s: a file with %ld names (a hard link): refused (amorph writes no file through a link)", path,
-                (long)st.st_nlink);
-        return -1;
-    }
-    int fl = fcntl(fd, F_GETFL);
-    if (fl >= 0) fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
-    return fd;
+    return keep_regular(fd, path, 1, err, errsz);
 }
 
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz)

@@ -16,6 +16,7 @@
  * code page like argv; '/' and '\' both separate folders. */
 #define WIN32_LEAN_AND_MEAN
 #include "amorph/port.h"
+#include "amorph/rng.h"
 #include "amorph/text.h"
 
 #include <windows.h>
@@ -165,31 +166,24 @@ static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
     return n >= 0 && (size_t)n < cap;
 }
 
-static uint64_t mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
-/* a temporary's nonce, unpredictable to another user: the performance counter and the system time,
- * this process's addresses (randomised by the system) and id, and a counter, mixed. Names only:
- * never a result. */
+/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/rng.h),
+ * seeded once from the system time, this process's address space (randomised by the system), its
+ * id and the tick count; each draw also takes the performance counter. Names only: never a
+ * result. */
 static uint64_t tmp_nonce(void)
 {
-    static uint64_t seed, count;
+    static am_rng rng;
     static int seeded;
     LARGE_INTEGER t;
-    FILETIME ft;
+    QueryPerformanceCounter(&t);
     if (!seeded) {
+        FILETIME ft;
         GetSystemTimeAsFileTime(&ft);
-        seed = mix64(((uint64_t)ft.dwHighDateTime << 32 | ft.dwLowDateTime) ^ (uint64_t)(uintptr_t)&seed);
-        seed = mix64(seed ^ ((uint64_t)(uintptr_t)&t << 13) ^ (uint64_t)GetCurrentProcessId() ^ ((uint64_t)GetTickCount() << 40));
+        am_rng_seed(&rng, ((uint64_t)ft.dwHighDateTime << 32 | ft.dwLowDateTime) ^ (uint64_t)(uintptr_t)&rng ^
+                              ((uint64_t)GetCurrentProcessId() << 20) ^ ((uint64_t)GetTickCount() << 40) ^ (uint64_t)t.QuadPart);
         seeded = 1;
     }
-    QueryPerformanceCounter(&t);
-    count++;
-    return mix64(seed ^ mix64(count ^ (uint64_t)t.QuadPart));
+    return am_rng_u64(&rng) ^ (uint64_t)t.QuadPart;
 }
 
 /* a new temporary for path: CREATE_NEW fails on any file or link already at the name (a new name
