@@ -25,6 +25,10 @@ echo "bench_arch: sphere:20 without self-collision, $TURNS turns, $(uname -m), $
 
 # the value of key K in a line of key=value words
 field() { tr ' ' '\n' | sed -n "s/^$1=//p" | head -n 1; }
+# the median over the turns of key K of build directory D
+median() {
+    grep "^$2 " "$out" | field "$1" | sort -g | awk '{r[NR] = $1} END {print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2)}'
+}
 
 for turn in $(seq 1 "$TURNS"); do
     for d in "$@"; do
@@ -61,11 +65,11 @@ instructions() {
 
 echo
 printf '%-28s %-28s %12s %8s %10s %11s  %-18s %s\n' build vector voxel_steps/s ns/step sim_s/s "(of best)" instructions/step hash
-best=$(for d in "$@"; do grep "^$d " "$out" | sed 's/.*voxel_steps_per_s=\([^ ]*\).*/\1/' | sort -g | awk '{r[NR] = $1} END {print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2)}'; done | sort -g | tail -n 1)
+best=$(for d in "$@"; do median voxel_steps_per_s "$d"; done | sort -g | tail -n 1)
 hashes=
 for d in "$@"; do
-    med=$(grep "^$d " "$out" | sed 's/.*voxel_steps_per_s=\([^ ]*\).*/\1/' | sort -g | awk '{r[NR] = $1} END {print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2)}')
-    sims=$(grep "^$d " "$out" | sed 's/.*sim_s_per_s=\([^ ]*\).*/\1/' | sort -g | awk '{r[NR] = $1} END {print (NR % 2 ? r[(NR + 1) / 2] : (r[NR / 2] + r[NR / 2 + 1]) / 2)}')
+    med=$(median voxel_steps_per_s "$d")
+    sims=$(median sim_s_per_s "$d")
     build=$("$d/amorph" bench --scene cube:2 --steps 10 | grep '^build ' | sed 's/^build //')
     vec=$(echo "$build" | field vector)/$(echo "$build" | field gathers)
     hash=$("$d/amorph" sim --scene sphere:8 --json | tr ',' '\n' | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
