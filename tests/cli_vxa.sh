@@ -188,6 +188,12 @@ expect_fail 2 "one robot at a time" "$AMORPH" sim "$V/base.vxa" "$V/robot.vxd" "
 expect_fail 2 "export: say what to write" "$AMORPH" export --scene cube:2
 expect_fail 2 "export: name a robot" "$AMORPH" export --vxa "$D/x.vxa"
 expect_fail 2 "export: unknown option '--png'" "$AMORPH" export --scene cube:2 --png x.png
+# a VXD is read up to 4 MiB, as a VXA file (issue 31: 1 MiB): one padded past 2 MiB with a comment
+# simulates as the unpadded one
+{ echo '<VXD><!--'; head -c 2200000 /dev/zero | tr '\0' 'x'; echo '-->'; tail -n +2 "$V/robot.vxd"; } >"$D/big.vxd"
+"$AMORPH" sim "$V/base.vxa" "$D/big.vxd" --cycles 1 --relax-max 200 >"$D/vx5.out" 2>"$D/vx5.err"
+if [ "$(wc -c <"$D/big.vxd")" -gt 2200000 ] && [ -n "$h" ] && [ "$(hash_of "$D/vx5.out")" = "$h" ]; then ok
+else ko "a 2 MiB VXD: $(head -c 300 "$D/vx5.err")"; fi
 
 # one range per setting wherever it comes from (issue 31): a VXA period of 10^9 steps, a period in
 # seconds past 10^4, a subnormal cell edge (in a VXA or a lattice file) and a 64-character phase
