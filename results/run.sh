@@ -4,11 +4,13 @@
 # stopped and started again at will.
 #   sh results/run.sh AMORPH DIR STAGE
 # AMORPH: the amorph binary; DIR: where the run folders go (DIR/representations/dct-1 ...);
-# STAGE: fig6-N (the nine Figure 6 runs to N evaluations, interleaved so every representation
-# has runs early; the seed's were 20,000), others-2000 (one run of each other experiment's
-# variants that differ from the seed's settings). Taken in rounds (fig6-500, fig6-1000,
-# fig6-2000, then others-2000 and fig6-3000, fig6-4000, ...), all nine reach a count before any
-# goes beyond it; a run already beyond a round's count is left as it is.
+# STAGE: fig6-N (the Figure 6 runs, seeds 1..FIG6_SEEDS (10) of each representation, to N
+# evaluations, interleaved so every representation has runs early), others-N (the other
+# experiments' variants that differ from the seed's settings, seeds 1..3, to N evaluations),
+# full-N (seed 1 of each representation extended to N evaluations: the seed's budget was
+# 20,000). Taken in rounds (fig6-1000, fig6-2000, others-2000, fig6-3000, fig6-4000,
+# fig6-5000, full-20000), all runs of a stage reach a count before any goes beyond it; a run
+# already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
 # fig6-2000): a run folder that the other runner is working in is skipped, and that runner
@@ -47,26 +49,40 @@ run() {
 
 fig6() {
     mkdir -p "$DIR/representations"
-    for k in 1 2 3; do
+    k=1
+    while [ "$k" -le "${FIG6_SEEDS:-10}" ]; do
         for r in dct cppn gmx; do
             run "$DIR/representations/$r-$k" "$1" representation=$r seed=$k
         done
+        k=$((k + 1))
+    done
+}
+
+# the variants of the other experiments (amorph experiment --help) that differ from the seed's
+# settings (the seed's settings themselves are representations/gmx-K), seeds 1..3
+others() {
+    mkdir -p "$DIR/three-materials" "$DIR/dynamic" "$DIR/friction"
+    for k in 1 2 3; do
+        run "$DIR/three-materials/three-$k" "$1" materials=3 seed=$k
+        run "$DIR/dynamic/fast-$k" "$1" period_steps=250 damping_internal=1 seed=$k
+        run "$DIR/dynamic/lowdamp-$k" "$1" period_steps=500 damping_internal=0.1 seed=$k
+        run "$DIR/dynamic/fast_lowdamp-$k" "$1" period_steps=250 damping_internal=0.1 seed=$k
+        run "$DIR/friction/k0.1_s5.0-$k" "$1" mu_kinetic=0.1 mu_static=5.0 seed=$k
+        run "$DIR/friction/k0.4_s0.5-$k" "$1" mu_kinetic=0.4 mu_static=0.5 seed=$k
     done
 }
 
 case $STAGE in
-fig6-*[!0-9]* | fig6-) echo "run.sh: '$STAGE': fig6-N takes a number of evaluations" >&2; exit 2 ;;
-fig6-*) fig6 "${STAGE#fig6-}" ;;
-others-2000)
-    # the variants of the other experiments (amorph experiment --help) that differ from the seed's
-    # settings; the seed's settings themselves are representations/gmx-1
-    mkdir -p "$DIR/three-materials" "$DIR/dynamic" "$DIR/friction"
-    run "$DIR/three-materials/three-1" 2000 materials=3 seed=1
-    run "$DIR/dynamic/fast-1" 2000 period_steps=250 damping_internal=1 seed=1
-    run "$DIR/dynamic/lowdamp-1" 2000 period_steps=500 damping_internal=0.1 seed=1
-    run "$DIR/dynamic/fast_lowdamp-1" 2000 period_steps=250 damping_internal=0.1 seed=1
-    run "$DIR/friction/k0.1_s5.0-1" 2000 mu_kinetic=0.1 mu_static=5.0 seed=1
-    run "$DIR/friction/k0.4_s0.5-1" 2000 mu_kinetic=0.4 mu_static=0.5 seed=1
+fig6-*[!0-9]* | fig6- | others-*[!0-9]* | others- | full-*[!0-9]* | full-)
+    echo "run.sh: '$STAGE': the stage takes a number of evaluations (fig6-N, others-N, full-N)" >&2
+    exit 2
     ;;
-*) echo "run.sh: unknown stage '$STAGE' (fig6-2000, others-2000, fig6-N)" >&2; exit 2 ;;
+fig6-*) fig6 "${STAGE#fig6-}" ;;
+others-*) others "${STAGE#others-}" ;;
+full-*)
+    for r in dct cppn gmx; do
+        run "$DIR/representations/$r-1" "${STAGE#full-}" representation=$r seed=1
+    done
+    ;;
+*) echo "run.sh: unknown stage '$STAGE' (fig6-N, others-N, full-N)" >&2; exit 2 ;;
 esac
