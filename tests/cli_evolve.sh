@@ -229,6 +229,24 @@ expect_ok $E --out "$TMPD/long" --evaluations 48
 if [ "$(nowall "$TMPD/r/log.csv")" = "$(nowall "$TMPD/long/log.csv")" ] && cmp -s "$TMPD/r/best.genome" "$TMPD/long/best.genome"; then ok
 else ko "extending a finished run differs from a longer run"; fi
 
+# --- where the steps go: the summary's step account against evals.csv, counted by awk ---
+# a 4^3 workspace: small bodies, some of them repeated (the same body evaluated again gives the
+# same final state hash), some empty, some that do not settle in 400 steps
+acct() { grep -E '^(steps_|evals_|relax_share|diverged_share|unsettled_share|repeat_share)' "$1/summary.txt"; }
+expect_ok $E --out "$TMPD/acct" --workspace 4 --evaluations 60 --seed 1 --gmx_points 16
+want=$(tail -n +2 "$TMPD/acct/evals.csv" | awk -F, '$16 == 1 { empty++; next }
+    { n++; relax += $17; move += $18 - $17; vs += $18 * $7; rvs += $17 * $7
+      if ($15 == 1) div++; else if ($14 == 0) { uns++; uvs += $18 * $7 }
+      if (seen[$19]++) { rep++; pvs += $18 * $7 } }
+    END { printf "%d %d %d %d %d %d %.6f %.6f %.6f", relax, move, empty, div, uns, rep, rvs / vs, uvs / vs, pvs / vs }')
+got="$(sumval "$TMPD/acct" steps_relax) $(sumval "$TMPD/acct" steps_move) $(sumval "$TMPD/acct" evals_empty) $(sumval "$TMPD/acct" evals_diverged)"
+got="$got $(sumval "$TMPD/acct" evals_unsettled) $(sumval "$TMPD/acct" evals_repeat)"
+got="$got$(for k in relax_share unsettled_share repeat_share; do printf ' %.6f' "$(sumval "$TMPD/acct" $k)"; done)"
+if [ "$want" = "$got" ] && [ "$(echo "$want" | cut -d' ' -f6)" -gt 0 ] && [ "$(echo "$want" | cut -d' ' -f5)" -gt 0 ]; then ok
+else ko "step account: summary '$got', evals.csv by awk '$want' (the test wants repeats and unsettled bodies)"; fi
+if grep -q '"steps_relax": [0-9]' "$TMPD/acct/summary.json" && grep -q '"repeat_share": ' "$TMPD/acct/summary.json"; then ok
+else ko "summary.json lacks the step account: $(head -c 300 "$TMPD/acct/summary.json")"; fi
+
 # --- interruptions: Ctrl-C (SIGINT), SIGTERM and kill -9, then --resume ---
 # AMORPH_TEST_INTERRUPT=SIG:N makes the run send itself SIG when it is about to start evaluation
 # N + 1 (docs/evolve.md, Testing interruptions): the interruption lands at the same point on any
@@ -264,6 +282,9 @@ resumed() {
     if [ "$(sumval "$2" run_hash)" = "$(sumval "$TMPD/ref" run_hash)" ]; then ok; else ko "$1: run hash differs"; fi
     if cmp -s "$2/evals.csv" "$TMPD/ref/evals.csv"; then ok
     else ko "$1: resumed evals.csv differs: $(diff "$2/evals.csv" "$TMPD/ref/evals.csv" | head -4)"; fi
+    # the summary's step account covers the whole run, the part before the interruption included
+    if [ -n "$(acct "$2")" ] && [ "$(acct "$2")" = "$(acct "$TMPD/ref")" ]; then ok
+    else ko "$1: resumed step account differs: $(acct "$2" | tr '\n' ' ') / $(acct "$TMPD/ref" | tr '\n' ' ')"; fi
 }
 interrupt INT:27 4
 interrupt TERM:36 6

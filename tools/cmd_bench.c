@@ -216,6 +216,12 @@ static double map_us_per_item(am_evo* e, int n, int workers, int reps)
     return (am_port_now() - t0) / ((double)reps * n) * 1e6;
 }
 
+/* the am_evo_hooks.evaluated callback of bench --evolve: each evaluation into the account */
+static void account_evaluated(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
+{
+    account_add((step_account*)ctx, ind->voxels, ind->empty, ind->diverged, ev->settled, ev->relax_steps, ind->steps, ind->state_hash);
+}
+
 /* name=value lines of the default experiment's evaluations per hour on `threads` (0: 1 and 2)
  * threads of each of am_port_processes() processes; 0, or 1 when the runs differ */
 static int bench_evolve(tool_ctx* c, long evaluations, int threads)
@@ -231,10 +237,13 @@ static int bench_evolve(tool_ctx* c, long evaluations, int threads)
            d.geno.nz, d.population, evaluations, cores, procs);
     for (int t = t_from; t <= t_to; t++) {
         if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+        static step_account acct; /* its table of hashes is large */
+        account_begin(&acct);
+        const am_evo_hooks hooks = {NULL, account_evaluated, &acct};
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
         while (!am_evo_done(&c->evo)) {
-            if (am_evo_generation(&c->evo, c->work, t, NULL, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            if (am_evo_generation(&c->evo, c->work, t, &hooks, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
             steps += c->evo.last_steps;
             voxel_steps += c->evo.last_voxel_steps;
         }
@@ -247,6 +256,24 @@ static int bench_evolve(tool_ctx* c, long evaluations, int threads)
                "voxel_steps_per_s=%.0f map_us_per_item=%.2f run_hash=%016llx\n",
                procs, t, c->evo.evaluations, el, rate[k], (double)steps / (double)c->evo.evaluations,
                steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, map_us, (unsigned long long)hash[k]);
+        if (t == t_from) {
+            /* where the steps went (the same for any thread count): the account's key = value
+             * lines as name=value lines */
+            char buf[1024];
+            am_text txt;
+            memset(&txt, 0, sizeof txt);
+            txt.buf = buf;
+            txt.cap = (long)sizeof buf;
+            tool_rec q;
+            tool_rec_begin(&q, &txt, 0);
+            account_put(&q, &acct);
+            tool_rec_end(&q);
+            buf[txt.len < txt.cap ? txt.len : txt.cap - 1] = 0;
+            for (const char* p = buf; *p; p++) {
+                if (!strncmp(p, " = ", 3)) p += 2, putchar('=');
+                else putchar(*p);
+            }
+        }
     }
     if (t_to > t_from)
         printf("speedup_2_threads=%.2f\nhours_for_20000_evals_2_threads=%.2f\nsame_hash=%s\n", rate[1] / rate[0], 20000.0 / rate[1],

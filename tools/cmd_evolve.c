@@ -223,6 +223,13 @@ int workers_of(const am_evo_def* d)
     return w < 1 ? 1 : w;
 }
 
+/* where the steps of the run in dir went, from its evals.csv (NULL when it cannot be read) */
+static const step_account* run_account(const char* dir)
+{
+    static step_account acct; /* its table of hashes is large */
+    return account_read_evals(&acct, dir) == 0 ? &acct : NULL;
+}
+
 /* ---- a wave: runs evolved in lockstep, their offspring evaluated in one parallel map ---- */
 
 /* the merged map's scratch of a wave of several runs (am_evo_generations) */
@@ -330,7 +337,7 @@ int run_wave(tool_ctx* c, run_slot* s, int n, int quiet)
         return 130;
     }
     for (int k = 0; k < n; k++)
-        if (write_summary(s[k].dir, s[k].e, am_port_now() - t0)) return 1;
+        if (write_summary(s[k].dir, s[k].e, am_port_now() - t0, run_account(s[k].dir))) return 1;
     return 0;
 }
 
@@ -495,7 +502,7 @@ static int print_result(const am_evo* e, const char* dir, double wall, int json)
     if (tool_out_open(&o, NULL)) return 1;
     tool_rec q;
     tool_rec_begin(&q, &o.text, json);
-    put_summary(&q, e, dir, wall);
+    put_summary(&q, e, dir, wall, run_account(dir));
     tool_rec_end(&q);
     return tool_out_close(&o, 1);
 }

@@ -83,10 +83,35 @@ int write_best(am_evo_work* w, const am_evo* e, const char* dir);
 /* dir/summary.txt (a comment line, then key = value lines) and dir/summary.json (one JSON object),
  * both of the fields put(q, ctx) writes */
 int write_summaries(const char* dir, const char* comment, void (*put)(tool_rec* q, const void* ctx), const void* ctx);
-/* a run's summary fields (summary.txt, summary.json and the final output) */
-void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall);
+/* where a run's steps go (tools/account.c): relaxation and movement, and the evaluations that buy no
+ * score (diverged, unsettled) or a result the run had (a body evaluated before, recognised by its
+ * final state hash in a table of ACCOUNT_SET entries; not on the board). Shares are of voxel-steps,
+ * which is the share of the simulator's time (its cost per voxel-step does not depend on the body:
+ * docs/benchmarks.md). Large on the desktop: inside tool_ctx or static. */
+#if defined(AM_PROFILE_BOARD)
+#define ACCOUNT_SET 1
+#else
+#define ACCOUNT_SET (1L << 18)
+#endif
+typedef struct step_account {
+    long evaluations, empty, diverged, unsettled, repeats;
+    long relax_steps, move_steps;                /* summed over the simulated evaluations */
+    double voxel_steps, relax_voxel_steps;       /* each step times the body's voxels */
+    double diverged_voxel_steps, unsettled_voxel_steps, repeat_voxel_steps;
+    long tracked, distinct;                      /* evaluations the repeat table saw; hashes in it */
+    uint64_t set[ACCOUNT_SET];                   /* final state hashes seen (0: a free slot) */
+} step_account;
+void account_begin(step_account* a);
+/* one evaluation (an evals.csv row's fields) */
+void account_add(step_account* a, long voxels, int empty, int diverged, int settled, long relax_steps, long steps, uint64_t hash);
+/* every row of dir/evals.csv (after account_begin): 0, or -1 when it cannot be read (no message) */
+int account_read_evals(step_account* a, const char* dir);
+/* the account's summary fields */
+void account_put(tool_rec* q, const step_account* a);
+/* a run's summary fields (summary.txt, summary.json and the final output); acct may be NULL */
+void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall, const step_account* acct);
 /* a run's summary.txt and summary.json */
-int write_summary(const char* dir, const am_evo* e, double wall);
+int write_summary(const char* dir, const am_evo* e, double wall, const step_account* acct);
 /* one row of log.csv */
 int append_log(const char* dir, const am_evo_stats* s);
 /* dir/file (a table with header hdr) checked to hold its first `rows` rows, and cut back to them

@@ -89,7 +89,7 @@ TOOL_NOINLINE int write_best(am_evo_work* w, const am_evo* e, const char* dir)
 }
 
 /* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
-void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall)
+void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall, const step_account* acct)
 {
     tool_rec_str(q, "run", dir);
     tool_rec_str(q, "representation", am_repr_name(e->def.geno.repr));
@@ -104,6 +104,7 @@ void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall)
     tool_rec_num(q, "final_mean", e->last.mean);
     tool_rec_num(q, "final_median", e->last.median);
     tool_rec_hex(q, "run_hash", am_evo_hash(e));
+    if (acct) account_put(q, acct);
     tool_rec_num(q, "wall_s", wall);
     char build[64];
     snprintf(build, sizeof build, "%s %s", AM_REAL_NAME, AM_PROFILE_NAME);
@@ -133,17 +134,18 @@ typedef struct run_summary {
     const am_evo* e;
     const char* dir;
     double wall;
+    const step_account* acct;
 } run_summary;
 
 static void put_run_summary(tool_rec* q, const void* ctx)
 {
     const run_summary* r = (const run_summary*)ctx;
-    put_summary(q, r->e, r->dir, r->wall);
+    put_summary(q, r->e, r->dir, r->wall, r->acct);
 }
 
-int write_summary(const char* dir, const am_evo* e, double wall)
+int write_summary(const char* dir, const am_evo* e, double wall, const step_account* acct)
 {
-    const run_summary r = {e, dir, wall};
+    const run_summary r = {e, dir, wall, acct};
     return write_summaries(dir, "amorph evolve summary", put_run_summary, &r);
 }
 
