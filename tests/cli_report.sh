@@ -211,7 +211,7 @@ mkdir -p "$RD/representations/dct-1" "$RD/representations/gmx-2"
 printf 'evaluations = 4000\nevaluations 3640\n' >"$RD/representations/dct-1/checkpoint.txt"
 printf 'evaluations = 5000\nevaluations 5000\n' >"$RD/representations/gmx-2/checkpoint.txt"
 export RD FAKE_BUSY=cppn-3 FAKE_FAIL=none
-sh results/run.sh "$F" "$RD" fig6-4000 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+FIG6_SEEDS=3 sh results/run.sh "$F" "$RD" fig6-4000 >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 check "run.sh: a round with a busy folder succeeds (exit $rc: $(cat "$TMPD/err"))" [ $rc -eq 0 ]
 if [ "$(wc -l <"$RD/calls")" -eq 8 ] && ! grep -q gmx-2 "$RD/calls"; then ok; else ko "run.sh: eight calls, gmx-2 (at 5000) left alone: $(wc -l <"$RD/calls")"; fi
 check "run.sh: gmx-2 reported as beyond the round" grep -q "representations/gmx-2 already at 5000 evaluations\$" "$TMPD/out"
@@ -223,6 +223,22 @@ check "run.sh: a started run reported at its count" grep -q "representations/gmx
 rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=cppn-1 expect_fail 1 "cppn-1: no space left" sh results/run.sh "$F" "$RD" fig6-4000
 check "run.sh: no run after the failing one: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 " ]
-expect_fail 2 "fig6-N takes a number of evaluations" sh results/run.sh "$F" "$RD" fig6-4k
+# by default Figure 6 is seeds 1..10 of each representation (gmx-2, at 5000, left alone again)
+rm -f "$RD/calls" "$RD/order"
+FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" fig6-4500
+check "run.sh: seeds 1..10, 29 calls: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 29 ]
+check "run.sh: the last run of the round is gmx-10: $(tail -n 1 "$RD/order")" [ "$(tail -n 1 "$RD/order")" = gmx-10 ]
+check "run.sh: cppn-10 started with its seed" grep -qx -- "evolve --representation cppn --seed 10 --evaluations 4500 --threads 1 --quiet --no-pictures --out $RD/representations/cppn-10" "$RD/calls"
+# the other experiments, seeds 1..3 (18 runs), and seed 1 of each representation to the full budget
+rm -f "$RD/calls" "$RD/order"
+FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" others-2000
+check "run.sh: others-2000 makes 18 runs: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 18 ]
+check "run.sh: the friction variant of seed 3" grep -qx -- "evolve --mu_kinetic 0.4 --mu_static 0.5 --seed 3 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/friction/k0.4_s0.5-3" "$RD/calls"
+rm -f "$RD/calls" "$RD/order"
+FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" full-20000
+check "run.sh: full-20000 resumes seed 1 of each: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 gmx-1 " ]
+check "run.sh: to 20,000 evaluations" [ "$(grep -c -- '--evaluations 20000' "$RD/calls")" -eq 3 ]
+expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" fig6-4k
+expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" others-
 expect_fail 2 "unknown stage 'fig7-2000'" sh results/run.sh "$F" "$RD" fig7-2000
 summary cli_report
