@@ -98,6 +98,8 @@ static const key_def keys[] = {
      "relaxation lasts at least this (steps of the default step, 0.9 dt_rec: scaled to the step)"},
     {"relax_max_steps", K_LONG, OFF(eval.relax_max_steps), 0, 1e8, NULL, 0, "and at most this (likewise); no score if not settled"},
     {"settle_speed", K_PARAM, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
+    {"relax_dt_frac", K_PARAM, OFF(eval.relax_dt_frac), 0, 10, NULL, 0,
+     "settling's pseudo-step, fraction of dt_rec (0: the run's step); redone at the run's step if it fails"},
     {"release_steps", K_LONG, OFF(eval.release_steps), 0, 1e8, NULL, 0,
      "settled: calm through this many last relaxation steps (likewise), model damping alone"},
     {"voxel_size", K_PARAM, OFF(voxel_size), AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX, NULL, 0, "cell edge, m"},

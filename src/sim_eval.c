@@ -16,6 +16,7 @@ am_eval_def am_default_eval(void)
     d.relax_max_steps = 40000;
     d.relax_min_steps = 200;
     d.settle_speed = AM_P(1e-4);
+    d.relax_dt_frac = AM_P(1.8);
     d.release_steps = 500;
     d.record = 0;
     d.gait = 0;
@@ -339,6 +340,88 @@ const char* am_gait_mode_name(am_gait_mode mode)
     return (unsigned)mode < 4 ? names[mode] : "unknown";
 }
 
+/* the relaxation's limits, in steps of the run's step (amorph/sim.h: the counts are steps of the
+ * default step) */
+typedef struct relax_limits {
+    long max, min, release, calm;
+    am_real dt, dt_settle;   /* the run's step; settling's pseudo-step (>= dt) */
+} relax_limits;
+
+/* the relaxation from s's reset state (docs/physics.md, Evaluation): no actuation. Settling:
+ * kinetic damping in place of the global damping, at the pseudo-step lim->dt_settle. Every time the
+ * kinetic energy passes a peak, all momenta are set to zero, so the body stops near the bottom of
+ * each swing and comes to rest in equilibrium in a few swings, while a body that must topple falls
+ * at its own pace (the seed's global damping, a drag on every voxel, would make it creep for
+ * seconds). The internal damping stays. Once the RMS speed has stayed below settle_speed for
+ * lim->calm steps, the release: the model's damping alone, at the run's step, for lim->release
+ * steps; the body has settled when the RMS speed stays below settle_speed through it, else settling
+ * goes on. Fills out's relaxation fields; s ends at the run's step. */
+static void relax(const am_model* m, am_state* s, const am_eval_def* def, const relax_limits* lim, am_record* rec, am_result* out)
+{
+    const double calm_speed = (double)def->settle_speed;
+    long calm = 0, release = -1; /* release: steps into the release window, -1 while settling */
+    double ke_prev = 0, worst = 0, speed = 0;
+    out->kinetic_resets = 0;
+    out->settled = 0;
+    s->glob_scale = AM_R(0);
+    s->dt = lim->dt_settle;
+    s->settle_dt = lim->dt_settle;
+    while (s->step < lim->max && !s->diverged) {
+        s->settle_steps += release < 0;
+        am_step(m, s);
+        am_record_frame(m, s, rec);
+        double ke;
+        ke_and_speed(m, s, &ke, &speed);
+        if (release < 0) {
+            if (ke < ke_prev) { /* past a peak: stop */
+                stop_all(m, s);
+                out->kinetic_resets++;
+                ke = 0;
+            }
+            ke_prev = ke;
+            calm = speed < calm_speed ? calm + 1 : 0;
+            if (calm >= lim->calm && s->step >= lim->min) {
+                release = 0;
+                worst = 0;
+                s->glob_scale = AM_R(1);
+                s->dt = lim->dt;
+            }
+        } else {
+            worst = speed > worst ? speed : worst;
+            if (!(speed < calm_speed)) { /* moving again: back to settling */
+                release = -1;
+                calm = 0;
+                ke_prev = ke;
+                s->glob_scale = AM_R(0);
+                s->dt = lim->dt_settle;
+            } else if (++release >= lim->release) {
+                out->settled = 1;
+                break;
+            }
+        }
+    }
+    s->dt = lim->dt;
+    out->residual_speed = out->settled ? worst : speed;
+}
+
+double am_sim_time(const am_model* m, const am_state* s)
+{
+    return (double)(s->step - s->settle_steps) * am_to_si(m, s->dt, AM_DIM_TIME) + (double)s->settle_steps * am_to_si(m, s->settle_dt, AM_DIM_TIME);
+}
+
+/* settling's pseudo-step: relax_dt_frac dt_rec, or the run's step dt when that is larger (or
+ * relax_dt_frac is 0) */
+static am_real settle_step(const am_model* m, const am_eval_def* def, am_real dt)
+{
+    if (!(def->relax_dt_frac > AM_P(0))) return dt;
+#if defined(AM_REAL_FIXED_POINT)
+    const am_real d = AM_MUL(AM_FROM_DOUBLE((double)def->relax_dt_frac), m->dt_rec);
+#else
+    const am_real d = (am_real)def->relax_dt_frac * m->dt_rec;
+#endif
+    return d > dt ? d : dt;
+}
+
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
 {
     memset(out, 0, sizeof *out);
@@ -353,60 +436,42 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->dt = am_to_si(m, s->dt, AM_DIM_TIME);
     out->period_steps = s->period_steps;
     /* the relaxation's step counts are steps of the default step (amorph/sim.h) */
-    const long relax_max = am_steps_at(m, s, def->relax_max_steps), relax_min = am_steps_at(m, s, def->relax_min_steps);
-    const long release_steps = am_steps_at(m, s, def->release_steps), calm_steps = am_steps_at(m, s, CALM_STEPS);
+    relax_limits lim;
+    lim.max = am_steps_at(m, s, def->relax_max_steps);
+    lim.min = am_steps_at(m, s, def->relax_min_steps);
+    lim.release = am_steps_at(m, s, def->release_steps);
+    lim.calm = am_steps_at(m, s, CALM_STEPS);
+    lim.dt = s->dt;
+    lim.dt_settle = settle_step(m, def, s->dt);
+    const int period_steps = s->period_steps;
     am_record* rec = def->record;
+    if (rec && lim.dt_settle != lim.dt) {
+        /* a recording cannot take frames back: the relaxation is tried without it first, so that
+         * a recorded evaluation is the unrecorded one frame for frame */
+        relax(m, s, def, &lim, NULL, out);
+        if (s->diverged || !out->settled) lim.dt_settle = lim.dt, out->relax_retried = 1;
+        am_state_reset(m, s);
+        s->dt = lim.dt;
+        s->period_steps = period_steps;
+    }
     if (rec) {
         rec->frames = 0;
         rec->truncated = 0;
         rec->nv = m->nv;
     }
     am_record_frame(m, s, rec);
-
-    /* relaxation (docs/physics.md, Evaluation): no actuation. Settling: kinetic damping in place of
-     * the global damping. Every time the kinetic energy passes a peak, all momenta are set to zero,
-     * so the body stops near the bottom of each swing and comes to rest in equilibrium in a few
-     * swings, while a body that must topple falls at its own pace (the seed's global damping, a
-     * drag on every voxel, would make it creep for seconds). The internal damping stays. Once the
-     * RMS speed has stayed below settle_speed for CALM_STEPS steps, the release: the model's damping
-     * alone for release_steps; the body has settled when the RMS speed stays below settle_speed
-     * through it, else settling goes on. */
-    const double calm_speed = (double)def->settle_speed;
-    long calm = 0, release = -1; /* release: steps into the release window, -1 while settling */
-    double ke_prev = 0, worst = 0, speed = 0;
-    s->glob_scale = AM_R(0);
-    while (s->step < relax_max && !s->diverged) {
-        am_step(m, s);
-        am_record_frame(m, s, rec);
-        double ke;
-        ke_and_speed(m, s, &ke, &speed);
-        if (release < 0) {
-            if (ke < ke_prev) { /* past a peak: stop */
-                stop_all(m, s);
-                out->kinetic_resets++;
-                ke = 0;
-            }
-            ke_prev = ke;
-            calm = speed < calm_speed ? calm + 1 : 0;
-            if (calm >= calm_steps && s->step >= relax_min) {
-                release = 0;
-                worst = 0;
-                s->glob_scale = AM_R(1);
-            }
-        } else {
-            worst = speed > worst ? speed : worst;
-            if (!(speed < calm_speed)) { /* moving again: back to settling */
-                release = -1;
-                calm = 0;
-                ke_prev = ke;
-                s->glob_scale = AM_R(0);
-            } else if (++release >= release_steps) {
-                out->settled = 1;
-                break;
-            }
-        }
+    relax(m, s, def, &lim, rec, out);
+    if ((s->diverged || !out->settled) && lim.dt_settle != lim.dt) {
+        /* the pseudo-step failed this body (it diverged, or never came to rest): the relaxation is
+         * done again from the start at the run's step, as if the pseudo-step were off */
+        out->relax_retried = 1;
+        lim.dt_settle = lim.dt;
+        am_state_reset(m, s);
+        s->dt = lim.dt;
+        s->period_steps = period_steps;
+        relax(m, s, def, &lim, rec, out);
     }
-    out->residual_speed = out->settled ? worst : speed;
+    out->relax_dt = am_to_si(m, lim.dt_settle, AM_DIM_TIME);
     s->glob_scale = AM_R(1); /* the movement segment: the model's damping */
     out->relax_steps = s->step;
     record_extra(m, s, rec);
@@ -427,7 +492,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     if (s->step != out->relax_steps) record_extra(m, s, rec);
     out->move_steps = s->step - out->relax_steps;
     out->steps = s->step;
-    out->sim_seconds = (double)s->step * am_to_si(m, s->dt, AM_DIM_TIME);
+    out->sim_seconds = am_sim_time(m, s);
     out->rebuilds = s->rebuilds;
     out->max_pairs = s->max_npairs;
     am_com(m, s, c1);

@@ -416,6 +416,8 @@ void am_state_reset(const am_model* m, am_state* s)
     s->step = 0;
     s->t = AM_R(0);
     s->dt = AM_MUL(PV(m->env.dt_frac, 1.0), m->dt_rec);
+    s->settle_steps = 0;
+    s->settle_dt = s->dt;
     s->period_steps = m->env.period_steps;
     s->actuate = 0;
     s->actuation_step0 = 0;

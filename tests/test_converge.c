@@ -46,6 +46,9 @@ static run eval_at(double dt_frac, double period_s, double mu, double zeta, int 
     if (st != AM_OK) return out;
     am_eval_def def = am_default_eval();
     def.fitness = x ? AM_FIT_PLUS_X : AM_FIT_HORIZONTAL;
+    /* a fine step is the reference: it settles at its own step too (the default's settling
+     * pseudo-step, relax_dt_frac, is part of what is checked) */
+    if (dt_frac < 0.9) def.relax_dt_frac = AM_P(0);
     am_result r;
     am_evaluate(&g_m, &g_s, &def, &r);
     out.travel = r.travel;

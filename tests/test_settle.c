@@ -108,6 +108,136 @@ static void one_body(int repr, uint64_t seed)
     g_searched += !r.diverged;
 }
 
+/* settling at the pseudo-step (relax_dt_frac, 1.8 dt_rec) against settling at the run's step
+ * (relax_dt_frac 0), evaluated with the actuation off and no movement (cycles 0), so that the end
+ * state is the rest state. The equilibrium does not depend on the step, the path to it does: a
+ * body that tips or rolls may land turned a little and slid. Wanted: every rest pose within
+ * REST_SHAPE (RMS about the centre of mass: shape and orientation) and REST_HEIGHT (the centre of
+ * mass's height), the median pose within REST_MEDIAN (the settle speed's tolerance), and fewer
+ * steps over the bodies. */
+enum { REST_BODIES = 10 };
+#define REST_SHAPE 2e-3   /* m: a fifth of the 1 cm voxel */
+#define REST_HEIGHT 1e-4  /* m */
+#define REST_MEDIAN 1e-5  /* m */
+static double g_rest_d[3 * REST_BODIES];
+static long g_rest_steps[2];
+static double g_rest_worst, g_rest_slide;
+static int g_rest_bodies;
+static am_state g_s2;
+
+/* the RMS over the voxels of the difference of their positions relative to the centre of mass
+ * (m): how far two rest poses differ in shape and orientation, a horizontal slide left out */
+static double pose_diff(const am_model* m, const am_state* a, const double ca[3], const am_state* b, const double cb[3])
+{
+    double sum = 0;
+    for (int i = 0; i < m->nv; i++)
+        for (int k = 0; k < 3; k++) {
+            const double d = ((AM_TO_DOUBLE(m->x0[k][i]) + AM_TO_DOUBLE(a->x[k][i])) * m->unit_len - ca[k]) - ((AM_TO_DOUBLE(m->x0[k][i]) + AM_TO_DOUBLE(b->x[k][i])) * m->unit_len - cb[k]);
+            sum += d * d;
+        }
+    return m->nv ? sqrt(sum / m->nv) : 0;
+}
+
+static void rest_pose(int repr, uint64_t seed)
+{
+    int nv = body(repr, seed);
+    if (nv <= 0 || (!full_set() && nv > QUICK_VOXELS) || !build(0)) return;
+    double com[2][3];
+    am_result r[2];
+    for (int k = 0; k < 2; k++) {
+        am_eval_def def = am_default_eval();
+        def.cycles = 0;
+        if (k == 1) def.relax_dt_frac = AM_P(0);
+        am_evaluate(&g_m, k ? &g_s2 : &g_s, &def, &r[k]);
+        am_com(&g_m, k ? &g_s2 : &g_s, com[k]);
+        g_rest_steps[k] += r[k].relax_steps;
+    }
+    const double d = pose_diff(&g_m, &g_s, com[0], &g_s2, com[1]), dz = fabs(com[0][2] - com[1][2]);
+    const double slide = sqrt((com[0][0] - com[1][0]) * (com[0][0] - com[1][0]) + (com[0][1] - com[1][1]) * (com[0][1] - com[1][1]));
+    printf("    %s %llu: %d voxels, rest at the pseudo-step %.3g s after %ld steps%s, at the run's step after %ld; "
+           "poses %.2e m apart (RMS about the centre of mass), centre of mass %.2e m higher or lower, slid %.2e m\n",
+           am_repr_name(repr), (unsigned long long)seed, nv, r[0].relax_dt, r[0].relax_steps, r[0].relax_retried ? " (retried)" : "",
+           r[1].relax_steps, d, dz, slide);
+    CHECK(r[0].settled && r[1].settled && !r[0].diverged, "%s %llu: settled %d / %d", am_repr_name(repr), (unsigned long long)seed,
+          r[0].settled, r[1].settled);
+    CHECK(d <= REST_SHAPE && dz <= REST_HEIGHT, "%s %llu: the rest poses are %.3g m apart (at most %g), their centres of mass %.3g m in height "
+          "(at most %g)", am_repr_name(repr), (unsigned long long)seed, d, REST_SHAPE, dz, REST_HEIGHT);
+    g_rest_d[g_rest_bodies] = d;
+    g_rest_worst = d > g_rest_worst ? d : g_rest_worst;
+    g_rest_slide = slide > g_rest_slide ? slide : g_rest_slide;
+    g_rest_bodies++;
+}
+
+static void test_rest_pose(void)
+{
+    const int reprs[3] = {AM_REPR_GMX, AM_REPR_DCT, AM_REPR_CPPN};
+    for (int k = 0; k < 3; k++)
+        for (uint64_t seed = 1; seed <= REST_BODIES; seed++) rest_pose(reprs[k], seed);
+    printf("    %d bodies: %ld relaxation steps at the pseudo-step, %ld at the run's step (%.2fx); rest poses up to %.2e m apart, "
+           "slid up to %.2e m\n",
+           g_rest_bodies, g_rest_steps[0], g_rest_steps[1], (double)g_rest_steps[1] / (double)(g_rest_steps[0] ? g_rest_steps[0] : 1),
+           g_rest_worst, g_rest_slide);
+    CHECK(g_rest_bodies >= (full_set() ? 3 * REST_BODIES : 1), "only %d bodies tried", g_rest_bodies);
+    /* the median pose (insertion sort of the few) */
+    for (int i = 1; i < g_rest_bodies; i++)
+        for (int j = i; j > 0 && g_rest_d[j - 1] > g_rest_d[j]; j--) {
+            const double t = g_rest_d[j];
+            g_rest_d[j] = g_rest_d[j - 1];
+            g_rest_d[j - 1] = t;
+        }
+    const double median = g_rest_bodies ? g_rest_d[g_rest_bodies / 2] : 0;
+    printf("    median pose difference %.2e m\n", median);
+    CHECK(median <= REST_MEDIAN, "the median rest pose differs by %.3g m (at most %g)", median, REST_MEDIAN);
+    /* the point of the pseudo-step: over the bodies that take long to settle, fewer steps */
+    if (full_set())
+        CHECK(g_rest_steps[1] >= 1.3 * g_rest_steps[0], "the pseudo-step saved too little: %ld steps against %ld", g_rest_steps[0],
+              g_rest_steps[1]);
+}
+
+/* a pseudo-step the body cannot take (6 dt_rec diverges): the relaxation is done again at the
+ * run's step, and the evaluation is the one with the pseudo-step off, bit for bit, recorded or not */
+static void test_pseudo_step_fallback(void)
+{
+    am_status st = am_scene_build(&g_lat, "sphere:8", g_err, (int)sizeof g_err);
+    CHECK(st == AM_OK, "scene: %s", g_err);
+    if (!build(30)) return;
+    am_eval_def def = am_default_eval();
+    def.cycles = 1;
+    def.relax_dt_frac = AM_P(0);
+    am_result off, bad, rec_off, rec_bad;
+    am_evaluate(&g_m, &g_s, &def, &off);
+    def.relax_dt_frac = AM_P(6);
+    am_evaluate(&g_m, &g_s, &def, &bad);
+    /* recorded: the frames of the failed pseudo-step are never handed out */
+    enum { FRAMES = 64, CAP = FRAMES * 400 * 7 };
+    static float pose[2][CAP];
+    static long steps[2][FRAMES];
+    am_record rec[2];
+    am_result* rr[2] = {&rec_off, &rec_bad};
+    for (int k = 0; k < 2; k++) {
+        memset(&rec[k], 0, sizeof rec[k]);
+        rec[k].every = 100;
+        rec[k].pose = pose[k];
+        rec[k].step = steps[k];
+        rec[k].pose_cap = CAP;
+        rec[k].max_frames = FRAMES;
+        def.record = &rec[k];
+        def.relax_dt_frac = k == 0 ? AM_P(0) : AM_P(6);
+        am_evaluate(&g_m, &g_s, &def, rr[k]);
+    }
+    printf("    sphere:8, pseudo-step 6 dt_rec: retried %d, hash %016llx (off: %016llx); recorded: %d and %d frames\n", bad.relax_retried,
+           (unsigned long long)bad.hash, (unsigned long long)off.hash, rec[0].frames, rec[1].frames);
+    CHECK(!off.diverged && off.settled, "sphere:8 with the pseudo-step off: diverged %d, settled %d", off.diverged, off.settled);
+    CHECK(bad.relax_retried == 1 && rec_bad.relax_retried == 1, "the failed pseudo-step was not retried");
+    CHECK(bad.hash == off.hash && rec_bad.hash == off.hash && rec_off.hash == off.hash && bad.fitness == off.fitness,
+          "the retried evaluation differs from the one at the run's step");
+    CHECK(rec[0].frames > 2 && !rec[0].truncated && rec[1].frames == rec[0].frames &&
+              !memcmp(pose[0], pose[1], sizeof(float) * (size_t)rec[0].frames * (size_t)rec[0].nv * 7) &&
+              !memcmp(steps[0], steps[1], sizeof(long) * (size_t)rec[0].frames),
+          "the recording of the retried evaluation differs: %d frames against %d", rec[1].frames, rec[0].frames);
+    CHECK(fabs(bad.sim_seconds - off.sim_seconds) < 1e-12, "simulated time %.9g s against %.9g s", bad.sim_seconds, off.sim_seconds);
+}
+
 static void test_random_bodies(void)
 {
     const int reprs[3] = {AM_REPR_GMX, AM_REPR_DCT, AM_REPR_CPPN};
@@ -145,5 +275,7 @@ int main(int argc, char** argv)
     TEST_INIT(argc, argv);
     RUN(test_sphere);
     RUN(test_random_bodies);
+    RUN(test_rest_pose);
+    RUN(test_pseudo_step_fallback);
     return SUMMARY();
 }

@@ -2,7 +2,8 @@
  *
  * Each body is evaluated at its own step (the default 0.9 dt_rec) and at a fine step (0.1 dt_rec)
  * with the same physics in seconds: the actuation period held (period_s) and the relaxation
- * scaled (its step counts are steps of the default step, amorph/sim.h). The bodies: the two
+ * scaled (its step counts are steps of the default step, amorph/sim.h), settling at the fine
+ * step itself (the default's settling pseudo-step, relax_dt_frac, is part of what is checked). The bodies: the two
  * calibration bars (halfbar:6, antibar:6), random genomes of every representation as evolution
  * meets them (the default experiment's settings), and the robots named on the command line (run
  * folders: their best robot in their own settings). Then the margins, at the default step: the
@@ -60,6 +61,9 @@ static void variant(const conv_body* b, int v, double fine, am_lattice* lat, am_
         env->dt_frac = AM_PARAM_FROM_DOUBLE(v == V_FINE ? fine : 1.2 * own);
         ev->dt_search = 0;
     }
+    /* the reference relaxes at its own fine step too: the default's settling pseudo-step
+     * (relax_dt_frac) is part of what is checked */
+    if (v == V_FINE) ev->relax_dt_frac = AM_P(0);
     if (v == V_MU_LOW || v == V_MU_HIGH)
         for (int k = 0; k < lat->palette.count; k++) {
             const double f = v == V_MU_LOW ? 0.9 : 1.1;

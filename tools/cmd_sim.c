@@ -68,6 +68,8 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_int(q, "settled", r->settled);
     tool_rec_num(q, "residual_speed", r->residual_speed);
     tool_rec_int(q, "kinetic_resets", r->kinetic_resets);
+    tool_rec_num(q, "relax_dt", r->relax_dt);
+    tool_rec_int(q, "relax_retried", r->relax_retried);
     tool_rec_num(q, "sim_seconds", r->sim_seconds);
     tool_rec_num(q, "wall_seconds", wall);
     tool_rec_int(q, "collision_rebuilds", r->rebuilds);

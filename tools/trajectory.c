@@ -35,7 +35,7 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
     if (t->rows == 0 && !json) csv_header(o, m->nv);
     double com[3];
     am_com(m, s, com);
-    const double time = (double)s->step * am_to_si(m, s->dt, AM_DIM_TIME), unit = am_unit(m, AM_DIM_LENGTH);
+    const double time = am_sim_time(m, s), unit = am_unit(m, AM_DIM_LENGTH);
     if (json) am_text_put(o, "{\"step\": %ld, \"time\": ", s->step);
     else am_text_put(o, "%ld,", s->step);
     num(o, json, "", time, 9);

@@ -215,6 +215,8 @@ typedef struct am_state {
                               * env.period_s at this state's dt; am_state_reset, am_evaluate) */
     am_real t;               /* simulated time, s */
     am_real dt;              /* time step, s */
+    long settle_steps;       /* of the steps, those the relaxation took at its settling pseudo-step */
+    am_real settle_dt;       /* and that step (am_sim_time) */
     int actuate;             /* 1: temperatures follow the actuation; 0: held at temp_base */
     long actuation_step0;    /* step at which actuation started (phase reference) */
     int diverged;            /* 1 once NaN/Inf, strain or speed left its bound */
@@ -349,6 +351,10 @@ typedef struct am_eval_def {
     long relax_max_steps;    /* relaxation ends here at the latest (40000) */
     long relax_min_steps;    /* and not before this (200) */
     am_param settle_speed;   /* m/s: relaxed when the RMS voxel speed stays below this (1e-4) */
+    am_param relax_dt_frac;  /* settling's pseudo-step, a fraction of dt_rec (1.8; 0 or below the
+                              * run's step: the run's step). The release window and the movement
+                              * take the run's step; a relaxation that diverges or does not come to
+                              * rest at the pseudo-step is done again at the run's step */
     long release_steps;      /* the last steps of relaxation, with the model's damping alone, over
                               * which the RMS speed must stay below settle_speed (500) */
     am_record* record;       /* optional recording (may be NULL) */
@@ -376,6 +382,9 @@ typedef struct am_result {
     double dt;               /* s */
     int period_steps;        /* the actuation period, steps */
     long relax_steps, move_steps, steps;
+    double relax_dt;         /* s: the relaxation's settling pseudo-step (eval.relax_dt_frac) */
+    int relax_retried;       /* 1: the relaxation failed at the pseudo-step (diverged or never came
+                              * to rest) and was done again from the start at the run's step */
     int diverged;            /* 1 when the run diverged */
     int settled;             /* 1 when the body came to rest: calm through the release window */
     double residual_speed;   /* m/s: the largest RMS voxel speed over the last release window
@@ -386,6 +395,9 @@ typedef struct am_result {
     int max_pairs;           /* largest collision candidate list */
     uint64_t hash;           /* am_state_hash at the end */
 } am_result;
+
+/* s's simulated time, s: its steps at dt, those of the relaxation's settling at settle_dt */
+double am_sim_time(const am_model* m, const am_state* s);
 
 /* the whole evaluation of one model; s is overwritten */
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
