@@ -20,8 +20,8 @@ cd "$(dirname "$0")/.."
 # the number type is the first argument: float (default) or fixed, each with its pinned hash
 REAL=${1:-float}
 case "$REAL" in
-float) REPRO_EXPECT=${REPRO_EXPECT:-9f73d935d05490ac} ;;
-fixed) REPRO_EXPECT=${REPRO_EXPECT_FIXED:-ac57b311cde91ec5} ;;
+float) REPRO_EXPECT=${REPRO_EXPECT:-3d35b249bf334b1b} ;;
+fixed) REPRO_EXPECT=${REPRO_EXPECT_FIXED:-5a1b76ab7b19a89a} ;;
 *) echo "repro: the number type must be float or fixed, not '$REAL'" >&2; exit 2 ;;
 esac
 REPRO_ARGS=${REPRO_ARGS:-"repro"}
