@@ -256,7 +256,7 @@ void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo
     r->config_end = sc->config_end;
     r->last_end = sc->last_end;
     memset(e, 0, sizeof *e);
-    e->def = am_default_evo();
+    e->def = am_stored_evo(); /* a key the checkpoint does not name: as runs made before it had it */
 }
 
 /* an "individual" line (tokens tok): its numbers, then its genome from the next line */

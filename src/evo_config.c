@@ -30,6 +30,13 @@ am_evo_def am_default_evo(void)
     return d;
 }
 
+am_evo_def am_stored_evo(void)
+{
+    am_evo_def d = am_default_evo();
+    d.eval.relax_dt_frac = AM_P(0); /* runs made before the settling pseudo-step */
+    return d;
+}
+
 am_palette am_evo_palette(const am_evo_def* d)
 {
     am_palette p;

@@ -89,11 +89,11 @@ static void flag_set(int* key_line, const char* key)
 
 /* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
  * `extra` more (keys and values, NULL-terminated; may be NULL) */
-TOOL_NOINLINE int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd)
+TOOL_NOINLINE int build_def(const evo_opts* o, const char* config, const char* const* extra, int stored, am_evo_def* d, const char* cmd)
 {
     char err[AM_ERR_MAX];
     int key_line[AM_EVO_KEY_MAX] = {0}; /* the config file's line that set each key; 0: a default or a flag */
-    *d = am_default_evo();
+    *d = stored ? am_stored_evo() : am_default_evo();
     if (o->config) config = o->config;
     if (config && tool_read_config_lines(config, d, 0, key_line, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     for (int k = 0; k < o->nflags; k++) {
@@ -434,7 +434,7 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     /* what the run folder's config.txt and today's flags say */
     path_join(path, sizeof path, dir, RUN_CONFIG);
     am_evo_def d;
-    if (build_def(o, path, extra, &d, "resume")) return 2;
+    if (build_def(o, path, extra, 1, &d, "resume")) return 2;
     if (!am_evo_same_run(&e->def, &d, what, sizeof what))
         return tool_usage_error("--resume %s: the configuration changed: %s; a run continues only with its own settings", dir, what);
     e->def.evaluations = d.evaluations;
@@ -529,7 +529,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
     if (o.resume && o.config) return tool_usage_error("evolve: --resume reads the run's own config.txt; --config does not apply");
     am_evo_def d;
     if (!o.resume) {
-        if (build_def(&o, NULL, NULL, &d, "evolve")) return 2;
+        if (build_def(&o, NULL, NULL, 0, &d, "evolve")) return 2;
         if (o.print_config) {
             char err[AM_ERR_MAX];
             tool_out out;

@@ -233,7 +233,7 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
                                 am_quote(q, sizeof q, name, -1));
     }
     am_evo_def base;
-    if (build_def(&o, NULL, NULL, &base, "experiment")) return 2;
+    if (build_def(&o, NULL, NULL, 0, &base, "experiment")) return 2;
     if (test_interrupt_setup()) return 2;
     char dir[EXP_DIR_MAX], err[AM_ERR_MAX];
     if (o.out && strlen(o.out) >= sizeof dir) return tool_usage_error("experiment: folder name too long");

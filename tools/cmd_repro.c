@@ -41,7 +41,7 @@ int cmd_repro(tool_ctx* c, int argc, char** argv)
             return tool_unknown_option("repro", a);
     }
     am_evo_def d;
-    if (build_def(&o, NULL, NULL, &d, "repro")) return 2;
+    if (build_def(&o, NULL, NULL, 0, &d, "repro")) return 2;
     char err[AM_ERR_MAX];
     if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();

@@ -34,9 +34,10 @@ typedef struct evo_opts {
 
 /* one option at argv[*i]; 1 when consumed, 0 when unknown, 2 after an error message */
 int parse_common(int argc, char** argv, int* i, evo_opts* o, const char* cmd);
-/* defaults, then the config file (o->config, else `config` when not NULL), then the flags, then
- * `extra` more (keys and values, NULL-terminated; may be NULL) */
-int build_def(const evo_opts* o, const char* config, const char* const* extra, am_evo_def* d, const char* cmd);
+/* defaults (am_default_evo, or am_stored_evo when stored: `config` is a run folder's config.txt),
+ * then the config file (o->config, else `config` when not NULL), then the flags, then `extra` more
+ * (keys and values, NULL-terminated; may be NULL) */
+int build_def(const evo_opts* o, const char* config, const char* const* extra, int stored, am_evo_def* d, const char* cmd);
 /* the workers a run uses (threads, 0: all cores) */
 int workers_of(const am_evo_def* d);
 /* reads AMORPH_TEST_INTERRUPT (docs/evolve.md, Testing interruptions) */

@@ -179,7 +179,7 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
 static am_status load_run(tool_ctx* c, const char* dir, am_lattice* lat, tool_robot* r, char* err, int errsz)
 {
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
-    am_evo_def d = am_default_evo();
+    am_evo_def d = am_stored_evo(); /* a key config.txt does not name: as the run had it */
     /* a NUL byte ends these texts, as it ended them when they were parsed whole */
     snprintf(path, sizeof path, "%s/" RUN_CONFIG, dir);
     am_status st = tool_read_config(path, &d, 1, err, errsz);

@@ -44,6 +44,11 @@ typedef struct am_evo_def {
 
 /* the seed's two-material GMX experiment on the profile's workspace (20^3 desktop), 200 evaluations */
 am_evo_def am_default_evo(void);
+/* the defaults under a stored configuration (a run folder's config.txt, a checkpoint): those of
+ * am_default_evo, except that a key added after run folders were first written takes the value
+ * that reproduces the runs made before it, so that such a folder resumes and replays exactly:
+ * relax_dt_frac 0 (settling at the run's step). A new run writes every key, these included. */
+am_evo_def am_stored_evo(void);
 
 /* sets one key from its text value ("population", "20"); the message names the problem only
  * (the caller adds "file:line: " or "--flag: "). AM_ERR_ARG for an unknown key, AM_ERR_RANGE for
