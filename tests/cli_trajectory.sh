@@ -33,9 +33,16 @@ check "the steps: 0, the multiples of 70, $relax and $steps, rising: $(tr '\n' '
         $1 % 70 && $1 != r && $1 != s { exit 1 } { p = $1 } END { exit !(p == s) }' "$TMPD/steps"
 check "segment 0 up to step $relax, 1 after" \
     awk -F, -v r="$relax" 'NR > 1 && ($3 != ($1 > r)) { exit 1 }' "$TMPD/w.csv"
-dt=$(field dt "$TMPD/w.json")
-check "time = step x dt ($dt s)" \
-    awk -F, -v dt="$dt" 'NR > 1 { d = $2 - $1 * dt; if (d < 0) d = -d; if (d > 1e-8 * ($2 + 1e-3)) exit 1 }' "$TMPD/w.csv"
+dt=$(field dt "$TMPD/w.json"); rdt=$(field relax_dt "$TMPD/w.json"); simt=$(field sim_seconds "$TMPD/w.json")
+# time: rising; in the relaxation between step x dt and step x relax_dt (settling takes the pseudo-step,
+# the release window the run's step); in the movement dt a step from the relaxation's end; the last
+# row's is sim's simulated time
+check "time: relaxation steps of dt ($dt s) to relax_dt ($rdt s), movement steps of dt, ending at $simt s" \
+    awk -F, -v dt="$dt" -v rdt="$rdt" -v r="$relax" -v T="$simt" 'function a(x) { return x < 0 ? -x : x }
+        NR == 1 { next } NR > 2 && $2 <= p { exit 1 } { p = $2 }
+        $1 <= r && ($2 < $1 * dt * (1 - 1e-6) || $2 > $1 * rdt * (1 + 1e-6)) { exit 1 }
+        $1 == r { tr = $2 } $1 > r && a($2 - tr - ($1 - r) * dt) > 1e-8 * $2 { exit 1 }
+        END { if (a(p - T) > 1e-6 * T || rdt <= dt) exit 1 }' "$TMPD/w.csv"
 # the centre of mass: the last row less the relaxation's last is sim's displacement
 c0=$(awk -F, -v r="$relax" '$1 == r { print $4, $5, $6 }' "$TMPD/w.csv")
 c1=$(tail -n 1 "$TMPD/w.csv" | awk -F, '{ print $4, $5, $6 }')

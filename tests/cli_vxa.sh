@@ -144,11 +144,13 @@ else ko "no warning for a lattice without phases: $(cat "$D/ph.err")"; fi
 "$AMORPH" sim "$D/ph.lattice" --cycles 1 --relax-max 200 >"$D/ph.out" 2>/dev/null
 if [ "$(hash_of "$D/ph.out")" != "$(hash_of "$D/evosoro_phase.a")" ]; then ok; else ko "phases made no difference"; fi
 # the cantilever moves down under its load (0.5 mm at rest, tests/test_vxa.c checks the figure), and
-# sits without it
-"$AMORPH" sim tests/data/voxcad_cantilever.vxa --cycles 1 --relax-max 2000 --json >"$D/cant.json" 2>/dev/null
+# sits without it: a relaxation cut short (200 steps, before the tip has come down) leaves the rest
+# of the deflection to the movement segment, whose displacement sim reports
+"$AMORPH" sim tests/data/voxcad_cantilever.vxa --cycles 1 --relax-max 200 --json >"$D/cant.json" 2>/dev/null
 sed 's|<NumBCs>2</NumBCs>|<NumBCs>0</NumBCs>|; /<FRegion>/,/<\/FRegion>/d' tests/data/voxcad_cantilever.vxa >"$D/free.vxa"
-"$AMORPH" sim "$D/free.vxa" --cycles 1 --relax-max 2000 --json >"$D/free.json" 2>/dev/null
-if grep -q '"dz": -[1-9]' "$D/cant.json" && grep -q '"dz": 0[,}]' "$D/free.json"; then ok
+"$AMORPH" sim "$D/free.vxa" --cycles 1 --relax-max 200 --json >"$D/free.json" 2>/dev/null
+cz=$(sed -n 's/.*"dz": \([-0-9.eE+]*\).*/\1/p' "$D/cant.json")
+if awk -v z="$cz" 'BEGIN { exit !(z < -1e-5) }' && grep -q '"dz": 0[,}]' "$D/free.json"; then ok
 else ko "cantilever: $(head -c 200 "$D/cant.json") / $(head -c 200 "$D/free.json")"; fi
 # a bad phase: one line FILE:LINE: problem
 sed 's|<Layer><!\[CDATA\[0, 0.25|<Layer><![CDATA[0, zero|' tests/data/evosoro_phase.vxa >"$D/badphase.vxa"
