@@ -23,8 +23,10 @@ static const char sim_help[] =
     "way) and prints one warning line on stderr; the exit status is still 0 (it is a result).\n"
     "Besides the fitness: residual_speed (m/s, the largest RMS voxel speed through the release\n"
     "window, or the last one when the relaxation ran out first), kinetic_resets (the relaxation's\n"
-    "kinetic damping stops; docs/physics.md, Evaluation), period_steps and period_s (the actuation\n"
-    "period). A convergence study holds the physics in seconds: --dt_frac F --period_s P (the\n"
+    "kinetic damping stops; docs/physics.md, Evaluation), relax_dt (s, settling's pseudo-step:\n"
+    "--relax_dt_frac, 1.8 dt_rec; 0 settles at the run's step) and relax_retried (1: the relaxation\n"
+    "failed at the pseudo-step and was done again at the run's step), period_steps and period_s (the\n"
+    "actuation period). A convergence study holds the physics in seconds: --dt_frac F --period_s P (the\n"
     "relaxation's step counts are steps of the default step and scale by themselves); --dt_frac alone\n"
     "keeps period_steps, and a note on stderr says the period in seconds changed.\n";
 
