@@ -345,7 +345,16 @@ const char* am_gait_mode_name(am_gait_mode mode)
 typedef struct relax_limits {
     long max, min, release, calm;
     am_real dt, dt_settle;   /* the run's step; settling's pseudo-step (>= dt) */
+    int period_steps;        /* the run's actuation period */
 } relax_limits;
+
+/* s back to the start of the evaluation, at the run's step and period */
+static void restart(const am_model* m, am_state* s, const relax_limits* lim)
+{
+    am_state_reset(m, s);
+    s->dt = lim->dt;
+    s->period_steps = lim->period_steps;
+}
 
 /* the relaxation from s's reset state (docs/physics.md, Evaluation): no actuation. Settling:
  * kinetic damping in place of the global damping, at the pseudo-step lim->dt_settle. Every time the
@@ -414,11 +423,7 @@ double am_sim_time(const am_model* m, const am_state* s)
 static am_real settle_step(const am_model* m, const am_eval_def* def, am_real dt)
 {
     if (!(def->relax_dt_frac > AM_P(0))) return dt;
-#if defined(AM_REAL_FIXED_POINT)
-    const am_real d = AM_MUL(AM_FROM_DOUBLE((double)def->relax_dt_frac), m->dt_rec);
-#else
-    const am_real d = (am_real)def->relax_dt_frac * m->dt_rec;
-#endif
+    const am_real d = AM_MUL(AM_PV(def->relax_dt_frac, 1.0), m->dt_rec); /* as am_state_reset's dt */
     return d > dt ? d : dt;
 }
 
@@ -443,16 +448,14 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     lim.calm = am_steps_at(m, s, CALM_STEPS);
     lim.dt = s->dt;
     lim.dt_settle = settle_step(m, def, s->dt);
-    const int period_steps = s->period_steps;
+    lim.period_steps = s->period_steps;
     am_record* rec = def->record;
     if (rec && lim.dt_settle != lim.dt) {
         /* a recording cannot take frames back: the relaxation is tried without it first, so that
          * a recorded evaluation is the unrecorded one frame for frame */
         relax(m, s, def, &lim, NULL, out);
         if (s->diverged || !out->settled) lim.dt_settle = lim.dt, out->relax_retried = 1;
-        am_state_reset(m, s);
-        s->dt = lim.dt;
-        s->period_steps = period_steps;
+        restart(m, s, &lim);
     }
     if (rec) {
         rec->frames = 0;
@@ -466,9 +469,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
          * done again from the start at the run's step, as if the pseudo-step were off */
         out->relax_retried = 1;
         lim.dt_settle = lim.dt;
-        am_state_reset(m, s);
-        s->dt = lim.dt;
-        s->period_steps = period_steps;
+        restart(m, s, &lim);
         relax(m, s, def, &lim, rec, out);
     }
     out->relax_dt = am_to_si(m, lim.dt_settle, AM_DIM_TIME);

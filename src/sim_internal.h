@@ -8,6 +8,13 @@
 
 #include "amorph/sim.h"
 
+#if defined(AM_REAL_FIXED_POINT)
+/* a parameter in SI converted to model units (u: the SI value of one unit of its dimension) */
+#define AM_PV(v, u) AM_FROM_DOUBLE((double)(v) / (u))
+#else
+#define AM_PV(v, u) (v)
+#endif
+
 typedef struct { am_real x, y, z; } vec3;
 typedef struct { am_real w, x, y, z; } quat;
 

@@ -11,13 +11,6 @@
 
 _Static_assert(AM_MAX_MATERIALS * AM_MAX_MATERIALS <= 256, "am_model.lpair holds a pair of materials in a uint8_t on a board");
 
-#if defined(AM_REAL_FIXED_POINT)
-/* a parameter in SI converted to model units (u: the SI value of one unit of its dimension) */
-#define PV(v, u) AM_FROM_DOUBLE((double)(v) / (u))
-#else
-#define PV(v, u) (v)
-#endif
-
 double am_unit(const am_model* m, int dim)
 {
     const double L = m->unit_len, M = m->unit_mass, T = m->unit_time;
@@ -203,10 +196,10 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     const double uP = am_unit(m, AM_DIM_PRESSURE), uRho = m->unit_mass / (m->unit_len * m->unit_len * m->unit_len);
     (void)uP;
     (void)uRho;
-    const am_real L = PV(lat->voxel_size, m->unit_len);
-    m->gravity = PV(env->gravity, am_unit(m, AM_DIM_ACCEL));
-    m->temp_base = PV(env->temp_base, 1.0);
-    m->temp_amplitude = PV(env->temp_amplitude, 1.0);
+    const am_real L = AM_PV(lat->voxel_size, m->unit_len);
+    m->gravity = AM_PV(env->gravity, am_unit(m, AM_DIM_ACCEL));
+    m->temp_base = AM_PV(env->temp_base, 1.0);
+    m->temp_amplitude = AM_PV(env->temp_amplitude, 1.0);
     m->env = *env;
     m->palette = lat->palette;
     m->nx = nx;
@@ -238,22 +231,22 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         int c = m->cell[i], x = c % nx, y = (c / nx) % ny, z = c / (nx * ny);
         m->x0[0][i] = AM_MUL(AM_INT(x) + AM_R(0.5), L);
         m->x0[1][i] = AM_MUL(AM_INT(y) + AM_R(0.5), L);
-        m->x0[2][i] = AM_MUL(AM_INT(z - kmin) + AM_R(0.5), L) + PV(env->lift, m->unit_len);
+        m->x0[2][i] = AM_MUL(AM_INT(z - kmin) + AM_R(0.5), L) + AM_PV(env->lift, m->unit_len);
         const int vc = AM_VC(m, i); /* the voxel's constants (once per material in the board profile) */
-        am_real mass = AM_MUL(PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
+        am_real mass = AM_MUL(AM_PV(mt->density, uRho), AM_MUL(L, AM_MUL(L, L)));
         am_real inertia = am_sim_inertia(mass, L);
         m->mass[vc] = mass;
         m->fixed[i] = (uint8_t)(mt->fixed != 0 || (layers && layers->has_bc && layers->fixed[c]));
         m->inv_mass[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
         m->inv_inertia[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
-        am_real EL = AM_MUL(PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
-        am_real zg = AM_MUL(PV(mt->zeta_global, 1.0), PV(env->zeta_global_scale, 1.0));
+        am_real EL = AM_MUL(AM_PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
+        am_real zg = AM_MUL(AM_PV(mt->zeta_global, 1.0), AM_PV(env->zeta_global_scale, 1.0));
         m->c_glob_t[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
         m->c_glob_r[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
         m->k_floor[vc] = AM_MUL(AM_R(2), EL);
-        m->c_col[vc] = AM_MUL(AM_MUL(AM_R(2), PV(mt->zeta_collision, 1.0)), am_sqrt(AM_MUL(mass, EL)));
-        m->mu_s[vc] = PV(mt->mu_static, 1.0);
-        m->mu_k[vc] = PV(mt->mu_kinetic, 1.0);
+        m->c_col[vc] = AM_MUL(AM_MUL(AM_R(2), AM_PV(mt->zeta_collision, 1.0)), am_sqrt(AM_MUL(mass, EL)));
+        m->mu_s[vc] = AM_PV(mt->mu_static, 1.0);
+        m->mu_k[vc] = AM_PV(mt->mu_kinetic, 1.0);
     }
 
     /* links grouped by axis; along x the lanes (amorph/sim.h): lane i + 1 from voxel i to i + 1,
@@ -288,9 +281,9 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             }
             const am_material* ma = &lat->palette.mat[m->mat[a]];
             const am_material* mb = &lat->palette.mat[m->mat[j]];
-            const am_real Ea = PV(ma->E, uP), Eb = PV(mb->E, uP);
+            const am_real Ea = AM_PV(ma->E, uP), Eb = AM_PV(mb->E, uP);
             am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(Ea, Eb)), Ea + Eb); /* halves in series */
-            am_real nu = AM_MUL(AM_R(0.5), PV(ma->poisson, 1.0) + PV(mb->poisson, 1.0));
+            am_real nu = AM_MUL(AM_R(0.5), AM_PV(ma->poisson, 1.0) + AM_PV(mb->poisson, 1.0));
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
             m->lneg[nl] = (am_index)a;
             m->lpos[nl] = (am_index)j;
@@ -308,8 +301,8 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
              * midpoint and c_r = beta E L^3 / 12 = c_t L^2 / 12 on the relative spin, which the step
              * derives from c_t (docs/physics.md, Damping) */
             am_real mu = am_sim_reduced_mass(m->mass[AM_VC(m, a)], m->mass[AM_VC(m, j)]);
-            am_real zi = AM_MUL(AM_MUL(AM_R(0.5), PV(ma->zeta_internal, 1.0) + PV(mb->zeta_internal, 1.0)),
-                                PV(env->zeta_internal_scale, 1.0));
+            am_real zi = AM_MUL(AM_MUL(AM_R(0.5), AM_PV(ma->zeta_internal, 1.0) + AM_PV(mb->zeta_internal, 1.0)),
+                                AM_PV(env->zeta_internal_scale, 1.0));
             m->c_t[lc] = AM_MUL(zi, am_sqrt(AM_MUL(AM_MUL(AM_R(2), mu), AM_MUL(E, L))));
             nl++;
         }
@@ -332,8 +325,8 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     m->max_scale = AM_R(1);
     m->any_cte = 0;
     for (int k = 0; k < lat->palette.count; k++) {
-        m->mat_cte[k] = PV(lat->palette.mat[k].cte, 1.0);
-        m->mat_phase[k] = PV(lat->palette.mat[k].phase, 1.0);
+        m->mat_cte[k] = AM_PV(lat->palette.mat[k].cte, 1.0);
+        m->mat_phase[k] = AM_PV(lat->palette.mat[k].phase, 1.0);
         if (m->mat_cte[k] != AM_R(0)) m->any_cte = 1;
         m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], tmax));
         m->max_scale = am_max(m->max_scale, am_sim_scale(env->cte_mode, m->mat_cte[k], -tmax));
@@ -346,10 +339,10 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
 #if !defined(AM_COMPACT)
     for (int i = 0; i < nv; i++) {
         m->vphase[i] = AM_R(0);
-        if (m->voxel_phase) m->vphase[i] = PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
+        if (m->voxel_phase) m->vphase[i] = AM_PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
         for (int k = 0; k < 3; k++) {
             m->force[k][i] = AM_R(0);
-            if (any_force) m->force[k][i] = PV(layers->force[k][m->cell[i]], am_unit(m, AM_DIM_FORCE));
+            if (any_force) m->force[k][i] = AM_PV(layers->force[k][m->cell[i]], am_unit(m, AM_DIM_FORCE));
         }
     }
     for (int l = 0; l < nl; l++) m->lself[l] = (am_pair)l;
@@ -362,12 +355,12 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
      * material), so that the bound's square stays in the range */
     for (int i = 0; i < nv; i++) {
         const am_material* mt = &lat->palette.mat[m->mat[i]];
-        c2 = am_max(c2, AM_DIV(PV(mt->E, uP), PV(mt->density, uRho)));
+        c2 = am_max(c2, AM_DIV(AM_PV(mt->E, uP), AM_PV(mt->density, uRho)));
     }
     m->max_speed = am_min(AM_MUL(AM_R(10), am_sqrt(c2)), AM_R(10));
 #else
     for (int k = 0; k < lat->palette.count; k++)
-        c2 = am_max(c2, AM_DIV(PV(lat->palette.mat[k].E, uP), PV(lat->palette.mat[k].density, uRho)));
+        c2 = am_max(c2, AM_DIV(AM_PV(lat->palette.mat[k].E, uP), AM_PV(lat->palette.mat[k].density, uRho)));
     m->max_speed = AM_MUL(AM_R(10), am_sqrt(c2));
 #endif
     m->dt_rec = am_dt_analytic(m);
@@ -376,7 +369,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         const double dt = am_dt_si(m, env->dt_frac), k = (double)env->period_s / dt;
         if (!(k <= 1e7))
             return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (at most 10^7)", (double)env->period_s, k, dt);
-        m->env.period_steps = am_period_steps(m, env, AM_MUL(PV(env->dt_frac, 1.0), m->dt_rec));
+        m->env.period_steps = am_period_steps(m, env, AM_MUL(AM_PV(env->dt_frac, 1.0), m->dt_rec));
     }
     return AM_OK;
 }
@@ -390,7 +383,7 @@ int am_period_steps(const am_model* m, const am_env* env, am_real dt)
 
 long am_steps_at(const am_model* m, const am_state* s, long n)
 {
-    const am_real ref = AM_MUL(PV(AM_P(AM_REF_DT_FRAC), 1.0), m->dt_rec);
+    const am_real ref = AM_MUL(AM_PV(AM_P(AM_REF_DT_FRAC), 1.0), m->dt_rec);
     if (n <= 0 || s->dt == ref) return n;
     const double k = (double)n * AM_TO_DOUBLE(ref) / AM_TO_DOUBLE(s->dt);
     return k < 1 ? 1 : k >= 4e18 ? (long)4e18 : (long)floor(k + 0.5);
@@ -414,8 +407,7 @@ void am_state_reset(const am_model* m, am_state* s)
 {
     const int nv = m->nv, nl = m->nl;
     s->step = 0;
-    s->t = AM_R(0);
-    s->dt = AM_MUL(PV(m->env.dt_frac, 1.0), m->dt_rec);
+    s->dt = AM_MUL(AM_PV(m->env.dt_frac, 1.0), m->dt_rec);
     s->settle_steps = 0;
     s->settle_dt = s->dt;
     s->period_steps = m->env.period_steps;

@@ -885,7 +885,6 @@ void am_step(const am_model* m, am_state* s)
                         (const vox_row*)s->mc, m->inv_mass, m->inv_inertia, m->fixed, m->mat, s->p, s->h, v_out, w_out, s->q, s->x,
                         s->x_rem REM_ARG(s->p_rem) REM_ARG(s->h_rem));
     s->step++;
-    s->t = AM_MUL_INT(s->dt, s->step);
     if (bad) {
         s->diverged = 1;
         s->diverge_step = s->step;

@@ -213,8 +213,7 @@ typedef struct am_state {
     long step;               /* steps taken */
     int period_steps;        /* the actuation period in steps (the model's env.period_steps, or
                               * env.period_s at this state's dt; am_state_reset, am_evaluate) */
-    am_real t;               /* simulated time, s */
-    am_real dt;              /* time step, s */
+    am_real dt;              /* time step, s (the simulated time: am_sim_time) */
     long settle_steps;       /* of the steps, those the relaxation took at its settling pseudo-step */
     am_real settle_dt;       /* and that step (am_sim_time) */
     int actuate;             /* 1: temperatures follow the actuation; 0: held at temp_base */
