@@ -109,8 +109,11 @@ typedef struct tool_rec {
     am_text* t;
     int json;
     int n;                      /* fields so far */
+    const char* eq;             /* text: " = ", or "=" (tool_rec_begin_tight) */
 } tool_rec;
 void tool_rec_begin(tool_rec* r, am_text* t, int json);
+/* text as a benchmark's name=value lines */
+void tool_rec_begin_tight(tool_rec* r, am_text* t);
 void tool_rec_num(tool_rec* r, const char* key, double v);   /* %.9g */
 void tool_rec_int(tool_rec* r, const char* key, long v);
 void tool_rec_str(tool_rec* r, const char* key, const char* v);

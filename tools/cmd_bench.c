@@ -257,22 +257,14 @@ static int bench_evolve(tool_ctx* c, long evaluations, int threads)
                procs, t, c->evo.evaluations, el, rate[k], (double)steps / (double)c->evo.evaluations,
                steps ? (double)voxel_steps / (double)steps : 0.0, (double)voxel_steps / el, map_us, (unsigned long long)hash[k]);
         if (t == t_from) {
-            /* where the steps went (the same for any thread count): the account's key = value
-             * lines as name=value lines */
-            char buf[1024];
-            am_text txt;
-            memset(&txt, 0, sizeof txt);
-            txt.buf = buf;
-            txt.cap = (long)sizeof buf;
+            /* where the steps went (the same for any thread count) */
+            tool_out o;
+            if (tool_out_open(&o, NULL)) return 1;
             tool_rec q;
-            tool_rec_begin(&q, &txt, 0);
+            tool_rec_begin_tight(&q, &o.text);
             account_put(&q, &acct);
             tool_rec_end(&q);
-            buf[txt.len < txt.cap ? txt.len : txt.cap - 1] = 0;
-            for (const char* p = buf; *p; p++) {
-                if (!strncmp(p, " = ", 3)) p += 2, putchar('=');
-                else putchar(*p);
-            }
+            if (tool_out_close(&o, 1)) return 1;
         }
     }
     if (t_to > t_from)

@@ -25,14 +25,21 @@ void tool_rec_begin(tool_rec* r, am_text* t, int json)
     r->t = t;
     r->json = json;
     r->n = 0;
+    r->eq = " = ";
     if (json) am_text_put(t, "{");
+}
+
+void tool_rec_begin_tight(tool_rec* r, am_text* t)
+{
+    tool_rec_begin(r, t, 0);
+    r->eq = "=";
 }
 
 /* the key: "key = " or ", \"key\": " */
 static void key(tool_rec* r, const char* k)
 {
     if (r->json) am_text_put(r->t, "%s\"%s\": ", r->n ? ", " : "", k);
-    else am_text_put(r->t, "%s = ", k);
+    else am_text_put(r->t, "%s%s", k, r->eq);
     r->n++;
 }
 
