@@ -59,6 +59,14 @@ static int full_set(void)
 #endif
 }
 
+/* fn on each of the 30 random genomes: seeds 1..BODIES of GMX, DCT and CPPN */
+static void each_body(void (*fn)(int repr, uint64_t seed))
+{
+    const int reprs[3] = {AM_REPR_GMX, AM_REPR_DCT, AM_REPR_CPPN};
+    for (int k = 0; k < 3; k++)
+        for (uint64_t seed = 1; seed <= BODIES; seed++) fn(reprs[k], seed);
+}
+
 static int g_settled, g_bodies, g_stable, g_searched;
 static double g_worst_travel, g_worst_speed;
 static long g_worst_relax;
@@ -115,11 +123,10 @@ static void one_body(int repr, uint64_t seed)
  * REST_SHAPE (RMS about the centre of mass: shape and orientation) and REST_HEIGHT (the centre of
  * mass's height), the median pose within REST_MEDIAN (the settle speed's tolerance), and fewer
  * steps over the bodies. */
-enum { REST_BODIES = 10 };
 #define REST_SHAPE 2e-3   /* m: a fifth of the 1 cm voxel */
 #define REST_HEIGHT 1e-4  /* m */
 #define REST_MEDIAN 1e-5  /* m */
-static double g_rest_d[3 * REST_BODIES];
+static double g_rest_d[3 * BODIES];
 static long g_rest_steps[2];
 static double g_rest_worst, g_rest_slide;
 static int g_rest_bodies;
@@ -168,23 +175,21 @@ static void rest_pose(int repr, uint64_t seed)
     g_rest_bodies++;
 }
 
+static int cmp_double(const void* a, const void* b)
+{
+    const double x = *(const double*)a, y = *(const double*)b;
+    return (x > y) - (x < y);
+}
+
 static void test_rest_pose(void)
 {
-    const int reprs[3] = {AM_REPR_GMX, AM_REPR_DCT, AM_REPR_CPPN};
-    for (int k = 0; k < 3; k++)
-        for (uint64_t seed = 1; seed <= REST_BODIES; seed++) rest_pose(reprs[k], seed);
+    each_body(rest_pose);
     printf("    %d bodies: %ld relaxation steps at the pseudo-step, %ld at the run's step (%.2fx); rest poses up to %.2e m apart, "
            "slid up to %.2e m\n",
            g_rest_bodies, g_rest_steps[0], g_rest_steps[1], (double)g_rest_steps[1] / (double)(g_rest_steps[0] ? g_rest_steps[0] : 1),
            g_rest_worst, g_rest_slide);
-    CHECK(g_rest_bodies >= (full_set() ? 3 * REST_BODIES : 1), "only %d bodies tried", g_rest_bodies);
-    /* the median pose (insertion sort of the few) */
-    for (int i = 1; i < g_rest_bodies; i++)
-        for (int j = i; j > 0 && g_rest_d[j - 1] > g_rest_d[j]; j--) {
-            const double t = g_rest_d[j];
-            g_rest_d[j] = g_rest_d[j - 1];
-            g_rest_d[j - 1] = t;
-        }
+    CHECK(g_rest_bodies >= (full_set() ? 3 * BODIES : 1), "only %d bodies tried", g_rest_bodies);
+    qsort(g_rest_d, (size_t)g_rest_bodies, sizeof g_rest_d[0], cmp_double);
     const double median = g_rest_bodies ? g_rest_d[g_rest_bodies / 2] : 0;
     printf("    median pose difference %.2e m\n", median);
     CHECK(median <= REST_MEDIAN, "the median rest pose differs by %.3g m (at most %g)", median, REST_MEDIAN);
@@ -240,9 +245,7 @@ static void test_pseudo_step_fallback(void)
 
 static void test_random_bodies(void)
 {
-    const int reprs[3] = {AM_REPR_GMX, AM_REPR_DCT, AM_REPR_CPPN};
-    for (int k = 0; k < 3; k++)
-        for (uint64_t seed = 1; seed <= BODIES; seed++) one_body(reprs[k], seed);
+    each_body(one_body);
     printf("    %d bodies: %d settled (slowest %ld steps, residual speed up to %.2e m/s), travel with the actuation "
            "off up to %.2e m; actuated: %d stable at the default step, %d at the searched step\n",
            g_bodies, g_settled, g_worst_relax, g_worst_speed, g_worst_travel, g_stable, g_searched);
