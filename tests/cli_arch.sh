@@ -34,16 +34,22 @@ want() { if [ "$2" = "$3" ]; then ok; else ko "$1: got '$2', want '$3'"; fi; }
 want "mitigated microcode, new compiler" "$(flags "$TMPD/cc-new" auto 'Mitigation: Microcode' "$TMPD/intel")" -mno-gather
 want "mitigated microcode, gcc 12" "$(flags "$TMPD/cc-old" auto 'Mitigation: Microcode' "$TMPD/intel")" "$TUNE"
 want "mitigated, compiler without a switch" "$(flags "$TMPD/cc-none" auto 'Mitigation: Microcode' "$TMPD/intel")" ""
-want "a guest of an affected host (the kernel's word, not the vendor)" "$(flags "$TMPD/cc-new" auto 'Unknown: Dependent on hypervisor status' "$TMPD/amd")" -mno-gather
+want "a guest of an affected host (the kernel's word)" "$(flags "$TMPD/cc-new" auto 'Unknown: Dependent on hypervisor status' "$TMPD/intel")" -mno-gather
 want "not affected" "$(flags "$TMPD/cc-new" auto 'Not affected' "$TMPD/intel")" ""
 want "vulnerable, no microcode (fast gathers)" "$(flags "$TMPD/cc-new" auto 'Vulnerable: No microcode' "$TMPD/intel")" ""
 want "mitigation turned off (fast gathers)" "$(flags "$TMPD/cc-new" auto 'Vulnerable' "$TMPD/intel")" ""
 want "no kernel word, Intel" "$(flags "$TMPD/cc-new" auto '' "$TMPD/intel")" -mno-gather
-want "no kernel word, AMD" "$(flags "$TMPD/cc-new" auto '' "$TMPD/amd")" ""
-want "GATHER=off where gathers are fast" "$(flags "$TMPD/cc-old" off 'Not affected' "$TMPD/amd")" "$TUNE"
+want "no kernel word, AMD (microcoded gathers)" "$(flags "$TMPD/cc-new" auto '' "$TMPD/amd")" -mno-gather
+want "AMD, not affected by GDS (microcoded all the same)" "$(flags "$TMPD/cc-old" auto 'Not affected' "$TMPD/amd")" "$TUNE"
+want "AMD, a guest" "$(flags "$TMPD/cc-new" auto 'Unknown: Dependent on hypervisor status' "$TMPD/amd")" -mno-gather
+echo 'vendor_id	: SomeOtherVendor' >"$TMPD/other"
+want "no kernel word, another vendor" "$(flags "$TMPD/cc-new" auto '' "$TMPD/other")" ""
+want "GATHER=off where gathers are fast" "$(flags "$TMPD/cc-old" off 'Not affected' "$TMPD/intel")" "$TUNE"
 expect_fail 2 "gather_flags: mode must be auto, off or why, not 'sometimes'" sh tools/gather_flags.sh gcc sometimes
 why=$(flags "$TMPD/cc-new" why 'Mitigation: Microcode' "$TMPD/intel")
-case $why in *"gathers are slow here: yes"*"leaves gathers out"*) ok ;; *) ko "why: $why" ;; esac
+case $why in *"gathers are slow here: yes (the microcode's GDS mitigation"*"leaves gathers out"*) ok ;; *) ko "why: $why" ;; esac
+why=$(flags "$TMPD/cc-new" why 'Not affected' "$TMPD/amd")
+case $why in *"gathers are slow here: yes (AMD"*"leaves gathers out"*) ok ;; *) ko "why (AMD): $why" ;; esac
 expect_fail 2 "GATHER must be auto, on or off, not 'maybe'" make --no-print-directory -n GATHER=maybe all
 
 # the other choice computes the same results, bit for bit (with self-collision: its grid gathers too)
