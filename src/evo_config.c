@@ -72,6 +72,7 @@ typedef struct key_def {
 static const char* const repr_names[] = {"none", "dct", "cppn", "gmx", NULL};
 static const char* const fit_names[] = {"horizontal", "x", "3d", NULL};
 static const char* const cte_names[] = {"volumetric", "linear", NULL};
+static const char* const score_names[] = {"travel", "sustained", NULL};
 
 #define OFF(f) offsetof(am_evo_def, f)
 static const key_def keys[] = {
@@ -94,6 +95,10 @@ static const key_def keys[] = {
     {"mu_static", K_PARAM, OFF(mu_static), 0, 100, NULL, 0, "static floor friction"},
     {"mu_kinetic", K_PARAM, OFF(mu_kinetic), 0, 100, NULL, 0, "kinetic floor friction"},
     {"fitness", K_ENUM, OFF(eval.fitness), 0, 2, fit_names, 0, "centre of mass displacement: horizontal, x or 3d"},
+    {"score", K_ENUM, OFF(eval.score), 0, 1, score_names, 0,
+     "travel (the seed's: the whole movement's) or sustained (travel per cycle after sustained_from cycles)"},
+    {"sustained_from", K_INT, OFF(eval.sustained_from), 0, 100000, NULL, 0,
+     "cycles before the sustained score's window (10: cycles 11 on)"},
     {"collisions", K_ONOFF, OFF(env.collisions), 0, 1, NULL, 0, "self-collision: on or off"},
     {"floor", K_ONOFF, OFF(env.floor), 0, 1, NULL, 0, "the floor: on or off"},
     {"gravity", K_PARAM, OFF(env.gravity), 0, 1000, NULL, 0, "m/s^2"},
@@ -283,6 +288,10 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
     if (d->geno.repr == AM_REPR_DCT && (d->geno.dct_k > d->geno.nx || d->geno.dct_k > d->geno.ny || d->geno.dct_k > d->geno.nz))
         return *key = key_index("dct_k"), am_fail(err, errsz, AM_ERR_RANGE, "dct_k = %d exceeds a workspace side (%dx%dx%d)",
                                                   d->geno.dct_k, d->geno.nx, d->geno.ny, d->geno.nz);
+    if (d->eval.score == AM_SCORE_SUSTAINED && d->eval.cycles <= d->eval.sustained_from)
+        return *key = key_index("score"),
+               am_fail(err, errsz, AM_ERR_RANGE, "score = sustained needs cycles above sustained_from (cycles = %d, sustained_from = %d): say cycles = 30",
+                       d->eval.cycles, d->eval.sustained_from);
     if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
         return *key = key_index("threads"), am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
     return AM_OK;

@@ -18,6 +18,8 @@ am_eval_def am_default_eval(void)
     d.settle_speed = AM_P(1e-4);
     d.relax_dt_frac = AM_P(1.8);
     d.release_steps = 500;
+    d.score = AM_SCORE_TRAVEL;
+    d.sustained_from = 10;
     d.record = 0;
     d.gait = 0;
     return d;
@@ -264,10 +266,43 @@ static void stop_all(const am_model* m, am_state* s)
 
 /* ---- gait diagnostics ---- */
 
-static void gait_begin(am_gait* g, const double c0[3])
+/* the body's mean orientation: the sum of its voxels' unit quaternions, each taken with the sign
+ * that agrees with the first voxel's (q and -q are one orientation), normalised */
+static void body_orientation(const am_model* m, const am_state* s, double out[4])
+{
+    double sum[4] = {0, 0, 0, 0}, first[4] = {1, 0, 0, 0};
+    for (int i = 0; i < m->nv; i++) {
+        double q[4];
+        for (int c = 0; c < 4; c++) q[c] = AM_TO_DOUBLE(s->q[c][i]);
+        if (i == 0)
+            for (int c = 0; c < 4; c++) first[c] = q[c];
+        const double sign = q[0] * first[0] + q[1] * first[1] + q[2] * first[2] + q[3] * first[3] < 0 ? -1.0 : 1.0;
+        for (int c = 0; c < 4; c++) sum[c] += sign * q[c];
+    }
+    const double n = sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2] + sum[3] * sum[3]);
+    for (int c = 0; c < 4; c++) out[c] = n > 0 ? sum[c] / n : (c == 0);
+}
+
+/* the rotation from orientation a to orientation b (unit quaternions w, x, y, z) as a rotation
+ * vector in world axes, axis times angle (rad, 0..pi): d = b conj(a), the shorter way round */
+static void turn_vector(const double a[4], const double b[4], double out[3])
+{
+    double d[4] = {b[0] * a[0] + b[1] * a[1] + b[2] * a[2] + b[3] * a[3],
+                   -b[0] * a[1] + b[1] * a[0] - b[2] * a[3] + b[3] * a[2],
+                   -b[0] * a[2] + b[1] * a[3] + b[2] * a[0] - b[3] * a[1],
+                   -b[0] * a[3] - b[1] * a[2] + b[2] * a[1] + b[3] * a[0]};
+    if (d[0] < 0)
+        for (int c = 0; c < 4; c++) d[c] = -d[c];
+    const double sn = sqrt(d[1] * d[1] + d[2] * d[2] + d[3] * d[3]);
+    const double k = sn > 0 ? 2.0 * atan2(sn, d[0]) / sn : 2.0;
+    for (int c = 0; c < 3; c++) out[c] = k * d[c + 1];
+}
+
+static void gait_begin(const am_model* m, const am_state* s, am_gait* g, const double c0[3])
 {
     memset(g, 0, sizeof *g);
     for (int d = 0; d < 3; d++) g->com[0][d] = c0[d];
+    body_orientation(m, s, g->quat);
 }
 
 /* after step k (0-based) of the movement: the cycle's airborne steps and height range so far, and
@@ -292,24 +327,33 @@ static void gait_step(const am_model* m, const am_state* s, am_gait* g, long k)
         g->lift[cyc] = g->high - g->low;
         g->airborne[cyc] = (double)g->air_steps / (double)period;
         for (int d = 0; d < 3; d++) g->com[cyc + 1][d] = c[d];
+        double q[4];
+        body_orientation(m, s, q);
+        turn_vector(g->quat, q, g->turn[cyc]);
+        for (int d = 0; d < 4; d++) g->quat[d] = q[d];
         g->cycles = (int)cyc + 1;
     }
 }
 
-double am_gait_travel(const am_gait* g, int fitness, int k)
+/* the travel from centre of mass a to b, measured as the fitness is */
+static double measured_travel(int fitness, const double a[3], const double b[3])
 {
-    const double* a = g->com[k];
-    const double* b = g->com[k + 1];
     double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
     if (fitness == AM_FIT_PLUS_X) return dx;
     if (fitness == AM_FIT_3D) return sqrt(dx * dx + dy * dy + dz * dz);
     return sqrt(dx * dx + dy * dy);
 }
 
+double am_gait_travel(const am_gait* g, int fitness, int k)
+{
+    return measured_travel(fitness, g->com[k], g->com[k + 1]);
+}
+
 void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out)
 {
     memset(out, 0, sizeof *out);
     const int n = g->cycles, h = n / 2;
+    double net[3] = {0, 0, 0}; /* rad: the sum of the cycles' rotation vectors */
     out->cycles = n;
     for (int k = 0; k < n; k++) {
         double t = am_gait_travel(g, fitness, k);
@@ -318,6 +362,7 @@ void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait
         if (k >= n - h) out->last_half += t;
         out->airborne += g->airborne[k];
         out->lift += g->lift[k];
+        for (int d = 0; d < 3; d++) net[d] += g->turn[k][d];
     }
     if (h > 0) {
         out->first_half /= h;
@@ -326,18 +371,33 @@ void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait
     if (n > 0) {
         out->airborne /= n;
         out->lift /= n;
+        out->rotation = sqrt(net[0] * net[0] + net[1] * net[1] + net[2] * net[2]) / n * (180.0 / 3.14159265358979323846);
+        /* rolling without slipping about a point on the floor carries the centre of mass its height
+         * times the turn about the horizontal axis across the travel (z x the travel's direction);
+         * taken over the last half of the cycles, so that a body that only tipped into its pose at
+         * the start (and a flop) is not counted as rolling */
+        const int k0 = n - h;
+        double r[3] = {0, 0, 0};
+        for (int k = k0; k < n; k++)
+            for (int d = 0; d < 3; d++) r[d] += g->turn[k][d];
+        const double hx = g->com[n][0] - g->com[k0][0], hy = g->com[n][1] - g->com[k0][1];
+        const double travel = sqrt(hx * hx + hy * hy);
+        /* (z x d) . r with d = (hx, hy, 0) / travel: (-hy r_x + hx r_y) / travel */
+        out->roll = h > 0 && travel > 0 ? (hx * r[1] - hy * r[0]) / travel * g->com[k0][2] / travel : 0.0;
+        out->roll_turn = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]) * (180.0 / 3.14159265358979323846);
     }
     out->sustained = out->first_half > 0 ? out->last_half / out->first_half : 0.0;
     if (n == 0 || out->travel_total / n < AM_GAIT_STILL_FRAC * voxel_size) out->mode = AM_GAIT_STILL;
     else if (h == 0 || out->sustained < AM_GAIT_FLOP_RATIO) out->mode = AM_GAIT_FLOP;
+    else if (out->roll >= AM_GAIT_ROLL_SHARE && out->roll_turn >= AM_GAIT_ROLL_MIN_DEG) out->mode = AM_GAIT_ROLL;
     else if (out->airborne >= AM_GAIT_BOUNCE_AIR) out->mode = AM_GAIT_BOUNCE;
     else out->mode = AM_GAIT_SCOOT;
 }
 
 const char* am_gait_mode_name(am_gait_mode mode)
 {
-    static const char* const names[] = {"still", "flop", "scoot", "bounce"};
-    return (unsigned)mode < 4 ? names[mode] : "unknown";
+    static const char* const names[] = {"still", "flop", "scoot", "bounce", "roll"};
+    return (unsigned)mode < sizeof names / sizeof names[0] ? names[mode] : "unknown";
 }
 
 /* the relaxation's limits, in steps of the run's step (amorph/sim.h: the counts are steps of the
@@ -484,11 +544,15 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     s->actuation_step0 = s->step;
     long n = (long)def->cycles * s->period_steps;
     am_gait* gait = def->gait;
-    if (gait) gait_begin(gait, c0);
+    if (gait) gait_begin(m, s, gait, c0);
+    /* the sustained score's window: from the end of cycle sustained_from */
+    const long window = def->sustained_from > 0 ? (long)def->sustained_from * s->period_steps : 0;
+    double cs[3] = {c0[0], c0[1], c0[2]};
     for (long k = 0; k < n && !s->diverged; k++) {
         am_step(m, s);
         am_record_frame(m, s, rec);
         if (gait) gait_step(m, s, gait, k);
+        if (k + 1 == window) am_com(m, s, cs);
     }
     if (s->step != out->relax_steps) record_extra(m, s, rec);
     out->move_steps = s->step - out->relax_steps;
@@ -505,8 +569,10 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     else if (def->fitness == AM_FIT_PLUS_X) out->travel = out->dx;
     else if (def->fitness == AM_FIT_3D) out->travel = sqrt(out->dx * out->dx + out->dy * out->dy + out->dz * out->dz);
     else out->travel = sqrt(out->dx * out->dx + out->dy * out->dy);
+    const long after = (long)def->cycles - (def->sustained_from > 0 ? def->sustained_from : 0);
+    out->sustained = !s->diverged && after > 0 ? measured_travel(def->fitness, cs, c1) / (double)after : 0.0;
     /* a body that diverged, or did not come to rest before the actuation started (its travel
      * counts motion the actuation did not make: docs/evolve.md), has no score */
-    out->fitness = s->diverged || !out->settled ? -1.0 : out->travel;
+    out->fitness = s->diverged || !out->settled ? -1.0 : def->score == AM_SCORE_SUSTAINED ? out->sustained : out->travel;
     out->hash = am_state_hash(m, s);
 }

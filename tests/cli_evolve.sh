@@ -410,4 +410,22 @@ r3=$("$AMORPH" repro --seed 1 | sed -n 's/^repro_hash=//p')
 if [ -n "$r3" ] && [ "$r3" != "$r1" ]; then ok; else ko "repro --seed 1 gave the reference hash"; fi
 expect_fail 2 "unknown option '--out'" "$AMORPH" repro --out x
 
+# the sustained score (docs/evolve.md, Fitness): refused without cycles after its window, naming the
+# key; a run scored so records as each body's fitness its travel per cycle after cycle 10, which
+# `amorph sim` of the run's best gives as sustained_travel, beside a larger whole-movement travel
+expect_fail 2 "score = sustained needs cycles above sustained_from .cycles = 10, sustained_from = 10.: say cycles = 30" \
+    "$AMORPH" evolve --score sustained --evaluations 20 --out "$TMPD/sus0"
+check "a refused sustained run writes no folder" test ! -e "$TMPD/sus0"
+printf 'score = sustained\ncycles = 8\nsustained_from = 8\n' >"$TMPD/sus.cfg"
+expect_fail 2 "sus.cfg:1: .*score = sustained needs cycles above sustained_from" "$AMORPH" evolve --config "$TMPD/sus.cfg" --out "$TMPD/sus1"
+"$AMORPH" evolve --score sustained --cycles 12 --evaluations 20 --population 10 --workspace 6 --quiet --no-pictures --out "$TMPD/sus" >/dev/null 2>&1
+check "sustained run: config.txt names the score" grep -q '^score = sustained$' "$TMPD/sus/config.txt"
+sim_sus=$("$AMORPH" sim "$TMPD/sus" 2>/dev/null)
+fit=$(echo "$sim_sus" | sed -n 's/^fitness = //p') sus=$(echo "$sim_sus" | sed -n 's/^sustained_travel = //p') tr=$(echo "$sim_sus" | sed -n 's/^travel = //p')
+check "sustained run: the best's fitness is its sustained travel ($fit, $sus)" test -n "$fit" -a "$fit" = "$sus"
+check "sustained run: the best's travel ($tr) is more than a cycle's ($sus)" awk -v t="$tr" -v s="$sus" 'BEGIN { exit !(t > s && s > 0) }'
+best_row=$(awk -F, 'NR > 1 && $10 > b { b = $10 } END { printf "%.9g", b }' "$TMPD/sus/evals.csv")
+check "sustained run: evals.csv's best fitness ($best_row) is the best's sustained travel ($sus)" \
+    awk -v a="$best_row" -v b="$sus" 'BEGIN { d = a - b; exit !(d < 1e-12 && d > -1e-12) }'
+
 summary tests/cli_evolve.sh

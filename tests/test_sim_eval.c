@@ -347,6 +347,41 @@ static void test_gait_modes(void)
     synth_gait(&g, back, 2, 0.0);
     NEAR(am_gait_travel(&g, AM_FIT_PLUS_X, 0), -0.003, 1e-15);
     NEAR(am_gait_travel(&g, AM_FIT_HORIZONTAL, 0), 0.003, 1e-15);
+
+    /* rolling: a wheel of centre height 0.04 m going +x turns about +y by its travel / 0.04 a cycle;
+     * a scooter that turns so, on the floor, is a roller */
+    const double wheel[10] = {0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01, 0.01};
+    synth_gait(&g, wheel, 10, 0.0);
+    for (int k = 0; k <= 10; k++) g.com[k][2] = 0.04;
+    for (int k = 0; k < 10; k++) g.turn[k][1] = 0.01 / 0.04;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    NEAR(s.roll, 1.0, 1e-12);
+    NEAR(s.rotation, 0.25 * 180.0 / 3.14159265358979323846, 1e-9);
+    NEAR(s.roll_turn, 5 * 0.25 * 180.0 / 3.14159265358979323846, 1e-9);
+    CHECK(s.mode == AM_GAIT_ROLL, "wheel: %s, roll %g", am_gait_mode_name(s.mode), s.roll);
+    /* turning the other way (about -y) while going +x is no rolling */
+    for (int k = 0; k < 10; k++) g.turn[k][1] = -0.01 / 0.04;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(s.roll < -0.99 && s.mode == AM_GAIT_SCOOT, "backwards turn: %s, roll %g", am_gait_mode_name(s.mode), s.roll);
+    /* rocking (+ and - in turn) nets nothing; turning about the vertical (spinning) carries nothing */
+    for (int k = 0; k < 10; k++) g.turn[k][1] = k % 2 ? 0.25 : -0.25;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(fabs(s.roll) < 0.21 && s.mode == AM_GAIT_SCOOT, "rocking: %s, roll %g", am_gait_mode_name(s.mode), s.roll);
+    for (int k = 0; k < 10; k++) g.turn[k][1] = 0, g.turn[k][2] = 0.25;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(s.roll == 0 && s.rotation > 14 && s.mode == AM_GAIT_SCOOT, "spinning: %s, roll %g", am_gait_mode_name(s.mode), s.roll);
+    /* a tip into a pose in the first cycles, then walking: the last half does not turn */
+    for (int k = 0; k < 10; k++) g.turn[k][2] = 0, g.turn[k][1] = k < 5 ? 0.25 : 0;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.01, &s);
+    CHECK(s.roll == 0 && s.mode == AM_GAIT_SCOOT, "a tip, then walking: %s, roll %g", am_gait_mode_name(s.mode), s.roll);
+    /* a slow walker that tilts as much as its short travel: too little turn to be a roller */
+    const double slow[10] = {1e-4, 1e-4, 1e-4, 1e-4, 1e-4, 1e-4, 1e-4, 1e-4, 1e-4, 1e-4};
+    synth_gait(&g, slow, 10, 0.0);
+    for (int k = 0; k <= 10; k++) g.com[k][2] = 0.04;
+    for (int k = 0; k < 10; k++) g.turn[k][1] = 1e-4 / 0.04;
+    am_gait_summarize(&g, AM_FIT_HORIZONTAL, 0.001, &s);
+    CHECK(s.roll > 0.99 && s.roll_turn < AM_GAIT_ROLL_MIN_DEG && s.mode == AM_GAIT_SCOOT, "slow tilt: %s, roll %g, turn %g",
+          am_gait_mode_name(s.mode), s.roll, s.roll_turn);
 }
 
 /* a body on the floor: the gait's ends are the result's displacement, and the per-cycle travels
@@ -373,6 +408,40 @@ static void test_gait_on_the_floor(void)
     CHECK(r2.hash == r.hash && r2.fitness == r.fitness, "the gait changed the evaluation");
 }
 
+/* the sustained score: the travel from the end of cycle sustained_from to the end, per cycle after
+ * it, measured as the fitness is; the fitness with score = sustained, the same run either way */
+static void test_sustained_score(void)
+{
+    static am_gait gait;
+    build("sphere:6");
+    am_eval_def def = am_default_eval();
+    def.cycles = 13;
+    def.sustained_from = 10;
+    def.gait = &gait;
+    am_result r, r2;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(r.settled && !r.diverged && r.fitness == r.travel, "travel score: fitness %g travel %g", r.fitness, r.travel);
+    const double dx = gait.com[13][0] - gait.com[10][0], dy = gait.com[13][1] - gait.com[10][1];
+    NEAR(r.sustained, sqrt(dx * dx + dy * dy) / 3, 1e-15);
+    CHECK(r.sustained > 0 && r.sustained != r.travel / 13, "sustained %g", r.sustained);
+    def.score = AM_SCORE_SUSTAINED;
+    am_evaluate(&g_m, &g_s, &def, &r2);
+    CHECK(r2.fitness == r.sustained && r2.hash == r.hash && r2.travel == r.travel, "sustained score: fitness %g, want %g",
+          r2.fitness, r.sustained);
+    /* from cycle 0: the whole movement's travel per cycle; with no cycle after the window, 0 */
+    def.sustained_from = 0;
+    am_evaluate(&g_m, &g_s, &def, &r2);
+    NEAR(r2.sustained, r.travel / 13, 1e-15);
+    def.sustained_from = 13;
+    am_evaluate(&g_m, &g_s, &def, &r2);
+    CHECK(r2.sustained == 0 && r2.fitness == 0, "no window: sustained %g fitness %g", r2.sustained, r2.fitness);
+    /* x fitness: signed */
+    def.sustained_from = 10;
+    def.fitness = AM_FIT_PLUS_X;
+    am_evaluate(&g_m, &g_s, &def, &r2);
+    NEAR(r2.sustained, dx / 3, 1e-15);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -387,5 +456,6 @@ int main(int argc, char** argv)
     RUN(test_gait_free_fall);
     RUN(test_gait_modes);
     RUN(test_gait_on_the_floor);
+    RUN(test_sustained_score);
     return SUMMARY();
 }

@@ -26,9 +26,12 @@ static const char sim_help[] =
     "kinetic damping stops; docs/physics.md, Evaluation), relax_dt (s, settling's pseudo-step:\n"
     "--relax_dt_frac, 1.8 dt_rec; 0 settles at the run's step) and relax_retried (1: the relaxation\n"
     "failed at the pseudo-step and was done again at the run's step), period_steps and period_s (the\n"
-    "actuation period). A convergence study holds the physics in seconds: --dt_frac F --period_s P (the\n"
-    "relaxation's step counts are steps of the default step and scale by themselves); --dt_frac alone\n"
-    "keeps period_steps, and a note on stderr says the period in seconds changed.\n";
+    "actuation period), sustained_travel (m per cycle after cycle sustained_from, 10: the sustained\n"
+    "score, --score sustained; 0 without cycles after it), and the gait over the cycles (cycle_travel,\n"
+    "sustained, airborne, lift, rotation, roll, gait: still, flop, scoot, bounce or roll; docs/results.md).\n"
+    "A convergence study holds the physics in seconds: --dt_frac F --period_s P (the relaxation's\n"
+    "step counts are steps of the default step and scale by themselves); --dt_frac alone keeps\n"
+    "period_steps, and a note on stderr says the period in seconds changed.\n";
 
 /* the result and the gait of the movement segment (docs/results.md, Gaits), on the standard output */
 static int print_result(const char* robot, const am_lattice* lat, const am_result* r, double wall, const am_gait* g, int fitness, int json)
@@ -56,6 +59,7 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_num(q, "dx", r->dx);
     tool_rec_num(q, "dy", r->dy);
     tool_rec_num(q, "dz", r->dz);
+    tool_rec_num(q, "sustained_travel", r->sustained);
     tool_rec_int(q, "voxels", r->voxels);
     tool_rec_strs(q, "materials", names, nused);
     tool_rec_nums(q, "material_voxels", used, nused);
@@ -83,6 +87,8 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_num(q, "sustained", gs.sustained);
     tool_rec_num(q, "airborne", gs.airborne);
     tool_rec_num(q, "lift", gs.lift);
+    tool_rec_num(q, "rotation", gs.rotation);
+    tool_rec_num(q, "roll", gs.roll);
     tool_rec_str(q, "gait", r->diverged ? "diverged" : am_gait_mode_name(gs.mode));
     tool_rec_end(q);
     return tool_out_close(&out, 1);

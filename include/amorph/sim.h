@@ -356,11 +356,18 @@ typedef struct am_eval_def {
                               * rest at the pseudo-step is done again at the run's step */
     long release_steps;      /* the last steps of relaxation, with the model's damping alone, over
                               * which the RMS speed must stay below settle_speed (500) */
+    int score;               /* what the fitness scores: AM_SCORE_TRAVEL (the seed's, default) or
+                              * AM_SCORE_SUSTAINED (am_result.sustained) */
+    int sustained_from;      /* cycles: the sustained score's window starts after this many (10) */
     am_record* record;       /* optional recording (may be NULL) */
     struct am_gait* gait;    /* optional gait diagnostics of the movement segment (may be NULL) */
 } am_eval_def;
 
 am_eval_def am_default_eval(void);
+
+/* what an evaluation scores (am_eval_def.score; docs/evolve.md, Fitness) */
+#define AM_SCORE_TRAVEL 0    /* the seed's: the centre of mass's travel over the whole movement */
+#define AM_SCORE_SUSTAINED 1 /* sustained locomotion: the travel per cycle after sustained_from cycles */
 
 /* the step the relaxation's step counts refer to, as a fraction of dt_rec: the default dt_frac */
 #define AM_REF_DT_FRAC 0.9
@@ -377,6 +384,9 @@ typedef struct am_result {
     double travel;           /* m: the centre of mass displacement measured as the fitness is (0 when
                               * diverged) */
     double dx, dy, dz;       /* centre of mass displacement in the movement segment, m */
+    double sustained;        /* m per cycle: the travel from the end of cycle sustained_from to the
+                              * end of the movement, measured as the fitness is, over the cycles
+                              * after sustained_from (0 when there are none, or diverged) */
     int voxels, links;
     double dt;               /* s */
     int period_steps;        /* the actuation period, steps */
@@ -415,6 +425,9 @@ typedef struct am_gait {
     double com[AM_GAIT_MAX_CYCLES + 1][3];     /* m: at the start of the movement, then at the end of each cycle */
     double airborne[AM_GAIT_MAX_CYCLES];       /* fraction of the cycle's steps with no voxel touching the floor */
     double lift[AM_GAIT_MAX_CYCLES];           /* m: highest minus lowest centre-of-mass height within the cycle */
+    double turn[AM_GAIT_MAX_CYCLES][3];        /* rad: the body's turn in the cycle as a rotation vector in
+                                                * world axes (axis times angle), from its mean orientation */
+    double quat[4];                            /* scratch: the body's mean orientation at the last cycle's end */
     double low, high;                          /* scratch: the cycle under way's height range so far */
     long air_steps;                            /* scratch: and its steps off the floor */
 } am_gait;
@@ -424,11 +437,15 @@ typedef enum am_gait_mode {
     AM_GAIT_STILL,           /* travels less than AM_GAIT_STILL_FRAC voxel edges per cycle */
     AM_GAIT_FLOP,            /* travel stops: the last half's travel per cycle is below AM_GAIT_FLOP_RATIO of the first half's */
     AM_GAIT_SCOOT,           /* travel goes on, the body on the floor */
-    AM_GAIT_BOUNCE           /* travel goes on, the body off the floor at least AM_GAIT_BOUNCE_AIR of the time */
+    AM_GAIT_BOUNCE,          /* travel goes on, the body off the floor at least AM_GAIT_BOUNCE_AIR of the time */
+    AM_GAIT_ROLL             /* travel goes on, and rolling explains at least AM_GAIT_ROLL_SHARE of it
+                              * (am_gait_summary.roll) */
 } am_gait_mode;
 #define AM_GAIT_STILL_FRAC 0.01
 #define AM_GAIT_FLOP_RATIO 0.25
 #define AM_GAIT_BOUNCE_AIR 0.2
+#define AM_GAIT_ROLL_SHARE 0.5
+#define AM_GAIT_ROLL_MIN_DEG 10.0 /* and turns at least this far over the last half of the cycles */
 
 typedef struct am_gait_summary {
     int cycles;              /* cycles summarised */
@@ -438,6 +455,13 @@ typedef struct am_gait_summary {
     double sustained;        /* last_half / first_half (0 when the first half did not move) */
     double airborne;         /* fraction of the movement's steps with no voxel on the floor */
     double lift;             /* m: mean over the cycles of the centre of mass's rise and fall */
+    double rotation;         /* degrees per cycle: the body's net turn (the sum of the cycles' rotation
+                              * vectors: a rocking body turns back, a rolling one adds up) over the cycles */
+    double roll_turn;        /* degrees: the net turn over the last floor(cycles / 2) cycles */
+    double roll;             /* over the last floor(cycles / 2) cycles, the share of the horizontal
+                              * travel that rolling without slipping explains: the net turn (rad) about
+                              * the horizontal axis across the travel times the centre of mass's
+                              * height, over the travel (negative: turning against it) */
     am_gait_mode mode;
 } am_gait_summary;
 
