@@ -106,14 +106,28 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
 PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-HEADERS  := $(wildcard include/*.h include/amorph/*.h src/*.h tools/*.h tests/*.h $(PORT_DIRS:%=%/*.h) port/common/*.h)
 
 .PHONY: all test unit bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
-$(BUILD)/%.o: %.c $(HEADERS) Makefile
+# Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
+# beside it) and on $(BUILD)/flags.txt, the compiler and flags of the build, rewritten only when
+# they change: another GATHER, CFLAGS or compiler rebuilds every object of that folder instead of
+# linking stale ones (not under make -n, which writes nothing).
+FLAGS_LINE := $(strip $(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) $(LDLIBS))
+ifneq ($(strip $(shell cat $(BUILD)/flags.txt 2>/dev/null)),$(FLAGS_LINE))
+ifeq ($(findstring n,$(firstword -$(MAKEFLAGS))),)
+$(shell mkdir -p $(BUILD) && printf '%s\n' '$(FLAGS_LINE)' >$(BUILD)/flags.txt)
+else
+.PHONY: $(BUILD)/flags.txt
+endif
+endif
+$(BUILD)/flags.txt:
+	@mkdir -p $(dir $@) && printf '%s\n' '$(FLAGS_LINE)' >$@
+
+$(BUILD)/%.o: %.c Makefile $(BUILD)/flags.txt
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -c $< -o $@
+	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
 
 $(BUILD)/libamorph.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -134,9 +148,11 @@ endif
 
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
-$(BUILD)/tests/%: tests/%.c $(HEADERS) $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
+$(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+
+-include $(LIB_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
 
 # no object of src/ or port/ may reference an allocator
 NM ?= nm

@@ -8,6 +8,11 @@
 #ifndef AMORPH_CONFIG_H
 #define AMORPH_CONFIG_H
 
+/* one profile per build (make PROFILE=desktop|board) */
+#if defined(AM_PROFILE_BOARD) && defined(AM_PROFILE_DESKTOP)
+#error "amorph: two profiles defined: build with one of AM_PROFILE_DESKTOP, AM_PROFILE_BOARD (make PROFILE=desktop|board)"
+#endif
+
 #if defined(AM_PROFILE_BOARD)
 #define AM_PROFILE_NAME "board"
 #define AM_MAX_DIM 8            /* cells along each lattice axis */

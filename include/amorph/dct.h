@@ -21,6 +21,10 @@
 #include "amorph/real.h"
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* cached basis tables of the transforms; declare it static, zeroed */
 typedef struct am_dct_work {
     int k[3];                                   /* coefficients kept per axis (table key) */
@@ -43,4 +47,7 @@ void am_dct_inverse(const am_dct_work* w, am_dct_scratch* s, const am_real* coef
 /* forward (DCT-II): in (n0 x n1 x n2) -> the k0 x k1 x k2 lowest coefficients; needs am_dct_plan */
 void am_dct_forward(const am_dct_work* w, am_dct_scratch* s, const am_real* in, am_real* coef);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

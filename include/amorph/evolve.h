@@ -24,6 +24,10 @@
 #include "amorph/status.h"
 #include "amorph/text.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- configuration ---- */
 
 /* everything that defines a run; am_default_evo() is the seed's two-material experiment */
@@ -373,4 +377,7 @@ am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
 int am_evo_evals_header(int materials, char* buf, int cap);
 int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -26,6 +26,10 @@
 #include "amorph/status.h"
 #include "amorph/text.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- representations ---- */
 
 typedef enum am_repr { AM_REPR_NONE = 0, AM_REPR_DCT = 1, AM_REPR_CPPN = 2, AM_REPR_GMX = 3 } am_repr;
@@ -274,4 +278,7 @@ am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, cha
 /* after the last line: AM_OK when the genome ended with its 'end' line */
 am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -14,6 +14,10 @@
 #include <stdint.h>
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- checksums ---- */
 
 /* CRC-32 (ISO 3309, as PNG and zlib): crc is the running value, 0 to start;
@@ -88,4 +92,7 @@ void am_raster_box(am_canvas* c, const am_camera* cam, const double centre[3], c
 int am_raster_text(am_canvas* c, const am_camera* cam, int x, int y, int scale, const char* text,
                    const uint8_t rgb[3]);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -16,6 +16,10 @@
 #include <stdint.h>
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* a canonical Huffman code: count[len] codes of each length, the symbols in code order */
 typedef struct am_huffman {
     int16_t count[16];
@@ -42,4 +46,7 @@ am_status am_inflate_raw(const uint8_t* in, long n, uint8_t* out, long cap, long
 am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
                           int errsz);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -13,6 +13,10 @@
 #include "amorph/status.h"
 #include "amorph/text.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct am_material {
     char name[AM_NAME_MAX];  /* identifier: letters, digits, '_' and '-' */
     am_param E;               /* Young's modulus, Pa (> 0) */
@@ -102,4 +106,7 @@ am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int e
 /* the largest text am_lattice_format can produce for any lattice of this profile */
 #define AM_LATTICE_TEXT_MAX (AM_MAX_MATERIALS * 400L + AM_MAX_CELLS * 3L + 8192L)
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -11,6 +11,10 @@
 
 #include "amorph/real.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 am_real am_sin(am_real x);            /* any finite x (radians) */
 am_real am_cos(am_real x);            /* any finite x (radians) */
 am_real am_exp(am_real x);            /* x in [-80, 80]; clamps outside */
@@ -20,4 +24,7 @@ am_real am_pow(am_real x, am_real y); /* x > 0 */
 am_real am_atan2(am_real y, am_real x); /* radians in (-pi, pi] */
 am_real am_acos(am_real x);           /* x clamped to [-1, 1] */
 
+#ifdef __cplusplus
+}
+#endif
 #endif

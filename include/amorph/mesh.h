@@ -31,6 +31,10 @@
 #include "amorph/status.h"
 #include "amorph/text.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* faces of one build: every cell face position of the workspace, once per side */
 #define AM_MESH_MAX_FACES (2L * 3L * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM + 1))
 /* vertices: at most 4 corners, 2 midpoints and a centre per face */
@@ -101,4 +105,7 @@ am_status am_mesh_write_stl(const am_mesh* mesh, const double* pos, const am_pal
 am_status am_mesh_write_amf(const am_mesh* mesh, const double* pos, const am_palette* pal, const char* title,
                             am_text* out, char* err, int errsz);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -18,6 +18,10 @@
 
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* ---- the program ---- */
 
 /* the first call of a program (main's), before any other function here: a port that runs the
@@ -171,4 +175,7 @@ typedef enum am_port_signal { AM_PORT_SIGINT = 1, AM_PORT_SIGTERM, AM_PORT_SIGKI
  * am_port_parallel_map. A port without signals does nothing. */
 void am_port_raise(am_port_signal sig);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

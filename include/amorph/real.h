@@ -23,12 +23,21 @@
 #include <math.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Bit-identical results need floating-point arithmetic done in the types the code names: float in
  * float, double in double (FLT_EVAL_METHOD 0). A compiler that evaluates in wider registers (the
  * x87 unit of 32-bit x86: 2; s390x under -std=c11: 1) rounds differently and gives other results,
  * so such a build is refused; docs/porting.md gives the flags that make it 0. */
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "amorph needs FLT_EVAL_METHOD 0: build x86-32 with -msse2 -mfpmath=sse, s390x with -fexcess-precision=fast (docs/porting.md)"
+#endif
+
+/* one number type per build: make REAL=... defines one of these; two would compile one silently */
+#if defined(AM_REAL_FLOAT) + defined(AM_REAL_DOUBLE) + defined(AM_REAL_FIXED) > 1
+#error "amorph: two number types defined: build with one of AM_REAL_FLOAT, AM_REAL_DOUBLE, AM_REAL_FIXED (make REAL=float|double|fixed)"
 #endif
 
 #if defined(AM_REAL_FIXED)
@@ -147,4 +156,7 @@ static inline am_real am_min(am_real a, am_real b) { return a < b ? a : b; }
 static inline am_real am_max(am_real a, am_real b) { return a > b ? a : b; }
 static inline am_real am_clamp(am_real x, am_real lo, am_real hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -9,6 +9,10 @@
 #include <stdint.h>
 #include "amorph/real.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct am_rng {
     uint64_t s[4];   /* generator state; never all zero */
 } am_rng;
@@ -27,4 +31,7 @@ uint64_t am_hash_bytes(uint64_t h, const void* data, unsigned long n);
 uint64_t am_hash_u64(uint64_t h, uint64_t v);
 uint64_t am_hash_real(uint64_t h, am_real v);        /* hashes the bit pattern (-0 folded to 0) */
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -19,6 +19,10 @@
 #include "amorph/real.h"
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum { AM_CTE_VOLUMETRIC = 0, AM_CTE_LINEAR = 1 };
 enum { AM_FIT_HORIZONTAL = 0, AM_FIT_PLUS_X = 1, AM_FIT_3D = 2 };
 
@@ -478,4 +482,7 @@ const char* am_gait_mode_name(am_gait_mode mode);
  * multiple of rec->every */
 void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -6,6 +6,10 @@
 
 #include <stdarg.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef enum am_status {
     AM_OK = 0,
     AM_ERR_PARSE,      /* malformed input text */
@@ -59,4 +63,7 @@ am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, in
 #define AM_QUOTE_BUF (4 * AM_QUOTE_MAX + 4) /* 40 escapes of 4 characters, "...", the NUL */
 const char* am_quote(char* out, int cap, const char* s, long n);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -14,6 +14,10 @@
 
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct am_text {
     char* buf;   /* output (cap bytes) */
     long cap;    /* capacity, including the NUL */
@@ -68,4 +72,7 @@ int am_parse_double(const char* s, double* out);
  * reads as 2 * 10^9. The ports' am_port_remove_stale removes the files so named. */
 long am_temp_name_pid(const char* name);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -23,6 +23,10 @@
 #include "amorph/status.h"
 #include "amorph/xml.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* what a VXA file says beside the lattice */
 typedef struct am_vxa_info {
     am_env env;              /* the file's environment mapped to amorph (docs/vxa.md) */
@@ -72,4 +76,7 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
  * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
 int am_vxa_period_steps(double period_s, double dt);
 
+#ifdef __cplusplus
+}
+#endif
 #endif

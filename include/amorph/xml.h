@@ -20,6 +20,10 @@
 #include "amorph/config.h"
 #include "amorph/status.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* one element; offsets are byte offsets into the text */
 typedef struct am_xml_node {
     int32_t start;          /* offset of the '<' of the start tag */
@@ -63,4 +67,7 @@ am_status am_xml_text(const am_xml_doc* doc, int n, char* out, long cap, long* l
 /* the decoded value of attribute a (tabs and newlines read as spaces), as am_xml_text */
 am_status am_xml_attr_text(const am_xml_doc* doc, int a, char* out, long cap, long* len);
 
+#ifdef __cplusplus
+}
+#endif
 #endif
