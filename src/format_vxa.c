@@ -14,7 +14,7 @@
  * VXD are offset by VXD_BIAS, and the walker of a known element's children (children()) puts each
  * VXD element whose replace="VXA...." names a child in that child's place, or after the children
  * when the base has none, so every reader below reads the merged file without knowing it.
- * Per-cell layers (<PhaseOffset>, the boundary conditions' <FRegion> boxes) go into
+ * Per-cell layers (<PhaseOffset>, <Stiffness>, the boundary conditions' <FRegion> boxes) go into
  * am_vxa_info.layers. Warnings are sorted into line order at the end.
  *
  * Writing follows what VoxCAD writes (tag order, ASCII_READABLE layers in CDATA), then adds the
@@ -125,10 +125,54 @@ static const char* tag(const vctx* c, int n, char q[AM_QUOTE_BUF])
 /* a value quoted for a message (am_quote) into q */
 static const char* val(const char* v, char q[AM_QUOTE_BUF]) { return am_quote(q, AM_QUOTE_BUF, v, -1); }
 
+static int is_blank(char ch);
+
+/* notes an ignored item that changes the physics (info->differ: names, comma separated, each once;
+ * "..." when no more fit) */
+static void differs(vctx* c, const char* what)
+{
+    char* d = c->info->differ;
+    const size_t cap = sizeof c->info->differ, len = strlen(d), w = strlen(what);
+    for (const char* p = d; (p = strstr(p, what)) != NULL; p += w)
+        if ((p == d || p[-1] == ' ') && (p[w] == ',' || p[w] == 0)) return;
+    if (len >= 3 && !strcmp(d + len - 3, "...")) return;
+    if (len + w + 2 + 5 < cap) snprintf(d + len, cap - len, "%s%s", len ? ", " : "", what);
+    else snprintf(d + len, cap - len, "%s...", len ? ", " : "");
+}
+
+/* tags amorph does not read whose non-zero value changes how the robot moves in the reference
+ * simulators (evosoro's water robots, VoxCAD's features, voxcraft's materials), and per-voxel
+ * layers it does not read (voxcraft's cilia) */
+static const char* const physics_value_tags[] = {"FluidEnvironment", "FluidDampEnabled", "MaxVelLimitEnabled", "BlendingEnabled",
+                                                 "VolumeEffectsEnabled", "PoissonKickBackEnabled", "EnforceLatticeEnabled",
+                                                 "EquilibriumModeEnabled", "FloorSlope", "Sticky", "Cilia"};
+static const char* const physics_layer_tags[] = {"BaseCiliaForce", "ShiftCiliaForce"};
+
+/* element k is a physics tag of those tables that is on */
+static void physics_check(vctx* c, int k)
+{
+    char qn[AM_QUOTE_BUF], v[64];
+    for (size_t i = 0; i < sizeof physics_layer_tags / sizeof physics_layer_tags[0]; i++)
+        if (is(c, k, physics_layer_tags[i])) differs(c, physics_layer_tags[i]);
+    for (size_t i = 0; i < sizeof physics_value_tags / sizeof physics_value_tags[0]; i++) {
+        if (!is(c, k, physics_value_tags[i])) continue;
+        long len = 0;
+        char* end = NULL;
+        if (N(c, k)->child >= 0 || am_xml_text(D(c, k), IX(k), v, sizeof v, &len) != AM_OK) continue;
+        double x = strtod(v, &end);
+        while (end && is_blank(*end)) end++;
+        if (end != v && end && !*end && x != 0) differs(c, tag(c, k, qn));
+    }
+}
+
+/* an element amorph does not read: a warning, and a note when it (or a child: <Features> holds
+ * VoxCAD's switches) changes the physics */
 static void unsupported(vctx* c, int n)
 {
     char qn[AM_QUOTE_BUF];
     warn(c, n, "unsupported tag <%s> ignored", tag(c, n, qn));
+    physics_check(c, n);
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) physics_check(c, k);
 }
 
 /* ---- values ------------------------------------------------------------------------------ */
@@ -328,9 +372,11 @@ static am_status read_lattice(vctx* c, int n, am_lattice* lat)
         double v, want = i <= 3 ? 1 : 0;
         if (at[i] < 0) continue;
         if ((st = double_of(c, at[i], &v)) != AM_OK) return st;
-        if (v != want)
+        if (v != want) {
             warn(c, at[i], "<%s> %.9g not supported (amorph lattices are cubic cells on a rectangular grid); %g used", tags[i], v,
                  want);
+            differs(c, tags[i]);
+        }
     }
     return AM_OK;
 }
@@ -345,13 +391,19 @@ static am_status read_voxel(vctx* c, int n)
     if (at[0] >= 0) {
         char v[VXA_VALUE_MAX];
         if ((st = text_of(c, at[0], v, sizeof v, NULL)) != AM_OK) return st;
-        if (strcmp(v, "BOX") != 0) warn(c, at[0], "<Vox_Name> %s not supported (amorph voxels are boxes); BOX used", val(v, qv));
+        if (strcmp(v, "BOX") != 0) {
+            warn(c, at[0], "<Vox_Name> %s not supported (amorph voxels are boxes); BOX used", val(v, qv));
+            differs(c, "Vox_Name");
+        }
     }
     for (int i = 1; i < 4; i++) {
         double v;
         if (at[i] < 0) continue;
         if ((st = double_of(c, at[i], &v)) != AM_OK) return st;
-        if (v != 1) warn(c, at[i], "<%s> %.9g not supported; 1 used", tags[i], v);
+        if (v != 1) {
+            warn(c, at[i], "<%s> %.9g not supported; 1 used", tags[i], v);
+            differs(c, tags[i]);
+        }
     }
     return AM_OK;
 }
@@ -376,7 +428,7 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     static const char* const disp[] = {"Red", "Green", "Blue", "Alpha"};
     static const char* const mech[] = {"MatModel", "Elastic_Mod", "Plastic_Mod", "Yield_Stress", "FailModel", "Fail_Stress",
                                        "Fail_Strain", "Density", "Poissons_Ratio", "CTE", "MaterialTempPhase", "uStatic",
-                                       "uDynamic"};
+                                       "uDynamic", "Fixed"};
     int at[MAX_TAGS], dt[MAX_TAGS], mt[MAX_TAGS];
     am_status st;
     long v;
@@ -414,10 +466,13 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
         }
     }
     if (at[3] < 0) return AM_OK;
-    if ((st = children(c, at[3], mech, 13, mt, NULL)) != AM_OK) return st;
+    if ((st = children(c, at[3], mech, 14, mt, NULL)) != AM_OK) return st;
     if (mt[0] >= 0) {
         if ((st = int_of(c, mt[0], 0, 1000000, &v)) != AM_OK) return st;
-        if (v != 0) warn(c, mt[0], "<MatModel> %ld (non-linear) not supported: material %d is linear elastic here", v, id);
+        if (v != 0) {
+            warn(c, mt[0], "<MatModel> %ld (non-linear) not supported: material %d is linear elastic here", v, id);
+            differs(c, "MatModel");
+        }
     }
     for (int i = 2; i <= 6; i++) { /* parameters of the non-linear models: checked, no effect */
         double x;
@@ -425,13 +480,23 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
     }
     if (mt[1] >= 0 && (st = real_in(c, mt[1], &m->E, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
     if (mt[7] >= 0 && (st = real_in(c, mt[7], &m->density, 0, 1, 1e30, "must be greater than 0")) != AM_OK) return st;
-    if (mt[8] >= 0 && (st = real_in(c, mt[8], &m->poisson, 0, 0, 0.5, "must be in [0, 0.5)")) != AM_OK) return st;
-    if (mt[8] >= 0 && !(m->poisson < AM_P(0.5)))
-        return verr(c, mt[8], AM_ERR_RANGE, "<Poissons_Ratio> 0.5 must be in [0, 0.5)");
+    if (mt[8] >= 0 && (st = real_in(c, mt[8], &m->poisson, 0, 0, 0.5, "must be in [0, 0.5]")) != AM_OK) return st;
+    if (mt[8] >= 0 && !(m->poisson < AM_P(0.5))) {
+        /* the incompressible limit, which amorph's model does not take (nor Voxelyze's volume
+         * effects): the largest ratio below it, as voxcraft-sim clamps it */
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+        m->poisson = nextafter(0.5, 0.0);
+#else
+        m->poisson = nextafterf(0.5f, 0.0f);
+#endif
+        warn(c, mt[8], "<Poissons_Ratio> 0.5 (incompressible) is beyond amorph's model: the largest ratio below 0.5 used for "
+                       "material %d", id);
+    }
     if (mt[9] >= 0 && (st = real_of(c, mt[9], &m->cte)) != AM_OK) return st;
     if (mt[10] >= 0 && (st = real_of(c, mt[10], &m->phase)) != AM_OK) return st;
     if (mt[11] >= 0 && (st = real_in(c, mt[11], &m->mu_static, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (mt[12] >= 0 && (st = real_in(c, mt[12], &m->mu_kinetic, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (mt[13] >= 0 && (st = bool_of(c, mt[13], &m->fixed)) != AM_OK) return st; /* voxcraft-sim's fixed material */
     return AM_OK;
 }
 
@@ -531,11 +596,12 @@ static am_status inflate_layer(const vctx* c, int k, int z, int comp, char* buf,
 }
 
 static am_status read_phase(vctx* c, int n, const am_lattice* lat);
+static am_status read_stiffness(vctx* c, int n, const am_lattice* lat);
 
 static am_status read_structure(vctx* c, int n, am_lattice* lat)
 {
     char qv[AM_QUOTE_BUF];
-    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data", "PhaseOffset"};
+    static const char* const tags[] = {"X_Voxels", "Y_Voxels", "Z_Voxels", "Data", "PhaseOffset", "Stiffness"};
     int at[MAX_TAGS];
     am_status st;
     int comp = COMP_BASE64; /* VoxCAD's reader: no Compression attribute means BASE64 */
@@ -551,7 +617,7 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
             return verr(c, n, AM_ERR_PARSE, "Compression=\"%s\" is not supported (ASCII_READABLE, BASE64, ZLIB or QT_ZLIB)",
                         val(v, qv));
     }
-    if ((st = children(c, n, tags, 5, at, NULL)) != AM_OK) return st;
+    if ((st = children(c, n, tags, 6, at, NULL)) != AM_OK) return st;
     long dim[3];
     for (int i = 0; i < 3; i++) {
         if (at[i] < 0) return verr(c, n, AM_ERR_PARSE, "<Structure> has no <%s>", tags[i]);
@@ -597,7 +663,8 @@ static am_status read_structure(vctx* c, int n, am_lattice* lat)
         z++;
     }
     if (z < lat->nz) return verr(c, at[3], AM_ERR_PARSE, "<Data> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
-    if (at[4] >= 0) return read_phase(c, at[4], lat);
+    if (at[4] >= 0 && (st = read_phase(c, at[4], lat)) != AM_OK) return st;
+    if (at[5] >= 0) return read_stiffness(c, at[5], lat);
     return AM_OK;
 }
 
@@ -663,6 +730,42 @@ static am_status read_phase(vctx* c, int n, const am_lattice* lat)
     }
     if (z < lat->nz) return verr(c, n, AM_ERR_PARSE, "<PhaseOffset> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
     ly->has_phase = 1;
+    return AM_OK;
+}
+
+/* evosoro's <Stiffness>: one <Layer> of reals per z, the elastic modulus of each cell's voxel in
+ * Pa (the values of empty cells are read as numbers and not used); <MinElasticMod> and
+ * <MaxElasticMod>, the bounds evosoro drew them from, are checked to be numbers, no effect */
+static am_status read_stiffness(vctx* c, int n, const am_lattice* lat)
+{
+    const long per = (long)lat->nx * lat->ny;
+    am_layers* ly = &c->info->layers;
+    int z = 0, layer_at[AM_MAX_DIM];
+    am_status st;
+    for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
+        if (is(c, k, "MinElasticMod") || is(c, k, "MaxElasticMod")) {
+            double v;
+            if ((st = double_of(c, k, &v)) != AM_OK) return st;
+            continue;
+        }
+        if (!is(c, k, "Layer")) {
+            unsupported(c, k);
+            continue;
+        }
+        if (z >= lat->nz) return verr(c, k, AM_ERR_PARSE, "more <Stiffness> layers than Z_Voxels = %d", lat->nz);
+        if ((st = number_layer(c, k, z, ly->stiffness + per * z, per, "<Stiffness>")) != AM_OK) return st;
+        layer_at[z++] = k;
+    }
+    if (z < lat->nz) return verr(c, n, AM_ERR_PARSE, "<Stiffness> has %d <Layer> elements, Z_Voxels says %d", z, lat->nz);
+    /* a voxel's modulus: the range of <Elastic_Mod> */
+    for (z = 0; z < lat->nz; z++)
+        for (long i = 0; i < per; i++) {
+            const am_param e = ly->stiffness[per * z + i];
+            if (lat->cell[per * z + i] && !(e > AM_P(0) && (double)e <= 1e30))
+                return verr(c, layer_at[z], AM_ERR_RANGE, "<Stiffness> layer %d: value %ld (x = %ld, y = %ld, a voxel) is %.9g Pa: it must "
+                            "be greater than 0 and at most 1e+30", z, i, i % lat->nx, i / lat->nx, (double)e);
+        }
+    ly->has_stiffness = 1;
     return AM_OK;
 }
 
@@ -745,11 +848,16 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     return AM_OK;
 }
 
+/* how far (relative to the workspace) a cell must reach into a region's box to touch it: faces that
+ * only meet, up to rounding, do not count */
+#define REGION_TOL 1e-9
+
 /* one <FRegion> (VoxCAD's boundary condition): a box in coordinates relative to the workspace
  * (0..1 along each axis, X_Voxels x Lattice_Dim and so on), its fixed degrees of freedom and its
- * force. Every filled cell whose centre lies in the box is clamped when the region fixes it, and
- * the region's force is shared equally among them (VoxCAD's meaning: a force on the region).
- * fixed_list: a region of <Fixed_Regions> without DofFixed or Fixed is fixed. */
+ * force. Every filled cell that touches the box (VoxCAD's and Voxelyze's rule: the cell, not only
+ * its centre, overlaps it) is clamped when the region fixes it, and the region's force is shared
+ * equally among them (VoxCAD's meaning: a force on the region). fixed_list: a region of
+ * <Fixed_Regions> without DofFixed or Fixed is fixed. */
 static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_list)
 {
     static const char* const tags[] = {"PrimType", "X", "Y", "Z", "dX", "dY", "dZ", "Radius", "R", "G", "B", "alpha",
@@ -777,6 +885,7 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
     }
     if (at[0] >= 0 && v[0] != 0) {
         warn(c, n, "<FRegion> of PrimType %.9g not supported (amorph reads box regions, PrimType 0): ignored", v[0]);
+        differs(c, "FRegion PrimType");
         return AM_OK;
     }
     int dof = 0;
@@ -786,11 +895,15 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
         dof = (int)v[12];
     } else if (at[13] >= 0) dof = v[13] != 0 ? 63 : 0;
     else if (fixed_list) dof = 63;
-    if (dof != 0 && dof != 63)
+    if (dof != 0 && dof != 63) {
         warn(c, at[12], "<DofFixed> %d fixes some degrees of freedom only: amorph clamps all six of the region's voxels", dof);
+        differs(c, "DofFixed");
+    }
     for (int i = 17; i < NT; i++)
-        if (at[i] >= 0 && v[i] != 0)
+        if (at[i] >= 0 && v[i] != 0) {
             warn(c, at[i], "<%s> %.9g not supported (amorph's boundary conditions are clamps and forces): ignored", tags[i], v[i]);
+            differs(c, tags[i]);
+        }
     for (int i = 14; i < 17; i++)
         if (!(fabs(v[i]) < 1e30)) return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g is not a finite force", tags[i], v[i]);
     /* the box, corners in either order */
@@ -808,9 +921,11 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
     for (int pass = 0; pass < 2; pass++)
         for (int cell = 0; cell < nx * ny * nz; cell++) {
             if (!lat->cell[cell]) continue;
-            const double ctr[3] = {(cell % nx + 0.5) / nx, (cell / nx % ny + 0.5) / ny, (cell / (nx * ny) + 0.5) / nz};
-            if (!(ctr[0] >= lo[0] && ctr[0] <= hi[0] && ctr[1] >= lo[1] && ctr[1] <= hi[1] && ctr[2] >= lo[2] && ctr[2] <= hi[2]))
-                continue;
+            const int idx[3] = {cell % nx, cell / nx % ny, cell / (nx * ny)}, dim[3] = {nx, ny, nz};
+            int touch = 1;
+            for (int a = 0; a < 3; a++) /* the cell [i, i + 1] / n overlaps [lo, hi] */
+                touch &= (double)(idx[a] + 1) / dim[a] > lo[a] + REGION_TOL && (double)idx[a] / dim[a] < hi[a] - REGION_TOL;
+            if (!touch) continue;
             if (pass == 0) {
                 count++;
                 continue;
@@ -818,7 +933,7 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
             if (dof) ly->fixed[cell] = 1;
             for (int k = 0; k < 3; k++) ly->force[k][cell] += (am_param)(v[14 + k] / (double)count);
         }
-    if (count == 0) warn(c, n, "<FRegion> holds no voxel (no filled cell's centre lies in its box): no effect");
+    if (count == 0) warn(c, n, "<FRegion> holds no voxel (no filled cell touches its box): no effect");
     ly->has_bc = 1;
     return AM_OK;
 }
@@ -1220,9 +1335,10 @@ static am_status put_regions(wbuf* w, const am_lattice* lat, const am_layers* ly
         const int idx[3] = {c % nx, c / nx % ny, c / (nx * ny)}, n[3] = {nx, ny, nz};
         static const char* const ax[3] = {"X", "Y", "Z"};
         put(w, "      <FRegion>\n        <PrimType>0</PrimType>\n");
+        /* the middle half of the cell: that cell alone by any reader's rule (its centre, or touching) */
         for (int k = 0; k < 3; k++)
-            put(w, "        <%s>%s</%s>\n        <d%s>%s</d%s>\n", ax[k], num(a, (double)idx[k] / n[k], 0), ax[k], ax[k],
-                num(b, 1.0 / n[k], 0), ax[k]);
+            put(w, "        <%s>%s</%s>\n        <d%s>%s</d%s>\n", ax[k], num(a, (idx[k] + 0.25) / n[k], 0), ax[k], ax[k],
+                num(b, 0.5 / n[k], 0), ax[k]);
         put(w, "        <DofFixed>%d</DofFixed>\n", ly->fixed[c] ? 63 : 0);
         for (int k = 0; k < 3; k++) put(w, "        <Force%s>%s</Force%s>\n", ax[k], num(a, (double)ly->force[k][c], 1), ax[k]);
         put(w, "      </FRegion>\n");
@@ -1300,7 +1416,9 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
         put(&w, "          <CTE>%s</CTE>\n", num(a, vol ? (double)m->cte / 3.0 : (double)m->cte, vol ? 0 : 1));
         put(&w, "          <MaterialTempPhase>%s</MaterialTempPhase>\n", num(a, (double)m->phase, 1));
         put(&w, "          <uStatic>%s</uStatic>\n", num(a, (double)m->mu_static, 1));
-        put(&w, "          <uDynamic>%s</uDynamic>\n        </Mechanical>\n      </Material>\n", num(a, (double)m->mu_kinetic, 1));
+        put(&w, "          <uDynamic>%s</uDynamic>\n", num(a, (double)m->mu_kinetic, 1));
+        if (m->fixed) put(&w, "          <Fixed>1</Fixed>\n"); /* voxcraft-sim's fixed material */
+        put(&w, "        </Mechanical>\n      </Material>\n");
     }
     put(&w, "    </Palette>\n    <Structure Compression=\"ASCII_READABLE\">\n");
     put(&w, "      <X_Voxels>%d</X_Voxels>\n      <Y_Voxels>%d</Y_Voxels>\n      <Z_Voxels>%d</Z_Voxels>\n      <Data>\n",
@@ -1326,6 +1444,16 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
             put(&w, "]]></Layer>\n");
         }
         put(&w, "      </PhaseOffset>\n");
+    }
+    if (layers && layers->has_stiffness) {
+        /* evosoro's form: the elastic modulus of each cell's voxel, Pa */
+        put(&w, "      <Stiffness>\n");
+        for (int z = 0; z < lat->nz && !w.full; z++) {
+            put(&w, "        <Layer><![CDATA[");
+            for (long i = 0; i < per; i++) put(&w, "%s%s", i ? ", " : "", num(a, (double)layers->stiffness[per * z + i], 1));
+            put(&w, "]]></Layer>\n");
+        }
+        put(&w, "      </Stiffness>\n");
     }
     put(&w, "    </Structure>\n  </VXC>\n");
 

@@ -117,6 +117,7 @@ void am_layers_clear(am_layers* l)
 {
     l->has_phase = 0;
     l->has_bc = 0;
+    l->has_stiffness = 0;
 }
 
 am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
@@ -124,7 +125,15 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     return am_model_build_layers(m, lat, env, NULL, err, errsz);
 }
 
-/* the layers' values of the filled cells: finite phases and forces; the board takes none */
+/* the elastic modulus of filled cell c, Pa: the layers' stiffness when they have one, else its
+ * material's (the same value, so a robot without the layer builds bit for bit as before) */
+static am_param cell_E(const am_lattice* lat, const am_layers* ly, int c)
+{
+    return ly && ly->has_stiffness ? ly->stiffness[c] : lat->palette.mat[lat->cell[c] - 1].E;
+}
+
+/* the layers' values of the filled cells: finite phases and forces, positive stiffnesses; the board
+ * takes none of them */
 static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* any_force, char* err, int errsz)
 {
     const int ncell = lat->nx * lat->ny * lat->nz;
@@ -133,6 +142,8 @@ static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* a
         if (!lat->cell[c]) continue;
         if (ly->has_phase && !am_param_finite(ly->phase[c]))
             return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its phase must be a finite number of periods", c);
+        if (ly->has_stiffness && !(ly->stiffness[c] > AM_P(0) && am_param_finite(ly->stiffness[c])))
+            return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its stiffness must be a positive number of Pa", c);
         if (!ly->has_bc) continue;
         for (int k = 0; k < 3; k++) {
             if (!am_param_finite(ly->force[k][c]))
@@ -141,9 +152,9 @@ static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* a
         }
     }
 #if defined(AM_COMPACT)
-    if (ly->has_phase || *any_force)
+    if (ly->has_phase || ly->has_stiffness || *any_force)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: the board profile has no room for them (desktop profile only)",
-                       ly->has_phase ? "a phase per voxel" : "external forces per voxel");
+                       ly->has_phase ? "a phase per voxel" : ly->has_stiffness ? "a stiffness per voxel" : "external forces per voxel");
 #endif
     return AM_OK;
 }
@@ -167,7 +178,8 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     const int nx = lat->nx, ny = lat->ny, nz = lat->nz, ncell = nx * ny * nz;
     /* units (docs/fixed.md): SI in the float and double builds; in the fixed-point build the voxel
      * edge, the mass of the densest voxel of the palette and the time in which the stiffest
-     * material's link moves that mass by one edge, so stiffnesses, masses and sound speeds are O(1) */
+     * material's (or voxel's, with a stiffness layer) link moves that mass by one edge, so stiffnesses,
+     * masses and sound speeds are O(1) */
     m->unit_len = m->unit_mass = m->unit_time = 1.0;
 #if defined(AM_REAL_FIXED_POINT)
     {
@@ -179,6 +191,10 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             if (lat->palette.mat[k].density > rho) rho = lat->palette.mat[k].density;
             if (lat->palette.mat[k].E > E) E = lat->palette.mat[k].E;
         }
+        if (layers && layers->has_stiffness) /* the stiffest voxel instead (check_layers: all positive) */
+            for (int c = 0, first = 1; c < ncell; c++)
+                if (lat->cell[c] && lat->cell[c] <= lat->palette.count && (first || layers->stiffness[c] > E))
+                    E = layers->stiffness[c], first = 0;
         if (!(rho > 0)) rho = lat->palette.mat[0].density, E = lat->palette.mat[0].E; /* no voxel: reported below */
         m->unit_len = L;
         m->unit_mass = rho * L * L * L;
@@ -187,10 +203,15 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         if (!(tmax < 100.0) || !(env->gravity * m->unit_time * m->unit_time / L < 1.0) || !(env->lift / L < 50.0))
             return am_fail(err, errsz, AM_ERR_RANGE, "temperatures (|base| + amplitude < 100 degrees), gravity or lift outside the fixed-point range");
         for (int k = 0; k < lat->palette.count; k++)
-            if (used[k + 1] && (!(fabs(lat->palette.mat[k].cte) * tmax < 8.0) || !(lat->palette.mat[k].E / E > 1e-5) ||
+            if (used[k + 1] && (!(fabs(lat->palette.mat[k].cte) * tmax < 8.0) ||
+                                (!(layers && layers->has_stiffness) && !(lat->palette.mat[k].E / E > 1e-5)) ||
                                 !(lat->palette.mat[k].density / rho > 1e-3)))
                 return am_fail(err, errsz, AM_ERR_RANGE, "material %d (%s): CTE, modulus or density ratio outside the fixed-point range",
                                k + 1, lat->palette.mat[k].name);
+        for (int c = 0; layers && layers->has_stiffness && c < ncell; c++)
+            if (lat->cell[c] && !(layers->stiffness[c] / E > 1e-5))
+                return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its stiffness %g Pa is below 1e-5 of the stiffest voxel's (the fixed-point range)",
+                               c, (double)layers->stiffness[c]);
     }
 #endif
     const double uP = am_unit(m, AM_DIM_PRESSURE), uRho = m->unit_mass / (m->unit_len * m->unit_len * m->unit_len);
@@ -239,7 +260,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         m->fixed[i] = (uint8_t)(mt->fixed != 0 || (layers && layers->has_bc && layers->fixed[c]));
         m->inv_mass[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), mass);
         m->inv_inertia[vc] = m->fixed[i] ? AM_R(0) : AM_DIV(AM_R(1), inertia);
-        am_real EL = AM_MUL(AM_PV(mt->E, uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
+        am_real EL = AM_MUL(AM_PV(cell_E(lat, layers, c), uP), L), EL3 = AM_MUL(EL, AM_MUL(L, L));
         am_real zg = AM_MUL(AM_PV(mt->zeta_global, 1.0), AM_PV(env->zeta_global_scale, 1.0));
         m->c_glob_t[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(mass, EL)));
         m->c_glob_r[vc] = AM_MUL(AM_MUL(AM_R(2), zg), am_sqrt(AM_MUL(inertia, EL3)));
@@ -281,7 +302,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             }
             const am_material* ma = &lat->palette.mat[m->mat[a]];
             const am_material* mb = &lat->palette.mat[m->mat[j]];
-            const am_real Ea = AM_PV(ma->E, uP), Eb = AM_PV(mb->E, uP);
+            const am_real Ea = AM_PV(cell_E(lat, layers, m->cell[a]), uP), Eb = AM_PV(cell_E(lat, layers, m->cell[j]), uP);
             am_real E = AM_DIV(AM_MUL(AM_R(2), AM_MUL(Ea, Eb)), Ea + Eb); /* halves in series */
             am_real nu = AM_MUL(AM_R(0.5), AM_PV(ma->poisson, 1.0) + AM_PV(mb->poisson, 1.0));
             am_real L2 = AM_MUL(L, L), L3 = AM_MUL(L2, L);
@@ -355,12 +376,14 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
      * material), so that the bound's square stays in the range */
     for (int i = 0; i < nv; i++) {
         const am_material* mt = &lat->palette.mat[m->mat[i]];
-        c2 = am_max(c2, AM_DIV(AM_PV(mt->E, uP), AM_PV(mt->density, uRho)));
+        c2 = am_max(c2, AM_DIV(AM_PV(cell_E(lat, layers, m->cell[i]), uP), AM_PV(mt->density, uRho)));
     }
     m->max_speed = am_min(AM_MUL(AM_R(10), am_sqrt(c2)), AM_R(10));
 #else
     for (int k = 0; k < lat->palette.count; k++)
         c2 = am_max(c2, AM_DIV(AM_PV(lat->palette.mat[k].E, uP), AM_PV(lat->palette.mat[k].density, uRho)));
+    for (int i = 0; layers && layers->has_stiffness && i < nv; i++) /* and the voxels' own moduli */
+        c2 = am_max(c2, AM_DIV(AM_PV(layers->stiffness[m->cell[i]], uP), AM_PV(lat->palette.mat[m->mat[i]].density, uRho)));
     m->max_speed = AM_MUL(AM_R(10), am_sqrt(c2));
 #endif
     m->dt_rec = am_dt_analytic(m);

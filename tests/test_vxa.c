@@ -346,7 +346,7 @@ static void test_vxa_warnings(void)
                     "<VXC><Lattice><X_Dim_Adj>0.5</X_Dim_Adj></Lattice><Palette><Material ID=\"7\">\n"
                     "<Mechanical><MatModel>1</MatModel><IsConductive>1</IsConductive></Mechanical></Material></Palette>\n"
                     "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>1</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"
-                    "<Data><Layer>1</Layer></Data><Stiffness/></Structure></VXC>\n"
+                    "<Data><Layer>1</Layer></Data><BaseCiliaForce/></Structure></VXC>\n"
                     "</VXA>\n";
     CHECK(am_vxa_parse(&lat_a, &info_a, &doc, t, "w.vxa", err, sizeof err) == AM_OK, "%s", err);
     /* in line order, though <VXC> is read first */
@@ -356,13 +356,16 @@ static void test_vxa_warnings(void)
         "w.vxa:3: warning: <DtFrac> 1.5 is above amorph's default step, kept with a margin below its stability limit: 0.9 "
         "used (amorph sim --dt-frac overrides)\n"
         "w.vxa:5: warning: unsupported tag <Wobble> ignored\n"
-        "w.vxa:5: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"
+        "w.vxa:5: warning: <FRegion> holds no voxel (no filled cell touches its box): no effect\n"
         "w.vxa:6: warning: <X_Dim_Adj> 0.5 not supported (amorph lattices are cubic cells on a rectangular grid); 1 used\n"
         "w.vxa:6: warning: <Material ID=\"7\"> is material 1 of the palette: materials are numbered by their order, as in VoxCAD\n"
         "w.vxa:7: warning: unsupported tag <IsConductive> ignored\n"
         "w.vxa:7: warning: <MatModel> 1 (non-linear) not supported: material 1 is linear elastic here\n"
-        "w.vxa:8: warning: unsupported tag <Stiffness> ignored\n";
+        "w.vxa:8: warning: unsupported tag <BaseCiliaForce> ignored\n";
     CHECK(!strcmp(info_a.warning, want) && info_a.warnings == 10, "%d warnings:\n%s", info_a.warnings, info_a.warning);
+    /* those that change the motion, once each in reading order (VXC first); the integrator, the
+     * step and the unknown <Wobble> do not */
+    CHECK(!strcmp(info_a.differ, "X_Dim_Adj, MatModel, BaseCiliaForce"), "differ '%s'", info_a.differ);
     CHECK(info_a.env.dt_frac == am_default_env().dt_frac, "dt_frac kept");
     /* many warnings: all counted, the text stays within its buffer */
     long n = sprintf(big, "<VXA>");
@@ -462,7 +465,8 @@ static void test_vxa_errors(void)
                "t.vxa:5: material 1: MatType 2 (dither) is not supported: only single materials (MatType 0)");
     expect_vxa(vxa(0, MAT("<Elastic_Mod>0</Elastic_Mod>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Elastic_Mod> 0 must be greater than 0");
     expect_vxa(vxa(0, MAT("<Density>-1</Density>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Density> -1 must be greater than 0");
-    expect_vxa(vxa(0, MAT("<Poissons_Ratio>0.5</Poissons_Ratio>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Poissons_Ratio> 0.5 must be in [0, 0.5)");
+    expect_vxa(vxa(0, MAT("<Poissons_Ratio>0.75</Poissons_Ratio>"), 0, 0), AM_ERR_RANGE,
+               "t.vxa:5: <Poissons_Ratio> 0.75 must be in [0, 0.5]");
     expect_vxa(vxa(0, MAT("<uStatic>-0.5</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> -0.5 must be 0 or more");
     expect_vxa(vxa(0, MAT("<uStatic>1267650600228229401496703205376</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> 1.2676506e+30 is too large (at most 1e+30)");
     /* the cell edge: the configuration's voxel_size range (a subnormal one made NaN scales); 2^-140,
@@ -702,7 +706,8 @@ static void test_vxa_phase_offset(void)
     CHECK(ly->has_phase && !ly->has_bc, "layers %d %d", ly->has_phase, ly->has_bc);
     CHECK(ly->phase[1] == AM_P(0.25) && ly->phase[3 + 4 * (2 + 3 * 1)] == AM_P(0.82) && ly->phase[0] == AM_P(0),
           "phases %g %g", (double)ly->phase[1], (double)ly->phase[3 + 4 * (2 + 3 * 1)]);
-    CHECK(strstr(info_a.warning, "e.vxa:83: warning: unsupported tag <Stiffness> ignored\n") != NULL, "%s", info_a.warning);
+    CHECK(ly->has_stiffness && ly->stiffness[0] == AM_P(1e6) && ly->stiffness[23] == AM_P(1e6) && !strstr(info_a.warning, "Stiffness"),
+          "the fixture's stiffness layer: %d %g\n%s", ly->has_stiffness, (double)ly->stiffness[0], info_a.warning);
     /* the voxels actuate with their own phases: after a quarter period the columns differ */
     lay = info_a.layers;
     am_env env = info_a.env;
@@ -838,7 +843,10 @@ static void test_vxa_cantilever(void)
                                   "clamps and forces): ignored\n"), "%s", info_a.warning);
     CHECK(info_a.layers.fixed[0] && info_a.layers.fixed[1], "clamped");
     expect_vxa(vxa(REG("<X>0.6</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><ForceX>1</ForceX>"), 0, 0, 0), AM_OK, "");
-    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> holds no voxel (no filled cell's centre lies in its box): no effect\n"),
+    CHECK(!info_a.warning[0] && info_a.layers.force[0][1] == AM_P(1) && info_a.layers.force[0][0] == AM_P(0),
+          "a box inside the second cell, off its centre: %s", info_a.warning);
+    expect_vxa(vxa(REG("<X>0.6</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><ForceX>1</ForceX>"), 0, 0, "<Layer><![CDATA[10]]></Layer>"), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> holds no voxel (no filled cell touches its box): no effect\n"),
           "%s", info_a.warning);
     expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><ForceZ>-3</ForceZ>"), 0, 0, 0), AM_OK, "");
     CHECK(info_a.layers.force[2][0] == AM_P(-1.5) && info_a.layers.force[2][1] == AM_P(-1.5), "the force shared by two voxels");
@@ -848,6 +856,188 @@ static void test_vxa_cantilever(void)
     expect_vxa(vxa("<Environment><Fixed_Regions><NumFixed>1</NumFixed><FRegion><dX>0.5</dX><dY>1</dY><dZ>1</dZ></FRegion>"
                    "</Fixed_Regions></Environment>", 0, 0, 0), AM_OK, "");
     CHECK(info_a.layers.fixed[0] && !info_a.layers.fixed[1], "a region of <Fixed_Regions> is fixed");
+}
+
+/* VoxCAD's and Voxelyze's rule for a region: a voxel belongs to it when its cell touches the box
+ * (not only when its centre lies inside); faces that only meet do not count. Each box below
+ * selects other voxels by the centre rule (noted), so the rule is what is tested. */
+#define REG1(body) "<Environment><Boundary_Conditions><NumBCs>1</NumBCs><FRegion>" body "</FRegion></Boundary_Conditions></Environment>"
+static void test_vxa_regions_touch(void)
+{
+    const char* row = SH("4", "1", "1"); /* cells [0, 0.25], [0.25, 0.5], [0.5, 0.75], [0.75, 1] along x */
+    /* VoxCAD's thin face region (its SampleSimulation): the first column (no centre inside) */
+    expect_vxa(vxa(REG1("<X>0</X><dX>0.01</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed>"), 0, row, "<Layer>1111</Layer>"), AM_OK, "");
+    CHECK(!info_a.warning[0] && info_a.layers.fixed[0] && !info_a.layers.fixed[1] && !info_a.layers.fixed[3], "thin face: %d %d\n%s",
+          info_a.layers.fixed[0], info_a.layers.fixed[1], info_a.warning);
+    /* and the last, its box given from its far corner (a negative extent) */
+    expect_vxa(vxa(REG1("<X>1</X><dX>-0.01</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed>"), 0, row, "<Layer>1111</Layer>"), AM_OK, "");
+    CHECK(info_a.layers.fixed[3] && !info_a.layers.fixed[2] && !info_a.layers.fixed[0], "far face");
+    /* [0.3, 0.6] touches cells 1 and 2 (centre rule: cell 1 alone), which share its force */
+    expect_vxa(vxa(REG1("<X>0.3</X><dX>0.3</dX><dY>1</dY><dZ>1</dZ><ForceX>2</ForceX>"), 0, row, "<Layer>1111</Layer>"), AM_OK, "");
+    CHECK(info_a.layers.force[0][0] == AM_P(0) && info_a.layers.force[0][1] == AM_P(1) && info_a.layers.force[0][2] == AM_P(1) &&
+              info_a.layers.force[0][3] == AM_P(0) && !info_a.layers.fixed[1],
+          "forces %g %g %g %g", (double)info_a.layers.force[0][0], (double)info_a.layers.force[0][1], (double)info_a.layers.force[0][2],
+          (double)info_a.layers.force[0][3]);
+    /* exactly cell 1: its neighbours only meet the box at a face */
+    expect_vxa(vxa(REG1("<X>0.25</X><dX>0.25</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed>"), 0, row, "<Layer>1111</Layer>"), AM_OK, "");
+    CHECK(!info_a.layers.fixed[0] && info_a.layers.fixed[1] && !info_a.layers.fixed[2], "a cell's own box");
+    /* evosoro's sticky floor: a thin slab at z = 0 clamps the bottom layer of a column */
+    expect_vxa(vxa(REG1("<X>0</X><Y>0</Y><Z>0</Z><dX>1</dX><dY>1</dY><dZ>0.01</dZ><DofFixed>63</DofFixed>"), 0, SH("1", "1", "2"),
+                   "<Layer>1</Layer><Layer>1</Layer>"),
+               AM_OK, "");
+    CHECK(!info_a.warning[0] && info_a.layers.fixed[0] && !info_a.layers.fixed[1], "sticky floor: %d %d", info_a.layers.fixed[0],
+          info_a.layers.fixed[1]);
+    /* a box in an empty cell holds no voxel */
+    expect_vxa(vxa(REG1("<X>0.3</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed>"), 0, row, "<Layer>1011</Layer>"), AM_OK, "");
+    CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <FRegion> holds no voxel (no filled cell touches its box): no effect\n"), "%s",
+          info_a.warning);
+}
+
+/* Poisson's ratio 0.5 (volvox's files, written for voxcraft-sim, which clamps it): the largest ratio
+ * below 0.5, one warning; voxcraft-sim's material <Fixed>: its voxels are clamped */
+static void test_vxa_poisson_and_fixed(void)
+{
+    char err[AM_ERR_MAX] = "";
+    long len = 0;
+    expect_vxa(vxa(0, MAT("<Elastic_Mod>1e6</Elastic_Mod><Density>1000</Density><Poissons_Ratio>0.5</Poissons_Ratio><Fixed>1</Fixed>"), 0,
+                   0),
+               AM_OK, "");
+#if defined(AM_REAL_DOUBLE) || defined(AM_REAL_FIXED_POINT)
+    const am_param below = nextafter(0.5, 0.0);
+#else
+    const am_param below = nextafterf(0.5f, 0.0f);
+#endif
+    const am_material* m = &lat_a.palette.mat[0];
+    CHECK(m->poisson == below && m->fixed == 1, "poisson %.17g (want %.17g), fixed %d", (double)m->poisson, (double)below, m->fixed);
+    CHECK(!strcmp(info_a.warning, "t.vxa:5: warning: <Poissons_Ratio> 0.5 (incompressible) is beyond amorph's model: the largest ratio "
+                                  "below 0.5 used for material 1\n") &&
+              info_a.warnings == 1 && !info_a.differ[0],
+          "%s", info_a.warning);
+    /* the model takes it, and the material's voxels hold under gravity */
+    am_env env = info_a.env;
+    env.gravity = AM_P(9.81);
+    CHECK(am_model_build(&pm1, &lat_a, &env, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(pm1.fixed[0] && pm1.fixed[1], "fixed voxels %d %d", pm1.fixed[0], pm1.fixed[1]);
+    am_state_reset(&pm1, &ps1);
+    am_steps(&pm1, &ps1, 100);
+    CHECK(ps1.x[2][0] == AM_R(0) && ps1.x[2][1] == AM_R(0) && !ps1.diverged, "a fixed voxel moved");
+    /* written where voxcraft-sim reads it, and read back */
+    CHECK(am_vxa_format(&lat_a, &info_a.env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<Fixed>1</Fixed>\n        </Mechanical>") != NULL, "no <Fixed> in <Mechanical>");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "f.vxa", err, sizeof err) == AM_OK && am_lattice_equal(&lat_a, &lat_b) &&
+              info_b.warnings == 0,
+          "%s %s", err, info_b.warning);
+    /* a free material writes no <Fixed> there (VoxCAD's files stay as they were) */
+    expect_vxa(vxa(0, MAT("<Fixed>0</Fixed>"), 0, 0), AM_OK, "");
+    CHECK(lat_a.palette.mat[0].fixed == 0, "<Fixed>0</Fixed>");
+    CHECK(am_vxa_format(&lat_a, &info_a.env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK &&
+              !strstr(text, "<Fixed>1</Fixed>\n        </Mechanical>") && !strstr(text, "<Fixed>0</Fixed>\n        </Mechanical>"),
+          "%s", err);
+}
+
+/* evosoro's per-voxel stiffness: each voxel's modulus replaces its material's E; a link joins two
+ * voxels' moduli as it joins two materials'; the time step follows the stiffest voxel */
+#define STIFF(values)                                                                                                          \
+    "<VXA Version=\"1.1\">\n<Environment><Gravity><GravEnabled>1</GravEnabled><FloorEnabled>1</FloorEnabled></Gravity>"       \
+    "<Thermal><TempEnabled>1</TempEnabled><TempAmplitude>20</TempAmplitude><VaryTempEnabled>1</VaryTempEnabled></Thermal>"      \
+    "</Environment>\n<VXC Version=\"0.94\"><Palette><Material><Name>m</Name><Mechanical><Elastic_Mod>1e6</Elastic_Mod>"        \
+    "<Density>1000</Density><CTE>0.01</CTE></Mechanical></Material></Palette>\n"                                               \
+    "<Structure Compression=\"ASCII_READABLE\"><X_Voxels>4</X_Voxels><Y_Voxels>1</Y_Voxels><Z_Voxels>1</Z_Voxels>"           \
+    "<Data><Layer><![CDATA[1110]]></Layer></Data>\n<Stiffness><MinElasticMod>1000.0</MinElasticMod>"                          \
+    "<MaxElasticMod>10000000.0</MaxElasticMod>\n<Layer><![CDATA[" values "]]></Layer></Stiffness></Structure></VXC></VXA>\n"
+static void test_vxa_stiffness(void)
+{
+    char err[AM_ERR_MAX] = "";
+    expect_vxa(STIFF("1000000, 4000000, 1000000, 0, "), AM_OK, "");
+    CHECK(info_a.layers.has_stiffness && info_a.layers.stiffness[1] == AM_P(4e6) && info_a.layers.stiffness[3] == AM_P(0) &&
+              info_a.warnings == 0,
+          "layer %d %g\n%s", info_a.layers.has_stiffness, (double)info_a.layers.stiffness[1], info_a.warning);
+    /* malformed: a voxel's value outside (0, 1e30] (an empty cell's 0 above is fine), a count, a word */
+    expect_vxa(STIFF("1000000, 0, 1000000, 0"), AM_ERR_RANGE,
+               "t.vxa:6: <Stiffness> layer 0: value 1 (x = 1, y = 0, a voxel) is 0 Pa: it must be greater than 0 and at most 1e+30");
+    expect_vxa(STIFF("1000000, 1000000, 1000000"), AM_ERR_PARSE, "t.vxa:6: <Stiffness> layer 0 has 3 values, expected 4 (X_Voxels x Y_Voxels)");
+    expect_vxa(STIFF("1000000, stiff, 1000000, 0"), AM_ERR_PARSE, "t.vxa:6: <Stiffness> layer 0: value 1 'stiff' is not a finite number");
+#if defined(AM_COMPACT)
+    expect_vxa(STIFF("1000000, 4000000, 1000000, 0"), AM_OK, "");
+    CHECK(am_model_build_layers(&pm1, &lat_a, &info_a.env, &info_a.layers, err, sizeof err) == AM_ERR_CAPACITY &&
+              !strcmp(err, "a stiffness per voxel: the board profile has no room for them (desktop profile only)"),
+          "%s", err);
+#else
+    const double L = 0.001; /* VoxCAD's default Lattice_Dim */
+    expect_vxa(STIFF("1000000, 4000000, 1000000, 0"), AM_OK, "");
+    lay = info_a.layers;
+    am_env env = info_a.env;
+    env.period_steps = 50;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    lay.has_stiffness = 0;
+    CHECK(am_model_build_layers(&pm2, &lat_a, &env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    /* the stiff voxel's own constants (floor spring 2 E L), and its links: 2 E1 E2 / (E1 + E2) = 1.6e6 Pa */
+    NEAR_REL(am_to_si(&pm1, pm1.k_floor[1], AM_DIM_STIFFNESS), 2 * 4e6 * L, 1e-5);
+    NEAR_REL(am_to_si(&pm1, pm1.k_floor[0], AM_DIM_STIFFNESS), 2 * 1e6 * L, 1e-5);
+    const int l01 = pm1.slot[0][0], l12 = pm1.slot[0][1];
+    CHECK(l01 != pm1.nl && l12 != pm1.nl && pm1.lpos[l01] == 1 && pm1.lpos[l12] == 2, "links");
+    NEAR_REL(am_to_si(&pm1, pm1.k_ax[l01], AM_DIM_FORCE), 1.6e6 * L * L, 1e-5);
+    NEAR_REL(am_to_si(&pm1, pm1.k_ax[l12], AM_DIM_FORCE), 1.6e6 * L * L, 1e-5);
+    NEAR_REL(am_to_si(&pm2, pm2.k_ax[l01], AM_DIM_FORCE), 1e6 * L * L, 1e-5);
+    /* the stable step follows the stiffest voxel: its floor spring is 4 times as stiff, so dt_rec
+     * halves (the material's 1e6 Pa would keep the step twice as long, and unstable) */
+    NEAR_REL(am_to_si(&pm1, pm1.dt_rec, AM_DIM_TIME) / am_to_si(&pm2, pm2.dt_rec, AM_DIM_TIME), 0.5, 1e-5);
+    CHECK(am_to_si(&pm1, pm1.max_speed, AM_DIM_VELOCITY) > am_to_si(&pm2, pm2.max_speed, AM_DIM_VELOCITY), "the speed bound");
+    /* it moves otherwise than without the layer */
+    am_state_reset(&pm1, &ps1);
+    am_state_reset(&pm2, &ps2);
+    ps1.actuate = ps2.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    am_steps(&pm2, &ps2, 300);
+    CHECK(!ps1.diverged && !ps2.diverged && am_state_hash(&pm1, &ps1) != am_state_hash(&pm2, &ps2), "the stiffness changed nothing");
+    /* a layer equal to the material's modulus simulates bit for bit as no layer */
+    for (int c = 0; c < 4; c++) lay.stiffness[c] = AM_P(1e6);
+    lay.has_stiffness = 1;
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&pm1, &ps1);
+    ps1.actuate = 1;
+    am_steps(&pm1, &ps1, 300);
+    CHECK(am_state_hash(&pm1, &ps1) == am_state_hash(&pm2, &ps2), "a layer of the material's modulus differs from none");
+    /* the model checks the layer too */
+    lay.stiffness[2] = AM_P(-1);
+    CHECK(am_model_build_layers(&pm1, &lat_a, &env, &lay, err, sizeof err) == AM_ERR_RANGE &&
+              !strcmp(err, "cell 2: its stiffness must be a positive number of Pa"),
+          "%s", err);
+    /* round trip: evosoro's <Stiffness> layers, bit for bit */
+    long len = 0;
+    CHECK(am_vxa_format_layers(&lat_a, &info_a.layers, &info_a.env, 1e-5, text, sizeof text, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text, "<Stiffness>\n        <Layer><![CDATA[1000000, 4000000, 1000000, 0]]></Layer>") != NULL, "written stiffness");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "s.vxa", err, sizeof err) == AM_OK && info_b.warnings == 0, "%s %s", err,
+          info_b.warning);
+    int same = info_b.layers.has_stiffness;
+    for (int c = 0; c < 4; c++) same &= info_b.layers.stiffness[c] == info_a.layers.stiffness[c];
+    CHECK(same, "stiffnesses differ after a round trip");
+#endif
+}
+
+/* the ignored items that change the motion, named once for the one-line summary */
+static void test_vxa_differ(void)
+{
+    expect_vxa(vxa("<Simulator><Features><MaxVelLimitEnabled>0</MaxVelLimitEnabled><VolumeEffectsEnabled>1</VolumeEffectsEnabled>"
+                   "</Features><EquilibriumMode><EquilibriumModeEnabled>0</EquilibriumModeEnabled></EquilibriumMode></Simulator>\n"
+                   "<Environment><FluidEnvironment>1</FluidEnvironment><AggregateDragCoefficient>750</AggregateDragCoefficient>"
+                   "</Environment>",
+                   0, 0, 0),
+               AM_OK, "");
+    CHECK(!strcmp(info_a.differ, "VolumeEffectsEnabled, FluidEnvironment") && info_a.warnings == 4, "differ '%s'\n%s", info_a.differ,
+          info_a.warning);
+    /* the same tags switched off: warnings, and nothing that changes the motion */
+    expect_vxa(vxa("<Simulator><Features><VolumeEffectsEnabled>0</VolumeEffectsEnabled></Features></Simulator>\n"
+                   "<Environment><FluidEnvironment>0</FluidEnvironment></Environment>",
+                   0, 0, 0),
+               AM_OK, "");
+    CHECK(!info_a.differ[0] && info_a.warnings == 2, "differ '%s'", info_a.differ);
+    /* a region's torque, twice: named once */
+    expect_vxa(vxa("<Environment><Boundary_Conditions><NumBCs>2</NumBCs><FRegion><dX>1</dX><dY>1</dY><dZ>1</dZ><TorqueX>1</TorqueX>"
+                   "</FRegion><FRegion><dX>1</dX><dY>1</dY><dZ>1</dZ><TorqueX>2</TorqueX></FRegion></Boundary_Conditions></Environment>",
+                   0, 0, 0),
+               AM_OK, "");
+    CHECK(!strcmp(info_a.differ, "TorqueX") && info_a.warnings == 2, "differ '%s'", info_a.differ);
 }
 
 /* voxcraft's VXD over a base VXA: replaced and added elements, warnings in order (base, then VXD),
@@ -965,6 +1155,10 @@ int main(int argc, char** argv)
     RUN(test_vxa_format_errors);
     RUN(test_vxa_phase_offset);
     RUN(test_vxa_cantilever);
+    RUN(test_vxa_regions_touch);
+    RUN(test_vxa_poisson_and_fixed);
+    RUN(test_vxa_stiffness);
+    RUN(test_vxa_differ);
     RUN(test_vxa_vxd);
     RUN(test_vxa_noise);
     return SUMMARY();

@@ -131,6 +131,10 @@ static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, cons
     for (const char* p = info.warning; *p; p++) kept += *p == '\n';
     fputs(info.warning, stderr);
     if (info.warnings > kept) fprintf(stderr, "%s: warning: %d more warnings not shown\n", fname, info.warnings - kept);
+    /* one line that says whether the warnings matter to the motion */
+    if (info.differ[0])
+        fprintf(stderr, "%s: warning: results will differ from the reference simulator: amorph does not simulate %s (warnings above)\n",
+                vxd ? vxd : fname, info.differ);
     r->env = info.env;
     *period_s = info.period_steps_given ? 0 : info.temp_period;
     c->layers = info.layers;
@@ -285,7 +289,8 @@ am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double*
      * voxel of its first material, set for the build and cleared again */
     const int empty = am_lattice_count(lat) == 0 && lat->palette.count > 0;
     if (empty) lat->cell[0] = 1;
-    am_status st = am_model_build(&c->work[0].model, lat, env, err, errsz);
+    /* with the robot's layers: a stiffness per voxel sets dt_rec (none for the stand-in voxel) */
+    am_status st = empty ? am_model_build(&c->work[0].model, lat, env, err, errsz) : tool_model_build(c, &c->work[0].model, lat, env, err, errsz);
     if (empty) lat->cell[0] = 0;
     if (st != AM_OK) return st;
     *dt = am_dt_si(&c->work[0].model, env->dt_frac);

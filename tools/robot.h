@@ -70,8 +70,9 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
  * per-cell layers (a VXA file's phases and boundary conditions; none for other robots) */
 am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
 
-/* the time step in seconds the simulator takes for lat in env (an empty robot is timed as one voxel
- * of its first material); builds the model into c->work[0].model */
+/* the time step in seconds the simulator takes for lat in env with the per-cell layers of the robot
+ * tool_robot_load loaded last (an empty robot is timed as one voxel of its first material); builds
+ * the model into c->work[0].model */
 am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz);
 
 /* the help lines of the robot commands' shared options */

@@ -47,20 +47,24 @@ typedef struct am_env {
 am_env am_default_env(void);
 
 /* What a robot may carry per lattice cell beyond its material: VXA's per-voxel actuation phase
- * (evosoro's PhaseOffset layer) and boundary conditions (VXA's fixed and forced regions). Cell c
- * is the lattice's cell c; entries of empty cells are not read. am_model_build_layers takes it;
- * am_model_build is that call with none. Large (about 136 KB on the desktop): declare it static. */
+ * (evosoro's PhaseOffset layer), per-voxel stiffness (evosoro's Stiffness layer) and boundary
+ * conditions (VXA's fixed and forced regions). Cell c is the lattice's cell c; entries of empty
+ * cells are not read. am_model_build_layers takes it; am_model_build is that call with none. Large
+ * (about 170 KB on the desktop): declare it static. */
 typedef struct am_layers {
     int has_phase;                    /* 1: phase[] holds every cell's phase */
     int has_bc;                       /* 1: fixed[] and force[] hold boundary conditions */
+    int has_stiffness;                /* 1: stiffness[] holds every cell's elastic modulus */
     am_param phase[AM_MAX_CELLS];     /* periods (evosoro's unit: 0.25 is a quarter period), added to the
                                        * material's phase as 2 pi phase radians */
+    am_param stiffness[AM_MAX_CELLS]; /* Pa: the voxel's elastic modulus in place of its material's E
+                                       * (every constant that follows from E: links, floor, damping) */
     uint8_t fixed[AM_MAX_CELLS];      /* 1: the cell's voxel is clamped (all six degrees of freedom) */
     am_param force[3][AM_MAX_CELLS];  /* N: a constant external force on the cell's voxel */
 } am_layers;
 
-/* no phases, no boundary conditions (the arrays are left as they are: only the flags are read
- * before them) */
+/* no phases, no stiffnesses, no boundary conditions (the arrays are left as they are: only the
+ * flags are read before them) */
 void am_layers_clear(am_layers* l);
 
 /* Index and constant layout. The desktop profile keeps every constant per voxel and per link and
@@ -314,9 +318,11 @@ typedef struct am_state {
 /* builds the model; AM_ERR_EMPTY for no voxel, AM_ERR_CAPACITY past a capacity, AM_ERR_RANGE for a
  * bad material or environment value */
 am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
-/* the same with per-cell layers (NULL: none): phases make the model's voxel_phase, fixed cells are
- * clamped as a fixed material's are, forces act on their voxels at every step. The board profile
- * has no room for phases and forces per voxel: AM_ERR_CAPACITY (fixed cells are taken there). */
+/* the same with per-cell layers (NULL: none): phases make the model's voxel_phase, a stiffness per
+ * cell replaces the material's E of its voxel (a link joins its two voxels' moduli as it joins two
+ * materials'; dt_rec follows the stiffest), fixed cells are clamped as a fixed material's are, forces
+ * act on their voxels at every step. The board profile has no room for phases, stiffnesses and
+ * forces per voxel: AM_ERR_CAPACITY (fixed cells are taken there). */
 am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
                                 int errsz);
 /* puts the state at rest at the initial pose, dt = env.dt_frac * dt_rec, actuation off */

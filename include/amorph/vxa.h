@@ -6,7 +6,7 @@
  * caller's workspace, fills a lattice and an environment, and lists every tag it does not
  * support as a warning line "fname:line: warning: unsupported tag <X> ignored" (never silence).
  * Malformed files are errors "fname:line: problem". ZLIB layers are inflated (amorph/inflate.h);
- * evosoro's per-voxel phases and VoxCAD's boundary conditions come out as per-cell layers
+ * evosoro's per-voxel phases and stiffnesses and VoxCAD's boundary conditions come out as per-cell layers
  * (am_layers, for am_model_build_layers); a voxcraft VXD is read over its base (am_vxa_parse_vxd).
  *
  * The writer produces what VoxCAD writes (ASCII_READABLE structure) plus one <Amorph> element that
@@ -36,6 +36,9 @@ typedef struct am_vxa_info {
     am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
                                 conditions' fixed cells and forces (docs/vxa.md); build the model with
                                 am_model_build_layers */
+    char differ[256];        /* the ignored items (of those warned about) that change how the robot moves
+                                in VoxCAD, Voxelyze or voxcraft-sim (FluidEnvironment, MatModel, ...),
+                                comma separated, each once; empty when none (docs/vxa.md) */
     int warnings;            /* warnings found (all counted, the first ones kept in warning) */
     char warning[AM_VXA_WARN_TEXT]; /* warning lines, each ended by '\n'; NUL-terminated */
 } am_vxa_info;
@@ -64,13 +67,14 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
 am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz);
 /* the same with per-cell layers (NULL: none): phases as evosoro's <PhaseOffset> layers (in
- * periods, each value in the shortest form that reads back to the same bits), and each voxel with
- * a boundary condition (clamped, or a force) as one box <FRegion> of its own cell in
- * <Boundary_Conditions>, at most AM_VXA_MAX_BC_VOXELS of them (AM_ERR_CAPACITY past that) */
+ * periods, each value in the shortest form that reads back to the same bits), stiffnesses as its
+ * <Stiffness> layers (Pa, likewise), and each voxel with a boundary condition (clamped, or a force)
+ * as one box <FRegion> inside its own cell in <Boundary_Conditions>, at most AM_VXA_MAX_BC_VOXELS
+ * of them (AM_ERR_CAPACITY past that) */
 am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
                                long* len, char* err, int errsz);
 #define AM_VXA_MAX_BC_VOXELS 256
-#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 18L + AM_MAX_DIM * 64L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
+#define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 36L + AM_MAX_DIM * 128L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
  * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
