@@ -119,8 +119,8 @@ static int write_printable(const char* path, const am_palette* pal, const char* 
 #endif
 
 static const char export_help[] =
-    "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice | --stl FILE.stl [--merge] |\n"
-    "                     --amf FILE.amf  [--step N | --time S]\n"
+    "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice |\n"
+    "                     --stl FILE.stl [--merge] | --amf FILE.amf  [--step N | --time S]\n"
     "Writes a robot (a lattice, genome or VXA file, a run folder, or a built-in scene) in another format:\n"
     "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
     "  --lattice FILE   the amorph lattice text format (docs/formats.md); '-' for stdout\n"
@@ -136,8 +136,8 @@ static const char export_help[] =
     "                   it) instead of the rest shape; a warning on stderr when that surface crosses\n"
     "                   itself (a printer would fuse the parts that overlap)\n"
     "  --time S         the same at simulated time S seconds (the nearest step)\n"
-    "Where voxels of one surface touch only along an edge or at a corner, the surface is split there\n"
-    "and opened by 2.5% of the way to the voxels' centres, so every file is manifold.\n"
+    "Where voxels of one surface touch only along an edge or at a corner, its vertex there is split and\n"
+    "each part moved 2.5% of the way to its own voxels' centre, so every file is manifold.\n"
     "The environment in a VXA file is the robot's own (a VXA file's or a run folder's), else the\n"
     "seed's, with the settings below on top. Files are replaced atomically.\n"
     TOOL_ROBOT_HELP;
