@@ -123,10 +123,10 @@ static void split_corners(am_mesh* m, const am_lattice* lat)
     /* a vertex alone of its set at its corner does not move; the set of a vertex is the material
      * of its fan's cells (AM_MESH_BODY: one set) */
     for (long p = 0; p < nc; p++) {
-        int32_t v[64];
-        int set[64], n = 0;
+        int32_t v[24]; /* a fan has 3 faces or more, and 8 cells have 24 faces at a corner */
+        int set[24], n = 0;
         int px = (int)(p % (m->nx + 1)), py = (int)((p / (m->nx + 1)) % (m->ny + 1)), pz = (int)(p / ((m->nx + 1) * (m->ny + 1)));
-        for (int32_t w = m->corner_head[p]; w >= 0 && n < 64; w = m->mid[w]) {
+        for (int32_t w = m->corner_head[p]; w >= 0 && n < 24; w = m->mid[w]) {
             int b = 0;
             while (!(m->vpull[w] >> b & 1)) b++;
             v[n] = w;

@@ -127,7 +127,7 @@ static const char export_help[] =
     "  --stl FILE       the surface for printing, ASCII STL in mm: one file per material the robot uses,\n"
     "                   FILE-NAME.stl (NAME the material's; robot.stl gives robot-passive.stl,\n"
     "                   robot-active.stl, ...), each one closed solid (docs/formats.md); '-' for stdout\n"
-    "                   when the robot has one material" TOOL_DESKTOP_ONLY "\n"
+    "                   with --merge or when the robot has one material" TOOL_DESKTOP_ONLY "\n"
     "  --merge          --stl writes FILE itself: one closed solid, the body's outer surface (the walls\n"
     "                   between materials left out)\n"
     "  --amf FILE       the surfaces as AMF (ISO/ASTM 52915): one volume per material, with its colour;\n"
