@@ -1,18 +1,11 @@
-/* The printable files of a mesh (include/amorph/mesh.h, docs/formats.md): ASCII STL with one solid
- * per material, and AMF (ISO/ASTM 52915) with one volume per material. Both in millimetres. */
+/* The printable files of a mesh (include/amorph/mesh.h, docs/formats.md): ASCII STL of one solid
+ * (a material's surface, or the body's), and AMF (ISO/ASTM 52915) with one volume per material.
+ * Both in millimetres. */
 #include "amorph/mesh.h"
 
 #include <math.h>
 
 #define MM 1000.0 /* file units per metre */
-
-/* 1 when the mesh holds a triangle of material k */
-static int holds(const am_mesh* m, int k)
-{
-    for (long t = 0; t < m->ntri; t++)
-        if (m->tmat[t] == k) return 1;
-    return 0;
-}
 
 static am_status done(am_text* out, const char* what, char* err, int errsz)
 {
@@ -22,28 +15,27 @@ static am_status done(am_text* out, const char* what, char* err, int errsz)
     return AM_OK;
 }
 
-am_status am_mesh_write_stl(const am_mesh* m, const double* pos, const am_palette* pal, am_text* out, char* err, int errsz)
+am_status am_mesh_write_stl(const am_mesh* m, const double* pos, const am_palette* pal, int mat, am_text* out, char* err,
+                            int errsz)
 {
-    for (int k = 0; k < pal->count && !out->full; k++) {
-        if (!holds(m, k)) continue;
-        const char* name = pal->mat[k].name;
-        am_text_put(out, "solid %s\n", name);
-        for (long t = 0; t < m->ntri && !out->full; t++) {
-            if (m->tmat[t] != k) continue;
-            const double *a = pos + 3 * m->tri[t][0], *b = pos + 3 * m->tri[t][1], *c = pos + 3 * m->tri[t][2];
-            double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-            double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-            double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            for (int j = 0; j < 3; j++) n[j] = len > 0 ? n[j] / len : 0;
-            am_text_put(out, "  facet normal %.7g %.7g %.7g\n    outer loop\n", n[0] + 0.0, n[1] + 0.0, n[2] + 0.0);
-            for (int j = 0; j < 3; j++) {
-                const double* p = pos + 3 * m->tri[t][j];
-                am_text_put(out, "      vertex %.7g %.7g %.7g\n", p[0] * MM, p[1] * MM, p[2] * MM);
-            }
-            am_text_put(out, "    endloop\n  endfacet\n");
+    if (mat >= pal->count) return am_fail(err, errsz, AM_ERR_ARG, "STL: no material %d in the palette", mat);
+    const char* name = mat >= 0 ? pal->mat[mat].name : "body";
+    am_text_put(out, "solid %s\n", name);
+    for (long t = 0; t < m->ntri && !out->full; t++) {
+        if (mat >= 0 && m->tmat[t] != mat) continue;
+        const double *a = pos + 3 * m->tri[t][0], *b = pos + 3 * m->tri[t][1], *c = pos + 3 * m->tri[t][2];
+        double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int j = 0; j < 3; j++) n[j] = len > 0 ? n[j] / len : 0;
+        am_text_put(out, "  facet normal %.7g %.7g %.7g\n    outer loop\n", n[0] + 0.0, n[1] + 0.0, n[2] + 0.0);
+        for (int j = 0; j < 3; j++) {
+            const double* p = pos + 3 * m->tri[t][j];
+            am_text_put(out, "      vertex %.7g %.7g %.7g\n", p[0] * MM, p[1] * MM, p[2] * MM);
         }
-        am_text_put(out, "endsolid %s\n", name);
+        am_text_put(out, "    endloop\n  endfacet\n");
     }
+    am_text_put(out, "endsolid %s\n", name);
     return done(out, "STL", err, errsz);
 }
 
@@ -71,7 +63,7 @@ am_status am_mesh_write_amf(const am_mesh* m, const double* pos, const am_palett
     }
     am_text_put(out, "  <metadata type=\"producer\">amorph</metadata>\n");
     for (int k = 0; k < pal->count; k++) {
-        if (!holds(m, k)) continue;
+        if (!am_mesh_holds(m, k)) continue;
         const uint8_t* c = pal->mat[k].color;
         am_text_put(out, "  <material id=\"%d\">\n    <metadata type=\"name\">", k + 1);
         put_xml(out, pal->mat[k].name);
@@ -84,7 +76,7 @@ am_status am_mesh_write_amf(const am_mesh* m, const double* pos, const am_palett
                     pos[3 * v] * MM, pos[3 * v + 1] * MM, pos[3 * v + 2] * MM);
     am_text_put(out, "      </vertices>\n");
     for (int k = 0; k < pal->count && !out->full; k++) {
-        if (!holds(m, k)) continue;
+        if (!am_mesh_holds(m, k)) continue;
         am_text_put(out, "      <volume materialid=\"%d\">\n        <metadata type=\"name\">", k + 1);
         put_xml(out, pal->mat[k].name);
         am_text_put(out, "</metadata>\n");

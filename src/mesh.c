@@ -14,6 +14,10 @@
  * every edge of the surface belongs to exactly two faces. The two sides of a pinched edge would
  * still join the same two vertices, so each side gets a midpoint vertex of its own.
  *
+ * The split vertices and the midpoints of one pinch sit at one point; am_mesh_open_pinches moves
+ * each a little towards the voxels of its own side (vpull), which makes the surface manifold by
+ * position as well: what an STL file, which names vertices by their coordinates, needs.
+ *
  * Positions: a corner vertex follows the voxels around its corner that are face-connected (inside
  * the 2 x 2 x 2 block of cells around the corner) to the voxel of one of its faces, whatever their
  * material, so that the surfaces of two materials meet exactly. Each face is drawn as four
@@ -98,6 +102,45 @@ static int block_filled(const am_mesh* m, int x, int y, int z)
     return filled;
 }
 
+/* the corner vertices where a surface pinches: a lattice corner with two vertices or more of one
+ * inside set (one per fan of faces around it). Each such vertex gets, as vpull, the cells of its
+ * fan's faces: their voxels lie on its own side of the pinch. Uses mid[] (free until the midpoints)
+ * as the list of the vertices at each corner. */
+static void split_corners(am_mesh* m, const am_lattice* lat)
+{
+    long ns = 4 * m->nface, nc = (long)(m->nx + 1) * (m->ny + 1) * (m->nz + 1);
+    /* each vertex's fan: the cells of the faces that share it */
+    for (long s = 0; s < ns; s++) {
+        long f = s / 4;
+        int p = m->vcorner[m->slot[s]];
+        int px = p % (m->nx + 1), py = (p / (m->nx + 1)) % (m->ny + 1), pz = p / ((m->nx + 1) * (m->ny + 1));
+        int c = m->face_cell[f], cx = c % m->nx, cy = (c / m->nx) % m->ny, cz = c / (m->nx * m->ny);
+        m->vpull[m->slot[s]] |= (uint8_t)(1 << ((cx == px) | (cy == py) << 1 | (cz == pz) << 2));
+    }
+    /* the vertices of each corner, listed */
+    for (long p = 0; p < nc; p++) m->corner_head[p] = -1;
+    for (long v = m->ncorner - 1; v >= 0; v--) m->mid[v] = m->corner_head[m->vcorner[v]], m->corner_head[m->vcorner[v]] = (int32_t)v;
+    /* a vertex alone of its set at its corner does not move; the set of a vertex is the material
+     * of its fan's cells (AM_MESH_BODY: one set) */
+    for (long p = 0; p < nc; p++) {
+        int32_t v[24]; /* a fan has 3 faces or more, and 8 cells have 24 faces at a corner */
+        int set[24], n = 0;
+        int px = (int)(p % (m->nx + 1)), py = (int)((p / (m->nx + 1)) % (m->ny + 1)), pz = (int)(p / ((m->nx + 1) * (m->ny + 1)));
+        for (int32_t w = m->corner_head[p]; w >= 0 && n < 24; w = m->mid[w]) {
+            int b = 0;
+            while (!(m->vpull[w] >> b & 1)) b++;
+            v[n] = w;
+            set[n++] = m->mode == AM_MESH_BODY ? 1 : lat->cell[cell_at(m, px - 1 + (b & 1), py - 1 + (b >> 1 & 1), pz - 1 + (b >> 2 & 1))];
+        }
+        for (int i = 0; i < n; i++) {
+            int alone = 1;
+            for (int j = 0; j < n; j++) alone &= j == i || set[j] != set[i];
+            if (alone) m->vpull[v[i]] = 0;
+        }
+    }
+    for (long v = 0; v < m->ncorner; v++) m->mid[v] = -1;
+}
+
 /* the cells of the block face-connected to cell bit b0 among the filled ones */
 static uint8_t block_component(int filled, int b0)
 {
@@ -170,6 +213,7 @@ static am_status edge_pass(am_mesh* m, const am_lattice* lat, int pass, char* er
                         }
                         /* the pairs: the two faces, or around a pinch the two of each inside cell */
                         long pa[2] = {-1, -1}, pb[2] = {-1, -1};
+                        int side[2] = {0, 0}; /* around a pinch: each pair's cell, its bit in c0's block */
                         if (nb == 2) {
                             int j0 = -1, j1 = -1;
                             for (int j = 0; j < 4; j++)
@@ -181,7 +225,10 @@ static am_status edge_pass(am_mesh* m, const am_lattice* lat, int pass, char* er
                         } else if (nb == 4) {
                             int w = 0;
                             for (int i = 0; i < 4; i++)
-                                if (in[i]) pa[w] = face[(i + 3) & 3], pb[w] = face[i], w++;
+                                if (in[i]) {
+                                    side[w] = (du[i] + 1) << u | (dv[i] + 1) << v | 1 << e;
+                                    pa[w] = face[(i + 3) & 3], pb[w] = face[i], w++;
+                                }
                         } else
                             continue;
                         for (int w = 0; w < 2 && pa[w] >= 0; w++) {
@@ -195,6 +242,7 @@ static am_status edge_pass(am_mesh* m, const am_lattice* lat, int pass, char* er
                                 long id = m->nvert++;
                                 m->vcorner[id] = -1;
                                 m->vmask[id] = 0;
+                                m->vpull[id] = (uint8_t)(1 << side[w]);
                                 m->vfrom[id][0] = va, m->vfrom[id][1] = vb, m->vfrom[id][2] = va, m->vfrom[id][3] = vb;
                                 m->mid[edge_at(m, pa[w], c0, c1)] = (int32_t)id;
                                 m->mid[edge_at(m, pb[w], c0, c1)] = (int32_t)id;
@@ -261,11 +309,13 @@ am_status am_mesh_build(am_mesh* m, const am_lattice* lat, int mode, char* err, 
         long id = m->nvert++;
         m->vcorner[id] = p;
         m->vmask[id] = block_component(block_filled(m, px, py, pz), b);
+        m->vpull[id] = 0;
         m->slot[r] = (int32_t)(-2 - id);
     }
     for (long s = 0; s < ns; s++) m->mid[s] = -2 - m->slot[m->mid[s]];
     for (long s = 0; s < ns; s++) m->slot[s] = m->mid[s], m->mid[s] = -1;
     m->ncorner = m->nvert;
+    split_corners(m, lat);
     st = edge_pass(m, lat, 1, err, errsz);
     if (st != AM_OK) return st;
 
@@ -275,6 +325,7 @@ am_status am_mesh_build(am_mesh* m, const am_lattice* lat, int mode, char* err, 
         long ctr = m->nvert++;
         m->vcorner[ctr] = -1;
         m->vmask[ctr] = 0;
+        m->vpull[ctr] = 0;
         for (int k = 0; k < 4; k++) m->vfrom[ctr][k] = m->slot[4 * f + k];
         uint8_t mat = (uint8_t)(lat->cell[m->face_cell[f]] - 1);
         for (int k = 0; k < 4; k++) {
@@ -365,6 +416,39 @@ void am_mesh_place(const am_mesh* m, const float* pose, double* pos)
         for (int k = 0; k < 3; k++) pos[3 * v + k] = n ? sum[k] / n : 0;
     }
     place_means(m, pos);
+}
+
+void am_mesh_open_pinches(const am_mesh* m, const float* pose, double* pos)
+{
+    double L = m->voxel_size;
+    for (long v = 0; v < m->nvert; v++) {
+        if (v >= m->ncorner)
+            for (int k = 0; k < 3; k++) {
+                const int32_t* f = m->vfrom[v];
+                pos[3 * v + k] = ((pos[3 * f[0] + k] + pos[3 * f[1] + k]) + (pos[3 * f[2] + k] + pos[3 * f[3] + k])) * 0.25;
+            }
+        if (!m->vpull[v]) continue;
+        /* the centre of the voxels it pulls to, around its corner (a midpoint's: its first end's) */
+        int p = m->vcorner[v < m->ncorner ? v : m->vfrom[v][0]];
+        int px = p % (m->nx + 1), py = (p / (m->nx + 1)) % (m->ny + 1), pz = p / ((m->nx + 1) * (m->ny + 1));
+        double c[3] = {0, 0, 0};
+        int n = 0;
+        for (int b = 0; b < 8; b++) {
+            if (!(m->vpull[v] >> b & 1)) continue;
+            int q[3] = {px - 1 + (b & 1), py - 1 + (b >> 1 & 1), pz - 1 + (b >> 2 & 1)};
+            int j = m->cell_voxel[cell_at(m, q[0], q[1], q[2])];
+            for (int k = 0; k < 3; k++) c[k] += pose ? (double)pose[7 * j + k] : (q[k] + 0.5) * L;
+            n++;
+        }
+        for (int k = 0; k < 3; k++) pos[3 * v + k] += AM_MESH_PINCH_PULL * (c[k] / n - pos[3 * v + k]);
+    }
+}
+
+int am_mesh_holds(const am_mesh* m, int mat)
+{
+    for (long t = 0; t < m->ntri; t++)
+        if (m->tmat[t] == mat) return 1;
+    return 0;
 }
 
 double am_mesh_volume(const am_mesh* m, const double* pos, int mat)

@@ -1,5 +1,6 @@
 /* amorph export: a robot in another format (VXA for VoxCAD / Voxelyze, the lattice text format,
- * and printable surfaces: STL and AMF, at rest or at a simulated moment). */
+ * and printable surfaces: STL and AMF, at rest or at a simulated moment; a moment whose surface
+ * crosses itself gets a warning). */
 #include "picture.h"
 
 #include <math.h>
@@ -14,10 +15,15 @@ static char g_out[AM_VXA_TEXT_MAX]; /* the VXA text, during one call */
 /* the printable surfaces (desktop profile: the mesh is many times a board's RAM) */
 static float g_pose[2 * 7 * AM_MAX_VOXELS];
 static long g_pose_step[2];
+static am_mesh_grid g_grid; /* the self-intersection check's scratch */
+#define EXPORT_PATH_MAX 4096
+static char g_stl_path[AM_MAX_MATERIALS][EXPORT_PATH_MAX]; /* the per-material STL files */
+#define EXPORT_MAX_VISITS 200000000L /* the self-intersection check's work: some seconds at most */
 
-/* the pose at step `step` of the robot's evaluation into g_pose (its first frame when step is 0);
- * 0 or an exit status after a message */
-static int simulate_to(tool_ctx* c, const am_lattice* lat, const tool_robot* rob, const char* name, long step, double time_s)
+/* the pose at step `step` of the robot's evaluation into g_pose (its first frame when step is 0),
+ * the step in *at; 0 or an exit status after a message */
+static int simulate_to(tool_ctx* c, const am_lattice* lat, const tool_robot* rob, const char* name, long step, double time_s,
+                       long* at)
 {
     char err[AM_ERR_MAX];
     am_model* m = &c->work[0].model;
@@ -52,17 +58,57 @@ static int simulate_to(tool_ctx* c, const am_lattice* lat, const tool_robot* rob
     if (step > 0) memmove(g_pose, g_pose + 7L * m->nv, sizeof(float) * 7 * (size_t)m->nv);
     for (long k = 0; k < 7L * m->nv; k++)
         if (!(fabsf(g_pose[k]) < 1e6f)) return tool_usage_error("export: %s has diverged by step %ld", name, step);
+    *at = step;
     return 0;
 }
 
-/* one printable file: the mesh in pos written as STL (amf 0) or AMF (amf 1); 0 or 1 after a message */
-static int write_printable(const char* path, const am_palette* pal, const char* title, int amf)
+/* the mesh of lat in mode (AM_MESH_BODY or AM_MESH_MATERIALS) into tool_mesh(), placed at rest
+ * (pose NULL) or in pose, its pinches opened; 0 or an exit status after a message */
+static int place_mesh(const am_lattice* lat, int mode, const float* pose, const char* name)
+{
+    char err[AM_ERR_MAX];
+    if (am_mesh_build(tool_mesh(), lat, mode, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", name, err);
+    if (pose) am_mesh_place(tool_mesh(), pose, tool_mesh_pos());
+    else am_mesh_rest(tool_mesh(), tool_mesh_pos());
+    am_mesh_open_pinches(tool_mesh(), pose, tool_mesh_pos());
+    return 0;
+}
+
+/* the body's surface (tool_mesh(), AM_MESH_BODY, placed) at step `step`: a warning line on stderr
+ * when it crosses itself, or when the check could not look at every pair */
+static void warn_crossings(const char* name, long step)
+{
+    am_mesh_crossing x;
+    am_mesh_crossings(tool_mesh(), tool_mesh_pos(), -1, &g_grid, EXPORT_MAX_VISITS, &x);
+    if (x.pairs > 0)
+        fprintf(stderr, "%s: warning: at step %ld the surface crosses itself (%ld pair%s of triangles%s, the first near "
+                        "x %.1f y %.1f z %.1f mm): a printer fuses the parts that overlap\n",
+                name, step, x.pairs, x.pairs == 1 ? "" : "s", x.complete ? "" : " at least", x.at[0] * 1000, x.at[1] * 1000,
+                x.at[2] * 1000);
+    else if (!x.complete)
+        fprintf(stderr, "%s: warning: at step %ld the self-intersection check stopped after %ld pairs of triangles: the "
+                        "surface may cross itself\n", name, step, x.visits);
+}
+
+/* the file of material `mat`'s surface: FILE.stl (or FILE) becomes FILE-NAME.stl; 0 or 2 after a message */
+static int material_path(char* buf, const char* stl, const char* mat)
+{
+    size_t n = strlen(stl);
+    if (n >= 4 && stl[n - 4] == '.' && (stl[n - 3] | 32) == 's' && (stl[n - 2] | 32) == 't' && (stl[n - 1] | 32) == 'l') n -= 4;
+    if (n + strlen(mat) + 6 > EXPORT_PATH_MAX) return tool_usage_error("export: --stl %s: the file name is too long", stl);
+    snprintf(buf, EXPORT_PATH_MAX, "%.*s-%s.stl", (int)n, stl, mat);
+    return 0;
+}
+
+/* one printable file: the mesh in pos written as STL of material mat (-1: every triangle; amf 0)
+ * or AMF (amf 1); 0 or 1 after a message */
+static int write_printable(const char* path, const am_palette* pal, const char* title, int amf, int mat)
 {
     char err[AM_ERR_MAX];
     tool_out o;
     if (tool_out_open(&o, strcmp(path, "-") ? path : NULL)) return 1;
     am_status st = amf ? am_mesh_write_amf(tool_mesh(), tool_mesh_pos(), pal, title, &o.text, err, sizeof err)
-                       : am_mesh_write_stl(tool_mesh(), tool_mesh_pos(), pal, &o.text, err, sizeof err);
+                       : am_mesh_write_stl(tool_mesh(), tool_mesh_pos(), pal, mat, &o.text, err, sizeof err);
     if (st != AM_OK) {
         fprintf(stderr, "amorph: %s\n", o.err[0] ? o.err : err);
         tool_out_close(&o, 0);
@@ -73,18 +119,25 @@ static int write_printable(const char* path, const am_palette* pal, const char* 
 #endif
 
 static const char export_help[] =
-    "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice | --stl FILE.stl |\n"
-    "                     --amf FILE.amf  [--step N | --time S]\n"
+    "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice |\n"
+    "                     --stl FILE.stl [--merge] | --amf FILE.amf  [--step N | --time S]\n"
     "Writes a robot (a lattice, genome or VXA file, a run folder, or a built-in scene) in another format:\n"
     "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
     "  --lattice FILE   the amorph lattice text format (docs/formats.md); '-' for stdout\n"
-    "  --stl FILE       the surface for printing: ASCII STL in mm, one closed solid per material\n"
-    "                   (docs/formats.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
-    "  --amf FILE       the same as AMF (ISO/ASTM 52915): one volume per material, with its colour;\n"
+    "  --stl FILE       the surface for printing, ASCII STL in mm: one file per material the robot uses,\n"
+    "                   FILE-NAME.stl (NAME the material's; robot.stl gives robot-passive.stl,\n"
+    "                   robot-active.stl, ...), each one closed solid (docs/formats.md); '-' for stdout\n"
+    "                   with --merge or when the robot has one material" TOOL_DESKTOP_ONLY "\n"
+    "  --merge          --stl writes FILE itself: one closed solid, the body's outer surface (the walls\n"
+    "                   between materials left out)\n"
+    "  --amf FILE       the surfaces as AMF (ISO/ASTM 52915): one volume per material, with its colour;\n"
     "                   '-' for stdout" TOOL_DESKTOP_ONLY "\n"
     "  --step N         STL and AMF: the shape at step N of the robot's evaluation (as amorph sim runs\n"
-    "                   it) instead of the rest shape\n"
+    "                   it) instead of the rest shape; a warning on stderr when that surface crosses\n"
+    "                   itself (a printer would fuse the parts that overlap)\n"
     "  --time S         the same at simulated time S seconds (the nearest step)\n"
+    "Where voxels of one surface touch only along an edge or at a corner, its vertex there is split and\n"
+    "each part moved 2.5% of the way to its own voxels' centre, so every file is manifold.\n"
     "The environment in a VXA file is the robot's own (a VXA file's or a run folder's), else the\n"
     "seed's, with the settings below on top. Files are replaced atomically.\n"
     TOOL_ROBOT_HELP;
@@ -92,6 +145,7 @@ static const char export_help[] =
 int cmd_export(tool_ctx* c, int argc, char** argv)
 {
     const char *vxa = 0, *lattice = 0, *stl = 0, *amf = 0;
+    int merge = 0;
     long step = -1;
     double time_s = -1;
     tool_robot_args ra;
@@ -111,6 +165,8 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--stl") || !strcmp(a, "--amf")) {
             if (!v || !v[0]) return tool_usage_error("export: %s needs a file name", a);
             *(a[2] == 's' ? &stl : &amf) = v, i++;
+        } else if (!strcmp(a, "--merge")) {
+            merge = 1;
         } else if (!strcmp(a, "--step")) {
             if (!tool_parse_long(v, 0, 2000000000L, &step)) return tool_usage_error("export: --step needs a whole number 0..2000000000");
             i++;
@@ -137,6 +193,7 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
     }
     if (step >= 0 && time_s >= 0) return tool_usage_error("export: --step and --time both pick the moment: give one");
     if ((step >= 0 || time_s >= 0) && !stl && !amf) return tool_usage_error("export: --step and --time are for --stl and --amf");
+    if (merge && !stl) return tool_usage_error("export: --merge is for --stl");
     if (vxa && !TOOL_VXA) return tool_not_in_build("export --vxa", "VXA files");
     if ((stl || amf) && !TOOL_PICTURES) return tool_not_in_build(stl ? "export --stl" : "export --amf", "printable files");
 
@@ -179,16 +236,47 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
 #endif
 #if TOOL_PICTURES
     if (stl || amf) {
-        st = am_mesh_build(tool_mesh(), lat, AM_MESH_MATERIALS, err, sizeof err);
-        if (st != AM_OK) return tool_usage_error("%s: %s", ra.name, err);
-        if (step < 0 && time_s < 0) am_mesh_rest(tool_mesh(), tool_mesh_pos());
-        else {
-            int rc = simulate_to(c, lat, &rob, ra.name, step, time_s);
-            if (rc) return rc;
-            am_mesh_place(tool_mesh(), g_pose, tool_mesh_pos());
+        /* the files: FILE itself (--merge), or one per material the robot uses */
+        int nmat = 0, one = -1;
+        for (int k = 0; k < lat->palette.count && k < AM_MAX_MATERIALS; k++) {
+            int used = 0;
+            for (long cc = 0; cc < (long)lat->nx * lat->ny * lat->nz && !used; cc++) used = lat->cell[cc] == k + 1;
+            if (used) nmat++, one = k;
+            g_stl_path[k][0] = 0;
+            if (used && stl && !merge && strcmp(stl, "-")) {
+                if (material_path(g_stl_path[k], stl, lat->palette.mat[k].name)) return 2;
+                const char* others[3] = {vxa, lattice, amf};
+                for (int x = 0; x < 3; x++)
+                    if (others[x] && !strcmp(others[x], g_stl_path[k]))
+                        return tool_usage_error("export: --stl %s writes %s, which another output names too", stl, g_stl_path[k]);
+            }
         }
-        if (stl && write_printable(stl, &lat->palette, ra.name, 0)) return 1;
-        if (amf && write_printable(amf, &lat->palette, ra.name, 1)) return 1;
+        if (stl && !merge && !strcmp(stl, "-") && nmat > 1)
+            return tool_usage_error("export: --stl - writes one solid, and %s has %d materials: add --merge, or name a file "
+                                    "(one per material)", ra.name, nmat);
+        if (stl && !merge && !strcmp(stl, "-") && one >= 0) strcpy(g_stl_path[one], "-");
+        const float* pose = NULL;
+        long at = 0;
+        if (step >= 0 || time_s >= 0) {
+            int rc = simulate_to(c, lat, &rob, ra.name, step, time_s, &at);
+            if (rc) return rc;
+            pose = g_pose;
+        }
+        /* the body's surface: checked when deformed, written with --merge */
+        if (pose || merge) {
+            int rc = place_mesh(lat, AM_MESH_BODY, pose, ra.name);
+            if (rc) return rc;
+            if (pose) warn_crossings(ra.name, at);
+            if (merge && write_printable(stl, &lat->palette, ra.name, 0, -1)) return 1;
+        }
+        /* the materials' surfaces */
+        if (amf || !merge) {
+            int rc = place_mesh(lat, AM_MESH_MATERIALS, pose, ra.name);
+            if (rc) return rc;
+            for (int k = 0; k < lat->palette.count && k < AM_MAX_MATERIALS && stl && !merge; k++)
+                if (g_stl_path[k][0] && write_printable(g_stl_path[k], &lat->palette, ra.name, 0, k)) return 1;
+            if (amf && write_printable(amf, &lat->palette, ra.name, 1, -1)) return 1;
+        }
     }
 #endif
     return 0;
