@@ -141,6 +141,9 @@ else ko "exported layers missing"; fi
 "$AMORPH" export tests/data/evosoro_phase.vxa --lattice "$D/ph.lattice" 2>"$D/ph.err"
 if grep -q "^tests/data/evosoro_phase.vxa: warning: the lattice format holds no per-voxel phases" "$D/ph.err"; then ok
 else ko "no warning for a lattice without phases: $(cat "$D/ph.err")"; fi
+"$AMORPH" export tests/data/evosoro_stiffness.vxa --lattice "$D/st.lattice" 2>"$D/st.err"
+if grep -q "^tests/data/evosoro_stiffness.vxa: warning: the lattice format holds no .*per-voxel stiffness" "$D/st.err"; then ok
+else ko "no warning for a lattice without stiffness: $(cat "$D/st.err")"; fi
 "$AMORPH" sim "$D/ph.lattice" --cycles 1 --relax-max 200 >"$D/ph.out" 2>/dev/null
 if [ "$(hash_of "$D/ph.out")" != "$(hash_of "$D/evosoro_phase.a")" ]; then ok; else ko "phases made no difference"; fi
 # the cantilever moves down under its load (0.5 mm at rest, tests/test_vxa.c checks the figure), and

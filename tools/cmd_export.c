@@ -205,13 +205,19 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
     if (lattice) {
 #if TOOL_VXA
         /* the lattice format has no place for per-cell layers: said, then the lattice alone */
-        if (c->layers.has_phase || c->layers.has_bc)
+        if (c->layers.has_phase || c->layers.has_stiffness || c->layers.has_bc) {
+            char what[96] = "";
+            const char* item[3] = {c->layers.has_phase ? "per-voxel phases" : NULL,
+                                   c->layers.has_stiffness ? "per-voxel stiffness" : NULL,
+                                   c->layers.has_bc ? "boundary conditions" : NULL};
+            for (int k = 0; k < 3; k++)
+                if (item[k]) {
+                    if (what[0]) strcat(what, " or ");
+                    strcat(what, item[k]);
+                }
             fprintf(stderr, "%s: warning: the lattice format holds no %s: --lattice %s has the voxels and materials only "
-                            "(--vxa keeps them)\n", ra.name,
-                    c->layers.has_phase && c->layers.has_bc ? "per-voxel phases or boundary conditions"
-                    : c->layers.has_phase                   ? "per-voxel phases"
-                                                            : "boundary conditions",
-                    lattice);
+                            "(--vxa keeps them)\n", ra.name, what, lattice);
+        }
 #endif
         tool_out o;
         if (tool_out_open(&o, strcmp(lattice, "-") ? lattice : NULL)) return 1;
