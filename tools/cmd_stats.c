@@ -613,7 +613,7 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
 }
 
 #else
-/* the board profile: statistics belong to the desktop (their tables take some 300 KB) */
+/* the board profile: statistics belong to the desktop (their tables take 1.3 MB) */
 int cmd_stats(tool_ctx* c, int argc, char** argv)
 {
     (void)c, (void)argc, (void)argv;
