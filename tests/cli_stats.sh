@@ -120,6 +120,11 @@ if cmp -s "$TMPD/want" "$TMPD/out"; then ok; else ko "sustained tables: $(diff "
 expect_ok "$AMORPH" stats --score sustained --json "$R/X-1" "$R/X-2" "$R/Y-1" "$R/Y-2"
 check "sustained JSON: X's gaits and mean" sh -c "grep -q '\"group\": \"X\", \"runs\": .*, \"still\": 0, \"flop\": 1, \"scoot\": 0, \"bounce\": 1}' '$TMPD/out' && grep -q '\"group\": \"X\", \"n\": 2, \"mean\": 0.00125,' '$TMPD/out'"
 
+# a p below 0.001: two digits and a power of ten, the same from every C library
+for k in 1 2 3; do log "lo-$k" "1000:0.01$k"; log "hi-$k" "1000:0.02$k"; done
+expect_ok "$AMORPH" stats "$R/lo-1" "$R/lo-2" "$R/lo-3" "$R/hi-1" "$R/hi-2" "$R/hi-3"
+check "a small p: '$(grep '^| 1000 | hi - lo |' "$TMPD/out")'" grep -qxF "| 1000 | hi - lo | 10.00 | 12.25 | 4.0 | 2.6e-04 | 9 | 0.100 | 10.00 | 7.98 | 2 |" "$TMPD/out"
+
 # nothing reached: a note, exit 0, no table
 log E-1 500:0.01
 log E-2 900:0.01

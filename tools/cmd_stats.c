@@ -336,11 +336,18 @@ static void put_num(am_text* t, double v, int decimals)
     else put(t, " %.*f |", decimals, v);
 }
 
+/* a p value: 3 decimals, or below 0.001 two digits and a power of ten ("2.3e-05"), written out
+ * here because C libraries differ in the digits of an exponent */
 static void put_p(am_text* t, double p, const char* note)
 {
     if (isnan(p)) put(t, " - |");
     else if (p >= 0.001 || p == 0) put(t, " %.3f%s |", p, note);
-    else put(t, " %.1e%s |", p, note);
+    else {
+        int e = (int)floor(log10(p));
+        double m = floor(p / pow(10, e) * 10 + 0.5) / 10;
+        if (m >= 10) m /= 10, e++;
+        put(t, " %.1fe-%02d%s |", m, -e, note);
+    }
 }
 
 /* the first cell of a row: the count, or the score's name */
