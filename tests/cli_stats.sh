@@ -157,7 +157,7 @@ expect_fail 2 "stats: --group needs NAME=DIR" "$AMORPH" stats --group "$R/A-1"
 expect_fail 2 "stats: --group x: an empty folder name" "$AMORPH" stats --group "x=$R/A-1,,$R/A-2"
 expect_fail 2 "stats: unknown option '--bands'" "$AMORPH" stats --bands "$R/A-1"
 expect_fail 2 "stats: name run folders" "$AMORPH" stats
-expect_fail 2 "A-1: the same run named twice" "$AMORPH" stats "$R/A-1" "$R/A-2" "$R/A-1"
+expect_fail 2 "A-1/: the same run named twice" "$AMORPH" stats "$R/A-1" "$R/A-2" "$R/A-1/"
 expect_fail 2 "a group name of 1 to 63 printable characters" "$AMORPH" stats --group "a|b=$R/A-1"
 expect_ok "$AMORPH" stats --help
 check "--help names the tests" grep -q "Welch's t" "$TMPD/out"

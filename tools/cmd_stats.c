@@ -77,6 +77,14 @@ static int plain_name(const char* s, long len)
     return 1;
 }
 
+/* the length of a path without its trailing '/'s */
+static size_t path_len(const char* p)
+{
+    size_t n = strlen(p);
+    while (n > 1 && p[n - 1] == '/') n--;
+    return n;
+}
+
 /* adds run folder dir to group `name` (len bytes), or, name NULL, to the group of its folder name
  * without the trailing -K (dct-2: dct); 0 or 2 after a message */
 static int add_run(const char* dir, const char* name, long len)
@@ -84,7 +92,7 @@ static int add_run(const char* dir, const char* name, long len)
     char q[AM_QUOTE_BUF];
     if (S.nruns >= STATS_MAX_RUNS) return tool_usage_error("stats: more than %d runs", STATS_MAX_RUNS);
     for (int r = 0; r < S.nruns; r++)
-        if (!strcmp(S.runs[r].dir, dir)) return tool_usage_error("stats: %s: the same run named twice", am_quote(q, sizeof q, dir, -1));
+        if (path_len(S.runs[r].dir) == path_len(dir) && !strncmp(S.runs[r].dir, dir, path_len(dir))) return tool_usage_error("stats: %s: the same run named twice", am_quote(q, sizeof q, dir, -1));
     if (!name) {
         long end = (long)strlen(dir);
         while (end > 1 && dir[end - 1] == '/') end--;
