@@ -92,7 +92,8 @@ static int add_run(const char* dir, const char* name, long len)
     char q[AM_QUOTE_BUF];
     if (S.nruns >= STATS_MAX_RUNS) return tool_usage_error("stats: more than %d runs", STATS_MAX_RUNS);
     for (int r = 0; r < S.nruns; r++)
-        if (path_len(S.runs[r].dir) == path_len(dir) && !strncmp(S.runs[r].dir, dir, path_len(dir))) return tool_usage_error("stats: %s: the same run named twice", am_quote(q, sizeof q, dir, -1));
+        if (path_len(S.runs[r].dir) == path_len(dir) && !strncmp(S.runs[r].dir, dir, path_len(dir)))
+            return tool_usage_error("stats: %s: the same run named twice", am_quote(q, sizeof q, dir, -1));
     if (!name) {
         long end = (long)strlen(dir);
         while (end > 1 && dir[end - 1] == '/') end--;
