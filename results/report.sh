@@ -10,7 +10,10 @@
 # Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
 # runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them, and
 # each run's best so far every 1,000; the mean size of the bodies each representation evaluated,
-# every 500 evaluations; the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
+# every 500 evaluations; the statistics of amorph stats (the representations compared by Welch's
+# t-test and the Mann-Whitney test at every 1,000 evaluations all the runs of each have reached,
+# and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits);
+# the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
 # against the range of the GMX runs (the seed's settings) at that count; and the compute each run
 # took (the sum of log.csv's wall_s). With --pictures it also draws DIR/representations/fitness.svg
 # (`amorph plot`: the seed's Figure 6 from the runs that have reached FIG6_MIN_EVALS evaluations,
@@ -56,8 +59,7 @@ done
 
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
 # of each representation that reached it, (n) the number of those runs; then each run's best so
-# far at every 1,000 evaluations it reached, the runs behind the means; then the ranking at every
-# 1,000 all the runs reached
+# far at every 1,000 evaluations it reached, the runs behind the means
 set -- "$DIR"/representations/*-[0-9]*/log.csv
 [ -f "$1" ] && {
 echo
@@ -71,13 +73,10 @@ awk -F, '
       for (m = 500 * (int(prev / 500) + 1); m <= e; m += 500) at[run, m] = m == e ? best : before
       prev = e; if (e > top) top = e }
     # stats(REP, M): over the runs of representation REP (in file order) that reached M evaluations,
-    # K their number, MEAN their mean best so far and SE its standard error; ALL is 0 when one of
-    # REP'"'"'s runs did not reach M
+    # K their number, MEAN their mean best so far and SE its standard error
     function stats(rep, m,    i, v, s, s2, var) {
-      K = 0; s = 0; s2 = 0; ALL = 1
-      for (i = 1; i <= nr; i++) if (runs[names[i]] == rep) {
-        if ((names[i], m) in at) { v = at[names[i], m]; K++; s += v; s2 += v * v } else ALL = 0
-      }
+      K = 0; s = 0; s2 = 0
+      for (i = 1; i <= nr; i++) if (runs[names[i]] == rep && ((names[i], m) in at)) { v = at[names[i], m]; K++; s += v; s2 += v * v }
       MEAN = K ? s / K : 0; var = K > 1 ? (s2 - K * MEAN * MEAN) / (K - 1) : 0; SE = sqrt(var > 0 ? var / K : 0)
     }
     END {
@@ -99,29 +98,29 @@ awk -F, '
         for (m = 1000; m <= top; m += 1000) line = line (((names[r], m) in at) ? sprintf(" %.4f |", at[names[r], m]) : " |")
         print line
       }
-      # the ranking: at every 1,000 that all the runs have reached, with two runs or more of each
-      # representation, the representations by mean (equal when the means agree to 0.1 mm, the
-      # table'"'"'s precision), and for each pair whether their bands of one standard error overlap
-      split("GMX CPPN DCT", up, " ")
-      rows = ""
-      for (m = 1000; m <= top; m += 1000) {
-        ok = 1
-        for (r = 1; r <= 3 && ok; r++) { stats(tolower(up[r]), m); ok = ALL && K >= 2; mu[r] = MEAN; se[r] = SE }
-        if (!ok) continue
-        for (r = 1; r <= 3; r++) rk[r] = r
-        for (i = 1; i <= 3; i++) for (j = i + 1; j <= 3; j++) if (mu[rk[j]] > mu[rk[i]]) { t = rk[i]; rk[i] = rk[j]; rk[j] = t }
-        rank = up[rk[1]]
-        for (i = 2; i <= 3; i++) rank = rank (sprintf("%.4f", mu[rk[i - 1]]) == sprintf("%.4f", mu[rk[i]]) ? " = " : " > ") up[rk[i]]
-        line = "| " m " | " rank " |"
-        for (i = 1; i <= 3; i++) for (j = i + 1; j <= 3; j++) line = line (mu[i] - mu[j] > se[i] + se[j] || mu[j] - mu[i] > se[i] + se[j] ? " apart |" : " overlap |")
-        rows = rows line "\n"
-      }
-      if (rows != "") {
-        print ""; print "| evaluations | ranking by mean | GMX and CPPN bands | GMX and DCT bands | CPPN and DCT bands |"
-        print "|---:|---|---|---|---|"; printf "%s", rows
-      }
     }' "$@"
 }
+
+# statistics (amorph stats; docs/results.md, Statistics): at every 1,000 evaluations that all the
+# runs of a representation have reached, each representation's best fitness so far and each pair
+# compared by Welch's t-test and the Mann-Whitney test, with Cohen's d, Hedges' g and the runs a
+# group needs for 80% power, then the ranking with the differences each test finds at 0.05; then,
+# when every run has its gait30.json, the same on the sustained score of the best robots (travel
+# per cycle over cycles 11-30) with each representation's gaits
+stats_tables() {
+    err=$(mktemp)
+    if out=$("$AMORPH" stats "$@" 2>"$err"); then rm -f "$err"
+    else cat "$err" >&2; rm -f "$err"; exit 1; fi
+    [ -z "$out" ] || printf '\n%s\n' "$out"
+}
+set --
+for d in "$DIR"/representations/*-[0-9]*; do [ -f "$d/log.csv" ] && set -- "$@" "$d"; done
+if [ $# -gt 0 ]; then
+    stats_tables "$@"
+    all=1
+    for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
+    [ $all = 0 ] || stats_tables --score sustained "$@"
+fi
 
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the

@@ -1,7 +1,8 @@
 # tests/cli_report.sh: results/report.sh, which writes the tables and pictures of docs/results.md,
 # on small runs made here, with their log.csv replaced by rows whose answers are known: the Figure 6
 # table's means and standard errors (over the runs that reached each 500 evaluations), each run's
-# best so far every 1,000, the ranking with its bands apart or overlapping, the mean body size per 500 evaluations from evals.csv.gz, the compute
+# best so far every 1,000, the statistics of amorph stats (the representations' tests at every
+# 1,000, the sustained score of the best robots with their gaits), the mean body size per 500 evaluations from evals.csv.gz, the compute
 # with a paused generation counted at the median, a row per run with its 30-cycle gait, the other
 # experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
@@ -81,11 +82,22 @@ check "gaits.svg names the runs" sh -c "grep -q '>representations/dct-2<' '$R/ga
 cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
 expect_ok sh results/report.sh "$AMORPH" "$R"
 check "a second report gives the same gait30.json" cmp -s "$TMPD/gait-a.json" "$R/representations/dct-1/gait30.json"
+# the sustained score of the best robots: dct's two runs (the mean of each one's cycles 11-30 of
+# gait30.json, in mm) with their gaits; gmx-1 alone: no test
+want=$(for run in dct-1 dct-2; do sed -n 's/.*"cycle_travel": \[\([^]]*\)\].*/\1/p' "$R/representations/$run/gait30.json"; done |
+    awk -F', ' '{ s = 0; for (k = 11; k <= 30; k++) s += $k; m[NR] = s / 20 } END { printf "%.3f", (m[1] + m[2]) / 2 * 1000 }')
+row=$(grep '^| sustained | dct |' "$TMPD/report.md")
+check "sustained row of dct: '$row', want the mean $want mm" sh -c "echo '$row' | grep -qF '| sustained | dct | 2 | $want |'"
+gaits=$(echo "$row" | awk -F'|' '{ print $8 + $9 + $10 + $11 }')
+check "sustained: dct's gaits count its 2 runs: '$row'" [ "$gaits" = 2 ]
+check "sustained: gmx-1 alone is not tested" grep -qE '^\| sustained \| (dct - gmx|gmx - dct) \| [-0-9.]+ \| no test: gmx has 1 run \|' "$TMPD/report.md"
+check "no table of tests on the best fitness while no representation's runs all reached 1,000" sh -c "! grep -q '^| evaluations | pair |' '$TMPD/report.md'"
 expect_fail 2 "no such folder" sh results/report.sh "$AMORPH" "$TMPD/none"
-# the ranking table, on folders of log.csv only: at 1000, GMX 0.020/0.022/0.021 (mean 0.021, se
-# 0.00058), CPPN 0.011/0.013 (0.012, 0.001), DCT 0.010/0.012 (0.011, 0.001): GMX apart from both,
-# CPPN and DCT 0.001 apart within 0.002, overlapping; at 2000, GMX 0.031, CPPN 0.01602 and DCT 0.016
-# (equal to 0.1 mm, CPPN the higher); no row at 3000, which gmx-3 did not reach
+# the statistics, on folders of log.csv only: at 1000, GMX 0.020/0.022/0.021, CPPN 0.011/0.013, DCT
+# 0.010/0.012; at 2000, GMX 0.030/0.031/0.032, CPPN 0.0160/0.01604, DCT 0.015/0.017; at 3000, which
+# gmx-3 did not reach, CPPN and DCT alone. The expected rows were computed apart (python3: p by
+# Simpson's rule on the t density, the Mann-Whitney p over every subset); no sustained table (no
+# gait30.json)
 K=$TMPD/rank
 for r in dct-1 dct-2 cppn-1 cppn-2 gmx-1 gmx-2 gmx-3; do mkdir -p "$K/representations/$r"; done
 printf '%s\n0,1000,0.010,0,0,0,0,1\n1,2000,0.015,0,0,0,0,1\n2,3000,0.015,0,0,0,0,1\n' "$h" >"$K/representations/dct-1/log.csv"
@@ -96,9 +108,23 @@ printf '%s\n0,1000,0.020,0,0,0,0,1\n1,2000,0.030,0,0,0,0,1\n2,3000,0.04,0,0,0,0,
 printf '%s\n0,1000,0.022,0,0,0,0,1\n1,2000,0.031,0,0,0,0,1\n2,3000,0.04,0,0,0,0,1\n' "$h" >"$K/representations/gmx-2/log.csv"
 printf '%s\n0,1000,0.021,0,0,0,0,1\n1,2000,0.032,0,0,0,0,1\n' "$h" >"$K/representations/gmx-3/log.csv"
 expect_ok sh results/report.sh "$AMORPH" "$K"
-ranking=$(awk '/^\| evaluations \| ranking by mean \|/ { t = 1 } t && !NF { exit } t' "$TMPD/out" | tr '\n' '/')
-check "the ranking table: '$ranking'" [ "$ranking" = "| evaluations | ranking by mean | GMX and CPPN bands | GMX and DCT bands | CPPN and DCT bands |/|---:|---|---|---|---|/| 1000 | GMX > CPPN > DCT | apart | apart | overlap |/| 2000 | GMX > CPPN = DCT | apart | apart | overlap |/" ]
-check "no ranking table without two runs of each representation" sh -c "! grep -q 'ranking by mean' '$TMPD/report.md'"
+# table HEADER: the table of the report whose header line starts with HEADER, lines joined by '/'
+table() { awk -v k="$1" 'index($0, k) == 1 { t = 1 } t && !NF { exit } t' "$TMPD/out" | tr '\n' '/'; }
+pairs=$(table "| evaluations | pair |")
+check "the pairs table: '$pairs'" [ "$pairs" = "| evaluations | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80% power |/|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|/\
+| 1000 | gmx - cppn | 9.00 | 7.79 | 1.7 | 0.026 | 6 | 0.200 | 7.79 | 5.64 | 2 |/| 1000 | gmx - dct | 10.00 | 8.66 | 1.7 | 0.022 | 6 | 0.200 | 8.66 | 6.27 | 2 |/\
+| 1000 | cppn - dct | 1.00 | 0.71 | 2.0 | 0.553 | 3 | 0.667 | 0.71 | 0.40 | 33 |/| 2000 | gmx - cppn | 14.98 | 25.93 | 2.0 | 0.001 | 6 | 0.200 | 18.34 | 13.27 | 2 |/\
+| 2000 | gmx - dct | 15.00 | 12.99 | 1.7 | 0.011 | 6 | 0.200 | 12.99 | 9.40 | 2 |/| 2000 | cppn - dct | 0.02 | 0.02 | 1.0 | 0.987 | 2 | 1.000 | 0.02 | 0.01 | 39262 |/\
+| 3000 | cppn - dct | 4.00 | 4.00 | 1.0 | 0.156 | 4 | 0.333 | 4.00 | 2.26 | 3 |/" ]
+ranking=$(table "| evaluations | ranking by mean |")
+check "the ranking table: '$ranking'" [ "$ranking" = "| evaluations | ranking by mean | significant at 0.05, Welch's t | significant at 0.05, Mann-Whitney |/|---:|---|---|---|/\
+| 1000 | gmx > cppn > dct | gmx > cppn, gmx > dct | none |/| 2000 | gmx > cppn > dct | gmx > cppn, gmx > dct | none |/| 3000 | cppn > dct | none | none |/" ]
+check "the groups table at 2000: '$(grep '^| 2000 | cppn |' "$TMPD/out")'" grep -qxF "| 2000 | cppn | 2 | 16.02 | 0.03 | 0.02 |" "$TMPD/out"
+check "no bands table (not a test)" sh -c "! grep -q 'bands' '$TMPD/out'"
+check "no sustained table without gait30.json" sh -c "! grep -q '^| sustained' '$TMPD/out'"
+# a damaged log stops the report with amorph stats' message
+printf '%s\n0,1000,abc,0,0,0,0,1\n' "$h" >"$K/representations/gmx-3/log.csv"
+expect_fail 1 "gmx-3/log.csv:2: best \\(column 3\\): not a number" sh results/report.sh "$AMORPH" "$K"
 
 # the other experiments' table, on folders of config.txt and log.csv only: the seed's settings are
 # gmx-1 (0.014 at 500) and gmx-2 (0.018 at 500; its 0.030 at 750 is past the count): mean 0.016,

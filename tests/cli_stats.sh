@@ -1,0 +1,170 @@
+# tests/cli_stats.sh: amorph stats on run folders made here, whose log.csv and gait30.json hold
+# values with known answers: the groups by folder name and by --group, the best so far at every
+# 1,000 evaluations (rows at or below the count, a log's columns found by name), the tables of
+# groups, pairs and ranking, the sustained score of cycles 11-30 with the gaits, the JSON; then bad
+# input, each refused in one line. The expected rows were computed apart from the program (python3:
+# p by Simpson's rule on the t density, the Mann-Whitney p by listing every subset, the runs needed
+# by bisection on the integrated distribution). Desktop builds (the board build has no stats).
+# Run from the repository root.
+. tests/shlib.sh
+
+if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
+    echo "cli_stats: not a desktop build: skipped"
+    summary cli_stats
+    exit $?
+fi
+R=$TMPD/runs
+h="generation,evaluations,best,mean,median,diverged,empty,wall_s,unsettled"
+# log NAME ROWS...: R/NAME/log.csv with a row per "evaluations:best"
+log() {
+    mkdir -p "$R/$1"
+    d=$R/$1; shift
+    { echo "$h"; g=0; for r in "$@"; do echo "$g,${r%:*},${r#*:},0,0,0,0,1,0"; g=$((g + 1)); done; } >"$d/log.csv"
+}
+# A-1's columns in another order: read by name. At 1000 it holds 0.010 (its row at 990; 1010's
+# 0.030 is past the count); A-3's generation best falls to 0.011 at 1000 under its 0.014 at 500: the
+# best so far counts. C-2 stops at 1500, so C has no 2000; D has one run: no test.
+mkdir -p "$R/A-1"
+printf 'best,generation,evaluations,mean,median,diverged,empty,wall_s,unsettled\n0.005,0,480,0,0,0,0,1,0\n0.010,1,990,0,0,0,0,1,0\n0.030,2,1010,0,0,0,0,1,0\n0.030,3,2000,0,0,0,0,1,0\n' >"$R/A-1/log.csv"
+log A-2 500:0.012 1000:0.012 2000:0.020
+log A-3 500:0.014 1000:0.011 2000:0.025
+log B-1 1000:0.004 2000:0.010
+log B-2 1000:0.006 2000:0.012
+log B-3 1000:0.008 2000:0.014
+log C-1 1000:0.009 2000:0.009
+log C-2 1000:0.007 1500:0.007
+log D-1 1000:0.020 2000:0.020
+
+expect_ok "$AMORPH" stats "$R/A-1" "$R/A-2" "$R/A-3" "$R/B-1" "$R/B-2" "$R/B-3" "$R/C-1" "$R/C-2/" "$R/D-1"
+cat >"$TMPD/want" <<'EOF'
+| evaluations | group | runs | mean best fitness so far (mm) | standard deviation (mm) | standard error (mm) |
+|---:|---|---:|---:|---:|---:|
+| 1000 | A | 3 | 12.00 | 2.00 | 1.15 |
+| 1000 | B | 3 | 6.00 | 2.00 | 1.15 |
+| 1000 | C | 2 | 8.00 | 1.41 | 1.00 |
+| 1000 | D | 1 | 20.00 | - | - |
+| 2000 | A | 3 | 25.00 | 5.00 | 2.89 |
+| 2000 | B | 3 | 12.00 | 2.00 | 1.15 |
+| 2000 | D | 1 | 20.00 | - | - |
+
+| evaluations | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80% power |
+|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+| 1000 | D - A | 8.00 | no test: D has 1 run | | | | | | | |
+| 1000 | D - C | 12.00 | no test: D has 1 run | | | | | | | |
+| 1000 | D - B | 14.00 | no test: D has 1 run | | | | | | | |
+| 1000 | A - C | 4.00 | 2.62 | 2.9 | 0.082 | 6 | 0.200 | 2.19 | 1.59 | 5 |
+| 1000 | A - B | 6.00 | 3.67 | 4.0 | 0.021 | 9 | 0.100 | 3.00 | 2.39 | 4 |
+| 1000 | C - B | 2.00 | 1.31 | 2.9 | 0.285 | 5 | 0.400 | 1.10 | 0.79 | 15 |
+| 2000 | A - D | 5.00 | no test: D has 1 run | | | | | | | |
+| 2000 | A - B | 13.00 | 4.18 | 2.6 | 0.032 | 9 | 0.100 | 3.41 | 2.72 | 3 |
+| 2000 | D - B | 8.00 | no test: D has 1 run | | | | | | | |
+
+| evaluations | ranking by mean | significant at 0.05, Welch's t | significant at 0.05, Mann-Whitney |
+|---:|---|---|---|
+| 1000 | D > A > C > B | A > B | none |
+| 2000 | A > D > B | A > B | none |
+EOF
+if cmp -s "$TMPD/want" "$TMPD/out"; then ok; else ko "stats tables: $(diff "$TMPD/want" "$TMPD/out" | head -20)"; fi
+
+# JSON: the same numbers in m, a pair without a test, the ranking
+expect_ok "$AMORPH" stats --json "$R/A-1" "$R/A-2" "$R/A-3" "$R/B-1" "$R/B-2" "$R/B-3" "$R/D-1"
+cp "$TMPD/out" "$TMPD/j.json"
+check "JSON: A's mean at 1000 is 0.012" grep -qF '{"group": "A", "n": 3, "mean": 0.012, "sd": 0.002,' "$TMPD/j.json"
+check "JSON: A against B at 1000, exact p 0.1, 4 runs needed" \
+    grep -q '"a": "A", "b": "B", "tested": true, "difference": 0.006,.*"u": 9, "p_mann_whitney": 0.1, "mann_whitney_exact": true,[^}]*"runs_needed": 4}' "$TMPD/j.json"
+check "JSON: D's pairs untested" grep -qF '"a": "D", "b": "A", "tested": false, "difference": 0.008, "t": null' "$TMPD/j.json"
+check "JSON: the rankings" grep -q '"ranking": \["D", "A", "B"\]}, {"evaluations": 2000,.*"ranking": \["A", "D", "B"\]}\]}$' "$TMPD/j.json"
+check "JSON: one line" [ "$(wc -l <"$TMPD/j.json")" -eq 1 ]
+
+# --group: the runs of one group named explicitly, beside a group by folder name; --every 500:
+# A-1's 480-row best holds at 500 for it, A-2 and A-3 have rows at 500
+expect_ok "$AMORPH" stats --every 500 --group mixed="$R/A-1,$R/A-2,$R/B-1" "$R/B-2" "$R/B-3"
+# mixed at 500: A-1 0.005 (its row at 480), A-2 0.012, B-1 0.004 (no row at or below 500: its
+# first row's); at 1000: 0.010, 0.012, 0.004
+row=$(grep '^| 500 | mixed |' "$TMPD/out")
+check "--group, --every 500: mixed at 500: '$row'" [ "$row" = "| 500 | mixed | 3 | 7.00 | 4.36 | 2.52 |" ]
+row=$(grep '^| 1000 | mixed |' "$TMPD/out")
+check "--group: mixed at 1000: '$row'" [ "$row" = "| 1000 | mixed | 3 | 8.67 | 4.16 | 2.40 |" ]
+row=$(grep '^| 1000 | B |' "$TMPD/out")
+check "--group: B is B-2 and B-3 alone: '$row'" [ "$row" = "| 1000 | B | 2 | 7.00 | 1.41 | 1.00 |" ]
+check "--every 500: rows at 500, 1000, 1500 and 2000" [ "$(grep -c '^| [0-9]* | mixed |' "$TMPD/out")" -eq 4 ]
+
+# the sustained score: cycles 11-30 of gait30.json's cycle_travel (the first 10, large, left out),
+# and the gaits
+# gait NAME GAIT V: R/NAME/gait30.json, cycles 1-10 travel 0.009 m, cycles 11-30 alternate V and W
+gait() {
+    mkdir -p "$R/$1"
+    awk -v g="$2" -v v="$3" -v w="$4" 'BEGIN { s = ""; for (i = 1; i <= 30; i++) s = s (i > 1 ? ", " : "") (i <= 10 ? 0.009 : i % 2 ? v : w)
+        printf "{\"robot\": \"x\", \"fitness\": 0.01, \"cycle_travel\": [%s], \"sustained\": 0.5, \"gait\": \"%s\"}\n", s, g }' >"$R/$1/gait30.json"
+}
+gait X-1 bounce 0.001 0.001
+gait X-2 flop 0.001 0.002
+gait Y-1 scoot 0.0005 0.0005
+gait Y-2 scoot 0.0007 0.0007
+expect_ok "$AMORPH" stats --score sustained "$R/X-1" "$R/X-2" "$R/Y-1" "$R/Y-2"
+cat >"$TMPD/want" <<'EOF'
+| score | group | runs | mean travel per cycle, cycles 11-30 (mm) | standard deviation (mm) | standard error (mm) | still | flop | scoot | bounce |
+|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|
+| sustained | X | 2 | 1.250 | 0.354 | 0.250 | 0 | 1 | 0 | 1 |
+| sustained | Y | 2 | 0.600 | 0.141 | 0.100 | 0 | 0 | 2 | 0 |
+
+| score | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80% power |
+|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+| sustained | X - Y | 0.650 | 2.41 | 1.3 | 0.200 | 4 | 0.333 | 2.41 | 1.36 | 4 |
+
+| score | ranking by mean | significant at 0.05, Welch's t | significant at 0.05, Mann-Whitney |
+|---:|---|---|---|
+| sustained | X > Y | none | none |
+EOF
+if cmp -s "$TMPD/want" "$TMPD/out"; then ok; else ko "sustained tables: $(diff "$TMPD/want" "$TMPD/out" | head -20)"; fi
+expect_ok "$AMORPH" stats --score sustained --json "$R/X-1" "$R/X-2" "$R/Y-1" "$R/Y-2"
+check "sustained JSON: X's gaits and mean" sh -c "grep -q '\"group\": \"X\", \"runs\": .*, \"still\": 0, \"flop\": 1, \"scoot\": 0, \"bounce\": 1}' '$TMPD/out' && grep -q '\"group\": \"X\", \"n\": 2, \"mean\": 0.00125,' '$TMPD/out'"
+
+# a p below 0.001: two digits and a power of ten, the same from every C library
+for k in 1 2 3; do log "lo-$k" "1000:0.01$k"; log "hi-$k" "1000:0.02$k"; done
+expect_ok "$AMORPH" stats "$R/lo-1" "$R/lo-2" "$R/lo-3" "$R/hi-1" "$R/hi-2" "$R/hi-3"
+check "a small p: '$(grep '^| 1000 | hi - lo |' "$TMPD/out")'" grep -qxF "| 1000 | hi - lo | 10.00 | 12.25 | 4.0 | 2.6e-04 | 9 | 0.100 | 10.00 | 7.98 | 2 |" "$TMPD/out"
+
+# nothing reached: a note, exit 0, no table
+log E-1 500:0.01
+log E-2 900:0.01
+"$AMORPH" stats "$R/E-1" "$R/E-2" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+check "no count reached: exit 0 ($rc), a note, no output" sh -c "[ $rc -eq 0 ] && [ ! -s '$TMPD/out' ] && grep -q 'nothing to compare' '$TMPD/err'"
+
+# --- bad input: one line, exit 2 ---
+mkdir -p "$R/nolog-1" "$R/empty-1" "$R/bad-1" "$R/short-1" "$R/back-1" "$R/g10-1" "$R/gname-1" "$R/gnum-1"
+expect_fail 2 "stats: .*/nolog-1/log.csv: no such file \(not a run folder" "$AMORPH" stats "$R/A-1" "$R/nolog-1"
+echo "$h" >"$R/empty-1/log.csv"
+expect_fail 2 "empty-1/log.csv: no generations logged yet" "$AMORPH" stats "$R/empty-1"
+printf '%s\n0,500,0.01,0,0,0,0,1,0\n1,1000,zero,0,0,0,0,1,0\n' "$h" >"$R/bad-1/log.csv"
+expect_fail 2 "bad-1/log.csv:3: best \(column 3\): not a number: 'zero'" "$AMORPH" stats "$R/bad-1"
+printf '%s\n0,500,0.01,0,0\n' "$h" >"$R/short-1/log.csv"
+expect_fail 2 "short-1/log.csv:2: 5 fields, the header has 9 columns" "$AMORPH" stats "$R/short-1"
+printf '%s\n0,500,0.01,0,0,0,0,1,0\n1,400,0.01,0,0,0,0,1,0\n' "$h" >"$R/back-1/log.csv"
+expect_fail 2 "back-1/log.csv:3: evaluations go backwards \(400 after 500\)" "$AMORPH" stats "$R/back-1"
+printf 'no,header,here\n' >"$R/nolog-1/log.csv"
+expect_fail 2 "nolog-1/log.csv:1: not a log.csv header" "$AMORPH" stats "$R/nolog-1"
+expect_fail 2 "A-1/gait30.json: no such file \(results/report.sh writes it" "$AMORPH" stats --score sustained "$R/A-1"
+printf '{"cycle_travel": [0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001], "gait": "scoot"}\n' >"$R/g10-1/gait30.json"
+expect_fail 2 "g10-1/gait30.json: cycle_travel holds 20 cycles; the sustained score needs 30" "$AMORPH" stats --score sustained "$R/g10-1"
+gait gname-1 hop 0.001 0.001
+expect_fail 2 "gname-1/gait30.json:1: gait: not still, flop, scoot or bounce: '\"hop\"'" "$AMORPH" stats --score sustained "$R/gname-1"
+gait gnum-1 scoot 0.001 null
+expect_fail 2 "gnum-1/gait30.json:1: cycle_travel\[11\]: not a number: 'null'" "$AMORPH" stats --score sustained "$R/gnum-1"
+expect_fail 2 "stats: --score needs best or sustained" "$AMORPH" stats --score worst "$R/A-1"
+expect_fail 2 "stats: --every needs a whole number" "$AMORPH" stats --every 0 "$R/A-1"
+expect_fail 2 "stats: --group needs NAME=DIR" "$AMORPH" stats --group "$R/A-1"
+expect_fail 2 "stats: --group x: an empty folder name" "$AMORPH" stats --group "x=$R/A-1,,$R/A-2"
+expect_fail 2 "stats: unknown option '--bands'" "$AMORPH" stats --bands "$R/A-1"
+expect_fail 2 "stats: name run folders" "$AMORPH" stats
+expect_fail 2 "A-1/: the same run named twice" "$AMORPH" stats "$R/A-1" "$R/A-2" "$R/A-1/"
+expect_fail 2 "a group name of 1 to 63 printable characters" "$AMORPH" stats --group "a|b=$R/A-1"
+expect_ok "$AMORPH" stats --help
+check "--help names the tests" grep -q "Welch's t" "$TMPD/out"
+check "amorph --help lists stats" sh -c "'$AMORPH' --help | grep -q '^  stats '"
+
+# the board build leaves statistics out
+if [ -n "${BOARD_BUILD:-}" ] && [ -x "$BOARD_BUILD/amorph" ]; then
+    expect_fail 2 "stats: not in this build" "$BOARD_BUILD/amorph" stats "$R/A-1"
+fi
+summary cli_stats
