@@ -89,24 +89,24 @@ row=$(grep '^| 1000 | B |' "$TMPD/out")
 check "--group: B is B-2 and B-3 alone: '$row'" [ "$row" = "| 1000 | B | 2 | 7.00 | 1.41 | 1.00 |" ]
 check "--every 500: rows at 500, 1000, 1500 and 2000" [ "$(grep -c '^| [0-9]* | mixed |' "$TMPD/out")" -eq 4 ]
 
-# the sustained score: cycles 11-30 of gait30.json's cycle_travel (the first 10, large, left out),
-# and the gaits
-# gait NAME GAIT V: R/NAME/gait30.json, cycles 1-10 travel 0.009 m, cycles 11-30 alternate V and W
+# the sustained score: gait30.json's sustained_travel (cycles 11-30), and the gaits
+# gait NAME GAIT V W: R/NAME/gait30.json, cycles 1-10 travel 0.009 m, cycles 11-30 alternate V and W
+# (sustained_travel their mean: a body that goes straight on)
 gait() {
     mkdir -p "$R/$1"
     awk -v g="$2" -v v="$3" -v w="$4" 'BEGIN { s = ""; for (i = 1; i <= 30; i++) s = s (i > 1 ? ", " : "") (i <= 10 ? 0.009 : i % 2 ? v : w)
-        printf "{\"robot\": \"x\", \"fitness\": 0.01, \"cycle_travel\": [%s], \"sustained\": 0.5, \"gait\": \"%s\"}\n", s, g }' >"$R/$1/gait30.json"
+        printf "{\"robot\": \"x\", \"fitness\": 0.01, \"sustained_travel\": %.9g, \"cycle_travel\": [%s], \"sustained\": 0.5, \"gait\": \"%s\"}\n", (v + w) / 2, s, g }' >"$R/$1/gait30.json"
 }
 gait X-1 bounce 0.001 0.001
 gait X-2 flop 0.001 0.002
 gait Y-1 scoot 0.0005 0.0005
-gait Y-2 scoot 0.0007 0.0007
+gait Y-2 roll 0.0007 0.0007
 expect_ok "$AMORPH" stats --score sustained "$R/X-1" "$R/X-2" "$R/Y-1" "$R/Y-2"
 cat >"$TMPD/want" <<'EOF'
-| score | group | runs | mean travel per cycle, cycles 11-30 (mm) | standard deviation (mm) | standard error (mm) | still | flop | scoot | bounce |
-|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|
-| sustained | X | 2 | 1.250 | 0.354 | 0.250 | 0 | 1 | 0 | 1 |
-| sustained | Y | 2 | 0.600 | 0.141 | 0.100 | 0 | 0 | 2 | 0 |
+| score | group | runs | mean travel per cycle, cycles 11-30 (mm) | standard deviation (mm) | standard error (mm) | still | flop | scoot | bounce | roll |
+|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+| sustained | X | 2 | 1.250 | 0.354 | 0.250 | 0 | 1 | 0 | 1 | 0 |
+| sustained | Y | 2 | 0.600 | 0.141 | 0.100 | 0 | 0 | 1 | 0 | 1 |
 
 | score | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80% power |
 |---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|
@@ -118,7 +118,7 @@ cat >"$TMPD/want" <<'EOF'
 EOF
 if cmp -s "$TMPD/want" "$TMPD/out"; then ok; else ko "sustained tables: $(diff "$TMPD/want" "$TMPD/out" | head -20)"; fi
 expect_ok "$AMORPH" stats --score sustained --json "$R/X-1" "$R/X-2" "$R/Y-1" "$R/Y-2"
-check "sustained JSON: X's gaits and mean" sh -c "grep -q '\"group\": \"X\", \"runs\": .*, \"still\": 0, \"flop\": 1, \"scoot\": 0, \"bounce\": 1}' '$TMPD/out' && grep -q '\"group\": \"X\", \"n\": 2, \"mean\": 0.00125,' '$TMPD/out'"
+check "sustained JSON: X's gaits and mean" sh -c "grep -q '\"group\": \"X\", \"runs\": .*, \"still\": 0, \"flop\": 1, \"scoot\": 0, \"bounce\": 1, \"roll\": 0}' '$TMPD/out' && grep -q '\"group\": \"X\", \"n\": 2, \"mean\": 0.00125,' '$TMPD/out'"
 
 # a p below 0.001: two digits and a power of ten, the same from every C library
 for k in 1 2 3; do log "lo-$k" "1000:0.01$k"; log "hi-$k" "1000:0.02$k"; done
@@ -148,7 +148,9 @@ expect_fail 2 "A-1/gait30.json: no such file \(results/report.sh writes it" "$AM
 printf '{"cycle_travel": [0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001, 0.001], "gait": "scoot"}\n' >"$R/g10-1/gait30.json"
 expect_fail 2 "g10-1/gait30.json: cycle_travel holds 20 cycles; the sustained score needs 30" "$AMORPH" stats --score sustained "$R/g10-1"
 gait gname-1 hop 0.001 0.001
-expect_fail 2 "gname-1/gait30.json:1: gait: not still, flop, scoot or bounce: '\"hop\"'" "$AMORPH" stats --score sustained "$R/gname-1"
+expect_fail 2 "gname-1/gait30.json:1: gait: not still, flop, scoot, bounce or roll: '\"hop\"'" "$AMORPH" stats --score sustained "$R/gname-1"
+mkdir -p "$R/nosus-1" && sed 's/"sustained_travel": [^,]*, //' "$R/X-1/gait30.json" >"$R/nosus-1/gait30.json"
+expect_fail 2 "nosus-1/gait30.json: no \"sustained_travel\" \(amorph sim RUN --cycles 30 --json writes it\)" "$AMORPH" stats --score sustained "$R/nosus-1"
 gait gnum-1 scoot 0.001 null
 expect_fail 2 "gnum-1/gait30.json:1: cycle_travel\[11\]: not a number: 'null'" "$AMORPH" stats --score sustained "$R/gnum-1"
 expect_fail 2 "stats: --score needs best or sustained" "$AMORPH" stats --score worst "$R/A-1"

@@ -17,11 +17,13 @@
 #define STATS_MAX_COUNTS 500            /* checkpoints (every N evaluations) of one run */
 #define STATS_NAME_MAX 64
 #define STATS_GAIT_FILE "gait30.json"
-/* the sustained score: the mean travel per cycle over cycles 11-30 of gait30.json's cycle_travel */
-#define STATS_SUSTAINED_FROM 10
+/* the sustained score: gait30.json's sustained_travel, the travel per cycle over cycles 11-30 (the
+ * centre of mass's displacement from the end of cycle 10 to the end of cycle 30, over 20: docs/evolve.md,
+ * score); its cycle_travel must hold the 30 cycles */
 #define STATS_SUSTAINED_TO 30
 
-static const char* const gait_names[4] = {"still", "flop", "scoot", "bounce"};
+#define GAITS 5
+static const char* const gait_names[GAITS] = {"still", "flop", "scoot", "bounce", "roll"};
 
 typedef struct stats_run {
     const char* dir;
@@ -38,7 +40,7 @@ typedef struct stats_group {
     int runs[STATS_MAX_RUNS];
     int n;
     int counts;                      /* checkpoints every run of the group reached */
-    int gaits[4];
+    int gaits[GAITS];
 } stats_group;
 
 /* the command's state: large, so static (one command runs at a time) */
@@ -185,9 +187,10 @@ static int read_log(stats_run* R)
 /* gait30.json being read: the cycle travels and the gait's name, from whichever line holds them */
 typedef struct gait_reading {
     const char* path;
-    double travel[STATS_SUSTAINED_TO];
     int cycles;                      /* values of cycle_travel (-1 before it is found) */
     int gait;                        /* -1 before it is found */
+    int has_sustained;               /* 1 once sustained_travel is read */
+    double sustained;                /* sustained_travel: m per cycle, cycles 11-30 */
 } gait_reading;
 
 /* where "key": starts its value in line (after the colon and blanks), or NULL */
@@ -235,7 +238,6 @@ static am_status gait_line(void* ctx, int lineno, char* line, long n, char* err,
             if (isnan(x))
                 return am_fail_at(err, errsz, AM_ERR_PARSE, gr->path, lineno, "cycle_travel[%d]: not a number: '%s'", gr->cycles,
                                   am_quote(q, sizeof q, v, len));
-            if (gr->cycles < STATS_SUSTAINED_TO) gr->travel[gr->cycles] = x;
             gr->cycles++;
             v = end + 1;
             if (*end == ']') break;
@@ -244,16 +246,31 @@ static am_status gait_line(void* ctx, int lineno, char* line, long n, char* err,
     v = json_value(line, "gait");
     if (v) {
         int k = -1;
-        for (int i = 0; i < 4; i++) {
+        for (int i = 0; i < GAITS; i++) {
             size_t len = strlen(gait_names[i]);
             if (v[0] == '"' && !strncmp(v + 1, gait_names[i], len) && v[len + 1] == '"') k = i;
         }
         if (k < 0) {
             long len = 0;
             while (v[len] && v[len] != ',' && v[len] != '}') len++;
-            return am_fail_at(err, errsz, AM_ERR_PARSE, gr->path, lineno, "gait: not still, flop, scoot or bounce: '%s'", am_quote(q, sizeof q, v, len));
+            return am_fail_at(err, errsz, AM_ERR_PARSE, gr->path, lineno, "gait: not still, flop, scoot, bounce or roll: '%s'", am_quote(q, sizeof q, v, len));
         }
         gr->gait = k;
+    }
+    v = json_value(line, "sustained_travel");
+    if (v) {
+        long len = 0;
+        while (v[len] && v[len] != ',' && v[len] != '}' && v[len] != ' ') len++;
+        char tok[64];
+        double x = (double)NAN;
+        if (len > 0 && len < (long)sizeof tok) {
+            memcpy(tok, v, (size_t)len);
+            tok[len] = 0;
+            if (!am_parse_double(tok, &x)) x = (double)NAN;
+        }
+        if (isnan(x)) return am_fail_at(err, errsz, AM_ERR_PARSE, gr->path, lineno, "sustained_travel: not a number: '%s'", am_quote(q, sizeof q, v, len));
+        gr->sustained = x;
+        gr->has_sustained = 1;
     }
     return AM_OK;
 }
@@ -269,6 +286,8 @@ static int read_gait(stats_run* R)
     gr.path = path;
     gr.cycles = -1;
     gr.gait = -1;
+    gr.has_sustained = 0;
+    gr.sustained = 0;
     tool_src src;
     am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err);
     if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, sizeof err);
@@ -282,9 +301,9 @@ static int read_gait(stats_run* R)
         return tool_usage_error("stats: %s: cycle_travel holds %d cycles; the sustained score needs %d (amorph sim RUN --cycles 30 --json)", path,
                                 gr.cycles, STATS_SUSTAINED_TO);
     if (gr.gait < 0) return tool_usage_error("stats: %s: no \"gait\" field", path);
-    double s = 0;
-    for (int k = STATS_SUSTAINED_FROM; k < STATS_SUSTAINED_TO; k++) s += gr.travel[k];
-    R->sustained = s / (STATS_SUSTAINED_TO - STATS_SUSTAINED_FROM);
+    if (!gr.has_sustained)
+        return tool_usage_error("stats: %s: no \"sustained_travel\" (amorph sim RUN --cycles 30 --json writes it)", path);
+    R->sustained = gr.sustained;
     R->gait = gr.gait;
     return 0;
 }
@@ -382,8 +401,8 @@ static void markdown(am_text* t)
     static double mean[STATS_MAX_GROUPS];
     /* each group: its runs, mean, sd, se (and, sustained, its gaits) */
     put(t, "| %s | group | runs | mean %s (mm) | standard deviation (mm) | standard error (mm) |", key, what);
-    if (S.sustained) put(t, " still | flop | scoot | bounce |");
-    put(t, "\n|---:|---|---:|---:|---:|---:|%s\n", S.sustained ? "---:|---:|---:|---:|" : "");
+    if (S.sustained) put(t, " still | flop | scoot | bounce | roll |");
+    put(t, "\n|---:|---|---:|---:|---:|---:|%s\n", S.sustained ? "---:|---:|---:|---:|---:|" : "");
     for (int k = 0; k < top; k++)
         for (int g = 0; g < S.ngroups; g++) {
             if (!has(g, k)) continue;
@@ -395,7 +414,7 @@ static void markdown(am_text* t)
             put_num(t, s.sd * 1000, dec);
             put_num(t, s.se * 1000, dec);
             if (S.sustained)
-                for (int i = 0; i < 4; i++) put(t, " %d |", S.groups[g].gaits[i]);
+                for (int i = 0; i < GAITS; i++) put(t, " %d |", S.groups[g].gaits[i]);
             put(t, "\n");
         }
     /* each pair, the higher mean first */
@@ -487,7 +506,7 @@ static void json(am_text* t)
         }
         put(t, "]");
         if (S.sustained)
-            for (int i = 0; i < 4; i++) put(t, ", \"%s\": %d", gait_names[i], G->gaits[i]);
+            for (int i = 0; i < GAITS; i++) put(t, ", \"%s\": %d", gait_names[i], G->gaits[i]);
         else put(t, ", \"counts\": %d", G->counts);
         put(t, "}");
     }
@@ -553,9 +572,10 @@ static const char stats_help[] =
     "0.05; then the ranking by mean with the differences each test finds significant at 0.05. A pair\n"
     "with a group of fewer than 2 runs is not tested. Markdown tables in mm (docs/results.md).\n"
     "  --score best       the best fitness so far from log.csv (the default)\n"
-    "  --score sustained  each run's best robot's mean travel per cycle over cycles 11-30 of its\n"
-    "                     gait30.json (amorph sim DIR --cycles 30 --json; results/report.sh writes\n"
-    "                     it), and each group's gaits (still, flop, scoot, bounce)\n"
+    "  --score sustained  each run's best robot's travel per cycle over cycles 11-30, its\n"
+    "                     gait30.json's sustained_travel (amorph sim DIR --cycles 30 --json;\n"
+    "                     results/report.sh writes it), and each group's gaits (still, flop,\n"
+    "                     scoot, bounce, roll)\n"
     "  --every N          the counts compared: every N evaluations (1000)\n"
     "  --group NAME=DIRS  the runs DIRS (comma-separated) as group NAME\n"
     "  --json             one JSON object instead of the tables (values in m)\n";
