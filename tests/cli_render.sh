@@ -157,9 +157,23 @@ expect_ok "$AMORPH" plot "$TMPD/mixed" --out "$TMPD/mixed.svg"
 pth=$(dpath "$TMPD/mixed.svg" mean 1)
 check "plot: the mean of runs with different populations should step at 30, 40 and 60: '$pth'" steps "$pth" 3
 xs=$(echo "$pth" | tr ' ' '\n' | sed -n 's/^M\([0-9.]*\),.*/\1/p; s/^H//p' | tr '\n' ' ')
-# the x axis runs from 0 to 80 over the 592 px from x = 78: 30, 40, 60 are at 300, 374, 522
-check "plot: the mean's steps should be at evaluations 30, 40, 60 (px 300, 374, 522): '$xs' in '$pth'" [ "$xs" = "300.00 374.00 522.00 " ]
+# the x axis runs from 0 to 100 (80, the last row, plus a tick of room) over the 592 px from
+# x = 78: 30, 40, 60 are at 255.6, 314.8, 433.2
+check "plot: the mean's steps should be at evaluations 30, 40, 60 (px 255.6, 314.8, 433.2): '$xs' in '$pth'" [ "$xs" = "255.60 314.80 433.20 " ]
 check "plot: the x axis should start at 0 evaluations" grep -q '<text x="78.00" y="[0-9]*" text-anchor="middle">0</text>' "$TMPD/mixed.svg"
+# room past the data: a run of two generations whose best ends on a round number (2 mm at 20
+# evaluations) keeps its last step and its highest value off the frame (x = 78..670, y = 46..462):
+# no curve point on the right or the top border
+mkdir -p "$TMPD/two/r-1"
+printf 'generation,evaluations,best\n0,10,0.001\n1,20,0.002\n' >"$TMPD/two/r-1/log.csv"
+for d in "$TMPD/two/r-1" "$TMPD/two"; do
+    expect_ok "$AMORPH" plot "$d" --out "$TMPD/two.svg"
+    edge=$(grep -E 'class="(run|mean|band)"' "$TMPD/two.svg" | sed 's/.* d="\([^"]*\)".*/\1/' | tr ' ' '\n' |
+        awk '/^[ML]/ { split(substr($0, 2), a, ","); x = a[1]; y = a[2] } /^H/ { x = substr($0, 2); y = 100 } /^V/ { y = substr($0, 2); x = 100 }
+            /^[MLHV]/ && (x + 0 >= 668 || y + 0 <= 48) { print }')
+    check "plot $d: curve points on the right or top border of the frame: '$edge'" [ -z "$edge" ]
+done
+
 # the log is read by column name (the library's reader): reordered columns, one it does not know,
 # and CRLF line ends give the same line
 mkdir -p "$TMPD/reordered/plot-run"

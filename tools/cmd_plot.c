@@ -311,8 +311,14 @@ static int plot_svg_write(const char* title, const char* path)
     if (!(y1 > y0)) y1 = y0 + 1;
     if (!(x1 > x0)) x1 = x0 + 1;
     double xs = tick_step(x0, x1, 6), ys = tick_step(y0, y1, 6);
+    const double xdata = x1, ydata = y1;
     x0 = floor(x0 / xs) * xs, x1 = ceil(x1 / xs) * xs;
     y0 = floor(y0 / ys) * ys, y1 = ceil(y1 / ys) * ys;
+    /* room past the data: a curve reaching the last tick would lie on the frame (the highest best
+     * on the top border, the last generation's step on the right one), so the axis goes one tick
+     * further when the data come within 3 % of its end */
+    if (x1 - xdata < 0.03 * (x1 - x0)) x1 += xs;
+    if (y1 - ydata < 0.03 * (y1 - y0)) y1 += ys;
     const int W = 860, H = 520, ml = 78, mr = 190, mt = 46, mb = 58;
     const int pw = W - ml - mr, ph = H - mt - mb;
     const plot_frame fr = {x0, x1, y0, y1, unit, ml, mt, pw, ph};
