@@ -33,6 +33,56 @@ if [ "$1" = 0 ] && [ "${2:-0}" -gt 50000 ]; then ok; else ko "render: $1 backgro
 diff=$("$PNG" --png-diff "$TMPD/w.png" "$TMPD/wb.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
 check "render: surface and --boxes differ in $diff robot pixels (want >= 5000)" [ "${diff:-0}" -ge 5000 ] 2>/dev/null
 
+# --colour: each scalar mode draws the body on its scale (none of the materials' shades left) with a
+# legend from the scale's two ends (exact colours: 440154 to fde725, or 2166ac to b2182b for phase),
+# and the modes differ from one another; material mode has no scale
+for m in strain stress speed phase; do
+    expect_ok "$AMORPH" render "$W" $QUICK --colour $m --width 1200 --out "$TMPD/c-$m.png"
+done
+expect_ok "$AMORPH" render "$W" $QUICK --width 1200 --out "$TMPD/c-material.png"
+for m in material strain stress speed phase; do
+    set -- $("$PNG" --png-count "$TMPD/c-$m.png" 0 360 1200 400 440154 fde725 2166ac b2182b)
+    case $m in
+    material) want="0 0 0 0" ;;
+    phase) want="0 0 14 14" ;;
+    *) want="14 14 0 0" ;;
+    esac
+    check "render --colour $m: the legend's ends should be '$want' pixels of 440154 fde725 2166ac b2182b: '$*'" [ "$*" = "$want" ]
+    set -- $("$PNG" --png-info "$TMPD/c-$m.png" $PASSIVE $ACTIVE $ACTIVE90)
+    if [ $m = material ]; then
+        if [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ]; then ok; else ko "render: material shades $*"; fi
+    elif [ "${5:-x}" != x ] && [ $((${3:-0} + ${4:-0} + ${5:-0})) -lt 1000 ]; then ok
+    else ko "render --colour $m: $3 passive, $4 active, $5 active90 shades left (want under 1000 in all)"; fi
+done
+for pair in "material strain" "strain speed" "strain phase" "speed phase"; do
+    set -- $pair
+    n=$("$PNG" --png-changed "$TMPD/c-$1.png" "$TMPD/c-$2.png")
+    check "render --colour $1 and $2 differ in $n pixels (want >= 5000)" [ "${n:-0}" -ge 5000 ]
+done
+# strain and stress: one scale for one modulus (walker's materials all have E = 1 MPa), but the
+# legend's units differ
+n=$("$PNG" --png-changed "$TMPD/c-strain.png" "$TMPD/c-stress.png")
+check "render --colour strain and stress: their legends should differ ($n pixels)" [ "${n:-0}" -gt 50 ]
+expect_fail 2 "render: --colour needs material, strain, stress, speed or phase" "$AMORPH" render "$W" --colour heat --out "$TMPD/x.png"
+# the labels fit their panels of 200 px (text pixels end before the panel's last 10 px: the
+# settled label, too long for the big font, is drawn small with its unit); the scale bar (a 24 x 4
+# px run of the text's colour at the caption's right end)
+for k in 0 1 2 3 4 5; do
+    n=$("$PNG" --png-count "$TMPD/c-material.png" $((k * 200 + 190)) 0 $((k * 200 + 196)) 26 1e1e1e)
+    check "render: the label of picture $((k + 1)) runs into its panel's edge ($n pixels)" [ "$n" = 0 ]
+done
+n=$("$PNG" --png-count "$TMPD/c-material.png" 1160 376 1184 380 1e1e1e)
+check "render: no scale bar at the caption's right end ($n of 96 pixels)" [ "$n" = 96 ]
+# clamps and forces: the VXA cantilever's clamped voxel in the clamp's grey (shades of 46464e) and
+# its tip's force as an arrow (009696); the walker has neither
+expect_ok "$AMORPH" render tests/data/voxcad_cantilever.vxa --cycles 1 --colour strain --out "$TMPD/cant.png"
+set -- $("$PNG" --png-count "$TMPD/cant.png" 0 0 1600 400 009696)
+check "render: the cantilever's force arrow should be drawn (009696: $1 pixels)" [ "${1:-0}" -gt 300 ]
+set -- $("$PNG" --png-info "$TMPD/cant.png" 46464e)
+check "render: the cantilever's clamp should be drawn (shades of 46464e: $3 pixels)" [ "${3:-0}" -gt 1000 ]
+set -- $("$PNG" --png-count "$TMPD/c-material.png" 0 0 1200 400 009696)
+check "render: a force arrow on a robot without forces ($1 pixels)" [ "$1" = 0 ]
+
 # options: size and frames; a scene
 expect_ok "$AMORPH" render --scene sphere:6 --cycles 1 --relax-max 300 --frames 4 --width 800 --height 260 --out "$TMPD/s.png"
 info=$("$PNG" --png-info "$TMPD/s.png" $PASSIVE $ACTIVE 2>&1)

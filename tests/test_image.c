@@ -12,7 +12,10 @@
  *                                              shaded like the colours (not reachable from the
  *                                              picture's border without crossing one), ROBOT the
  *                                              pixels shaded like them
- * Both exit 1 with a message when a file is not a valid PNG. */
+ *   test_image --png-count FILE X0 Y0 X1 Y1 RRGGBB ...   prints the pixels of each colour (each
+ *                                              channel within 2) in the box [X0, X1) x [Y0, Y1)
+ *   test_image --png-changed A B               prints the pixels that differ between A and B
+ * All exit 1 with a message when a file is not a valid PNG. */
 #define _POSIX_C_SOURCE 200809L /* mkstemp, close */
 #include "amorph.h"
 #include "cmd.h"
@@ -20,6 +23,7 @@
 #include "png_read.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 static void test_crc32_vectors(void)
@@ -371,7 +375,39 @@ static int inspector(int argc, char** argv)
         png_free(&img);
         return 0;
     }
-    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB...\n");
+    if (!strcmp(argv[1], "--png-count") && argc >= 8 && argc - 7 <= 16) {
+        png_image img;
+        int box[4];
+        for (int k = 0; k < 4; k++) box[k] = atoi(argv[3 + k]);
+        if (parse_colours(argc - 7, argv + 7, col)) return 2;
+        if (png_read_file(argv[2], &img, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        for (int k = 0; k < argc - 7; k++) {
+            long n = 0;
+            for (int y = box[1] < 0 ? 0 : box[1]; y < box[3] && y < img.h; y++)
+                for (int x = box[0] < 0 ? 0 : box[0]; x < box[2] && x < img.w; x++) {
+                    const uint8_t* p = img.rgb + 3 * ((long)y * img.w + x);
+                    n += abs(p[0] - col[k][0]) <= 2 && abs(p[1] - col[k][1]) <= 2 && abs(p[2] - col[k][2]) <= 2;
+                }
+            printf(k ? " %ld" : "%ld", n);
+        }
+        printf("\n");
+        png_free(&img);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--png-changed") && argc == 4) {
+        png_image a, b;
+        if (png_read_file(argv[2], &a, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        if (png_read_file(argv[3], &b, why, sizeof why)) return png_free(&a), fprintf(stderr, "%s: %s\n", argv[3], why), 1;
+        if (a.w != b.w || a.h != b.h) return png_free(&a), png_free(&b), fprintf(stderr, "sizes differ\n"), 1;
+        long n = 0;
+        for (long i = 0; i < (long)a.w * a.h; i++) n += memcmp(a.rgb + 3 * i, b.rgb + 3 * i, 3) != 0;
+        printf("%ld\n", n);
+        png_free(&a);
+        png_free(&b);
+        return 0;
+    }
+    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB... |\n"
+                    "       --png-count FILE X0 Y0 X1 Y1 RRGGBB... | --png-changed A B\n");
     return 2;
 }
 
