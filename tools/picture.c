@@ -85,8 +85,9 @@ static void rec_frame(void* ctx, const am_model* m, const struct am_state* s)
         for (int k = 0; k < 4; k++) p[7 * i + 3 + k] = (float)AM_TO_DOUBLE(s->q[k][i]);
         double strain, stress, v2 = 0;
         link_scalars(m, s, i, &strain, &stress);
+        const double mass = am_to_si(m, m->mass[AM_VC(m, i)], AM_DIM_MASS);
         for (int k = 0; k < 3; k++) {
-            double v = am_to_si(m, s->v[k][i], AM_DIM_VELOCITY);
+            double v = am_to_si(m, s->p[k][i], AM_DIM_MOMENTUM) / mass;
             v2 += v * v;
         }
         sc[TOOL_REC_SCALARS * i] = (float)strain;
