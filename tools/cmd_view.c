@@ -129,7 +129,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
     double extent = 2 * (follow ? body : all) + 2 * L;
     /* the box the page fills with the body: the voxels' centres seen by the default camera
      * (azimuth -0.6, elevation 0.49 rad), about the centre of mass of each frame when the view
-     * follows the robot, else about the mean, padded by a voxel edge */
+     * follows the robot, else about the mean, padded by 0.7 voxel edges (a voxel's half diagonal seen from there) */
     double box[4] = {1e30, -1e30, 1e30, -1e30};
     {
         const double az = -0.6, el = 0.49;
@@ -143,7 +143,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
             for (int v = 0; v < nv; v++) {
                 double d[3] = {(double)p[7 * v] - ctr[0], (double)p[7 * v + 1] - ctr[1], (double)p[7 * v + 2] - ctr[2]};
                 double u = d[0] * right[0] + d[1] * right[1] + d[2] * right[2], w = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
-                box[0] = fmin(box[0], u - L), box[1] = fmax(box[1], u + L), box[2] = fmin(box[2], w - L), box[3] = fmax(box[3], w + L);
+                box[0] = fmin(box[0], u - 0.7 * L), box[1] = fmax(box[1], u + 0.7 * L), box[2] = fmin(box[2], w - 0.7 * L), box[3] = fmax(box[3], w + 0.7 * L);
             }
         }
     }
