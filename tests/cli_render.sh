@@ -224,6 +224,23 @@ for d in "$TMPD/two/r-1" "$TMPD/two"; do
     check "plot $d: curve points on the right or top border of the frame: '$edge'" [ -z "$edge" ]
 done
 
+# plot --travel: a robot's recorded motion, its centre of mass's horizontal travel from the settled
+# frame against time: one path of a point per frame, time rising from 0, a mark per actuation
+# cycle, ending at the travel amorph sim measures (data-end, m)
+expect_ok "$AMORPH" plot --travel "$W" $QUICK --cycles 4 --out "$TMPD/travel.svg"
+check "plot --travel: one travel path" [ "$(grep -c 'class="travel"' "$TMPD/travel.svg")" = 1 ]
+check "plot --travel: 4 cycle marks" [ "$(grep -c 'class="cycle"' "$TMPD/travel.svg")" = 4 ]
+check "plot --travel: the x axis" grep -q 'class="xlabel"[^>]*>time since the movement started (s)<' "$TMPD/travel.svg"
+pth=$(dpath "$TMPD/travel.svg" travel 1)
+check "plot --travel: a line from x = 78 (time 0) with x rising through at least 20 points: '$(echo "$pth" | cut -c1-80)...'" \
+    sh -c "echo '$pth' | tr ' ' '\n' | awk -F, 'NR == 1 { if (\$1 != \"M78.00\") exit 1; x = 78; next } { v = substr(\$1, 2) + 0; if (\$1 !~ /^L/ || v < x) exit 1; x = v } END { exit NR < 20 }'"
+end=$(sed -n 's/.*class="travel" data-end="\([^"]*\)".*/\1/p' "$TMPD/travel.svg")
+simt=$("$AMORPH" sim "$W" $QUICK --cycles 4 2>/dev/null | sed -n 's/^travel = //p')
+check "plot --travel: the end '$end' should be sim's travel '$simt'" awk -v a="$end" -v b="$simt" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d <= 1e-6 * b + 1e-9) }'
+expect_fail 2 "plot: --travel needs a robot file" "$AMORPH" plot --travel --out "$TMPD/x.svg"
+expect_fail 2 "unknown option" "$AMORPH" plot --travel "$W" --bogus --out "$TMPD/x.svg"
+expect_fail 2 "no-such-robot" "$AMORPH" plot --travel "$TMPD/no-such-robot.lattice" --out "$TMPD/x.svg"
+
 # the log is read by column name (the library's reader): reordered columns, one it does not know,
 # and CRLF line ends give the same line
 mkdir -p "$TMPD/reordered/plot-run"
