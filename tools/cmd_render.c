@@ -354,7 +354,7 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
         x += 28;
         x += am_raster_text(c, &whole, x, ym - 7, 2, "force", col_text) + 16;
     }
-    /* a scale bar at the right end: a round length of about 100 pixels, true along the screen's
+    /* a scale bar at the right end: the round length of 80 to 200 pixels, true along the screen's
      * horizontal (every picture has this one scale) */
     double bar = nice_step(80 / scale), bpx = bar * scale;
     char blen[64];
