@@ -92,7 +92,8 @@ else ko "#frame=1 should show frame 1 with the relaxation: '$(attr frame1 data-f
 dom "t=1&paused=1" end
 check "the clock at the end should read cycle 2.00: '$(clock end)'" sh -c "echo '$(clock end)' | grep -qE '^t = [0-9.]+ ms, cycle 2\.00$'"
 # time in seconds from 1 s on: 50 cycles of 500 steps are over 1 s. The cycles count from the
-# relaxation's last step (423), not from the settled frame's (recorded every 25 steps: 400)
+# relaxation's last step (423), which the recording holds as the settled frame (the simulator
+# hands the recorder the relaxation's last step whatever the spacing of the frames)
 expect_ok "$AMORPH" view tests/data/walker.lattice --cycles 50 --relax-max 423 --frames 60 --out "$TMPD/long.html"
 URL0=$URL; URL="file://$(cd "$TMPD" && pwd)/long.html"
 dom "t=1&paused=1" long
@@ -100,7 +101,7 @@ st=$(sed -n 's/.*"steps": \[\([0-9,]*\)\].*/\1/p' "$TMPD/long.html" | tr ',' '\n
 lsf=$(sed -n 's/.*"settled_frame": \([0-9]*\).*/\1/p' "$TMPD/long.html")
 sstep=$(echo "$st" | sed -n "$((lsf + 1))p"); last=$(echo "$st" | tail -n 1)
 want=$(awk -v l="$last" 'BEGIN { printf "%.2f", (l - 423) / 500 }')
-if [ -n "$sstep" ] && [ "$sstep" != 423 ]; then ok; else ko "long page: the settled frame's step '$sstep' should not be the relaxation's 423"; fi
+check "long page: the settled frame's step '$sstep' should be the relaxation's last, 423" [ "$sstep" = 423 ]
 check "the clock past 1 s should read seconds and cycle $want (last step $last): '$(clock long)'" \
     sh -c "echo '$(clock long)' | grep -qE '^t = 1\.[0-9]{3} s, cycle $want\$'"
 # no relaxation recorded: nothing to skip, the check box stays on
@@ -126,6 +127,73 @@ check "boxes page: no ok marker" grep -q 'id="status" data-status="ok"' "$TMPD/d
 check "boxes page: not marked data-surface=0" grep -q 'data-surface="0"' "$TMPD/dom4.html"
 check "default page: not marked data-surface=1" grep -q 'data-surface="1"' "$TMPD/dom1.html"
 
+# (f) the colourings, one screenshot each at t=0.5 (#colour=NAME): the page marks the mode and
+# writes its legend (the materials, or the scale's ends with units); a scalar's body keeps none
+# of the materials' shades (under a quarter of the material colouring's), its legend's gradient runs between the scale's end colours (440154 to
+# fde725, 2166ac to b2182b for phase), and the modes differ on the robot
+legend() { sed -n 's/.*<div id="legend">\(.*\)<\/div><\/div>.*/\1/p' "$TMPD/dom-$1.html" | sed 's/<[^>]*>/ /g'; }
+for m in material strain stress speed phase; do
+    chrome "$URL#t=0.5&paused=1&colour=$m" --screenshot="$TMPD/col-$m.png" >/dev/null
+    dom "t=0.5&paused=1&colour=$m" col-$m
+    check "#colour=$m: the page should be marked data-colour=$m: '$(attr col-$m data-colour)'" [ "$(attr col-$m data-colour)" = $m ]
+    case $m in
+    material) want="passive active active90" ;;
+    strain) want="strain 0 [0-9.]+ %" ;;
+    stress) want="stress 0 [0-9.]+ kPa" ;;
+    speed) want="speed 0 [0-9.]+ mm/s" ;;
+    phase) want="phase -[0-9.]+ [0-9.]+ %" ;;
+    esac
+    check "#colour=$m: the legend '$(legend col-$m)' should read '$want'" sh -c "echo '$(legend col-$m)' | tr -s ' ' | grep -qE '$want'"
+    set -- $("$PNG" --png-info "$TMPD/col-$m.png" $COLS)
+    # (the top of the sequential scale is a yellow near active's: a quarter of material's count)
+    if [ $m = material ]; then
+        matpx=$((${3:-0} + ${4:-0} + ${5:-0}))
+        if [ "${3:-0}" -ge 5000 ] && [ "${4:-0}" -ge 5000 ]; then ok; else ko "#colour=material: material shades $*"; fi
+    elif [ "${5:-x}" != x ] && [ $((4 * (${3:-0} + ${4:-0} + ${5:-0}))) -lt "$matpx" ]; then ok
+    else ko "#colour=$m: $3 passive, $4 active, $5 active90 pixels left (want under a quarter of material's $matpx)"; fi
+    ends=$("$PNG" --png-count "$TMPD/col-$m.png" 0 0 450 90 440154 fde725 2166ac b2182b)
+    set -- $ends
+    case $m in
+    material) check "#colour=material: scale colours in the legend: $ends" [ "$*" = "0 0 0 0" ] ;;
+    phase) check "#colour=phase: the legend should end in 2166ac and b2182b: $ends" [ $(((${3:-0} >= 20) * (${4:-0} >= 20))) = 1 ] ;;
+    *) check "#colour=$m: the legend should end in 440154 and fde725: $ends" [ $(((${1:-0} >= 20) * (${2:-0} >= 20))) = 1 ] ;;
+    esac
+done
+for pair in "material strain" "strain speed" "strain phase" "speed phase"; do
+    set -- $pair
+    n=$("$PNG" --png-changed "$TMPD/col-$1.png" "$TMPD/col-$2.png")
+    check "#colour=$1 and $2 differ in $n pixels (want >= 3000)" [ "${n:-0}" -ge 3000 ]
+done
+# (g) the scale bar, bottom left (a 4 px high run of 1e1e1e from x = 16), its length in the DOM;
+# the body fills the window (walker's 60 voxels: at least 60000 pixels of its materials)
+bar=$(attr col-material data-scalebar)
+check "the scale bar's length should be a round number of metres: '$bar'" sh -c "echo '$bar' | grep -qE '^(1|2|5)(e-?[0-9]+)?\$|^0\.0*[125]\$'"
+n=$("$PNG" --png-count "$TMPD/col-material.png" 16 536 60 540 1e1e1e)
+check "no scale bar at the bottom left ($n of 176 pixels)" [ "${n:-0}" -ge 170 ]
+set -- $("$PNG" --png-info "$TMPD/col-material.png" $COLS)
+check "the walker should fill the window: $(($3 + $4 + $5)) pixels of its materials (want >= 60000)" [ $((${3:-0} + ${4:-0} + ${5:-0})) -ge 60000 ]
+# (h) the travel plot beside the robot (top right, its curve in be00be): the travel shown is 0 at
+# the settled frame and the fitness's distance at the end
+n=$("$PNG" --png-count "$TMPD/col-material.png" 620 8 890 158 be00be)
+check "no travel curve at the top right ($n pixels of be00be)" [ "${n:-0}" -ge 100 ]
+tv0=$(attr start data-travel); tv1=$(attr end data-travel)
+check "the travel at the settled frame should be 0: '$tv0'" [ "$tv0" = 0 ]
+check "the travel at the end should be over 1 mm: '$tv1'" awk -v t="$tv1" 'BEGIN { exit !(t > 0.001) }'
+# (i) clamps and forces: the VXA cantilever's clamped voxel in the clamp's grey (46464e shades),
+# its tip's force as an arrow (009696), both in the legend
+expect_ok "$AMORPH" view tests/data/voxcad_cantilever.vxa --cycles 1 --frames 30 --out "$TMPD/cant.html"
+URLC="file://$(cd "$TMPD" && pwd)/cant.html"
+chrome "$URLC#paused=1&colour=stress" --screenshot="$TMPD/cant.png" >/dev/null
+chrome "$URLC#paused=1&colour=stress" --dump-dom >"$TMPD/dom-cant.html"
+set -- $("$PNG" --png-count "$TMPD/cant.png" 0 90 900 540 009696)
+check "cantilever: the force arrow should be drawn (009696: $1 pixels)" [ "${1:-0}" -ge 200 ]
+sed 's|<DofFixed>63</DofFixed>|<DofFixed>0</DofFixed>|' tests/data/voxcad_cantilever.vxa >"$TMPD/unclamped.vxa"
+expect_ok "$AMORPH" view "$TMPD/unclamped.vxa" --cycles 1 --frames 30 --out "$TMPD/unclamped.html"
+chrome "file://$(cd "$TMPD" && pwd)/unclamped.html#paused=1&colour=stress" --screenshot="$TMPD/unclamped.png" >/dev/null
+set -- $("$PNG" --png-info "$TMPD/cant.png" 46464e) $("$PNG" --png-info "$TMPD/unclamped.png" 46464e)
+check "cantilever: the clamp should be drawn (shades of 46464e: $3 pixels, $6 without the clamp)" [ $(((${3:-0} >= 2000) * (4 * ${6:-0} < ${3:-0}))) = 1 ]
+check "cantilever: the legend '$(legend cant)' should name the clamp and the force" sh -c "echo '$(legend cant)' | grep -q 'clamped.*force'"
+
 # (c) the error marker works: damaged pose data is reported, not silently drawn
 sed 's/"pose": "/"pose": "!!/' "$TMPD/walker.html" >"$TMPD/broken.html"
 chrome "file://$(cd "$TMPD" && pwd)/broken.html#paused=1" --dump-dom >"$TMPD/dom3.html"
@@ -133,5 +201,5 @@ check "damaged page did not report an error: $(grep -o '<title>[^<]*' "$TMPD/dom
     grep -q '<title>amorph viewer: error' "$TMPD/dom3.html"
 check "damaged page: no error marker" grep -q 'data-status="error"' "$TMPD/dom3.html"
 
-[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$TMPD"/surface.png "$TMPD"/boxes.png "$KEEP"
+[ -n "$KEEP" ] && cp "$TMPD"/shot*.png "$TMPD"/surface.png "$TMPD"/boxes.png "$TMPD"/col-*.png "$TMPD"/cant.png "$KEEP"
 summary "cli_browser.sh"

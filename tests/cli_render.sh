@@ -33,6 +33,56 @@ if [ "$1" = 0 ] && [ "${2:-0}" -gt 50000 ]; then ok; else ko "render: $1 backgro
 diff=$("$PNG" --png-diff "$TMPD/w.png" "$TMPD/wb.png" $PASSIVE $ACTIVE $ACTIVE90 2>&1)
 check "render: surface and --boxes differ in $diff robot pixels (want >= 5000)" [ "${diff:-0}" -ge 5000 ] 2>/dev/null
 
+# --colour: each scalar mode draws the body on its scale (none of the materials' shades left) with a
+# legend from the scale's two ends (exact colours: 440154 to fde725, or 2166ac to b2182b for phase),
+# and the modes differ from one another; material mode has no scale
+for m in strain stress speed phase; do
+    expect_ok "$AMORPH" render "$W" $QUICK --colour $m --width 1200 --out "$TMPD/c-$m.png"
+done
+expect_ok "$AMORPH" render "$W" $QUICK --width 1200 --out "$TMPD/c-material.png"
+for m in material strain stress speed phase; do
+    set -- $("$PNG" --png-count "$TMPD/c-$m.png" 0 360 1200 400 440154 fde725 2166ac b2182b)
+    case $m in
+    material) want="0 0 0 0" ;;
+    phase) want="0 0 14 14" ;;
+    *) want="14 14 0 0" ;;
+    esac
+    check "render --colour $m: the legend's ends should be '$want' pixels of 440154 fde725 2166ac b2182b: '$*'" [ "$*" = "$want" ]
+    set -- $("$PNG" --png-info "$TMPD/c-$m.png" $PASSIVE $ACTIVE $ACTIVE90)
+    if [ $m = material ]; then
+        if [ "${3:-0}" -gt 2000 ] && [ "${4:-0}" -gt 2000 ]; then ok; else ko "render: material shades $*"; fi
+    elif [ "${5:-x}" != x ] && [ $((${3:-0} + ${4:-0} + ${5:-0})) -lt 1000 ]; then ok
+    else ko "render --colour $m: $3 passive, $4 active, $5 active90 shades left (want under 1000 in all)"; fi
+done
+for pair in "material strain" "strain speed" "strain phase" "speed phase"; do
+    set -- $pair
+    n=$("$PNG" --png-changed "$TMPD/c-$1.png" "$TMPD/c-$2.png")
+    check "render --colour $1 and $2 differ in $n pixels (want >= 5000)" [ "${n:-0}" -ge 5000 ]
+done
+# strain and stress: one scale for one modulus (walker's materials all have E = 1 MPa), but the
+# legend's units differ
+n=$("$PNG" --png-changed "$TMPD/c-strain.png" "$TMPD/c-stress.png")
+check "render --colour strain and stress: their legends should differ ($n pixels)" [ "${n:-0}" -gt 50 ]
+expect_fail 2 "render: --colour needs material, strain, stress, speed or phase" "$AMORPH" render "$W" --colour heat --out "$TMPD/x.png"
+# the labels fit their panels of 200 px (text pixels end before the panel's last 10 px: the
+# settled label, too long for the big font, is drawn small with its unit); the scale bar (a 24 x 4
+# px run of the text's colour at the caption's right end)
+for k in 0 1 2 3 4 5; do
+    n=$("$PNG" --png-count "$TMPD/c-material.png" $((k * 200 + 190)) 0 $((k * 200 + 196)) 26 1e1e1e)
+    check "render: the label of picture $((k + 1)) runs into its panel's edge ($n pixels)" [ "$n" = 0 ]
+done
+n=$("$PNG" --png-count "$TMPD/c-material.png" 1160 376 1184 380 1e1e1e)
+check "render: no scale bar at the caption's right end ($n of 96 pixels)" [ "$n" = 96 ]
+# clamps and forces: the VXA cantilever's clamped voxel in the clamp's grey (shades of 46464e) and
+# its tip's force as an arrow (009696); the walker has neither
+expect_ok "$AMORPH" render tests/data/voxcad_cantilever.vxa --cycles 1 --colour strain --out "$TMPD/cant.png"
+set -- $("$PNG" --png-count "$TMPD/cant.png" 0 0 1600 400 009696)
+check "render: the cantilever's force arrow should be drawn (009696: $1 pixels)" [ "${1:-0}" -gt 300 ]
+set -- $("$PNG" --png-info "$TMPD/cant.png" 46464e)
+check "render: the cantilever's clamp should be drawn (shades of 46464e: $3 pixels)" [ "${3:-0}" -gt 1000 ]
+set -- $("$PNG" --png-count "$TMPD/c-material.png" 0 0 1200 400 009696)
+check "render: a force arrow on a robot without forces ($1 pixels)" [ "$1" = 0 ]
+
 # options: size and frames; a scene
 expect_ok "$AMORPH" render --scene sphere:6 --cycles 1 --relax-max 300 --frames 4 --width 800 --height 260 --out "$TMPD/s.png"
 info=$("$PNG" --png-info "$TMPD/s.png" $PASSIVE $ACTIVE 2>&1)
@@ -157,9 +207,40 @@ expect_ok "$AMORPH" plot "$TMPD/mixed" --out "$TMPD/mixed.svg"
 pth=$(dpath "$TMPD/mixed.svg" mean 1)
 check "plot: the mean of runs with different populations should step at 30, 40 and 60: '$pth'" steps "$pth" 3
 xs=$(echo "$pth" | tr ' ' '\n' | sed -n 's/^M\([0-9.]*\),.*/\1/p; s/^H//p' | tr '\n' ' ')
-# the x axis runs from 0 to 80 over the 592 px from x = 78: 30, 40, 60 are at 300, 374, 522
-check "plot: the mean's steps should be at evaluations 30, 40, 60 (px 300, 374, 522): '$xs' in '$pth'" [ "$xs" = "300.00 374.00 522.00 " ]
+# the x axis runs from 0 to 100 (80, the last row, plus a tick of room) over the 592 px from
+# x = 78: 30, 40, 60 are at 255.6, 314.8, 433.2
+check "plot: the mean's steps should be at evaluations 30, 40, 60 (px 255.6, 314.8, 433.2): '$xs' in '$pth'" [ "$xs" = "255.60 314.80 433.20 " ]
 check "plot: the x axis should start at 0 evaluations" grep -q '<text x="78.00" y="[0-9]*" text-anchor="middle">0</text>' "$TMPD/mixed.svg"
+# room past the data: a run of two generations whose best ends on a round number (2 mm at 20
+# evaluations) keeps its last step and its highest value off the frame (x = 78..670, y = 46..462):
+# no curve point on the right or the top border
+mkdir -p "$TMPD/two/r-1"
+printf 'generation,evaluations,best\n0,10,0.001\n1,20,0.002\n' >"$TMPD/two/r-1/log.csv"
+for d in "$TMPD/two/r-1" "$TMPD/two"; do
+    expect_ok "$AMORPH" plot "$d" --out "$TMPD/two.svg"
+    edge=$(grep -E 'class="(run|mean|band)"' "$TMPD/two.svg" | sed 's/.* d="\([^"]*\)".*/\1/' | tr ' ' '\n' |
+        awk '/^[ML]/ { split(substr($0, 2), a, ","); x = a[1]; y = a[2] } /^H/ { x = substr($0, 2); y = 100 } /^V/ { y = substr($0, 2); x = 100 }
+            /^[MLHV]/ && (x + 0 >= 668 || y + 0 <= 48) { print }')
+    check "plot $d: curve points on the right or top border of the frame: '$edge'" [ -z "$edge" ]
+done
+
+# plot --travel: a robot's recorded motion, its centre of mass's horizontal travel from the settled
+# frame against time: one path of a point per frame, time rising from 0, a mark per actuation
+# cycle, ending at the travel amorph sim measures (data-end, m)
+expect_ok "$AMORPH" plot --travel "$W" $QUICK --cycles 4 --out "$TMPD/travel.svg"
+check "plot --travel: one travel path" [ "$(grep -c 'class="travel"' "$TMPD/travel.svg")" = 1 ]
+check "plot --travel: 4 cycle marks" [ "$(grep -c 'class="cycle"' "$TMPD/travel.svg")" = 4 ]
+check "plot --travel: the x axis" grep -q 'class="xlabel"[^>]*>time since the movement started (s)<' "$TMPD/travel.svg"
+pth=$(dpath "$TMPD/travel.svg" travel 1)
+check "plot --travel: a line from x = 78 (time 0) with x rising through at least 20 points: '$(echo "$pth" | cut -c1-80)...'" \
+    sh -c "echo '$pth' | tr ' ' '\n' | awk -F, 'NR == 1 { if (\$1 != \"M78.00\") exit 1; x = 78; next } { v = substr(\$1, 2) + 0; if (\$1 !~ /^L/ || v < x) exit 1; x = v } END { exit NR < 20 }'"
+end=$(sed -n 's/.*class="travel" data-end="\([^"]*\)".*/\1/p' "$TMPD/travel.svg")
+simt=$("$AMORPH" sim "$W" $QUICK --cycles 4 2>/dev/null | sed -n 's/^travel = //p')
+check "plot --travel: the end '$end' should be sim's travel '$simt'" awk -v a="$end" -v b="$simt" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d <= 1e-6 * b + 1e-9) }'
+expect_fail 2 "plot: --travel needs a robot file" "$AMORPH" plot --travel --out "$TMPD/x.svg"
+expect_fail 2 "unknown option" "$AMORPH" plot --travel "$W" --bogus --out "$TMPD/x.svg"
+expect_fail 2 "no-such-robot" "$AMORPH" plot --travel "$TMPD/no-such-robot.lattice" --out "$TMPD/x.svg"
+
 # the log is read by column name (the library's reader): reordered columns, one it does not know,
 # and CRLF line ends give the same line
 mkdir -p "$TMPD/reordered/plot-run"

@@ -12,14 +12,21 @@
  *                                              shaded like the colours (not reachable from the
  *                                              picture's border without crossing one), ROBOT the
  *                                              pixels shaded like them
- * Both exit 1 with a message when a file is not a valid PNG. */
+ *   test_image --png-count FILE X0 Y0 X1 Y1 RRGGBB ...   prints the pixels of each colour (each
+ *                                              channel within 2) in the box [X0, X1) x [Y0, Y1)
+ *   test_image --png-changed A B               prints the pixels that differ between A and B
+ * All exit 1 with a message when a file is not a valid PNG. */
 #define _POSIX_C_SOURCE 200809L /* mkstemp, close */
 #include "amorph.h"
 #include "cmd.h"
 #include "harness.h"
 #include "png_read.h"
+#if TOOL_PICTURES
+#include "picture.h"
+#endif
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 static void test_crc32_vectors(void)
@@ -285,6 +292,53 @@ static void test_filmstrip_png(void)
     png_free(&img);
 }
 
+/* the colourings' scalars (tools/picture.c) on the cantilever scene, clamped at x = 0 and bent by
+ * gravity: the clamp is reported, the bend strains the voxels near the clamp more than the tip,
+ * stress is strain times the modulus (1 MPa for every material of the scene), a passive body has
+ * no actuation phase, the scale ends on round numbers, the ramps end in their stops */
+static void test_colour_scalars(void)
+{
+#if TOOL_PICTURES
+    static am_lattice lat;
+    static tool_ctx ctx;
+    static tool_motion mo;
+    char err[AM_ERR_MAX];
+    CHECK(am_scene_build(&lat, "cantilever:6", err, sizeof err) == AM_OK, "%s", err);
+    am_env env = am_default_env();
+    am_eval_def eval = am_default_eval();
+    eval.cycles = 1;
+    eval.relax_max_steps = 2000;
+    CHECK(tool_record_motion(&ctx, &lat, &env, &eval, 40, &mo, "cantilever") == 0, "recorded");
+    CHECK(mo.nv == 6 && mo.nfixed == 1 && mo.fixed[0] == 1 && mo.nforced == 0, "%d voxels, %d clamped, %d forced", mo.nv, mo.nfixed,
+          mo.nforced);
+    const int f = mo.frames - 1;
+    double root = tool_colour_value(&mo, TOOL_COL_STRAIN, f, 1), tip = tool_colour_value(&mo, TOOL_COL_STRAIN, f, 5);
+    CHECK(root > 2 * tip && root > 1e-6, "strain at the root %g, at the tip %g", root, tip);
+    for (int i = 0; i < mo.nv; i++) {
+        double e = tool_colour_value(&mo, TOOL_COL_STRAIN, f, i), sg = tool_colour_value(&mo, TOOL_COL_STRESS, f, i);
+        CHECK(fabs(sg - 1e6 * e) <= 1e-3 * sg + 1e-9, "voxel %d: stress %g is not 1 MPa x strain %g", i, sg, e);
+        CHECK(tool_colour_value(&mo, TOOL_COL_PHASE, f, i) == 0, "voxel %d: a passive voxel's phase", i);
+        CHECK(tool_colour_value(&mo, TOOL_COL_SPEED, f, i) >= 0, "voxel %d: speed", i);
+    }
+    CHECK(tool_colour_value(&mo, TOOL_COL_SPEED, 0, 3) == 0, "at rest in the first frame");
+    double lo, hi, per;
+    tool_colour_range(&mo, TOOL_COL_STRAIN, &lo, &hi);
+    tool_colour_unit(TOOL_COL_STRAIN, &per);
+    double shown = hi * per, p10 = pow(10, floor(log10(shown) + 1e-9)), m = shown / p10;
+    CHECK(lo == 0 && (fabs(m - 1) < 1e-9 || fabs(m - 2) < 1e-9 || fabs(m - 5) < 1e-9), "strain scale %g .. %g %%", lo * per, shown);
+    CHECK(hi >= root * 0.99, "the scale %g should hold the root's %g", hi, root);
+    tool_colour_range(&mo, TOOL_COL_PHASE, &lo, &hi);
+    CHECK(lo == -hi && hi > 0, "phase scale %g .. %g", lo, hi);
+    uint8_t c0[3], c1[3];
+    tool_colour_ramp(TOOL_COL_SPEED, -1, c0);
+    tool_colour_ramp(TOOL_COL_SPEED, 2, c1);
+    CHECK(c0[0] == 68 && c0[1] == 1 && c0[2] == 84 && c1[0] == 253 && c1[1] == 231 && c1[2] == 37, "sequential ends");
+    tool_colour_ramp(TOOL_COL_PHASE, 0.5, c0);
+    CHECK(c0[0] == 247 && c0[1] == 247 && c0[2] == 247, "diverging middle");
+    CHECK(tool_colour_parse("stress") == TOOL_COL_STRESS && tool_colour_parse("heat") < 0, "names");
+#endif
+}
+
 /* ---- the PNG inspector of the shell tests ---- */
 
 static int parse_colours(int n, char** hex, uint8_t (*col)[3])
@@ -371,7 +425,39 @@ static int inspector(int argc, char** argv)
         png_free(&img);
         return 0;
     }
-    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB...\n");
+    if (!strcmp(argv[1], "--png-count") && argc >= 8 && argc - 7 <= 16) {
+        png_image img;
+        int box[4];
+        for (int k = 0; k < 4; k++) box[k] = atoi(argv[3 + k]);
+        if (parse_colours(argc - 7, argv + 7, col)) return 2;
+        if (png_read_file(argv[2], &img, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        for (int k = 0; k < argc - 7; k++) {
+            long n = 0;
+            for (int y = box[1] < 0 ? 0 : box[1]; y < box[3] && y < img.h; y++)
+                for (int x = box[0] < 0 ? 0 : box[0]; x < box[2] && x < img.w; x++) {
+                    const uint8_t* p = img.rgb + 3 * ((long)y * img.w + x);
+                    n += abs(p[0] - col[k][0]) <= 2 && abs(p[1] - col[k][1]) <= 2 && abs(p[2] - col[k][2]) <= 2;
+                }
+            printf(k ? " %ld" : "%ld", n);
+        }
+        printf("\n");
+        png_free(&img);
+        return 0;
+    }
+    if (!strcmp(argv[1], "--png-changed") && argc == 4) {
+        png_image a, b;
+        if (png_read_file(argv[2], &a, why, sizeof why)) return fprintf(stderr, "%s: %s\n", argv[2], why), 1;
+        if (png_read_file(argv[3], &b, why, sizeof why)) return png_free(&a), fprintf(stderr, "%s: %s\n", argv[3], why), 1;
+        if (a.w != b.w || a.h != b.h) return png_free(&a), png_free(&b), fprintf(stderr, "sizes differ\n"), 1;
+        long n = 0;
+        for (long i = 0; i < (long)a.w * a.h; i++) n += memcmp(a.rgb + 3 * i, b.rgb + 3 * i, 3) != 0;
+        printf("%ld\n", n);
+        png_free(&a);
+        png_free(&b);
+        return 0;
+    }
+    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB... |\n"
+                    "       --png-count FILE X0 Y0 X1 Y1 RRGGBB... | --png-changed A B\n");
     return 2;
 }
 
@@ -388,5 +474,6 @@ int main(int argc, char** argv)
     RUN(test_raster_cube);
     RUN(test_raster_text);
     RUN(test_filmstrip_png);
+    RUN(test_colour_scalars);
     return SUMMARY();
 }

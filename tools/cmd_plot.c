@@ -1,7 +1,7 @@
 /* amorph plot: best fitness against evaluations as SVG, one line per run folder; for an
  * experiment folder, the mean of each variant's runs with a band of one standard error (the
  * seed's Figure 6). docs/pictures.md. */
-#include "cmd.h"
+#include "picture.h"
 #if TOOL_PICTURES
 
 #include <math.h>
@@ -41,6 +41,9 @@ static long plot_used;
 static double plot_mx[PLOT_MAX_POINTS], plot_my[PLOT_MAX_POINTS], plot_se[PLOT_MAX_POINTS];
 static long plot_mused;
 static char plot_svg[PLOT_SVG_MAX];
+/* --travel: one robot's recorded motion (travel against time) instead of run folders */
+static int plot_travel;
+static double plot_period;   /* s: the actuation period, where the cycles' marks go */
 
 static const char* const plot_colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
@@ -311,8 +314,14 @@ static int plot_svg_write(const char* title, const char* path)
     if (!(y1 > y0)) y1 = y0 + 1;
     if (!(x1 > x0)) x1 = x0 + 1;
     double xs = tick_step(x0, x1, 6), ys = tick_step(y0, y1, 6);
+    const double xdata = x1, ydata = y1;
     x0 = floor(x0 / xs) * xs, x1 = ceil(x1 / xs) * xs;
     y0 = floor(y0 / ys) * ys, y1 = ceil(y1 / ys) * ys;
+    /* room past the data: a curve reaching the last tick would lie on the frame (the highest best
+     * on the top border, the last generation's step on the right one), so the axis goes one tick
+     * further when the data come within 3 % of its end */
+    if (x1 - xdata < 0.03 * (x1 - x0)) x1 += xs;
+    if (y1 - ydata < 0.03 * (y1 - y0)) y1 += ys;
     const int W = 860, H = 520, ml = 78, mr = 190, mt = 46, mb = 58;
     const int pw = W - ml - mr, ph = H - mt - mb;
     const plot_frame fr = {x0, x1, y0, y1, unit, ml, mt, pw, ph};
@@ -345,16 +354,29 @@ static int plot_svg_write(const char* title, const char* path)
     }
     put(&o, "</g>\n<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" stroke=\"#333333\"/>\n", ml, mt, pw, ph);
     /* one x axis for runs and experiments: evaluations done (log.csv's evaluations column) */
-    put(&o, "<text class=\"xlabel\" x=\"%d\" y=\"%d\" text-anchor=\"middle\">evaluations</text>\n", ml + pw / 2, H - 14);
-    put(&o, "<text class=\"ylabel\" transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">best fitness so far (%s)</text>\n",
-        mt + ph / 2, uname);
+    put(&o, "<text class=\"xlabel\" x=\"%d\" y=\"%d\" text-anchor=\"middle\">%s</text>\n", ml + pw / 2, H - 14,
+        plot_travel ? "time since the movement started (s)" : "evaluations");
+    put(&o, "<text class=\"ylabel\" transform=\"translate(20 %d) rotate(-90)\" text-anchor=\"middle\">%s (%s)</text>\n",
+        mt + ph / 2, plot_travel ? "horizontal travel of the centre of mass" : "best fitness so far", uname);
+    /* a travel plot: a faint line at the end of every actuation cycle */
+    if (plot_travel && plot_period > 0 && (x1 - x0) / plot_period <= 100)
+        for (double x = plot_period; x <= x1 + 1e-12; x += plot_period)
+            put(&o, "<line class=\"cycle\" x1=\"%.2f\" y1=\"%d\" x2=\"%.2f\" y2=\"%d\" stroke=\"#c8c8f0\" stroke-dasharray=\"3 3\"/>\n",
+                PX(x), mt, PX(x), mt + ph);
     /* the curves, as steps: each run alone, or each variant's mean with its standard-error band */
     int ly = mt + 8, any_band = 0;
     for (int s = 0; s < plot_nser; s++) {
         const plot_series* S = &plot_ser[s];
         const char* col = plot_colours[s % 8];
         int grouped = S->experiment;
-        if (grouped && S->n > 0) {
+        if (plot_travel) {
+            const plot_run* R = &plot_runs[S->runs[0]];
+            put(&o, "<path class=\"travel\" data-end=\"%.9g\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" d=\"",
+                R->n ? plot_y[R->first + R->n - 1] : 0.0, col);
+            for (long i = 0; i < R->n; i++)
+                put(&o, i ? " L%.2f,%.2f" : "M%.2f,%.2f", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
+            put(&o, "\"/>\n");
+        } else if (grouped && S->n > 0) {
             const long k = S->first;
             put(&o, "<path class=\"band\" fill=\"%s\" fill-opacity=\"0.18\" stroke=\"none\" d=\"", col);
             put_steps(&o, &fr, plot_mx + k, plot_my + k, plot_se + k, 1, S->n, 0);
@@ -437,8 +459,41 @@ static int plot_load(int ndirs, char** dirs)
     return 0;
 }
 
+/* --travel: the robot simulated with recording (as render and view), its centre of mass's
+ * horizontal distance from the settled frame's against the time since then, one point a frame */
+static int travel_load(tool_ctx* c, const tool_robot_args* ra, const char* label)
+{
+    tool_robot rob;
+    int rc = tool_load_subject(c, ra, &rob, "plot");
+    if (rc) return rc;
+    static tool_motion mo;
+    rc = tool_record_motion(c, &c->work[0].lattice, &rob.env, &rob.eval, TOOL_REC_MAX_FRAMES, &mo, ra->name);
+    if (rc) return rc;
+    plot_nruns = plot_nser = 0;
+    plot_used = plot_mused = 0;
+    int s = new_series(label);
+    plot_run* r = &plot_runs[0];
+    memset(r, 0, sizeof *r);
+    snprintf(r->name, sizeof r->name, "%s", label);
+    r->series = s;
+    double c0[3], ck[3];
+    tool_motion_com(&mo, mo.settled_frame, c0);
+    for (int f = mo.settled_frame; f < mo.frames; f++) {
+        tool_motion_com(&mo, f, ck);
+        plot_x[plot_used] = (double)(mo.step[f] - mo.step[mo.settled_frame]) * mo.dt;
+        plot_y[plot_used] = sqrt((ck[0] - c0[0]) * (ck[0] - c0[0]) + (ck[1] - c0[1]) * (ck[1] - c0[1]));
+        plot_used++;
+        r->n++;
+    }
+    plot_nruns = 1;
+    plot_ser[s].runs[plot_ser[s].nruns++] = 0;
+    plot_period = (double)mo.res.period_steps * mo.dt;
+    return 0;
+}
+
 int tool_write_plot(int ndirs, char** dirs, const char* path)
 {
+    plot_travel = 0;
     if (plot_load(ndirs, dirs)) return 1;
     return plot_svg_write("best fitness against evaluations", path) ? 1 : 0;
 }
@@ -454,22 +509,40 @@ static const char plot_help[] =
     "  --title TEXT     the heading (\"best fitness against evaluations\")\n"
     "  --min-evals N    in a folder of runs, leave out the runs that have logged fewer than N\n"
     "                   evaluations (each mean runs as far as the shortest run it keeps)\n"
-    "  --max-evals N    draw each run up to N evaluations (its rows beyond N are left out)\n";
+    "  --max-evals N    draw each run up to N evaluations (its rows beyond N are left out)\n"
+    "\n"
+    "usage: amorph plot --travel ROBOT | --scene NAME --out FILE.svg [--title TEXT] [--KEY VALUE]...\n"
+    "Simulates the robot (as amorph render and view) and plots its centre of mass's horizontal\n"
+    "travel from where the movement started against time, the actuation cycles marked. ROBOT and\n"
+    "NAME as for amorph render.\n"
+    TOOL_ROBOT_HELP;
 
 int cmd_plot(tool_ctx* c, int argc, char** argv)
 {
-    (void)c;
     const char* out = 0;
-    const char* title = "best fitness against evaluations";
+    const char* title = 0;
     long min_evals = 0, max_evals = 0;
     static char* dirs[PLOT_MAX_RUNS];
-    int nd = 0;
+    int nd = 0, travel = 0;
+    tool_robot_args ra;
+    memset(&ra, 0, sizeof ra);
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        if (!strcmp(a, "--travel")) travel = 1;
+    }
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             fputs(plot_help, stdout);
             return 0;
+        } else if (!strcmp(a, "--travel")) {
+            continue;
+        } else if (travel && strcmp(a, "--out") && strcmp(a, "--title")) {
+            /* the robot and its settings, as render and view take them */
+            int r = tool_robot_arg("plot", argc, argv, &i, &ra);
+            if (r == 2) return 2;
+            if (r == 0) return tool_unknown_option("plot", a);
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("plot: --out needs a file name");
             out = v, i++;
@@ -489,6 +562,19 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
             dirs[nd++] = argv[i];
         }
     }
+    if (travel) {
+        if (!ra.name) return tool_usage_error("plot: --travel needs a robot file, a run folder or --scene NAME (amorph plot --help)");
+        int rc = tool_check_output(out, "plot", ".svg");
+        if (rc) return rc;
+        char label[96];
+        if (ra.is_scene) snprintf(label, sizeof label, "%s", ra.name);
+        else base_name(ra.name, label, sizeof label);
+        plot_travel = 1;
+        rc = travel_load(c, &ra, label);
+        if (rc) return rc;
+        return plot_svg_write(title ? title : "travel against time", out);
+    }
+    plot_travel = 0;
     if (nd == 0) return tool_usage_error("plot: name run or experiment folders (amorph plot --help)");
     if (!out) return tool_usage_error("plot: --out FILE.svg is required");
     size_t n = strlen(out);
@@ -497,7 +583,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
     plot_max_evals = max_evals;
     int rc = plot_load(nd, dirs);
     if (rc) return rc;
-    return plot_svg_write(title, out);
+    return plot_svg_write(title ? title : "best fitness against evaluations", out);
 }
 
 #else

@@ -22,7 +22,23 @@ typedef struct film_opts {
     int panels;         /* pictures side by side, >= 3 */
     int width, height;  /* pixels of the whole strip */
     int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body either way) */
+    int colour;         /* TOOL_COL_*: what a voxel's colour shows */
 } film_opts;
+
+/* the colour of every voxel in the frame being drawn, and the scale of a scalar colouring */
+static uint8_t film_vcol[AM_MAX_VOXELS][3];
+static double film_lo, film_hi;
+
+/* each voxel's colour in frame fr: a clamped voxel in the clamp's grey, the others by their material
+ * or by the scalar on the scale film_lo .. film_hi */
+static void voxel_colours(const tool_motion* mo, int mode, int fr)
+{
+    for (int i = 0; i < mo->nv; i++) {
+        if (mo->fixed[i]) memcpy(film_vcol[i], tool_col_clamp, 3);
+        else if (mode == TOOL_COL_MATERIAL) memcpy(film_vcol[i], mo->model->palette.mat[mo->model->mat[i]].color, 3);
+        else tool_colour_ramp(mode, (tool_colour_value(mo, mode, fr, i) - film_lo) / (film_hi - film_lo), film_vcol[i]);
+    }
+}
 
 static const uint8_t col_floor[3] = {236, 236, 230}, col_grid[3] = {206, 206, 198}, col_shadow[3] = {196, 196, 190},
                      col_text[3] = {30, 30, 30}, col_trail[3] = {190, 0, 190},
@@ -76,6 +92,7 @@ static void draw_surface(am_canvas* c, const am_camera* cam, const tool_motion* 
     const am_mesh* mesh = tool_mesh();
     double* pos = tool_mesh_pos();
     am_mesh_place(mesh, mo->pose + (long)fr * mo->nv * 7, pos);
+    const int32_t* tv = tool_mesh_tri_voxel();
     for (long t = 0; t < mesh->ntri; t++) {
         const double *a = pos + 3 * mesh->tri[t][0], *b = pos + 3 * mesh->tri[t][1], *d = pos + 3 * mesh->tri[t][2];
         double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
@@ -85,7 +102,7 @@ static void draw_surface(am_canvas* c, const am_camera* cam, const tool_motion* 
         for (int k = 0; k < 3; k++) n[k] /= len;
         if (dot3(n, cam->fwd) >= 0) continue; /* turned away from the viewer */
         double lit = dot3(n, light), shade = 0.35 + 0.65 * (lit > 0 ? lit : 0);
-        const uint8_t* rgb = mo->model->palette.mat[mesh->tmat[t]].color;
+        const uint8_t* rgb = film_vcol[tv[t]];
         uint8_t col[3];
         for (int j = 0; j < 3; j++) {
             double x = rgb[j] * shade + 0.5;
@@ -99,10 +116,43 @@ static void draw_surface(am_canvas* c, const am_camera* cam, const tool_motion* 
     }
 }
 
+/* the constant external forces: an arrow from each forced voxel's centre along its force, the
+ * largest force 2.5 voxel edges long, drawn over the body */
+static void draw_forces(am_canvas* c, const am_camera* cam, const tool_motion* mo, int fr)
+{
+    double big = 0, L = am_to_si(mo->model, mo->model->L, AM_DIM_LENGTH);
+    for (int i = 0; i < mo->nv; i++) {
+        double F[3] = {(double)mo->force[3 * i], (double)mo->force[3 * i + 1], (double)mo->force[3 * i + 2]};
+        big = fmax(big, sqrt(dot3(F, F)));
+    }
+    if (!(big > 0)) return;
+    const float* f = mo->pose + (long)fr * mo->nv * 7;
+    for (int i = 0; i < mo->nv; i++) {
+        double F[3] = {(double)mo->force[3 * i], (double)mo->force[3 * i + 1], (double)mo->force[3 * i + 2]};
+        double a[3] = {(double)f[7 * i], (double)f[7 * i + 1], (double)f[7 * i + 2]}, b[3], sa[3], sb[3];
+        if (!(dot3(F, F) > 0)) continue;
+        for (int k = 0; k < 3; k++) b[k] = a[k] + 2.5 * L * F[k] / big;
+        am_camera_project(cam, a, sa);
+        am_camera_project(cam, b, sb);
+        am_raster_line2(c, cam, sa[0], sa[1], sb[0], sb[1], 3, tool_col_force);
+        arrow_head(c, cam, sa[0], sa[1], sb[0], sb[1], 12, tool_col_force);
+    }
+}
+
+/* a filled rectangle in screen pixels */
+static void fill_rect(am_canvas* c, const am_camera* cam, double x0, double y0, double x1, double y1, const uint8_t rgb[3])
+{
+    double a[9] = {x0, y0, 0, x1, y0, 0, x1, y1, 0}, b[9] = {x0, y0, 0, x1, y1, 0, x0, y1, 0};
+    am_raster_triangle(c, cam, a, rgb, 0);
+    am_raster_triangle(c, cam, b, rgb, 0);
+}
+
 /* one panel: floor, grid, shadows, the centre-of-mass trail and the voxels of frame fr */
 static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo, int fr, int trail_from,
-                       double view_w, int boxes)
+                       double view_w, const film_opts* o)
 {
+    const int boxes = o->boxes;
+    voxel_colours(mo, o->colour, fr);
     const double light[3] = {-0.26, -0.43, 0.865}; /* unit: up, towards the viewer's left */
     double R = 2.5 * view_w / sin(FILM_EL) + 0.1;
     double cx = cam->target[0], cy = cam->target[1];
@@ -159,20 +209,18 @@ static void draw_panel(am_canvas* c, const am_camera* cam, const tool_motion* mo
         }
     }
     /* the voxels: the surface over them, or each a box */
-    if (!boxes) {
-        draw_surface(c, cam, mo, fr, light);
-        return;
-    }
-    for (int i = 0; i < mo->nv; i++) {
+    if (!boxes) draw_surface(c, cam, mo, fr, light);
+    else
+        for (int i = 0; i < mo->nv; i++) {
         double h[3], p[3] = {(double)f[7 * i], (double)f[7 * i + 1], (double)f[7 * i + 2]},
                q[4] = {(double)f[7 * i + 3], (double)f[7 * i + 4], (double)f[7 * i + 5], (double)f[7 * i + 6]};
         double qn = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
         if (!(qn > 0.5)) q[0] = 1, q[1] = q[2] = q[3] = 0, qn = 1;
         for (int k = 0; k < 4; k++) q[k] /= qn;
         am_mesh_half(tool_mesh(), f, i, h);
-        const uint8_t* col = mo->model->palette.mat[mo->model->mat[i]].color;
-        am_raster_box(c, cam, p, q, h, col, light, 0.35);
+        am_raster_box(c, cam, p, q, h, film_vcol[i], light, 0.35);
     }
+    draw_forces(c, cam, mo, fr);
 }
 
 static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
@@ -231,16 +279,21 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
         for (int j = 0; j < 3; j++) target[j] = base[j] + um * cam.right[j] + vm * cam.up[j];
         am_camera panel;
         am_camera_look(&panel, target, FILM_AZ, FILM_EL, ph / scale, k * pw, label_h, pw, ph);
-        draw_panel(c, &panel, mo, frame[k], k >= 2 ? frame[1] : -1, view_w, o->boxes);
+        draw_panel(c, &panel, mo, frame[k], k >= 2 ? frame[1] : -1, view_w, o);
         double t = (double)mo->step[frame[k]] * mo->dt;
         char tt[48];
         fmt_time(tt, sizeof tt, t);
+        /* the label fits its panel whole, units included: the big font, else the small one, else
+         * without the word "settled" */
         if (k == 0) snprintf(text, sizeof text, "1 initial");
         else if (k == 1) snprintf(text, sizeof text, "2 settled t=%s", tt);
         else snprintf(text, sizeof text, "%d t=%s", k + 1, tt);
+        int fs = 2, room = pw - 16;
+        if ((int)strlen(text) * 12 > room) fs = 1;
+        if (fs == 1 && (int)strlen(text) * 6 > room && k == 1) snprintf(text, sizeof text, "2 t=%s", tt);
         am_camera label;
         am_camera_look(&label, zero, 0, 0, 1, k * pw, 0, pw - 4, label_h);
-        am_raster_text(c, &label, k * pw + 8, 6, 2, text, col_text);
+        am_raster_text(c, &label, k * pw + 8, fs == 2 ? 6 : 9, fs, text, col_text);
         if (k > 0) am_raster_line2(c, &whole, k * pw, 0, k * pw, o->height - cap_h, 2, col_rule);
     }
     /* caption: direction of travel, distance, materials */
@@ -264,24 +317,62 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
     fmt_time(tt, sizeof tt, (double)(mo->step[frame[np - 1]] - mo->step[frame[1]]) * mo->dt);
     snprintf(text, sizeof text, "direction of travel: %s in %s%s", len, tt, mo->res.diverged ? "  (diverged)" : "");
     x += am_raster_text(c, &whole, x, ym - 7, 2, text, col_text) + 24;
-    /* legend: the materials the robot uses */
+    /* legend: the materials the robot uses, or the scalar's scale from its minimum to its maximum */
     const am_model* m = mo->model;
-    for (int k = 0; k < m->palette.count; k++) {
-        int used = 0;
-        for (int i = 0; i < m->nv && !used; i++) used = m->mat[i] == k;
-        if (!used) continue;
-        double sq[9] = {x, ym - 7, 0, x + 14, ym - 7, 0, x + 14, ym + 7, 0}, sq2[9] = {x, ym - 7, 0, x + 14, ym + 7, 0, x, ym + 7, 0};
-        am_raster_triangle(c, &whole, sq, m->palette.mat[k].color, 0);
-        am_raster_triangle(c, &whole, sq2, m->palette.mat[k].color, 0);
+    if (o->colour == TOOL_COL_MATERIAL)
+        for (int k = 0; k < m->palette.count; k++) {
+            int used = 0;
+            for (int i = 0; i < m->nv && !used; i++) used = m->mat[i] == k && !mo->fixed[i];
+            if (!used) continue;
+            fill_rect(c, &whole, x, ym - 7, x + 14, ym + 7, m->palette.mat[k].color);
+            x += 20;
+            x += am_raster_text(c, &whole, x, ym - 7, 2, m->palette.mat[k].name, col_text) + 16;
+        }
+    else {
+        double per;
+        const char* unit = tool_colour_unit(o->colour, &per);
+        snprintf(text, sizeof text, "%s %.3g", tool_colour_name(o->colour), film_lo * per);
+        x += am_raster_text(c, &whole, x, ym - 7, 2, text, col_text) + 8;
+        for (int k = 0; k < 120; k++) {
+            uint8_t rgb[3];
+            tool_colour_ramp(o->colour, k / 119.0, rgb);
+            fill_rect(c, &whole, x + k, ym - 7, x + k + 1, ym + 7, rgb);
+        }
+        x += 128;
+        snprintf(text, sizeof text, "%.3g %s", film_hi * per, unit);
+        x += am_raster_text(c, &whole, x, ym - 7, 2, text, col_text) + 16;
+    }
+    /* the boundary conditions: clamped voxels, forces */
+    if (mo->nfixed > 0) {
+        fill_rect(c, &whole, x, ym - 7, x + 14, ym + 7, tool_col_clamp);
         x += 20;
-        x += am_raster_text(c, &whole, x, ym - 7, 2, m->palette.mat[k].name, col_text) + 16;
+        x += am_raster_text(c, &whole, x, ym - 7, 2, "clamped", col_text) + 16;
+    }
+    if (mo->nforced > 0) {
+        am_raster_line2(c, &whole, x, ym, x + 16, ym, 3, tool_col_force);
+        arrow_head(c, &whole, x, ym, x + 20, ym, 12, tool_col_force);
+        x += 28;
+        x += am_raster_text(c, &whole, x, ym - 7, 2, "force", col_text) + 16;
+    }
+    /* a scale bar at the right end: the round length of 80 to 200 pixels, true along the screen's
+     * horizontal (every picture has this one scale) */
+    double bar = nice_step(80 / scale), bpx = bar * scale;
+    char blen[64];
+    fmt_len(blen, sizeof blen, bar);
+    int bx1 = np * pw - 16, bx0 = (int)(bx1 - bpx + 0.5);
+    int tw = (int)strlen(blen) * 12;
+    if (bx0 - tw - 8 > x) {
+        am_raster_text(c, &whole, bx0 - tw - 8, ym - 7, 2, blen, col_text);
+        fill_rect(c, &whole, bx0, ym - 2, bx1, ym + 2, col_text);
+        fill_rect(c, &whole, bx0, ym - 7, bx0 + 2, ym + 7, col_text);
+        fill_rect(c, &whole, bx1 - 2, ym - 7, bx1, ym + 7, col_text);
     }
     return 0;
 }
 
 static film_opts film_defaults(void)
 {
-    film_opts o = {6, 1600, 400, 0};
+    film_opts o = {6, 1600, 400, 0, TOOL_COL_MATERIAL};
     return o;
 }
 
@@ -296,6 +387,8 @@ static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     /* the body's mesh: its surface, and each voxel's half size for the boxes and the shadows */
     if (am_mesh_build(tool_mesh(), lat, AM_MESH_BODY, err, sizeof err) != AM_OK)
         return tool_usage_error("%s: %s", what, err);
+    film_lo = 0, film_hi = 1;
+    if (o->colour != TOOL_COL_MATERIAL) tool_colour_range(&mo, o->colour, &film_lo, &film_hi);
     am_canvas cv = {o->width, o->height, film_rgb, film_depth};
     film_draw(&mo, o, &cv);
     long n = 0;
@@ -330,6 +423,8 @@ static const char render_help[] =
     "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
     "  --boxes            each voxel as a box (turned and sized as simulated) instead of the\n"
     "                     continuous surface over the voxels (--surface, the default)\n"
+    "  --colour MODE      what the colours show: material (the default), strain, stress, speed\n"
+    "                     or phase (docs/pictures.md, Colours), with a legend of the scale\n"
     TOOL_ROBOT_HELP;
 
 int cmd_render(tool_ctx* c, int argc, char** argv)
@@ -349,6 +444,10 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
             out = v, i++;
         } else if (!strcmp(a, "--boxes") || !strcmp(a, "--surface")) {
             o.boxes = a[2] == 'b';
+        } else if (!strcmp(a, "--colour") || !strcmp(a, "--color")) {
+            o.colour = tool_colour_parse(v);
+            if (o.colour < 0) return tool_usage_error("render: %s needs material, strain, stress, speed or phase", a);
+            i++;
         } else if (!strcmp(a, "--frames")) {
             if (!tool_parse_int(v, 3, FILM_MAX_PANELS, &o.panels)) return tool_usage_error("render: --frames needs a whole number 3..%d", FILM_MAX_PANELS);
             i++;

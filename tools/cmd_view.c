@@ -11,10 +11,10 @@
 
 /* the page: the poses in base64 (14 bytes a voxel a frame, 4/3 of it as text), the per-voxel and
  * per-frame numbers as text, and the fixed page around them */
-#define VIEW_HTML_MAX ((TOOL_REC_FLOATS / 7) * 19L + AM_MAX_VOXELS * 32L + TOOL_REC_MAX_FRAMES * 96L + 262144L + VIEW_MESH_MAX)
+#define VIEW_HTML_MAX ((TOOL_REC_FLOATS / 7) * 25L + AM_MAX_VOXELS * 96L + TOOL_REC_MAX_FRAMES * 96L + 262144L + VIEW_MESH_MAX)
 /* the body's surface: at most one face per face position, half the mesh's capacities; a triangle
  * takes at most 3 x 8 + 3 characters, a vertex 4 x 8 + 4 */
-#define VIEW_MESH_MAX ((AM_MESH_MAX_TRIS / 2) * 27L + (AM_MESH_MAX_VERTS / 2) * 36L)
+#define VIEW_MESH_MAX ((AM_MESH_MAX_TRIS / 2) * 33L + (AM_MESH_MAX_VERTS / 2) * 36L)
 static char view_html[VIEW_HTML_MAX];
 static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
 
@@ -104,13 +104,15 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
             r[6 + 2 * k] = (uint8_t)u, r[7 + 2 * k] = (uint8_t)(u >> 8);
         }
     }
-    /* framing: the body's size, and the whole path's */
+    /* framing, over the movement (the frames from the settled one on; all of them when the
+     * movement has none of its own): the body's size, and the whole path's */
+    const int f0 = mo->settled_frame < nf - 1 ? mo->settled_frame : 0;
     double mean[3] = {0, 0, 0}, body = 0, all = 0, c[3];
-    for (int f = 0; f < nf; f++) {
+    for (int f = f0; f < nf; f++) {
         tool_motion_com(mo, f, c);
-        for (int k = 0; k < 3; k++) mean[k] += c[k] / nf;
+        for (int k = 0; k < 3; k++) mean[k] += c[k] / (nf - f0);
     }
-    for (int f = 0; f < nf; f++) {
+    for (int f = f0; f < nf; f++) {
         tool_motion_com(mo, f, c);
         const float* p = mo->pose + (long)f * nv * 7;
         for (int v = 0; v < nv; v++) {
@@ -125,6 +127,26 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
     double L = am_to_si(m, m->L, AM_DIM_LENGTH);
     int follow = all > 3 * body;
     double extent = 2 * (follow ? body : all) + 2 * L;
+    /* the box the page fills with the body: the voxels' centres seen by the default camera
+     * (azimuth -0.6, elevation 0.49 rad), about the centre of mass of each frame when the view
+     * follows the robot, else about the mean, padded by 0.7 voxel edges (a voxel's half diagonal seen from there) */
+    double box[4] = {1e30, -1e30, 1e30, -1e30};
+    {
+        const double az = -0.6, el = 0.49;
+        const double right[3] = {cos(az), sin(az), 0}, fwd[3] = {-sin(az) * cos(el), cos(az) * cos(el), -sin(el)};
+        const double up[3] = {right[1] * fwd[2] - right[2] * fwd[1], right[2] * fwd[0] - right[0] * fwd[2],
+                              right[0] * fwd[1] - right[1] * fwd[0]};
+        for (int f = f0; f < nf; f++) {
+            tool_motion_com(mo, f, c);
+            const double* ctr = follow ? c : mean;
+            const float* p = mo->pose + (long)f * nv * 7;
+            for (int v = 0; v < nv; v++) {
+                double d[3] = {(double)p[7 * v] - ctr[0], (double)p[7 * v + 1] - ctr[1], (double)p[7 * v + 2] - ctr[2]};
+                double u = d[0] * right[0] + d[1] * right[1] + d[2] * right[2], w = d[0] * up[0] + d[1] * up[1] + d[2] * up[2];
+                box[0] = fmin(box[0], u - 0.7 * L), box[1] = fmax(box[1], u + 0.7 * L), box[2] = fmin(box[2], w - 0.7 * L), box[3] = fmax(box[3], w + 0.7 * L);
+            }
+        }
+    }
 
     out_str(o, "{\"format\": \"amorph-view 1\",\n\"title\": ");
     out_json_string(o, title);
@@ -135,6 +157,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
     out_fmt(o, "\"relax_steps\": %ld,\n", mo->res.relax_steps);
     out_fmt(o, "\"size\": [%d, %d, %d], \"center\": [%.7g, %.7g, %.7g], \"extent\": %.7g, \"grid\": %.7g, \"follow\": %d,\n",
             m->nx, m->ny, m->nz, mean[0], mean[1], mean[2], extent, nice_step(extent / 8), follow);
+    out_fmt(o, "\"view_box\": [%.7g, %.7g, %.7g, %.7g],\n", box[0], box[1], box[2], box[3]);
     out_fmt(o, "\"origin\": [%.9g, %.9g, %.9g], \"quantum\": [%.9g, %.9g, %.9g],\n", lo[0], lo[1], lo[2], q[0], q[1], q[2]);
     out_str(o, "\"materials\": [");
     for (int k = 0; k < m->palette.count; k++) {
@@ -172,10 +195,40 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
             out_fmt(o, t ? ",%ld,%ld,%ld" : "%ld,%ld,%ld", (long)mesh->tri[t][0], (long)mesh->tri[t][1], (long)mesh->tri[t][2]);
         out_str(o, "],\n\"mesh_mat\": [");
         for (long t = 0; t < mesh->ntri; t++) out_fmt(o, t ? ",%d" : "%d", mesh->tmat[t]);
+        out_str(o, "],\n\"mesh_vox\": [");
+        const int32_t* tv = tool_mesh_tri_voxel();
+        for (long t = 0; t < mesh->ntri; t++) out_fmt(o, t ? ",%ld" : "%ld", (long)tv[t]);
+    }
+    /* the boundary conditions: the clamped voxels, and each forced voxel with its force (N) */
+    out_str(o, "],\n\"fixed\": [");
+    int any = 0;
+    for (int v = 0; v < nv; v++)
+        if (mo->fixed[v]) out_fmt(o, any++ ? ",%d" : "%d", v);
+    out_str(o, "],\n\"force\": [");
+    any = 0;
+    for (int v = 0; v < nv; v++) {
+        const float* F = mo->force + 3 * v;
+        if (F[0] != 0 || F[1] != 0 || F[2] != 0)
+            out_fmt(o, any++ ? ",%d,%.6g,%.6g,%.6g" : "%d,%.6g,%.6g,%.6g", v, (double)F[0], (double)F[1], (double)F[2]);
     }
     out_str(o, "],\n\"pose\": \"");
     out_base64(o, view_raw, 14L * nf * nv);
-    out_str(o, "\"}\n");
+    /* the colourings: each scalar as a byte per voxel and frame, 0 .. 255 over its scale lo .. hi */
+    out_str(o, "\",\n\"scalars\": [");
+    for (int mode = TOOL_COL_STRAIN; mode < TOOL_COL_COUNT; mode++) {
+        double slo, shi, per;
+        tool_colour_range(mo, mode, &slo, &shi);
+        const char* unit = tool_colour_unit(mode, &per);
+        for (i = 0; i < (long)nf * nv; i++) {
+            double u = (tool_colour_value(mo, mode, (int)(i / nv), (int)(i % nv)) - slo) / (shi - slo);
+            view_raw[i] = (uint8_t)(u > 1 ? 255 : u > 0 ? lround(u * 255) : 0);
+        }
+        out_fmt(o, "%s{\"name\": \"%s\", \"unit\": \"%s\", \"per_si\": %g, \"lo\": %.6g, \"hi\": %.6g, \"data\": \"",
+                mode > TOOL_COL_STRAIN ? ",\n" : "", tool_colour_name(mode), unit, per, slo, shi);
+        out_base64(o, view_raw, (long)nf * nv);
+        out_str(o, "\"}");
+    }
+    out_str(o, "]}\n");
 }
 
 static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int frames, const char* title,
@@ -208,7 +261,9 @@ static const char view_help[] =
     "usage: amorph view ROBOT | --scene NAME --out FILE.html [options]\n"
     "Simulates the robot (relaxation, then actuation cycles, as amorph sim) and writes one\n"
     "self-contained HTML file that plays the recorded motion in a browser: drag to orbit, wheel to\n"
-    "zoom, play/pause, speed, a time slider, the centre-of-mass trail. It opens where the movement\n"
+    "zoom, play/pause, speed, a time slider, the centre-of-mass trail, a scale bar and a plot of the\n"
+    "travel against time; a menu colours the voxels by material, strain, stress, speed or phase\n"
+    "(#colour=NAME), clamped voxels and forces drawn. It opens where the movement\n"
     "starts, the relaxation skipped (its check box, or #relax=1, shows it). URL hash parameters pick\n"
     "a moment: FILE.html#t=0.5&paused=1 (docs/pictures.md lists them all). ROBOT is a lattice or\n"
     "genome or VXA file or a run folder; NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"

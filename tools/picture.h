@@ -8,6 +8,12 @@
 #define TOOL_REC_FLOATS (AM_MAX_VOXELS * 7L * 128L)
 #define TOOL_REC_MAX_FRAMES 1024
 
+/* what a voxel is coloured by (render --colour, the viewer's menu; docs/pictures.md, Colours):
+ * its material, or a scalar recorded per voxel and frame */
+enum { TOOL_COL_MATERIAL = 0, TOOL_COL_STRAIN, TOOL_COL_STRESS, TOOL_COL_SPEED, TOOL_COL_PHASE, TOOL_COL_COUNT };
+/* scalars per voxel and frame: strain, stress, speed, phase (TOOL_COL_STRAIN + k) */
+#define TOOL_REC_SCALARS 4
+
 /* one recorded evaluation; the arrays are static storage of tools/picture.c (one at a time) */
 typedef struct tool_motion {
     const am_model* model;   /* the model simulated (palette, voxel materials, cells, neighbours) */
@@ -18,7 +24,30 @@ typedef struct tool_motion {
     double dt;               /* s per step */
     const float* pose;       /* (frames x nv x 7) x, y, z (m), qw, qx, qy, qz */
     const long* step;        /* (frames) step of each frame */
+    const float* scalar;     /* (frames x nv x 4) per voxel: strain (1), stress (Pa), speed (m/s), phase
+                              * (the actuation's expansion s - 1, 1): tool_colour_value */
+    const uint8_t* fixed;    /* (nv) 1: the voxel is clamped */
+    const float* force;      /* (nv x 3) the constant external force on the voxel, N */
+    int nfixed, nforced;     /* clamped voxels, voxels with a non-zero force */
 } tool_motion;
+
+/* the colouring's name ("material", "strain", "stress", "speed", "phase"), and the mode of a name
+ * (-1 when none) */
+const char* tool_colour_name(int mode);
+int tool_colour_parse(const char* name);
+/* the scalar of a mode for voxel i in frame f, in SI (strain and phase as fractions) */
+double tool_colour_value(const tool_motion* mo, int mode, int f, int i);
+/* the legend's range of a mode over the recording, in SI, ends on round numbers of the shown unit:
+ * 0 .. the largest value for strain, stress and speed, -m .. m (m the largest |value|) for phase */
+void tool_colour_range(const tool_motion* mo, int mode, double* lo, double* hi);
+/* the shown unit of a mode: its name and how many of it make one SI unit ("%" and 100 for strain
+ * and phase, "kPa" and 0.001 for stress, "mm/s" and 1000 for speed) */
+const char* tool_colour_unit(int mode, double* per_si);
+/* the colour of a value at u = (v - lo) / (hi - lo) clamped to 0..1: a sequential scale (dark blue,
+ * blue, green, yellow) for strain, stress and speed, a diverging one (blue, white, red) for phase */
+void tool_colour_ramp(int mode, double u, uint8_t rgb[3]);
+/* the colour clamped voxels are drawn in, and force arrows */
+extern const uint8_t tool_col_clamp[3], tool_col_force[3];
 
 /* evaluates the robot with recording, about `want` frames over the longest possible run (fewer
  * for a big body); returns 0, or an exit status after a one-line message naming `what` */
@@ -31,6 +60,9 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
  * (one at a time), and room for its vertex positions (3 per vertex, m) */
 am_mesh* tool_mesh(void);
 double* tool_mesh_pos(void);
+/* the voxel under each triangle of tool_mesh() (ntri), found again after each am_mesh_build: a
+ * face's triangles share its centre, their first vertex, and the face's cell is its voxel's */
+const int32_t* tool_mesh_tri_voxel(void);
 
 /* the robot of render and view (tools/robot.h) into c->work[0].lattice, with its environment and
  * evaluation; 0 or an exit status after a message naming cmd */
