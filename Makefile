@@ -67,7 +67,7 @@ TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
 LDLIBS  := -lm -lpthread
 # the port's source folders: port/<port>/, and any its port.mk adds
-PORT_DIRS := port/$(PORT)
+PORT_DIRS := port/$(PORT) port/common
 EXE     :=
 -include port/$(PORT)/port.mk
 
@@ -98,7 +98,7 @@ FIXFLAGS := $(if $(filter fixed,$(REAL)),-fwrapv)
 ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
            -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
-LIB_SRC  := $(sort $(wildcard src/*.c))
+LIB_SRC  := $(sort $(wildcard src/*/*.c))
 PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)))
 TOOL_SRC := $(sort $(wildcard tools/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
@@ -107,7 +107,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all test unit bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -171,6 +171,11 @@ check-fma: $(LIB_OBJ)
 	if [ -n "$$bad" ]; then echo "check-fma: fused multiply-add found:"; echo "$$bad"; echo "check-fma: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-fma: no fused multiply-add in $(words $(LIB_OBJ)) objects of src/"
 
+# who may include whom: each layer of src/ only the headers of the layers before it, the ports only
+# amorph/base.h and amorph/port.h (tools/check_layers.sh, docs/architecture.md)
+check-layers:
+	@sh tools/check_layers.sh
+
 # a shell test's `check DESC CMD...` judges CMD alone: in `check DESC A && B`, B could never fail
 # the suite (tests/lint_checks.awk)
 check-tests:
@@ -181,7 +186,7 @@ check-tests:
 unit: $(TEST_BIN) $(BUILD)/amorph
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
-test: all check-alloc check-fma check-tests
+test: all check-alloc check-fma check-tests check-layers
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
@@ -197,10 +202,10 @@ test: all check-alloc check-fma check-tests
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
 
 # the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
-# util_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of
+# base_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of
 # sim_model.c) cross-compiled for a Cortex-M3, which has no FPU, must not call one soft-float
 # helper (__aeabi_f*, __aeabi_d*, libm). Skipped without arm-none-eabi-gcc.
-FIXED_HOT := src/sim_step.c src/sim_collide.c src/util_math.c
+FIXED_HOT := src/sim/sim_step.c src/sim/sim_collide.c src/base/base_math.c
 M3CC := arm-none-eabi-gcc
 M3FLAGS := -std=c11 -pedantic-errors $(WARN) -O2 -mcpu=cortex-m3 -mthumb -ffp-contract=off -fwrapv \
            -DAM_REAL_FIXED -DAM_PROFILE_BOARD -Iinclude
@@ -212,7 +217,7 @@ check-fixed:
 	    calls=$$(arm-none-eabi-nm -u $$o | awk '$$2 ~ /^__aeabi_([fd]|[iu]?[il]2[fd]|[fd]2)|^__(add|sub|mul|div|cmp|eq|lt|gt|le|ge|float|fix|extend|trunc)[sd]f|^(sqrt|floor|fabs|sin|cos|exp|log|pow|cbrt)f?$$/ {printf " %s", $$2}'); \
 	    if [ -n "$$calls" ]; then echo "check-fixed: $$f calls floating point:$$calls"; bad=1; fi; \
 	    echo "check-fixed: $$f calls:$$(arm-none-eabi-nm -u $$o | awk '{printf " %s", $$2}')"; done; \
-	$(M3CC) $(M3FLAGS) -c src/sim_model.c -o $(BUILD)/m3/sim_model.o || exit 1; \
+	$(M3CC) $(M3FLAGS) -c src/sim/sim_model.c -o $(BUILD)/m3/sim_model.o || exit 1; \
 	for fn in am_sim_scale am_sim_scale_rate; do \
 	    scale=$$(arm-none-eabi-objdump -d --disassemble=$$fn $(BUILD)/m3/sim_model.o | awk '/\tbl?\t/ {printf " %s", $$NF}'); \
 	    case "$$scale" in *aeabi_[fd]*|*aeabi_[iu]*2[fd]*) echo "check-fixed: $$fn calls floating point:$$scale"; bad=1;; esac; \

@@ -60,14 +60,14 @@ dry() { env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make --no-print-directory -n BUI
 compiled() { grep -oE -- '-c (src|tools|port)/[a-z_/0-9]+\.c' | sed 's/^-c //' | sort | tr '\n' ' '; }
 now=$(dry | compiled)
 check "$BUILD is up to date (nothing to compile: $now)" test -z "$now"
-dct=$(dry -W include/amorph/dct.h | compiled)
-case " $dct " in *" src/dct.c "*" src/geno_dct.c "*) ok ;; *) ko "dct.h changed: dct.c and geno_dct.c not rebuilt: $dct" ;; esac
-case " $dct " in *" src/xml.c "* | *" src/sim_step.c "* | *" src/inflate.c "*) ko "dct.h changed: objects that do not include it rebuilt: $dct" ;; *) ok ;; esac
-step=$(dry -W src/sim_internal.h | compiled)
-case " $step " in *" src/sim_step.c "*) ok ;; *) ko "sim_internal.h changed: sim_step.c not rebuilt: $step" ;; esac
+geno=$(dry -W include/amorph/geno.h | compiled)
+case " $geno " in *" src/evo/evo_evolve.c "*" src/geno/geno_dct.c "*) ok ;; *) ko "geno.h changed: geno_dct.c and evo_evolve.c not rebuilt: $geno" ;; esac
+case " $geno " in *" src/base/"* | *" src/sim/"*) ko "geno.h changed: objects of the layers below it rebuilt: $geno" ;; *) ok ;; esac
+step=$(dry -W src/sim/sim_internal.h | compiled)
+case " $step " in *" src/sim/sim_step.c "*) ok ;; *) ko "sim_internal.h changed: sim_step.c not rebuilt: $step" ;; esac
 case " $step " in *" tools/"*) ko "sim_internal.h changed: tools rebuilt: $step" ;; *) ok ;; esac
 all=$(dry CFLAGS=-DAM_FLAGS_PROBE | compiled)
-n_all=$(echo "$all" | wc -w) n_src=$(ls src/*.c tools/*.c | wc -l)
+n_all=$(echo "$all" | wc -w) n_src=$(ls src/*/*.c tools/*.c | wc -l)
 check "new flags rebuild every object ($n_all of at least $n_src)" test "$n_all" -ge "$n_src"
 check "a dry run wrote no flags: $(head -c 200 "$BUILD/flags.txt")" test "$(cat "$BUILD/flags.txt")" = "$flags"
 

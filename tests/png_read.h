@@ -1,7 +1,7 @@
 /* tests/png_read.h: a small PNG reader for the tests (test code only; the library writes PNGs).
  *
  * png_decode checks the signature and every chunk's CRC-32 (computed here bit by bit, independently
- * of the library's table), inflates the IDAT stream with the library's inflater, amorph/inflate.h
+ * of the library's table), inflates the IDAT stream with the library's inflater, amorph/io.h
  * (which checks the zlib header and the Adler-32; stored, fixed and dynamic Huffman blocks:
  * screenshots from browsers use all three), undoes the five scanline filters and returns 8-bit
  * RGB pixels (RGBA is composited on white, grey and palette images are expanded). Bit depth 8
@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "amorph/inflate.h"
+#include "amorph/io.h"
 
 typedef struct png_image {
     int w, h;
@@ -92,7 +92,7 @@ static int png_decode(const uint8_t* f, long n, png_image* img, char* why, int w
         return free(z), snprintf(why, (size_t)whysz, "unsupported PNG (depth %d, type %d, interlace %d)", depth, img->color_type, interlace), -1;
     long stride = (long)img->w * ch, rawn = (stride + 1) * img->h, got = 0;
     uint8_t* raw = (uint8_t*)malloc((size_t)rawn + 1);
-    static am_inflate_work iw; /* the library's inflater (amorph/inflate.h): header, data, Adler-32 */
+    static am_inflate_work iw; /* the library's inflater (amorph/io.h): header, data, Adler-32 */
     char ierr[256];
     if (!raw) return free(z), snprintf(why, (size_t)whysz, "out of memory"), -1;
     if (am_zlib_inflate(z, zn, raw, rawn, &got, &iw, ierr, sizeof ierr) != AM_OK)

@@ -7,7 +7,7 @@
 #define AMORPH_TEST_SINK_H
 
 #include <string.h>
-#include "amorph/text.h"
+#include "amorph/base.h"
 
 typedef struct t_sink {
     char* buf;

@@ -36,11 +36,36 @@ static am_evo_def small_def(int repr)
     return d;
 }
 
+/* the executor of `workers` workers on the port's parallel map (0: none, NULL, items in order on
+ * this thread), with a clock that counts its calls */
+static double g_clock;
+static am_status port_map(void* self, int n, int workers, am_task_fn task, void* ctx, void* out, long size, char* err, int errsz)
+{
+    (void)self;
+    return am_port_parallel_map(n, workers, task, ctx, out, size, err, errsz);
+}
+static double count_now(void* self)
+{
+    (void)self;
+    return g_clock += 1.0;
+}
+static am_executor g_ex[AM_MAX_WORKERS + 1];
+static const am_executor* on(int workers)
+{
+    if (workers == 0) return NULL;
+    am_executor* x = &g_ex[workers];
+    x->map = port_map;
+    x->now = count_now;
+    x->self = NULL;
+    x->workers = workers;
+    return x;
+}
+
 static int run_to_end(am_evo* e, int workers)
 {
     char err[AM_ERR_MAX];
     while (!am_evo_done(e))
-        if (am_evo_generation(e, g_work, workers, NULL, err, sizeof err) != AM_OK) {
+        if (am_evo_generation(e, g_work, on(workers), NULL, err, sizeof err) != AM_OK) {
             fprintf(stderr, "generation: %s\n", err);
             return 0;
         }
@@ -176,14 +201,14 @@ static void test_crowding_rule(void)
     am_evo_def d = small_def(AM_REPR_GMX);
     char err[AM_ERR_MAX];
     CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
-    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
     CHECK(g_a.evaluations == 6 && g_a.generation == 1, "after generation 0: %ld evaluations", g_a.evaluations);
     int replaced_total = 0;
     for (int gen = 0; gen < 3; gen++) {
         am_evo_ind before[AM_MAX_POPULATION];
         for (int i = 0; i < d.population; i++) before[i] = g_a.pop[i];
         double best_before = g_a.last.best;
-        CHECK(am_evo_generation(&g_a, g_work, 2, NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_a, g_work, on(2), NULL, err, sizeof err) == AM_OK, "%s", err);
         /* the offspring of the generation are all in child[] when one batch holds them (the
          * desktop); a board keeps the last pair only, so there a replaced member is checked
          * against what it became */
@@ -215,7 +240,7 @@ static void test_unsettled_generation(void)
     am_evo_def d = small_def(AM_REPR_GMX); /* 400 relaxation steps: room for the release window of 100, not for every body */
     char err[AM_ERR_MAX];
     CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
-    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
     int unsettled = 0, scored = 0;
     double sum = 0;
     for (int i = 0; i < d.population; i++) {
@@ -247,6 +272,13 @@ static void test_workers_give_identical_runs(void)
     }
     CHECK(h[0] == h[1] && h[1] == h[2], "run hashes for 1, 2, 3 workers: %016llx %016llx %016llx", (unsigned long long)h[0],
           (unsigned long long)h[1], (unsigned long long)h[2]);
+    /* no executor: every evaluation in order on this thread, no clock (wall_s 0); the executor's
+     * clock: one call at the generation's start and one at its end */
+    CHECK(g_c.last.wall_s == 1.0, "wall_s from the executor's clock: %g", g_c.last.wall_s);
+    CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK && run_to_end(&g_b, 0), "run without an executor");
+    CHECK(am_evo_hash(&g_b) == h[0], "no executor: %016llx, 1 worker: %016llx", (unsigned long long)am_evo_hash(&g_b),
+          (unsigned long long)h[0]);
+    CHECK(g_b.last.wall_s == 0.0, "wall_s without a clock: %g", g_b.last.wall_s);
     CHECK(g_a.evaluations == 24 && g_a.generation == 4, "%ld evaluations in %ld generations", g_a.evaluations, g_a.generation);
 #if defined(AM_REAL_FIXED_POINT)
     if (AM_MAX_DIM == 20)
@@ -273,8 +305,8 @@ static void test_checkpoint_resume_equals_uninterrupted(void)
         long la = 0, lb = 0;
         CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK && run_to_end(&g_a, 2), "uninterrupted %s", am_repr_name(reprs[r]));
         CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK, "%s", err);
-        CHECK(am_evo_generation(&g_b, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
-        CHECK(am_evo_generation(&g_b, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_b, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_b, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
         CHECK(am_evo_checkpoint_format(&g_b, g_text, sizeof g_text, &la, err, sizeof err) == AM_OK, "%s", err);
         /* through a 64-byte stream: the same text, checksum included */
         char piece[64];
@@ -301,7 +333,7 @@ static void test_checkpoint_damage_is_refused(void)
     char err[AM_ERR_MAX];
     long len = 0;
     CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
-    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
     CHECK(am_evo_checkpoint_format(&g_a, g_text, sizeof g_text, &len, err, sizeof err) == AM_OK, "%s", err);
     /* one changed digit anywhere */
     memcpy(g_text2, g_text, (size_t)len + 1);
@@ -516,7 +548,7 @@ static void test_evaluations_are_reported(void)
         long ids[AM_MAX_POPULATION];
         for (int i = 0; i < d.population; i++) ids[i] = g_a.pop[i].id;
         const long placed_before = s.placed, evals_before = g_a.evaluations;
-        CHECK(am_evo_generation(&g_a, g_work, 2, &hooks, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generation(&g_a, g_work, on(2), &hooks, err, sizeof err) == AM_OK, "%s", err);
         /* the rows marked placed are exactly the members that are new: each pair of offspring meets
          * its own two parents, so a placed offspring stays in the population to the generation's end */
         int fresh = 0;
@@ -559,12 +591,12 @@ static void test_cancel_leaves_the_run_unchanged(void)
     am_evo_def d = small_def(AM_REPR_GMX);
     char err[AM_ERR_MAX];
     CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK, "%s", err);
-    CHECK(am_evo_generation(&g_a, g_work, 1, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, on(1), NULL, err, sizeof err) == AM_OK, "%s", err);
     uint64_t h = am_evo_hash(&g_a);
     am_rng r = g_a.rng;
     long gen = g_a.generation;
     const am_evo_hooks hooks = {cancel_now, NULL, NULL};
-    CHECK(am_evo_generation(&g_a, g_work, 2, &hooks, err, sizeof err) == AM_ERR_CANCELLED && strstr(err, "interrupted"), "%s", err);
+    CHECK(am_evo_generation(&g_a, g_work, on(2), &hooks, err, sizeof err) == AM_ERR_CANCELLED && strstr(err, "interrupted"), "%s", err);
     CHECK(am_evo_hash(&g_a) == h && g_a.generation == gen && memcmp(&r, &g_a.rng, sizeof r) == 0, "cancelled generation changed the run");
     /* and the run goes on as if nothing happened */
     CHECK(run_to_end(&g_a, 1), "after a cancel");
@@ -592,7 +624,7 @@ static void test_steps_equal_generations(void)
         int live[2], m[2];
         for (int k = 0; k < 2; k++) {
             live[k] = !am_evo_done(e[k]);
-            if (live[k]) am_evo_gen_begin(e[k]);
+            if (live[k]) am_evo_gen_begin(e[k], 0.0);
         }
         for (;;) {
             int total = 0;
@@ -622,7 +654,7 @@ static void test_steps_equal_generations(void)
                 if (m[k] > 0) CHECK(am_evo_batch_end(e[k], g_res[k], &g_work[0].geno, NULL, err, sizeof err) == AM_OK, "%s", err);
         }
         for (int k = 0; k < 2; k++)
-            if (live[k]) am_evo_gen_end(e[k]);
+            if (live[k]) am_evo_gen_end(e[k], 0.0);
         CHECK(++gens < 20, "runaway");
         if (gens >= 20) return;
     }
@@ -647,14 +679,14 @@ static void test_generations_in_lockstep(void)
     CHECK(am_evo_init(&g_a, &d1, err, sizeof err) == AM_OK && am_evo_init(&g_b, &d2, err, sizeof err) == AM_OK, "%s", err);
     int gens = 0;
     while ((!am_evo_done(&g_a) || !am_evo_done(&g_b)) && gens < 20) {
-        CHECK(am_evo_generations(runs, 2, &g_wave, g_work, 3, NULL, err, sizeof err) == AM_OK, "%s", err);
+        CHECK(am_evo_generations(runs, 2, &g_wave, g_work, on(3), NULL, err, sizeof err) == AM_OK, "%s", err);
         gens++;
     }
     CHECK(gens == 6 && g_a.generation == 4 && g_b.generation == 6, "%d calls, generations %ld and %ld (want 6, 4, 6)", gens,
           g_a.generation, g_b.generation);
     CHECK(am_evo_hash(&g_a) == h1 && am_evo_hash(&g_b) == h2, "in lockstep %016llx %016llx, alone %016llx %016llx",
           (unsigned long long)am_evo_hash(&g_a), (unsigned long long)am_evo_hash(&g_b), (unsigned long long)h1, (unsigned long long)h2);
-    CHECK(am_evo_generations(runs, 2, NULL, g_work, 1, NULL, err, sizeof err) == AM_ERR_ARG, "two runs without a wave accepted");
+    CHECK(am_evo_generations(runs, 2, NULL, g_work, on(1), NULL, err, sizeof err) == AM_ERR_ARG, "two runs without a wave accepted");
 }
 
 static void test_log_row(void)

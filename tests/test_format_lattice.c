@@ -1,4 +1,4 @@
-/* Tests of the lattice text format (src/format_lattice.c): exact round trips, the built-in scenes,
+/* Tests of the lattice text format (src/io/io_lattice.c): exact round trips, the built-in scenes,
  * the axis order, defaults, and one test per error with its status and "fname:LINE:" prefix. */
 #include "amorph.h"
 #include "harness.h"

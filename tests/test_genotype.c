@@ -3,7 +3,7 @@
 #include "amorph.h"
 #include "harness.h"
 #include "sink.h"
-#include "../src/geno_internal.h" /* the operators' steps, checked one by one */
+#include "../src/geno/geno_internal.h" /* the operators' steps, checked one by one */
 
 static am_geno_work W;
 static am_dct_work D;

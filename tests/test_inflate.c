@@ -1,10 +1,10 @@
-/* Tests of the zlib inflater (src/inflate.c, amorph/inflate.h): streams of the three block kinds
+/* Tests of the zlib inflater (src/io/io_inflate.c, amorph/io.h): streams of the three block kinds
  * (made with Python's zlib for these tests, the plain text rebuilt here), one check per kind of
  * malformed stream with its status and message, every truncation, a short output, and a fuzz
  * pass of byte mutations that must each end in AM_OK or one clean message, never a crash (the
  * asan and valgrind targets run it under their checkers). */
 #include "amorph.h"
-#include "amorph/inflate.h"
+#include "amorph/io.h"
 #include "harness.h"
 
 #include <stdint.h>

@@ -1,5 +1,5 @@
-/* tests/test_mesh.c: the surface mesh (src/mesh.c), its self-intersection check (src/mesh_cross.c)
- * and its STL and AMF files (src/format_mesh.c). A manifold check of our own, over a triangle soup:
+/* tests/test_mesh.c: the surface mesh (src/io/io_mesh.c), its self-intersection check (src/io/io_mesh_cross.c)
+ * and its STL and AMF files (src/io/io_printable.c). A manifold check of our own, over a triangle soup:
  * every edge in exactly two triangles, once each way round (closed, consistently turned), and
  * every vertex's link (the far edges of its triangles) one cycle (a single disc of triangles
  * around it). It runs on the mesh's vertex numbers and, as a slicer sees an STL file, on vertices
@@ -13,7 +13,7 @@
  * `test_mesh --stl-check FILE` checks an STL file the same way (what tests/cli_printable.sh uses)
  * and prints "solids S facets F volume V open_edges E bad_vertices B" (V in the file's units^3). */
 #include "amorph.h"
-#include "amorph/mesh.h"
+#include "amorph/io.h"
 #include "harness.h"
 
 static am_mesh g_mesh;

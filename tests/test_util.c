@@ -1,6 +1,6 @@
-/* Tests of the numbers layer: the deterministic elementary functions (src/util_math.c) against
- * libm, and the seeded random stream and hashes (src/util_rng.c); and of the text buffer
- * (src/util_text.c) and the quoting of input in messages (am_quote, src/util_status.c).
+/* Tests of the numbers layer: the deterministic elementary functions (src/base/base_math.c) against
+ * libm, and the seeded random stream and hashes (src/base/base_rng.c); and of the text buffer
+ * (src/base/base_text.c) and the quoting of input in messages (am_quote, src/base/base_status.c).
  *
  * Tolerances, in units in the last place of am_real at the libm (double) reference value:
  *   float build:  1 ulp for every function (they compute in double and round once);

@@ -1,4 +1,4 @@
-/* Tests of the XML reader (src/xml.c) and the VXA format (src/format_vxa.c): parser edge cases,
+/* Tests of the XML reader (src/io/io_xml.c) and the VXA format (src/io/io_vxa.c): parser edge cases,
  * exact round trips, VoxCAD conventions (legacy TempAmp, names, damping, BASE64 layers), warnings,
  * and one check per malformed input with its status and exact "fname:line: problem" message. */
 #include "amorph.h"

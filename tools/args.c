@@ -1,4 +1,4 @@
-/* Messages, and command-line values: the library's strict number parsers (amorph/text.h) with a
+/* Messages, and command-line values: the library's strict number parsers (amorph/base.h) with a
  * range, shared by every subcommand. */
 #include "cmd.h"
 

@@ -90,6 +90,10 @@ int tool_is_run_dir(const char* path);
 #define TOOL_NOINLINE
 #endif
 
+/* the evolver's executor on this port: its parallel map on `workers` workers and its clock
+ * (tools/executor.c) */
+am_executor tool_executor(int workers);
+
 /* prints "amorph: <message>" on stderr as one line and returns 2 */
 int tool_usage_error(const char* fmt, ...)
 #if defined(__GNUC__)

@@ -69,7 +69,7 @@ static int bench_scene(tool_ctx* c, const char* scene, long steps, int collision
  * (8 products and 8 sums per element, in registers, as in the link element where loads are few
  * against the arithmetic) over arrays that stay in the L1 cache, in float and with the
  * fixed-point build's Q24 product (64-bit multiply, half an ulp, arithmetic shift: am_fx_mul of
- * amorph/real.h). Both are in every build, so one binary shows what a product costs in each
+ * amorph/base.h). Both are in every build, so one binary shows what a product costs in each
  * (docs/benchmarks.md, Fixed point). */
 #if !defined(AM_PROFILE_BOARD) /* its 32 KB of arrays are not worth a board's RAM */
 #define KERNEL_N 2048
@@ -243,7 +243,8 @@ static int bench_evolve(tool_ctx* c, long evaluations, int threads)
         double t0 = am_port_now();
         long steps = 0, voxel_steps = 0;
         while (!am_evo_done(&c->evo)) {
-            if (am_evo_generation(&c->evo, c->work, t, &hooks, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
+            const am_executor ex = tool_executor(t);
+            if (am_evo_generation(&c->evo, c->work, &ex, &hooks, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
             steps += c->evo.last_steps;
             voxel_steps += c->evo.last_voxel_steps;
         }

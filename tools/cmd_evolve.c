@@ -278,7 +278,8 @@ static int wave_generation(tool_ctx* c, run_slot* s, int n, int workers)
     }
     g_test_int.base = base;
     atomic_store(&g_test_int.started, 0);
-    am_status st = am_evo_generations(runs, n, WAVE_SCRATCH(n), c->work, workers, hooks, err, sizeof err);
+    const am_executor ex = tool_executor(workers);
+    am_status st = am_evo_generations(runs, n, WAVE_SCRATCH(n), c->work, &ex, hooks, err, sizeof err);
     if (st != AM_OK && st != AM_ERR_CANCELLED) {
         fprintf(stderr, "amorph: %s\n", err);
         return 1;

@@ -239,7 +239,7 @@ static void series_means(void)
     }
 }
 
-/* the bounded text buffer of amorph/text.h */
+/* the bounded text buffer of amorph/base.h */
 #define put am_text_put
 
 /* text with &, <, > and " escaped */

@@ -45,8 +45,9 @@ int cmd_repro(tool_ctx* c, int argc, char** argv)
     char err[AM_ERR_MAX];
     if (am_evo_init(&c->evo, &d, err, sizeof err) != AM_OK) return tool_usage_error("repro: %s", err);
     const double t0 = am_port_now();
+    const am_executor ex = tool_executor(workers_of(&d));
     while (!am_evo_done(&c->evo))
-        if (am_evo_generation(&c->evo, c->work, workers_of(&d), NULL, err, sizeof err) != AM_OK) {
+        if (am_evo_generation(&c->evo, c->work, &ex, NULL, err, sizeof err) != AM_OK) {
             fprintf(stderr, "amorph: repro: %s\n", err);
             return 1;
         }

@@ -18,7 +18,7 @@
 static char view_html[VIEW_HTML_MAX];
 static uint8_t view_raw[(TOOL_REC_FLOATS / 7) * 14L];
 
-/* the bounded text buffer of amorph/text.h */
+/* the bounded text buffer of amorph/base.h */
 #define out_fmt am_text_put
 
 static void out_str(am_text* o, const char* s)
@@ -181,7 +181,7 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
         out_fmt(o, v ? ",%d,%d,%d" : "%d,%d,%d", x, y, z);
     }
     if (mesh) {
-        /* the surface (amorph/mesh.h): corner vertices, the means, the triangles */
+        /* the surface (amorph/io.h): corner vertices, the means, the triangles */
         out_str(o, "],\n\"mesh_corner\": [");
         for (long v = 0; v < mesh->ncorner; v++) out_fmt(o, v ? ",%ld" : "%ld", (long)mesh->vcorner[v]);
         out_str(o, "],\n\"mesh_mask\": [");

@@ -56,7 +56,7 @@ int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, co
 /* mass-weighted centre of frame `frame`, m */
 void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
 
-/* the surface mesh render, view and export share (amorph/mesh.h), static storage of tools/picture.c
+/* the surface mesh render, view and export share (amorph/io.h), static storage of tools/picture.c
  * (one at a time), and room for its vertex positions (3 per vertex, m) */
 am_mesh* tool_mesh(void);
 double* tool_mesh_pos(void);

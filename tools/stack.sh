@@ -33,9 +33,9 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
     next
 }
 # the kind of callback a function is, or of callback an indirect call site takes: a genotype
-# operation (the tables of src/geno_dct.c, geno_cppn.c, geno_gmx.c, called by the am_genome_
+# operation (the tables of src/geno/geno_dct.c, geno_cppn.c, geno_gmx.c, called by the am_genome_
 # functions), the task of the parallel map, an am_text flush function (called by
-# util_text.c:drain, or the am_text functions it is inlined into), a line function of
+# base_text.c:drain, or the am_text functions it is inlined into), a line function of
 # tool_src_each (or its callers it is inlined into), a writer of cmd_evolve.c:write_stream, a
 # whole-text writer of am_text_format (the write_ adapters of the genome, configuration and
 # checkpoint formats), the fields of a summary for write_summaries (put_*), the frame sink of the recorder

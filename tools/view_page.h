@@ -226,7 +226,7 @@ static const char* const view_page_post[] = {
     "    }\n",
     "    var FACES = [[0, 4, 6, 2], [1, 3, 7, 5], [0, 1, 5, 4], [2, 6, 7, 3], [0, 2, 3, 1], [4, 5, 7, 6]];\n",
     "    var LIGHT = [-0.26, -0.43, 0.865];\n",
-    "    /* the continuous surface (amorph/mesh.h): corner vertices follow the voxels their mask names\n",
+    "    /* the continuous surface (amorph/io.h): corner vertices follow the voxels their mask names\n",
     "       around their lattice corner (the mean of each one's corner point), the others are means of\n",
     "       four earlier vertices; triangles counter-clockwise seen from outside. Toggled by the\n",
     "       surface check box and the hash parameter surface=0|1. */\n",

@@ -36,7 +36,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "posix_base.h"
 
-#include "amorph/status.h"
+#include "amorph/base.h"
 
 #include <mpi.h>
 #include <pthread.h>

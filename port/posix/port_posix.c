@@ -7,8 +7,7 @@
  * host under qemu-user) */
 #define _FILE_OFFSET_BITS 64
 #include "amorph/port.h"
-#include "amorph/rng.h"
-#include "amorph/text.h"
+#include "amorph/base.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -141,7 +140,7 @@ static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
     return n >= 0 && (size_t)n < cap;
 }
 
-/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/rng.h),
+/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/base.h),
  * seeded once from /dev/urandom when it can be read, the clock, this process's address space
  * (randomised by the system) and its id; each draw also takes the clock. Names only: never a
  * result. */

@@ -16,8 +16,7 @@
  * code page like argv; '/' and '\' both separate folders. */
 #define WIN32_LEAN_AND_MEAN
 #include "amorph/port.h"
-#include "amorph/rng.h"
-#include "amorph/text.h"
+#include "amorph/base.h"
 
 #include <windows.h>
 #include <process.h>
@@ -166,7 +165,7 @@ static int sys_tmp_name(char* out, size_t cap, const char* path, uint64_t nonce)
     return n >= 0 && (size_t)n < cap;
 }
 
-/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/rng.h),
+/* a temporary's nonce, unpredictable to another user: the library's generator (amorph/base.h),
  * seeded once from the system time, this process's address space (randomised by the system), its
  * id and the tick count; each draw also takes the performance counter. Names only: never a
  * result. */

@@ -1,0 +1,304 @@
+/* amorph/evo.h: the evolver layer (src/evo/): a run's settings, deterministic crowding one
+ * generation at a time, and the run's hash. It includes amorph/base.h, amorph/sim.h and
+ * amorph/geno.h.
+ */
+#ifndef AMORPH_EVO_H
+#define AMORPH_EVO_H
+
+#include <stdint.h>
+#include "amorph/base.h"
+#include "amorph/sim.h"
+#include "amorph/geno.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ==== the evolver (deterministic crowding), its configuration and checkpoints.
+ *
+ * A run is a population of genomes evolved by deterministic crowding (Mahfoud 1996), as in the
+ * seed paper: each generation pairs the parents at random, every pair makes two offspring by
+ * crossover and mutation, every offspring competes with the more similar of its two parents
+ * (Mahfoud's pairing rule on the body distance of am_genome_distance) and replaces it when it
+ * is strictly better. Offspring are made serially from one seeded stream; their evaluations go
+ * to the port's parallel map, each on a workspace of its own, and crowding is applied in a fixed
+ * order afterwards, so a run is bit-identical for any number of workers.
+ *
+ * The configuration (am_evo_def) is a set of `key = value` settings (docs/evolve.md lists every
+ * key); am_evo_set applies one, so config files and command-line flags share one parser.
+ * Everything a run needs to continue is in its checkpoint, a text file closed by a checksum.
+ */
+
+/* ---- configuration ---- */
+
+/* everything that defines a run; am_default_evo() is the seed's two-material experiment */
+typedef struct am_evo_def {
+    am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3) */
+    am_env env;               /* environment: gravity, floor, actuation, time step (am_default_env) */
+    am_eval_def eval;         /* evaluation: cycles, fitness measure, relaxation (record is ignored) */
+    am_param cte;              /* CTE of the actuated materials, per degree (0.01, volumetric) */
+    am_param mu_static;        /* static floor friction of every material (1.0) */
+    am_param mu_kinetic;       /* kinetic floor friction of every material (0.3) */
+    am_param voxel_size;       /* m (0.01) */
+    int population;           /* individuals, even, 2..AM_MAX_POPULATION (20) */
+    long evaluations;         /* the run stops after this many evaluations, >= population */
+    uint64_t seed;            /* the random stream (1) */
+    int threads;              /* workers for evaluations; 0: all cores. Never changes results */
+    long checkpoint_seconds;  /* 0: a checkpoint every generation; else at most one per this many s */
+} am_evo_def;
+
+/* the seed's two-material GMX experiment on the profile's workspace (20^3 desktop), 200 evaluations */
+am_evo_def am_default_evo(void);
+/* the defaults under a stored configuration (a run folder's config.txt, a checkpoint): those of
+ * am_default_evo, except that a key added after run folders were first written takes the value
+ * that reproduces the runs made before it, so that such a folder resumes and replays exactly:
+ * relax_dt_frac 0 (settling at the run's step). A new run writes every key, these included. */
+am_evo_def am_stored_evo(void);
+
+/* sets one key from its text value ("population", "20"); the message names the problem only
+ * (the caller adds "file:line: " or "--flag: "). AM_ERR_ARG for an unknown key, AM_ERR_RANGE for
+ * a value out of range or malformed */
+am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
+/* checks the whole definition (relations between keys); messages name the key */
+am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
+/* am_evo_check, with the index (am_evo_key_name) of the key its message names in *key (-1 when
+ * the definition is whole), so that a caller can say where that key was set ("file:line: ") */
+am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz);
+/* the index of the key a configuration line sets (n characters), or -1 (a comment, a blank or a
+ * malformed line, an unknown key) */
+int am_evo_line_key(const char* text, long n);
+/* more than the configuration keys there are: a table of one entry per key */
+#define AM_EVO_KEY_MAX 64
+/* am_evo_check, and that the definition can evolve: a relaxation long enough for a body to settle
+ * (relax_max_steps at least release_steps + 50), as a run needs and a configuration to print does
+ * not (am_evo_init checks it) */
+am_status am_evo_check_run(const am_evo_def* d, char* err, int errsz);
+/* 1 when key is a configuration key */
+int am_evo_is_key(const char* key);
+/* what a key sets: the robot's environment (gravity, period_steps, ...), its evaluation (cycles,
+ * relax_max_steps, ...), the materials of the run's palette (cte, mu_static, mu_kinetic,
+ * voxel_size), the genotype (representation, workspace, ...), or the run itself (population,
+ * evaluations, seed, threads, checkpoint_seconds); -1 for an unknown key */
+typedef enum am_key_group { AM_KEYS_RUN, AM_KEYS_GENOTYPE, AM_KEYS_MATERIALS, AM_KEYS_ENV, AM_KEYS_EVAL } am_key_group;
+int am_evo_key_group(const char* key);
+/* the keys in their documented order: count, name and one-line help of key i (NULL past the end) */
+int am_evo_key_count(void);
+const char* am_evo_key_name(int i);
+const char* am_evo_key_help(int i);
+/* the value of key i in d as the configuration text writes it ("" past the end) */
+void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
+/* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
+ * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
+am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
+/* the same text written to out, a whole-text buffer or a stream (amorph/base.h) */
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
+/* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
+am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
+/* one line of that text (n characters without the newline; line number lineno for messages), for
+ * text that is not held whole; am_evo_parse is this over every line */
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz);
+/* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
+ * else 0 and the first differing key's name in key (capacity keysz) */
+int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
+/* the palette and expression settings a run's genomes are expressed and simulated with */
+am_palette am_evo_palette(const am_evo_def* d);
+/* the same palette written into *out */
+void am_evo_palette_into(const am_evo_def* d, am_palette* out);
+
+/* ---- state ---- */
+
+/* one evaluated individual */
+typedef struct am_evo_ind {
+    am_genome genome;
+    double fitness;           /* m; 0 for an empty body; -1 (no score) when diverged or unsettled */
+    int voxels;               /* voxels of the expressed body */
+    int diverged;             /* 1: the simulation diverged (always loses) */
+    int empty;                /* 1: the body was empty (fitness 0, not simulated) */
+    long steps;               /* time steps simulated */
+    uint64_t state_hash;      /* am_state_hash at the end of the evaluation (0 when empty) */
+    long id;                  /* the evaluation that made it: its index in the run, from 0 (-1: unknown,
+                               * a checkpoint of version 1) */
+} am_evo_ind;
+
+/* what an evaluation measured besides its am_evo_ind (whose id is the evaluation's index), and
+ * where it stands in the run: with the individual, one row of a run's evals.csv (am_evo_evals_row) */
+typedef struct am_evo_eval {
+    long generation;          /* 0: the initial population */
+    long parent[2];           /* ids of the two parents (-1 in generation 0 or when unknown) */
+    int placed;               /* 1: it entered the population (generation 0, or beat its parent) */
+    double dx, dy, dz;        /* centre-of-mass displacement over the movement segment, m */
+    int settled;              /* 1: the body came to rest before the movement (am_result.settled) */
+    long relax_steps;         /* steps of the relaxation */
+    int material_voxels[AM_MAX_GENO_MATERIALS]; /* voxels of each material (the genome's order) */
+} am_evo_eval;
+
+/* what one evaluation gives back: an individual's fields without its genome, and its measurements.
+ * A port whose workers do not share memory (port/mpi) copies these bytes, and nothing else, between
+ * processes (am_port_parallel_map's out). */
+typedef struct am_evo_result {
+    double fitness;           /* as am_evo_ind */
+    long steps;
+    uint64_t state_hash;
+    int voxels, diverged, empty;
+    int skipped;              /* 1: not evaluated (the caller cancelled it; am_evo_batch_end then cancels) */
+    am_evo_eval detail;       /* the measurements (generation, parents and placed are am_evo_batch_end's) */
+} am_evo_result;
+
+/* what a caller of am_evo_generation may watch; every member may be NULL */
+typedef struct am_evo_hooks {
+    /* on the workers, before each evaluation of the generation's first batch: non-zero stops the
+     * generation (AM_ERR_CANCELLED) */
+    int (*cancel)(void* ctx);
+    /* on the calling thread, every evaluation in index order, as its batch is placed */
+    void (*evaluated)(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
+    void* ctx;
+} am_evo_hooks;
+
+/* statistics of one generation, after replacement (one row of log.csv) */
+typedef struct am_evo_stats {
+    long generation;          /* 0: the initial population */
+    long evaluations;         /* evaluations done so far */
+    double best, mean, median; /* of the population's fitness (diverged and unsettled members left out) */
+    int diverged;             /* diverged evaluations in this generation */
+    int empty;                /* empty bodies in this generation */
+    double wall_s;            /* wall time of this generation, s */
+    int unsettled;            /* evaluations whose body did not settle (no score: docs/evolve.md) */
+} am_evo_stats;
+
+/* a run: population, offspring, the random stream and counters. Large: declare it static.
+ * Offspring are made, evaluated and placed AM_EVO_BATCH at a time: a whole generation on the
+ * desktop (one parallel map), one pair at a time on a one-worker board. The pairs of a generation
+ * are disjoint and nothing but making offspring draws from the stream, so the run is the same
+ * for any batch size. */
+typedef struct am_evo {
+    am_evo_def def;
+    am_palette palette;                       /* am_evo_palette(&def) */
+    am_rng rng;                               /* the one random stream */
+    long generation;                          /* generations completed (0 before the first) */
+    long evaluations;                         /* evaluations completed */
+    am_evo_ind pop[AM_MAX_POPULATION];        /* the population (def.population members) */
+    am_evo_ind child[AM_EVO_BATCH];           /* offspring of the current batch */
+    am_evo_ind best;                          /* best individual ever evaluated */
+    int has_best;                             /* 1 once best is set */
+    uint64_t history;                         /* hash over every genome and fitness evaluated */
+    am_evo_stats last;                        /* statistics of the last generation */
+    long last_steps;                          /* time steps simulated by the last generation (benchmarks) */
+    long last_voxel_steps;                    /* the same, each step times the body's voxels */
+    am_evo_eval eval[AM_EVO_BATCH];           /* what the evaluations of the current batch measured */
+    am_evo_result res[AM_EVO_BATCH];          /* am_evo_generation's results of the batch's map items */
+    int order[AM_EVO_BATCH];                  /* the current batch's evaluation order: item i of its
+                                                 map evaluates child[order[i]] (largest body first) */
+    int order_voxels[AM_EVO_BATCH];           /* voxels of item i's body (the order's key) */
+    uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
+                                                 (the second's is in w[0].geno.other) */
+    /* the generation under way (am_evo_gen_begin .. am_evo_gen_end; never in a checkpoint) */
+    int gen_parent[AM_MAX_POPULATION];        /* offspring 2k, 2k + 1 come from these two members */
+    int gen_b, gen_m;                         /* the current batch: individuals [gen_b, gen_b + gen_m) */
+    am_rng gen_saved;                         /* the stream before the generation (a cancel restores it) */
+    double gen_t0;                            /* am_port_now() at its start */
+    long gen_steps, gen_voxel_steps;          /* its time steps so far */
+    int gen_diverged, gen_empty, gen_unsettled; /* its diverged, empty and unsettled evaluations so far */
+} am_evo;
+
+/* one worker's workspace for evaluations. Large: declare them static, one per worker. */
+typedef struct am_evo_work {
+    am_geno_work geno;
+    am_lattice lattice;
+    am_model model;
+    am_state state;
+} am_evo_work;
+
+/* ---- running ---- */
+
+/* How the evolver runs a batch of evaluations and reads a clock, given by its caller (as Box2D's
+ * world takes task callbacks): the library itself starts no thread and calls no OS.
+ *   map(self, n, workers, task, ctx, out, size, err, errsz): calls task(ctx, i, worker) once for
+ *       each item i in [0, n), on up to `workers` workers (worker in [0, workers)), in any order, and
+ *       returns when every call has returned. Item i's result is the `size` bytes at
+ *       out + i * size: an executor whose workers do not share memory (MPI ranks) copies them back;
+ *       a threaded one leaves them where the task wrote them. A failure returns its status with a
+ *       message in err.
+ *   now(self): seconds on any monotonic clock (only differences are used: log.csv's wall_s).
+ * Either member may be NULL, and so may the executor: then items run in order on the calling
+ * thread as worker 0, and wall_s is 0. Results never depend on the executor. */
+typedef void (*am_task_fn)(void* ctx, int item, int worker);
+typedef struct am_executor {
+    am_status (*map)(void* self, int n, int workers, am_task_fn task, void* ctx, void* out, long size, char* err, int errsz);
+    double (*now)(void* self);
+    void* self;     /* the executor's own state, passed back to map and now */
+    int workers;    /* workspaces w[0..workers-1] the caller provides (1..AM_MAX_WORKERS; < 1 means 1) */
+} am_executor;
+
+/* a new run from d: checks it, seeds the stream and draws the random initial population (not yet
+ * evaluated: the first am_evo_generation evaluates it) */
+am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
+/* 1 when the run has done its evaluations */
+int am_evo_done(const am_evo* e);
+/* one generation: generation 0 evaluates the initial population; later ones make offspring,
+ * evaluate them on ex's workers (workspaces w[0..ex->workers-1]; ex may be NULL: one at a time) and
+ * apply crowding. hooks may be NULL. When hooks->cancel returns non-zero during the evaluations of
+ * the first batch (every evaluation of the generation when AM_EVO_BATCH >= population, as on the
+ * desktop), no further evaluation starts, the generation is abandoned and e is left as it was
+ * before the call (AM_ERR_CANCELLED, "interrupted"); once a batch has been placed the generation
+ * runs to its end. hooks->evaluated sees each evaluation as its batch is placed. Fills e->last. */
+am_status am_evo_generation(am_evo* e, am_evo_work* w, const am_executor* ex, const am_evo_hooks* hooks, char* err, int errsz);
+/* A generation in steps, for a caller that evaluates the offspring of several runs in one parallel
+ * map (amorph experiment): am_evo_generation is these steps over one run.
+ *   am_evo_gen_begin(e, now);
+ *   while (am_evo_batch_begin(e, &w[0].geno, &m, ...) == AM_OK && m > 0) {
+ *       item i in [0, m), on any worker, in any order, in any process: am_evo_batch_eval(e, i, &w[k], &res[i]);
+ *       am_evo_batch_end(e, res, &w[0].geno, hooks, ...);
+ *   }
+ *   am_evo_gen_end(e, now);
+ * Evaluating is the only step that may run on workers; the others run on the calling thread. An
+ * item's whole result is its am_evo_result. */
+/* starts a generation (the random pairing of parents, generation > 0); now: the caller's clock
+ * in seconds (any origin; 0 without one) */
+void am_evo_gen_begin(am_evo* e, double now);
+/* makes the next batch's offspring (e->child) and their evaluation order (e->order, the largest
+ * body first) with the workspace w; *m gets its size, 0 when every batch of the generation is
+ * placed. On a failure e is as before am_evo_gen_begin. */
+am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m, char* err, int errsz);
+/* evaluates item i of the batch (child[order[i]]) on the workspace w into *r (skipped = 0) */
+void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r);
+/* 1 while the batch under way may be cancelled: the generation's first, before it is placed */
+int am_evo_batch_cancellable(const am_evo* e);
+/* places the batch (res[i]: item i's result): history, best, crowding, hooks->evaluated (hooks may be
+ * NULL). When a result is skipped, nothing is placed and e is left as before am_evo_gen_begin:
+ * AM_ERR_CANCELLED ("interrupted") in the first batch, AM_ERR_ARG in a later one */
+am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w, const am_evo_hooks* hooks, char* err, int errsz);
+/* ends the generation: e->last (wall_s: now minus am_evo_gen_begin's now), e->last_steps,
+ * e->last_voxel_steps, e->generation + 1 */
+void am_evo_gen_end(am_evo* e, double now);
+
+/* Several runs in lockstep (amorph experiment): one generation of each unfinished run of
+ * runs[0..n), n <= AM_EVO_WAVE_MAX, the offspring of all of them evaluated in one parallel map,
+ * the largest bodies first, so the workers share n x population evaluations. hooks[k] (hooks may
+ * be NULL) are run k's. wave is the merged map's scratch (large: declare it static); NULL is
+ * allowed for n = 1. AM_OK when every unfinished run did its generation; AM_ERR_CANCELLED
+ * ("interrupted") when a cancel callback stopped a first batch: the runs so stopped are as before
+ * the call (their generation unchanged) and the others did theirs. Each run's result is what
+ * am_evo_generation gives it alone; am_evo_generation is this over one run. */
+typedef struct am_evo_wave {
+    int run[AM_EVO_WAVE_MAX * AM_EVO_BATCH], idx[AM_EVO_WAVE_MAX * AM_EVO_BATCH]; /* map item j: item idx[j] of run run[j] */
+    am_evo_result res[AM_EVO_WAVE_MAX * AM_EVO_BATCH];                            /* map item j's result */
+} am_evo_wave;
+am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, const am_executor* ex,
+                             const am_evo_hooks* hooks, char* err, int errsz);
+
+/* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec and detail
+ * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
+void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
+                     am_record* rec, am_evo_ind* out, am_evo_eval* detail);
+/* expresses g into lat with the run's palette and voxel size */
+am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
+                         am_lattice* lat, char* err, int errsz);
+/* the 64-bit hash of the run so far: every genome and fitness evaluated, in order, and the
+ * final population (what `make repro` compares across platforms) */
+uint64_t am_evo_hash(const am_evo* e);
+
+
+#ifdef __cplusplus
+}
+#endif
+#endif

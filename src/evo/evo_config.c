@@ -1,0 +1,465 @@
+/* The evolver's configuration: defaults, one table of `key = value` settings shared by config
+ * files and command-line flags, the text format, and the comparison used by --resume. */
+#include "amorph/evo.h"
+
+#include <stddef.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+am_evo_def am_default_evo(void)
+{
+    am_evo_def d;
+    memset(&d, 0, sizeof d);
+    d.geno = am_default_geno();
+    d.geno.repr = AM_REPR_GMX;
+    d.geno.materials = 2;
+    d.env = am_default_env();
+    d.eval = am_default_eval();
+    d.eval.record = NULL;
+    d.cte = AM_P(0.01);
+    d.mu_static = AM_P(1.0);
+    d.mu_kinetic = AM_P(0.3);
+    d.voxel_size = AM_P(0.01);
+    d.population = 20;
+    d.evaluations = 200;
+    d.seed = 1;
+    d.threads = 0;
+    d.checkpoint_seconds = 0;
+    return d;
+}
+
+am_evo_def am_stored_evo(void)
+{
+    am_evo_def d = am_default_evo();
+    d.eval.relax_dt_frac = AM_P(0); /* runs made before the settling pseudo-step */
+    return d;
+}
+
+am_palette am_evo_palette(const am_evo_def* d)
+{
+    am_palette p;
+    am_evo_palette_into(d, &p);
+    return p;
+}
+
+void am_evo_palette_into(const am_evo_def* d, am_palette* p)
+{
+    am_default_palette_into(p);
+    for (int i = 0; i < p->count; i++) {
+        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
+        if (p->mat[i].cte != AM_P(0)) p->mat[i].cte = d->cte;
+        p->mat[i].mu_static = d->mu_static;
+        p->mat[i].mu_kinetic = d->mu_kinetic;
+    }
+}
+
+/* ---- the key table ---- */
+
+typedef enum key_kind { K_INT, K_LONG, K_REAL, K_PARAM, K_U64, K_ENUM, K_ONOFF, K_WORKSPACE } key_kind;
+
+typedef struct key_def {
+    const char* name;
+    key_kind kind;
+    size_t off;            /* field offset in am_evo_def */
+    double lo, hi;         /* allowed range (numbers) */
+    const char* const* names; /* K_ENUM: value names, index = stored value, NULL-terminated */
+    int runtime;           /* 1: never changes results (left out of run comparisons) */
+    const char* help;
+} key_def;
+
+static const char* const repr_names[] = {"none", "dct", "cppn", "gmx", NULL};
+static const char* const fit_names[] = {"horizontal", "x", "3d", NULL};
+static const char* const cte_names[] = {"volumetric", "linear", NULL};
+static const char* const score_names[] = {"travel", "sustained", NULL};
+
+#define OFF(f) offsetof(am_evo_def, f)
+static const key_def keys[] = {
+    {"representation", K_ENUM, OFF(geno.repr), 1, 3, repr_names, 0, "genotype: dct, cppn or gmx"},
+    {"materials", K_INT, OFF(geno.materials), 1, AM_MAX_GENO_MATERIALS, NULL, 0,
+     "materials of the genomes: 1 passive, 2 + active, 3 + active90 (90 degrees out of phase)"},
+    {"workspace", K_WORKSPACE, OFF(geno.nx), 1, AM_MAX_DIM, NULL, 0, "workspace cells: N or NxMxK"},
+    {"population", K_INT, OFF(population), 2, AM_MAX_POPULATION, NULL, 0, "individuals (even)"},
+    {"evaluations", K_LONG, OFF(evaluations), 2, 1e9, NULL, 0, "the run stops after this many evaluations"},
+    {"seed", K_U64, OFF(seed), 0, 0, NULL, 0, "seed of the random stream"},
+    {"threads", K_INT, OFF(threads), 0, AM_MAX_WORKERS, NULL, 1, "evaluation workers; 0: every core"},
+    {"cycles", K_INT, OFF(eval.cycles), 0, 100000, NULL, 0, "actuation cycles of the movement segment (0: relaxation only)"},
+    {"period_steps", K_INT, OFF(env.period_steps), 2, 1e7, NULL, 0, "actuation period, time steps"},
+    {"period_s", K_PARAM, OFF(env.period_s), 0, 1e4, NULL, 0,
+     "actuation period in seconds, held when the step changes (0: period_steps; > 0 overrides it)"},
+    {"amplitude", K_PARAM, OFF(env.temp_amplitude), 0, 1e4, NULL, 0, "temperature amplitude, degrees"},
+    {"temp_base", K_PARAM, OFF(env.temp_base), -1e4, 1e4, NULL, 0, "temperature offset, degrees"},
+    {"cte", K_PARAM, OFF(cte), -1, 1, NULL, 0, "thermal expansion of the actuated materials, per degree"},
+    {"cte_mode", K_ENUM, OFF(env.cte_mode), 0, 1, cte_names, 0, "volumetric (seed) or linear (VXA)"},
+    {"mu_static", K_PARAM, OFF(mu_static), 0, 100, NULL, 0, "static floor friction"},
+    {"mu_kinetic", K_PARAM, OFF(mu_kinetic), 0, 100, NULL, 0, "kinetic floor friction"},
+    {"fitness", K_ENUM, OFF(eval.fitness), 0, 2, fit_names, 0, "centre of mass displacement: horizontal, x or 3d"},
+    {"score", K_ENUM, OFF(eval.score), 0, 1, score_names, 0,
+     "travel (the seed's: the whole movement's) or sustained (travel per cycle after sustained_from cycles)"},
+    {"sustained_from", K_INT, OFF(eval.sustained_from), 0, 100000, NULL, 0,
+     "cycles before the sustained score's window (10: cycles 11 on)"},
+    {"collisions", K_ONOFF, OFF(env.collisions), 0, 1, NULL, 0, "self-collision: on or off"},
+    {"floor", K_ONOFF, OFF(env.floor), 0, 1, NULL, 0, "the floor: on or off"},
+    {"gravity", K_PARAM, OFF(env.gravity), 0, 1000, NULL, 0, "m/s^2"},
+    {"dt_frac", K_PARAM, OFF(env.dt_frac), 1e-6, 10, NULL, 0, "time step, fraction of the analytic limit"},
+    {"dt_search", K_ONOFF, OFF(eval.dt_search), 0, 1, NULL, 0, "the seed's empirical time step search"},
+    {"damping_internal", K_PARAM, OFF(env.zeta_internal_scale), 0, 1000, NULL, 0, "scale of the internal damping"},
+    {"damping_global", K_PARAM, OFF(env.zeta_global_scale), 0, 1000, NULL, 0, "scale of the global damping"},
+    {"relax_min_steps", K_LONG, OFF(eval.relax_min_steps), 0, 1e8, NULL, 0,
+     "relaxation lasts at least this (steps of the default step, 0.9 dt_rec: scaled to the step)"},
+    {"relax_max_steps", K_LONG, OFF(eval.relax_max_steps), 0, 1e8, NULL, 0, "and at most this (likewise); no score if not settled"},
+    {"settle_speed", K_PARAM, OFF(eval.settle_speed), 0, 100, NULL, 0, "m/s: relaxed below this RMS speed"},
+    {"relax_dt_frac", K_PARAM, OFF(eval.relax_dt_frac), 0, 10, NULL, 0,
+     "settling's pseudo-step, fraction of dt_rec (0: the run's step); redone at the run's step if it fails"},
+    {"release_steps", K_LONG, OFF(eval.release_steps), 0, 1e8, NULL, 0,
+     "settled: calm through this many last relaxation steps (likewise), model damping alone"},
+    {"voxel_size", K_PARAM, OFF(voxel_size), AM_VOXEL_SIZE_MIN, AM_VOXEL_SIZE_MAX, NULL, 0, "cell edge, m"},
+    {"dct_k", K_INT, OFF(geno.dct_k), 1, AM_MAX_DCT_K, NULL, 0, "DCT amplitudes per axis"},
+    {"cppn_layers", K_INT, OFF(geno.cppn_layers), 1, AM_MAX_CPPN_LAYERS, NULL, 0, "CPPN layers"},
+    {"cppn_nodes", K_INT, OFF(geno.cppn_nodes), 1, AM_MAX_CPPN_NODES, NULL, 0, "CPPN nodes per layer"},
+    {"cppn_active", K_REAL, OFF(geno.cppn_active), 0, 1, NULL, 0, "CPPN: active connections of a random genome"},
+    {"cppn_changes", K_REAL, OFF(geno.cppn_changes), 0, 1000, NULL, 0, "CPPN: values a mutation changes on average"},
+    {"cppn_step", K_REAL, OFF(geno.cppn_step), 0, 1, NULL, 0, "CPPN: largest change, fraction of the range"},
+    {"gmx_points", K_INT, OFF(geno.gmx_points), 0, AM_MAX_GMX_POINTS, NULL, 0, "GMX points of a random genome"},
+    {"gmx_max_points", K_INT, OFF(geno.gmx_max_points), 1, AM_MAX_GMX_POINTS, NULL, 0, "GMX points a genome may grow to"},
+    {"mutation_rate", K_REAL, OFF(geno.rate), 0, 1, NULL, 0, "DCT and GMX: per-value mutation probability"},
+    {"mutation_step", K_REAL, OFF(geno.step), 0, 1, NULL, 0, "DCT and GMX: largest change, fraction of the range"},
+    {"gmx_material_rate", K_REAL, OFF(geno.gmx_material_rate), 0, 1, NULL, 0, "GMX: per-point material change"},
+    {"gmx_add", K_REAL, OFF(geno.gmx_add), 0, 1, NULL, 0, "GMX: probability a mutation adds a point"},
+    {"gmx_remove", K_REAL, OFF(geno.gmx_remove), 0, 1, NULL, 0, "GMX: probability a mutation removes a point"},
+    {"checkpoint_seconds", K_LONG, OFF(checkpoint_seconds), 0, 1e7, NULL, 1, "0: a checkpoint every generation"},
+};
+
+#define KEY_COUNT ((int)(sizeof keys / sizeof keys[0]))
+_Static_assert(sizeof keys / sizeof keys[0] <= AM_EVO_KEY_MAX, "AM_EVO_KEY_MAX: fewer entries than keys");
+
+static const key_def* find_key(const char* name)
+{
+    for (int i = 0; i < KEY_COUNT; i++)
+        if (strcmp(keys[i].name, name) == 0) return &keys[i];
+    return NULL;
+}
+
+int am_evo_is_key(const char* key)
+{
+    return find_key(key) != NULL;
+}
+
+int am_evo_key_group(const char* key)
+{
+    const key_def* k = find_key(key);
+    if (!k) return -1;
+    const size_t off = k->off;
+    /* unsigned: an offset below the member wraps past its end */
+    if (off - OFF(env) < sizeof(am_env)) return AM_KEYS_ENV;
+    if (off - OFF(eval) < sizeof(am_eval_def)) return AM_KEYS_EVAL;
+    if (off - OFF(geno) < sizeof(am_geno_def)) return AM_KEYS_GENOTYPE;
+    if (off == OFF(cte) || off == OFF(mu_static) || off == OFF(mu_kinetic) || off == OFF(voxel_size)) return AM_KEYS_MATERIALS;
+    return AM_KEYS_RUN;
+}
+
+int am_evo_key_count(void)
+{
+    return KEY_COUNT;
+}
+
+const char* am_evo_key_name(int i)
+{
+    return i >= 0 && i < KEY_COUNT ? keys[i].name : NULL;
+}
+
+const char* am_evo_key_help(int i)
+{
+    return i >= 0 && i < KEY_COUNT ? keys[i].help : NULL;
+}
+
+am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz)
+{
+    const key_def* k = find_key(key);
+    char qv[AM_QUOTE_BUF]; /* the key, then the value, as messages show them */
+    if (!k)
+        return am_fail(err, errsz, AM_ERR_ARG, "unknown key '%s' (amorph evolve --help-config lists them)",
+                       am_quote(qv, sizeof qv, key, -1));
+    am_quote(qv, sizeof qv, value, -1);
+    char* base = (char*)d + k->off;
+    switch (k->kind) {
+    case K_INT:
+    case K_LONG: {
+        long v;
+        if (!am_parse_long(value, &v) || (double)v < k->lo || (double)v > k->hi)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [%.0f, %.0f]", key, qv, k->lo, k->hi);
+        if (k->kind == K_INT) *(int*)base = (int)v;
+        else *(long*)base = v;
+        return AM_OK;
+    }
+    case K_U64: {
+        uint64_t v;
+        if (!am_parse_u64(value, &v))
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected an integer in [0, 18446744073709551615]", key, qv);
+        *(uint64_t*)base = v;
+        return AM_OK;
+    }
+    case K_REAL:
+    case K_PARAM: {
+        double v;
+        if (!am_parse_double(value, &v) || v < k->lo || v > k->hi)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected a number in [%g, %g]", key, qv, k->lo, k->hi);
+        if (k->kind == K_PARAM) *(am_param*)base = AM_PARAM_FROM_DOUBLE(v);
+        else *(am_real*)base = AM_FROM_DOUBLE(v);
+        return AM_OK;
+    }
+    case K_ENUM:
+        for (int i = (int)k->lo; i <= (int)k->hi; i++)
+            if (strcmp(value, k->names[i]) == 0) {
+                *(int*)base = i;
+                return AM_OK;
+            }
+        {
+            char list[128] = "";
+            for (int i = (int)k->lo; i <= (int)k->hi; i++) {
+                strncat(list, k->names[i], sizeof list - strlen(list) - 1);
+                if (i < (int)k->hi) strncat(list, i + 1 < (int)k->hi ? ", " : " or ", sizeof list - strlen(list) - 1);
+            }
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected %s", key, qv, list);
+        }
+    case K_ONOFF:
+        if (strcmp(value, "on") == 0) *(int*)base = 1;
+        else if (strcmp(value, "off") == 0) *(int*)base = 0;
+        else return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected on or off", key, qv);
+        return AM_OK;
+    case K_WORKSPACE: {
+        long v[3];
+        int n = 0;
+        const char* s = value;
+        char part[32];
+        while (n < 3) {
+            const char* x = strchr(s, 'x');
+            size_t len = x ? (size_t)(x - s) : strlen(s);
+            if (len == 0 || len >= sizeof part) break;
+            memcpy(part, s, len);
+            part[len] = 0;
+            if (!am_parse_long(part, &v[n])) break;
+            n++;
+            if (!x) {
+                s = NULL;
+                break;
+            }
+            s = x + 1;
+        }
+        if (s != NULL || (n != 1 && n != 3))
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected N or NxMxK cells", key, qv);
+        if (n == 1) v[1] = v[2] = v[0];
+        for (int a = 0; a < 3; a++)
+            if (v[a] < 1 || v[a] > AM_MAX_DIM)
+                return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': each side must be in [1, %d] (the %s profile)", key, qv,
+                               AM_MAX_DIM, AM_PROFILE_NAME);
+        d->geno.nx = (int)v[0];
+        d->geno.ny = (int)v[1];
+        d->geno.nz = (int)v[2];
+        return AM_OK;
+    }
+    }
+    return am_fail(err, errsz, AM_ERR_ARG, "key '%s': internal error", key);
+}
+
+static int key_index(const char* name)
+{
+    for (int i = 0; i < KEY_COUNT; i++)
+        if (strcmp(keys[i].name, name) == 0) return i;
+    return -1;
+}
+
+am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
+{
+    *key = -1;
+    if (d->population < 2 || d->population > AM_MAX_POPULATION || d->population % 2 != 0)
+        return *key = key_index("population"),
+               am_fail(err, errsz, AM_ERR_RANGE, "population = %d: must be even, in [2, %d]", d->population, AM_MAX_POPULATION);
+    if (d->evaluations < d->population)
+        return *key = key_index("evaluations"),
+               am_fail(err, errsz, AM_ERR_RANGE, "evaluations = %ld: at least the population (%d)", d->evaluations, d->population);
+    if (d->eval.relax_min_steps > d->eval.relax_max_steps)
+        return *key = key_index("relax_min_steps"), am_fail(err, errsz, AM_ERR_RANGE, "relax_min_steps = %ld exceeds relax_max_steps = %ld",
+                                                            d->eval.relax_min_steps, d->eval.relax_max_steps);
+    if (d->geno.gmx_points > d->geno.gmx_max_points)
+        return *key = key_index("gmx_points"), am_fail(err, errsz, AM_ERR_RANGE, "gmx_points = %d exceeds gmx_max_points = %d",
+                                                       d->geno.gmx_points, d->geno.gmx_max_points);
+    if (d->geno.repr == AM_REPR_DCT && (d->geno.dct_k > d->geno.nx || d->geno.dct_k > d->geno.ny || d->geno.dct_k > d->geno.nz))
+        return *key = key_index("dct_k"), am_fail(err, errsz, AM_ERR_RANGE, "dct_k = %d exceeds a workspace side (%dx%dx%d)",
+                                                  d->geno.dct_k, d->geno.nx, d->geno.ny, d->geno.nz);
+    if (d->eval.score == AM_SCORE_SUSTAINED && d->eval.cycles <= d->eval.sustained_from)
+        return *key = key_index("score"),
+               am_fail(err, errsz, AM_ERR_RANGE, "score = sustained needs cycles above sustained_from (cycles = %d, sustained_from = %d): say cycles = 30",
+                       d->eval.cycles, d->eval.sustained_from);
+    if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
+        return *key = key_index("threads"), am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
+    return AM_OK;
+}
+
+am_status am_evo_check(const am_evo_def* d, char* err, int errsz)
+{
+    int key;
+    return am_evo_check_key(d, &key, err, errsz);
+}
+
+/* ---- text ---- */
+
+
+/* one key's value as text */
+static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap)
+{
+    const char* base = (const char*)d + k->off;
+    switch (k->kind) {
+    case K_INT: snprintf(out, (size_t)cap, "%d", *(const int*)base); break;
+    case K_LONG: snprintf(out, (size_t)cap, "%ld", *(const long*)base); break;
+    case K_U64: snprintf(out, (size_t)cap, "%llu", (unsigned long long)*(const uint64_t*)base); break;
+    case K_REAL: {
+        /* the shortest text that reads back to the same am_real */
+        const am_real v = *(const am_real*)base;
+        for (int prec = 6; prec <= 17; prec++) {
+            snprintf(out, (size_t)cap, "%.*g", prec, AM_TO_DOUBLE(v));
+            if (AM_FROM_DOUBLE(strtod(out, NULL)) == v) break;
+        }
+        break;
+    }
+    case K_PARAM: {
+        /* the shortest text that reads back to the same am_param */
+        const am_param v = *(const am_param*)base;
+        for (int prec = 6; prec <= 17; prec++) {
+            snprintf(out, (size_t)cap, "%.*g", prec, AM_PARAM_TO_DOUBLE(v));
+            if (AM_PARAM_FROM_DOUBLE(strtod(out, NULL)) == v) break;
+        }
+        break;
+    }
+    case K_ENUM: {
+        int v = *(const int*)base;
+        snprintf(out, (size_t)cap, "%s", v >= (int)k->lo && v <= (int)k->hi ? k->names[v] : "?");
+        break;
+    }
+    case K_ONOFF: snprintf(out, (size_t)cap, "%s", *(const int*)base ? "on" : "off"); break;
+    case K_WORKSPACE:
+        if (d->geno.nx == d->geno.ny && d->geno.ny == d->geno.nz) snprintf(out, (size_t)cap, "%d", d->geno.nx);
+        else snprintf(out, (size_t)cap, "%dx%dx%d", d->geno.nx, d->geno.ny, d->geno.nz);
+        break;
+    }
+}
+
+am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz)
+{
+    char v[64];
+    am_text_put(out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
+    for (int i = 0; i < KEY_COUNT; i++) {
+        if (keys[i].runtime && !with_runtime) continue;
+        value_text(d, &keys[i], v, sizeof v);
+        am_text_put(out, "%s = %s\n", keys[i].name, v);
+    }
+    if (out->full == 2) return am_fail(err, errsz, AM_ERR_IO, "configuration text: the output failed");
+    if (out->full) return am_fail(err, errsz, AM_ERR_CAPACITY, "configuration text needs more than the %ld bytes given", out->cap);
+    return AM_OK;
+}
+
+static am_status write_config(const void* d, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)d, 0, out, err, errsz);
+}
+static am_status write_config_runtime(const void* d, am_text* out, char* err, int errsz)
+{
+    return am_evo_write((const am_evo_def*)d, 1, out, err, errsz);
+}
+
+am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz)
+{
+    return am_text_format(with_runtime ? write_config_runtime : write_config, d, "configuration text", buf, cap, len,
+                          err, errsz);
+}
+
+void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)
+{
+    if (i < 0 || i >= KEY_COUNT) {
+        if (cap > 0) out[0] = 0;
+        return;
+    }
+    value_text(d, &keys[i], out, cap);
+}
+
+int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz)
+{
+    char va[64], vb[64];
+    for (int i = 0; i < KEY_COUNT; i++) {
+        if (keys[i].runtime || strcmp(keys[i].name, "evaluations") == 0) continue;
+        value_text(a, &keys[i], va, sizeof va);
+        value_text(b, &keys[i], vb, sizeof vb);
+        if (strcmp(va, vb) != 0) {
+            if (key && keysz > 0) snprintf(key, (size_t)keysz, "%s (%s, now %s)", keys[i].name, va, vb);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static char* trim(char* s)
+{
+    while (*s == ' ' || *s == '\t') s++;
+    char* e = s + strlen(s);
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r')) *--e = 0;
+    return s;
+}
+
+am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz)
+{
+    char line[512];
+    char msg[AM_ERR_MAX];
+    if (n >= (long)sizeof line)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: line longer than %d characters", fname, lineno, (int)sizeof line - 1);
+    memcpy(line, text, (size_t)n);
+    line[n] = 0;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* s = trim(line);
+    if (!*s) return AM_OK;
+    char* eq = strchr(s, '=');
+    char qb[AM_QUOTE_BUF];
+    if (!eq)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: expected 'key = value', got '%s'", fname, lineno,
+                       am_quote(qb, sizeof qb, s, -1));
+    *eq = 0;
+    char* key = trim(s);
+    char* value = trim(eq + 1);
+    if (!*key) return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: missing key before '='", fname, lineno);
+    if (!*value)
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s: missing value after '='", fname, lineno,
+                       am_quote(qb, sizeof qb, key, -1));
+    am_status st = am_evo_set(d, key, value, msg, sizeof msg);
+    if (st != AM_OK) return am_fail(err, errsz, st == AM_ERR_ARG ? AM_ERR_PARSE : st, "%s:%d: %s", fname, lineno, msg);
+    return AM_OK;
+}
+
+int am_evo_line_key(const char* text, long n)
+{
+    char line[512];
+    if (n < 0 || n >= (long)sizeof line) return -1;
+    memcpy(line, text, (size_t)n);
+    line[n] = 0;
+    char* hash = strchr(line, '#');
+    if (hash) *hash = 0;
+    char* eq = strchr(line, '=');
+    if (!eq) return -1;
+    *eq = 0;
+    return key_index(trim(line));
+}
+
+am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz)
+{
+    int lineno = 0;
+    const char* p = text;
+    while (*p) {
+        lineno++;
+        const char* nl = strchr(p, '\n');
+        long len = nl ? (long)(nl - p) : (long)strlen(p);
+        am_status st = am_evo_parse_line(d, p, len, fname, lineno, err, errsz);
+        if (st != AM_OK) return st;
+        p = nl ? nl + 1 : p + len;
+    }
+    return AM_OK;
+}

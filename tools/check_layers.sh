@@ -1,0 +1,44 @@
+#!/bin/sh
+# tools/check_layers.sh: who may include whom (docs/architecture.md). The library's layers, in order:
+#   base  sim  geno  evo  io
+# A source of src/L/ and the header include/amorph/L.h may include the public headers of L's layer
+# and of the layers before it, and src/L/'s own private headers (L_internal.h); nothing else of
+# amorph (no amorph.h, no amorph/port.h, no path into another folder). Of the library, the ports
+# (port/) may include amorph/base.h and amorph/port.h only. Prints one line per breach and exits 1 when there is one.
+LAYERS="base sim geno evo io"
+bad=0 n=0
+# the public headers a file of layer $1 may include
+allowed() {
+    a=""
+    for l in $LAYERS; do a="$a amorph/$l.h"; [ "$l" = "$1" ] && break; done
+    echo "$a"
+}
+check_file() { # file, allowed quoted includes
+    f=$1; shift
+    n=$((n + 1))
+    for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$f"); do
+        case " $* " in *" $inc "*) ;; *) echo "check-layers: $f includes \"$inc\" (allowed: $*)"; bad=1 ;; esac
+    done
+}
+for l in $LAYERS; do
+    [ -d "src/$l" ] || { echo "check-layers: src/$l is missing"; bad=1; continue; }
+    own=$(cd "src/$l" && ls *.h 2>/dev/null | tr '\n' ' ')
+    for f in src/$l/*.c src/$l/*.h; do
+        [ -f "$f" ] || continue
+        case $(basename "$f") in "${l}"_*) ;; *) echo "check-layers: $f is not named ${l}_*"; bad=1 ;; esac
+        check_file "$f" $(allowed "$l") $own
+    done
+    check_file "include/amorph/$l.h" $(allowed "$l" | sed "s| amorph/$l.h||")
+done
+for f in src/*; do
+    case " $LAYERS " in *" $(basename "$f") "*) ;; *) echo "check-layers: $f is not a layer's folder"; bad=1 ;; esac
+done
+for f in $(find port -name '*.c' -o -name '*.h' | sort); do
+    n=$((n + 1))
+    for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$f"); do
+        case $inc in amorph/base.h | amorph/port.h) ;;
+        amorph.h | amorph/* | *src/*) echo "check-layers: $f includes \"$inc\" (a port may include amorph/base.h and amorph/port.h)"; bad=1 ;; esac
+    done
+done
+if [ $bad -ne 0 ]; then echo "check-layers: 0 passed, 1 failed"; exit 1; fi
+echo "check-layers: $n files of src/, include/amorph/ and port/ include only what their layer may"
