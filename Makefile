@@ -159,20 +159,13 @@ $(BUILD)/libamorph.so: $(PIC_OBJ)
 	$(CC) $(ALLCFLAGS) -shared -o $@ $^ -lm
 shared: $(BUILD)/libamorph.so
 
-# make install: headers, both libraries, the program and a pkg-config file under PREFIX; the .pc
-# file carries the build's number type and profile, which the headers need to be read alike
+# make install: headers, both libraries, the program and a pkg-config file under PREFIX
+# (tools/install.sh; the .pc file carries the build's number type and profile)
 PREFIX  ?= /usr/local
 DESTDIR ?=
 install: all shared
-	install -d $(DESTDIR)$(PREFIX)/include/amorph $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/bin
-	install -m 644 include/amorph.h $(DESTDIR)$(PREFIX)/include/
-	install -m 644 include/amorph/*.h $(DESTDIR)$(PREFIX)/include/amorph/
-	install -m 644 $(BUILD)/libamorph.a $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(BUILD)/libamorph.so $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(BUILD)/amorph$(EXE) $(DESTDIR)$(PREFIX)/bin/
-	printf '%s\n' 'prefix=$(PREFIX)' 'includedir=$${prefix}/include' 'libdir=$${prefix}/lib' '' 'Name: amorph' \
-	    'Description: evolving amorphous soft robots: voxel soft-body simulator and genetic algorithm' 'Version: 1' \
-	    'Cflags: -I$${includedir} $(DEFS)' 'Libs: -L$${libdir} -lamorph' 'Libs.private: -lm' >$(DESTDIR)$(PREFIX)/lib/pkgconfig/amorph.pc
+	@sh tools/install.sh $(BUILD) '$(DESTDIR)$(PREFIX)' '$(PREFIX)' '$(DEFS)'
+	@echo "install: headers, libamorph.a, libamorph.so, amorph and lib/pkgconfig/amorph.pc in $(DESTDIR)$(PREFIX)"
 
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
@@ -211,7 +204,7 @@ check-tests:
 	    echo "$$bad"; echo "check-tests: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-tests: no check in tests/*.sh chains a condition it does not judge"
 
-unit: $(TEST_BIN) $(BUILD)/amorph
+unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
 test: all check-alloc check-fma check-tests check-layers
