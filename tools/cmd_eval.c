@@ -24,7 +24,8 @@ static const char eval_help[] =
     "stderr, 'amorph: eval: stdin:LINE: problem', exit status 2; no result of that batch is printed.\n"
     "  --threads N        workers, 1..%d (0, the default: every core)\n"
     "  --KEY VALUE        a setting for every robot, before each line's own (amorph evolve --help-config;\n"
-    "                     not the run's keys population, evaluations, seed, threads, checkpoint_seconds)\n";
+    "                     not the run's keys population, evaluations, seed, threads, checkpoint_seconds)\n"
+    "One process: the MPI build runs it without mpirun (on threads).\n";
 
 #if defined(AM_PROFILE_BOARD)
 int cmd_eval(tool_ctx* c, int argc, char** argv)
@@ -247,6 +248,10 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
         b->flag_key[b->nflag] = key;
         b->flag_val[b->nflag++] = val;
     }
+    /* stdin reaches one process only: the items of a map over several (MPI ranks) would be missing */
+    if (am_port_processes() > 1)
+        return tool_usage_error("eval: reads its robots from stdin, which one process alone gets: run it as one process (not under "
+                                "mpirun with %d), on threads", am_port_processes());
     if (threads == 0) threads = am_port_cores();
     if (threads < 1) threads = 1;
     if (threads > AM_MAX_WORKERS) threads = AM_MAX_WORKERS;
