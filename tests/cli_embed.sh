@@ -8,7 +8,7 @@
 . tests/shlib.sh
 W=$TMPD
 set_flags="--cycles 2"
-"$AMORPH" random --representation gmx --workspace 8 --seed 3 --out "$W/gmx.genome" 2>/dev/null
+"$AMORPH" random --representation gmx --workspace 8 --seed 7 --out "$W/gmx.genome" 2>/dev/null
 "$AMORPH" random --representation dct --workspace 6 --seed 5 --out "$W/dct.genome" 2>/dev/null
 "$AMORPH" export --scene sphere:6 --lattice "$W/sphere.lattice" >/dev/null 2>&1
 "$AMORPH" export --scene cube:2 --lattice "$W/empty.lattice" >/dev/null 2>&1

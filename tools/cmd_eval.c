@@ -9,6 +9,14 @@
 #include <stdio.h>
 #include <string.h>
 
+#if defined(AM_PROFILE_BOARD)
+int cmd_eval(tool_ctx* c, int argc, char** argv)
+{
+    (void)c, (void)argc, (void)argv;
+    return tool_not_in_build("eval", "JSON pipes of robots");
+}
+#else
+
 static const char eval_help[] =
     "usage: amorph eval [--threads N] [--KEY VALUE ...] < robots.jsonl\n"
     "Reads robots as JSON lines on stdin and writes one JSON result per robot on stdout.\n"
@@ -27,13 +35,6 @@ static const char eval_help[] =
     "                     not the run's keys population, evaluations, seed, threads, checkpoint_seconds)\n"
     "One process: the MPI build runs it without mpirun (on threads).\n";
 
-#if defined(AM_PROFILE_BOARD)
-int cmd_eval(tool_ctx* c, int argc, char** argv)
-{
-    (void)c, (void)argc, (void)argv;
-    return tool_not_in_build("eval", "JSON pipes of robots");
-}
-#else
 
 #define EVAL_LINE_MAX (1L << 20)      /* bytes of one input line */
 #define EVAL_ARENA (32L << 20)        /* decoded texts of one batch */
