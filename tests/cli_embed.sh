@@ -86,6 +86,8 @@ PY
     expect_fail 2 '^amorph: eval: stdin:1: genome:2: ' "$AMORPH" eval <"$W/bad3.jsonl"
     printf '{"id": 1, "lattice": "x", "settings": {"no_such_key": "1"}}\n' >"$W/bad4.jsonl"
     expect_fail 2 "^amorph: eval: stdin:1: column [0-9]+: settings: unknown setting 'no_such_key'" "$AMORPH" eval <"$W/bad4.jsonl"
+    printf '{"id": 1, "lattice": "x", "settings": {"a\\u001bb": "1"}}\n' >"$W/bad9.jsonl"
+    expect_fail 2 "stdin:1: column [0-9]+: settings: unknown setting 'a.x1bb'" "$AMORPH" eval <"$W/bad9.jsonl"
     printf '{"id": 1, "lattice": "x", "settings": {"population": "4"}}\n' >"$W/bad5.jsonl"
     expect_fail 2 "stdin:1: .*'population' is a setting of an evolution" "$AMORPH" eval <"$W/bad5.jsonl"
     printf '{"id": 1.5, "lattice": "x"}\n' >"$W/bad6.jsonl"

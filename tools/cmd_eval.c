@@ -88,7 +88,8 @@ static const char* check_setting(const char* key, const char* val, char* err, in
 {
     int g = am_evo_key_group(key);
     if (g < 0) {
-        snprintf(err, (size_t)errsz, "unknown setting '%s' (amorph evolve --help-config lists them)", key);
+        char q[AM_QUOTE_BUF];
+        snprintf(err, (size_t)errsz, "unknown setting '%s' (amorph evolve --help-config lists them)", am_quote(q, sizeof q, key, -1));
         return err;
     }
     if (g == AM_KEYS_RUN) {
