@@ -53,6 +53,18 @@ PY
         check "$r: amorph eval ($got) is amorph sim ($want)" test -n "$want" -a "$got" = "$want"
     done
 
+    # the material keys change a genome's palette and a lattice's materials as amorph sim's flags do
+    for r in gmx.genome sphere.lattice; do
+        want=$("$AMORPH" sim "$W/$r" --cycles 2 --mu_static 0.6 --cte 0.02 --mu_kinetic 0.2 --voxel_size 0.02 --period_steps 300 --json 2>/dev/null |
+            sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+        got=$(python3 -c 'import json,sys; k = "genome" if sys.argv[1].endswith(".genome") else "lattice"; print(json.dumps({k: open(sys.argv[1]).read(),
+"settings": {"cycles": 2, "mu_static": "0.6", "cte": 0.02, "mu_kinetic": "0.2", "voxel_size": "0.02", "period_steps": 300}}))' "$W/$r" |
+            "$AMORPH" eval 2>&1 | sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+        base=$(sed -n "s/^$r //p" "$W/sim.txt")
+        check "$r with material settings: amorph eval ($got) is amorph sim ($want), not the plain result ($base)" \
+            test -n "$want" -a "$got" = "$want" -a "$want" != "$base"
+    done
+
     # ctypes and the pipe from the example program
     if grep -q -- '-fsanitize' "$BUILD/flags.txt" 2>/dev/null; then
         echo "cli_embed: a sanitizer build: Python cannot load its libamorph.so: ctypes part skipped"
