@@ -7,6 +7,8 @@
 #                             against a ten times smaller one on every kind of body)
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
+#   make shared               build/libamorph.so, the library for other languages (docs/embedding.md)
+#   make install PREFIX=/usr/local   headers, libamorph.a, libamorph.so, amorph, amorph.pc (DESTDIR honoured)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)  GATHER=auto|on|off
 #          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
@@ -107,7 +109,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all shared install test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -146,13 +148,32 @@ ifneq ($(EXE),)
 $(BUILD)/amorph: $(BUILD)/amorph$(EXE)
 endif
 
+# the shared library (docs/embedding.md): the library's sources only, compiled again as
+# position-independent code into $(BUILD)/pic/, with the same flags
+PIC_OBJ := $(LIB_SRC:%.c=$(BUILD)/pic/%.o)
+$(BUILD)/pic/%.o: %.c Makefile $(BUILD)/flags.txt
+	@mkdir -p $(dir $@)
+	$(CC) $(ALLCFLAGS) -fPIC -MMD -MP -c $< -o $@
+
+$(BUILD)/libamorph.so: $(PIC_OBJ)
+	$(CC) $(ALLCFLAGS) -shared -o $@ $^ -lm
+shared: $(BUILD)/libamorph.so
+
+# make install: headers, both libraries, the program and a pkg-config file under PREFIX
+# (tools/install.sh; the .pc file carries the build's number type and profile)
+PREFIX  ?= /usr/local
+DESTDIR ?=
+install: all shared
+	@sh tools/install.sh $(BUILD) '$(DESTDIR)$(PREFIX)' '$(PREFIX)' '$(DEFS)'
+	@echo "install: headers, libamorph.a, libamorph.so, amorph and lib/pkgconfig/amorph.pc in $(DESTDIR)$(PREFIX)"
+
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
 $(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
--include $(LIB_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
+-include $(LIB_OBJ:.o=.d) $(PIC_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
 
 # no object of src/ or port/ may reference an allocator
 NM ?= nm
@@ -183,7 +204,7 @@ check-tests:
 	    echo "$$bad"; echo "check-tests: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-tests: no check in tests/*.sh chains a condition it does not judge"
 
-unit: $(TEST_BIN) $(BUILD)/amorph
+unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
 test: all check-alloc check-fma check-tests check-layers

@@ -6,5 +6,6 @@
 #include "amorph/geno.h"
 #include "amorph/evo.h"
 #include "amorph/io.h"
+#include "amorph/api.h"
 #include "amorph/port.h"
 #endif

@@ -28,6 +28,7 @@ expect_fail 2 "view: not in this build" "$B" view --scene cube:2 --out "$TMPD/x.
 expect_fail 2 "export --vxa: not in this build" "$B" export --scene cube:2 --vxa "$TMPD/x.vxa"
 expect_fail 2 "voxcad_quadruped.vxa: a VXA file: not in this build" "$B" sim tests/data/voxcad_quadruped.vxa
 expect_fail 2 "bench --kernels: not in this build" "$B" bench --kernels
+expect_fail 2 "eval: not in this build" "$B" eval </dev/null
 if [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.vxa" ]; then ok; else ko "a refused command wrote a file"; fi
 # the lattice export works and reads back
 expect_ok "$B" export --scene sphere:6 --lattice "$TMPD/s.lattice"

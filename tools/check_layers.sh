@@ -1,11 +1,11 @@
 #!/bin/sh
 # tools/check_layers.sh: who may include whom (docs/architecture.md). The library's layers, in order:
-#   base  sim  geno  evo  io
+#   base  sim  geno  evo  io  api
 # A source of src/L/ and the header include/amorph/L.h may include the public headers of L's layer
 # and of the layers before it, and src/L/'s own private headers (L_internal.h); nothing else of
 # amorph (no amorph.h, no amorph/port.h, no path into another folder). Of the library, the ports
 # (port/) may include amorph/base.h and amorph/port.h only. Prints one line per breach and exits 1 when there is one.
-LAYERS="base sim geno evo io"
+LAYERS="base sim geno evo io api"
 bad=0 n=0
 # the public headers a file of layer $1 may include
 allowed() {

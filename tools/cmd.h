@@ -61,6 +61,8 @@ int cmd_repro(tool_ctx* c, int argc, char** argv);
 int cmd_export(tool_ctx* c, int argc, char** argv);
 /* amorph stats: groups of run folders compared by Welch's t and Mann-Whitney (tools/cmd_stats.c, tools/stats.h) */
 int cmd_stats(tool_ctx* c, int argc, char** argv);
+/* amorph eval: robots as JSON lines on stdin, results as JSON lines (tools/cmd_eval.c, docs/embedding.md) */
+int cmd_eval(tool_ctx* c, int argc, char** argv);
 
 /* a run folder of amorph evolve (README, "Run folders"; tools/run_dir.c writes and reads them) */
 #define RUN_CONFIG "config.txt"         /* the settings, key = value */

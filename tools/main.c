@@ -13,6 +13,7 @@ static const struct {
     {"experiment", cmd_experiment, "run one of the seed's experiments (representations, three-materials, ...)"},
     {"repro", cmd_repro, "run the reference evolution of make repro and print its hash"},
     {"sim", cmd_sim, "simulate one robot (lattice, genome or --scene) and print its fitness"},
+    {"eval", cmd_eval, "evaluate robots given as JSON lines on stdin, one JSON result per line (pipes, docs/embedding.md)" TOOL_DESKTOP_ONLY},
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
     {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
     {"express", cmd_express, "express a genome into a lattice file"},

@@ -1,0 +1,289 @@
+/* amorph eval: robots as JSON lines on stdin, one JSON result per line on stdout, a batch at a
+ * time (ask/tell: a whole population per batch), evaluated on the port's parallel map through the
+ * embedding API (amorph/api.h), so a result here is the library's and amorph sim's, bit for bit.
+ * docs/embedding.md is the manual. */
+#include "json.h"
+#include "robot.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <string.h>
+
+#if defined(AM_PROFILE_BOARD)
+int cmd_eval(tool_ctx* c, int argc, char** argv)
+{
+    (void)c, (void)argc, (void)argv;
+    return tool_not_in_build("eval", "JSON pipes of robots");
+}
+#else
+
+static const char eval_help[] =
+    "usage: amorph eval [--threads N] [--KEY VALUE ...] < robots.jsonl\n"
+    "Reads robots as JSON lines on stdin and writes one JSON result per robot on stdout.\n"
+    "A line is one object: {\"id\": 3, \"genome\": \"amorph-genome 1\\n...\"} or {\"id\": 3, \"lattice\": \"...\"},\n"
+    "with optional \"settings\": {\"cycles\": \"4\", ...} (configuration keys, values as strings or numbers).\n"
+    "id (an integer) is optional: the line's number on stdin stands in. An empty line or the end of\n"
+    "the input ends a batch: its robots are evaluated on the threads, their results printed in input\n"
+    "order (the same for any --threads), then an empty line, and the output is flushed.\n"
+    "A result: id, fitness, travel, dx, dy, dz, sustained_travel, voxels, links, empty, steps,\n"
+    "diverged, settled, hash (as amorph sim --json). A genome is evaluated as amorph evolve's run\n"
+    "evaluates it (its palette and voxel size from the settings), a lattice as amorph sim does.\n"
+    "Bad input (bad JSON, an unknown key, a bad genome or lattice) ends the command: one line on\n"
+    "stderr, 'amorph: eval: stdin:LINE: problem', exit status 2; no result of that batch is printed.\n"
+    "  --threads N        workers, 1..%d (0, the default: every core)\n"
+    "  --KEY VALUE        a setting for every robot, before each line's own (amorph evolve --help-config;\n"
+    "                     not the run's keys population, evaluations, seed, threads, checkpoint_seconds)\n"
+    "One process: the MPI build runs it without mpirun (on threads).\n";
+
+
+#define EVAL_LINE_MAX (1L << 20)      /* bytes of one input line */
+#define EVAL_ARENA (32L << 20)        /* decoded texts of one batch */
+#define EVAL_MAX_BATCH 4096           /* robots of one batch */
+#define EVAL_MAX_SETTINGS 32          /* settings of one line, and of the command line */
+#define EVAL_VALUE_MAX 256            /* bytes of a setting's value */
+
+enum { ROBOT_GENOME = 1, ROBOT_LATTICE = 2 };
+
+typedef struct eval_item {
+    long id;
+    int line;                         /* its line on stdin */
+    int kind;                         /* ROBOT_GENOME or ROBOT_LATTICE */
+    const char* text;                 /* in the arena */
+    int nset;
+    const char* key[EVAL_MAX_SETTINGS];
+    const char* val[EVAL_MAX_SETTINGS];
+} eval_item;
+
+typedef struct eval_out {
+    am_result r;
+    int st;                           /* am_status */
+    char err[AM_ERR_MAX];
+} eval_out;
+
+typedef struct eval_batch {
+    int n;
+    long used;                        /* arena bytes */
+    int nflag;                        /* the command line's settings */
+    const char* flag_key[EVAL_MAX_SETTINGS];
+    const char* flag_val[EVAL_MAX_SETTINGS];
+    eval_item item[EVAL_MAX_BATCH];
+    eval_out out[EVAL_MAX_BATCH];
+} eval_batch;
+
+/* one batch, the line buffer, the arena and a workspace per worker: static, used by this command only */
+static eval_batch g_batch;
+static char g_line[EVAL_LINE_MAX + 2];
+static char g_arena[EVAL_ARENA];
+static am_api_work g_work[AM_MAX_WORKERS];
+
+/* room for cap bytes in the arena, or NULL */
+static char* arena(eval_batch* b, long cap)
+{
+    if (b->used + cap > EVAL_ARENA) return NULL;
+    return g_arena + b->used;
+}
+
+/* a setting's key and value checked as amorph evolve checks them; NULL or a message */
+static const char* check_setting(const char* key, const char* val, char* err, int errsz)
+{
+    int g = am_evo_key_group(key);
+    if (g < 0) {
+        char q[AM_QUOTE_BUF];
+        snprintf(err, (size_t)errsz, "unknown setting '%s' (amorph evolve --help-config lists them)", am_quote(q, sizeof q, key, -1));
+        return err;
+    }
+    if (g == AM_KEYS_RUN) {
+        snprintf(err, (size_t)errsz, "'%s' is a setting of an evolution, not of one robot", key);
+        return err;
+    }
+    am_evo_def d = am_default_evo();
+    if (am_evo_set(&d, key, val, err, errsz) != AM_OK) return err;
+    return NULL;
+}
+
+/* the "settings" object of a line into it (keys and values in the arena) */
+static int read_settings(tool_json* j, eval_batch* b, eval_item* it)
+{
+    if (!tool_json_expect(j, '{', "to open \"settings\"")) return 0;
+    if (tool_json_take(j, '}')) return 1;
+    do {
+        char* k = arena(b, 64 + EVAL_VALUE_MAX);
+        if (!k) return tool_json_fail(j, "the batch's texts pass %ld bytes: end the batch sooner (an empty line)", EVAL_ARENA);
+        if (!tool_json_string(j, k, 64, NULL)) return 0;
+        if (!tool_json_expect(j, ':', "after a setting's name")) return 0;
+        char* v = k + 64;
+        while (*j->p == ' ' || *j->p == '\t') j->p++;
+        if (*j->p == '"') {
+            if (!tool_json_string(j, v, EVAL_VALUE_MAX, NULL)) return 0;
+        } else if (!tool_json_number(j, v, EVAL_VALUE_MAX)) return 0;
+        char msg[AM_ERR_MAX];
+        if (check_setting(k, v, msg, sizeof msg)) return tool_json_fail(j, "settings: %s", msg);
+        if (it->nset == EVAL_MAX_SETTINGS) return tool_json_fail(j, "more than %d settings", EVAL_MAX_SETTINGS);
+        it->key[it->nset] = k;
+        it->val[it->nset++] = v;
+        b->used += (long)strlen(v) + 65;
+    } while (tool_json_take(j, ','));
+    return tool_json_expect(j, '}', "to close \"settings\"");
+}
+
+/* one robot line into the batch's next item */
+static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
+{
+    int has_id = 0;
+    memset(it, 0, sizeof *it);
+    it->id = lineno; /* unless the line gives one */
+    if (!tool_json_expect(j, '{', "to open the robot's object")) return 0;
+    if (!tool_json_take(j, '}')) do {
+            char key[32];
+            if (!tool_json_string(j, key, sizeof key, NULL)) return 0;
+            if (!tool_json_expect(j, ':', "after a key")) return 0;
+            if (!strcmp(key, "id")) {
+                char num[32];
+                if (has_id++) return tool_json_fail(j, "\"id\" given twice");
+                if (!tool_json_number(j, num, sizeof num)) return 0;
+                if (!tool_parse_long(num, LONG_MIN, LONG_MAX, &it->id)) return tool_json_fail(j, "\"id\" must be an integer, not %s", num);
+            } else if (!strcmp(key, "genome") || !strcmp(key, "lattice")) {
+                if (it->kind) return tool_json_fail(j, "one robot per line (\"genome\" or \"lattice\", once)");
+                it->kind = key[0] == 'g' ? ROBOT_GENOME : ROBOT_LATTICE;
+                char* t = arena(b, EVAL_LINE_MAX);
+                if (!t) return tool_json_fail(j, "the batch's texts pass %ld bytes: end the batch sooner (an empty line)", EVAL_ARENA);
+                long len = 0;
+                if (!tool_json_string(j, t, EVAL_LINE_MAX, &len)) return 0;
+                it->text = t;
+                b->used += len + 1;
+            } else if (!strcmp(key, "settings")) {
+                if (it->nset) return tool_json_fail(j, "\"settings\" given twice");
+                if (!read_settings(j, b, it)) return 0;
+            } else {
+                char q[AM_QUOTE_BUF];
+                return tool_json_fail(j, "unknown key \"%s\" (a line holds id, genome or lattice, settings)", am_quote(q, sizeof q, key, -1));
+            }
+        } while (tool_json_take(j, ','));
+    if (!tool_json_expect(j, '}', "to close the robot's object")) return 0;
+    if (!tool_json_end(j)) return 0;
+    if (!it->kind) return tool_json_fail(j, "no robot: the line needs \"genome\" or \"lattice\"");
+    return 1;
+}
+
+/* item i on worker w's workspace: the settings (command line, then the line's), then the robot */
+static void eval_task(void* ctx, int i, int w)
+{
+    eval_batch* b = (eval_batch*)ctx;
+    const eval_item* it = &b->item[i];
+    eval_out* o = &b->out[i];
+    am_api_work* k = &g_work[w];
+    am_status st = am_api_init(k, (long)sizeof *k, o->err, sizeof o->err);
+    for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
+    for (int s = 0; st == AM_OK && s < it->nset; s++) st = am_api_set(k, it->key[s], it->val[s], o->err, sizeof o->err);
+    if (st == AM_OK)
+        st = it->kind == ROBOT_GENOME ? am_api_eval_genome(k, it->text, &o->r, o->err, sizeof o->err)
+                                      : am_api_eval_lattice(k, it->text, &o->r, o->err, sizeof o->err);
+    o->st = (int)st;
+}
+
+/* evaluates the batch and prints its results and an empty line; 0, or the exit status after a message */
+static int run_batch(eval_batch* b, int threads)
+{
+    char err[AM_ERR_MAX];
+    if (b->n > 0) {
+        int workers = threads < b->n ? threads : b->n;
+        am_status st = am_port_parallel_map(b->n, workers, eval_task, b, b->out, (long)sizeof b->out[0], err, sizeof err);
+        if (st != AM_OK) return tool_usage_error("eval: %s", err), 1;
+        for (int i = 0; i < b->n; i++)
+            if (b->out[i].st != AM_OK) return tool_usage_error("eval: stdin:%d: %s", b->item[i].line, b->out[i].err);
+    }
+    tool_out out;
+    if (tool_out_open(&out, NULL)) return 1;
+    for (int i = 0; i < b->n; i++) {
+        const am_result* r = &b->out[i].r;
+        tool_rec q;
+        tool_rec_begin(&q, &out.text, 1);
+        tool_rec_int(&q, "id", b->item[i].id);
+        tool_rec_num(&q, "fitness", r->fitness);
+        tool_rec_num(&q, "travel", r->travel);
+        tool_rec_num(&q, "dx", r->dx);
+        tool_rec_num(&q, "dy", r->dy);
+        tool_rec_num(&q, "dz", r->dz);
+        tool_rec_num(&q, "sustained_travel", r->sustained);
+        tool_rec_int(&q, "voxels", r->voxels);
+        tool_rec_int(&q, "links", r->links);
+        tool_rec_int(&q, "empty", r->voxels == 0);
+        tool_rec_int(&q, "steps", r->steps);
+        tool_rec_int(&q, "diverged", r->diverged);
+        tool_rec_int(&q, "settled", r->settled);
+        tool_rec_hex(&q, "hash", r->hash);
+        tool_rec_end(&q);
+    }
+    am_text_put(&out.text, "\n");
+    if (tool_out_close(&out, 1)) return 1;
+    fflush(stdout);
+    b->n = 0;
+    b->used = 0;
+    return 0;
+}
+
+int cmd_eval(tool_ctx* c, int argc, char** argv)
+{
+    (void)c;
+    eval_batch* b = &g_batch;
+    int threads = 0;
+    b->nflag = 0;
+    for (int i = 1; i < argc; i++) {
+        const char* a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            printf(eval_help, AM_MAX_WORKERS);
+            return 0;
+        }
+        if (!strcmp(a, "--threads")) {
+            if (!tool_parse_int(i + 1 < argc ? argv[i + 1] : NULL, 0, AM_MAX_WORKERS, &threads))
+                return tool_usage_error("eval: --threads needs a number of workers, 0..%d", AM_MAX_WORKERS);
+            i++;
+            continue;
+        }
+        const char *key, *val;
+        int r = tool_setting_arg("eval", argc, argv, &i, &key, &val);
+        if (r == 2) return 2;
+        if (r == 0) return tool_unknown_option("eval", a);
+        char msg[AM_ERR_MAX];
+        if (check_setting(key, val, msg, sizeof msg)) return tool_usage_error("eval: %s", msg);
+        if (b->nflag == EVAL_MAX_SETTINGS) return tool_usage_error("eval: more than %d settings", EVAL_MAX_SETTINGS);
+        b->flag_key[b->nflag] = key;
+        b->flag_val[b->nflag++] = val;
+    }
+    /* stdin reaches one process only: the items of a map over several (MPI ranks) would be missing */
+    if (am_port_processes() > 1)
+        return tool_usage_error("eval: reads its robots from stdin, which one process alone gets: run it as one process (not under "
+                                "mpirun with %d), on threads", am_port_processes());
+    if (threads == 0) threads = am_port_cores();
+    if (threads < 1) threads = 1;
+    if (threads > AM_MAX_WORKERS) threads = AM_MAX_WORKERS;
+    b->n = 0;
+    b->used = 0;
+    int lineno = 0;
+    for (;;) {
+        if (!fgets(g_line, (int)sizeof g_line, stdin)) break;
+        lineno++;
+        size_t n = strlen(g_line);
+        if (n > 0 && g_line[n - 1] == '\n') g_line[--n] = 0;
+        else if (n > (size_t)EVAL_LINE_MAX) return tool_usage_error("eval: stdin:%d: a line longer than %ld bytes", lineno, EVAL_LINE_MAX);
+        if (n > 0 && g_line[n - 1] == '\r') g_line[--n] = 0;
+        if (strlen(g_line) != n) return tool_usage_error("eval: stdin:%d: binary data (a NUL byte)", lineno);
+        size_t lead = strspn(g_line, " \t");
+        if (g_line[lead] == 0) {
+            int rc = run_batch(b, threads);
+            if (rc) return rc;
+            continue;
+        }
+        if (b->n == EVAL_MAX_BATCH)
+            return tool_usage_error("eval: stdin:%d: more than %d robots in a batch (end it with an empty line)", lineno, EVAL_MAX_BATCH);
+        eval_item* it = &b->item[b->n];
+        tool_json j;
+        tool_json_begin(&j, g_line);
+        if (!read_robot(&j, b, it, lineno)) return tool_usage_error("eval: stdin:%d: %s", lineno, j.err);
+        it->line = lineno;
+        b->n++;
+    }
+    if (ferror(stdin)) return tool_usage_error("eval: stdin: a read failed"), 1;
+    return b->n > 0 ? run_batch(b, threads) : 0;
+}
+#endif
