@@ -66,8 +66,10 @@ endif
 TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
 LDLIBS  := -lm -lpthread
-# the port's source folders: port/<port>/, and any its port.mk adds
+# the port's source folders: port/<port>/, and any its port.mk adds; PORT_FILES: single sources of
+# another port's folder it builds on (port/mpi: port/posix/posix.c)
 PORT_DIRS := port/$(PORT) port/common
+PORT_FILES :=
 EXE     :=
 -include port/$(PORT)/port.mk
 
@@ -99,7 +101,7 @@ ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off
            -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c))
-PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)))
+PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)) $(PORT_FILES))
 TOOL_SRC := $(sort $(wildcard tools/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -125,9 +127,11 @@ endif
 $(BUILD)/flags.txt:
 	@mkdir -p $(dir $@) && printf '%s\n' '$(FLAGS_LINE)' >$@
 
+# port/port.h is the program's OS layer, not a library header: the objects of tools/ and port/ (and
+# the tests) find it with -Iport, those of src/ cannot include it
 $(BUILD)/%.o: %.c Makefile $(BUILD)/flags.txt
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(ALLCFLAGS) $(if $(filter $(BUILD)/src/%,$@),,-Iport) -MMD -MP -c $< -o $@
 
 $(BUILD)/libamorph.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -150,7 +154,7 @@ endif
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
 $(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -Iport -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
 -include $(LIB_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
 
@@ -172,7 +176,7 @@ check-fma: $(LIB_OBJ)
 	echo "check-fma: no fused multiply-add in $(words $(LIB_OBJ)) objects of src/"
 
 # who may include whom: each layer of src/ only the headers of the layers before it, the ports only
-# amorph/base.h and amorph/port.h (tools/check_layers.sh, docs/architecture.md)
+# amorph/base.h and port.h (tools/check_layers.sh, docs/architecture.md)
 check-layers:
 	@sh tools/check_layers.sh
 

@@ -6,5 +6,4 @@
 #include "amorph/geno.h"
 #include "amorph/evo.h"
 #include "amorph/io.h"
-#include "amorph/port.h"
 #endif
