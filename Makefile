@@ -6,6 +6,7 @@
 #                             bench-mpi: MPI ranks against threads; convergence: the default step
 #                             against a ten times smaller one on every kind of body)
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
+#   make sim-only TARGET=cortex-m4   build/cortex-m4/board_sim: the simulator alone on a board (no port)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)  GATHER=auto|on|off
@@ -109,7 +110,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all sim-only test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -150,13 +151,28 @@ ifneq ($(EXE),)
 $(BUILD)/amorph: $(BUILD)/amorph$(EXE)
 endif
 
+# the simulator alone on a Cortex-M board (tools/board_sim/; docs/porting.md, The simulator alone):
+# the objects of src/base, src/sim and src/geno with board_sim's own start-up, linked with the C
+# library and libm only: no src/evo, src/io, tools/ or port. make sim-only TARGET=cortex-m4 (or
+# cortex-m3): $(BUILD)/board_sim, run by tools/sim_only.sh (make repro)
+SIM_ONLY_OBJ  := $(filter $(BUILD)/src/base/% $(BUILD)/src/sim/% $(BUILD)/src/geno/%,$(LIB_OBJ))
+BOARD_SIM_OBJ := $(BUILD)/tools/board_sim/board_sim.o $(BUILD)/tools/board_sim/cortex-m.o
+ifneq ($(filter sim-only $(BUILD)/board_sim,$(MAKECMDGOALS)),)
+ifeq ($(filter cortex-m3 cortex-m4,$(TARGET)),)
+$(error sim-only is a Cortex-M build: make sim-only TARGET=cortex-m4 (or cortex-m3), not TARGET='$(TARGET)')
+endif
+endif
+sim-only: $(BUILD)/board_sim
+$(BUILD)/board_sim: $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) tools/board_sim/cortex-m.ld
+	$(CC) $(ALLCFLAGS) -nostartfiles -Wl,--gc-sections -T tools/board_sim/cortex-m.ld -o $@ $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) -lm
+
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
 $(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
 	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -Iport -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
--include $(LIB_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
+-include $(LIB_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(BOARD_SIM_OBJ:.o=.d) $(TEST_BIN:=.d)
 
 # no object of src/ or port/ may reference an allocator
 NM ?= nm
