@@ -1,4 +1,4 @@
-/* The parts of the porting layer's contract (include/amorph/port.h) that every port would write
+/* The parts of the porting layer's contract (port/port.h) that every port would write
  * the same way, written once here over the port's own functions. */
 #include <stddef.h>
 #include "port.h"
