@@ -61,8 +61,9 @@ for name in cortex-m3 cortex-m4; do
     [ -z "$leak" ] || fail "$name: board_sim holds symbols of src/evo, src/io, tools or port: $leak"
     machine=mps2-an386
     [ "$name" = cortex-m3 ] && machine=mps2-an385
-    out=$(timeout 600 qemu-system-arm -M $machine -nographic -monitor none -serial none \
-        -semihosting-config enable=on,target=native -kernel "$bin" </dev/null 2>>"$log")
+    # (QEMU writes the semihosting console, SYS_WRITE0, to its standard error)
+    out=$(timeout 900 qemu-system-arm -M $machine -nographic -monitor none -serial none \
+        -semihosting-config enable=on,target=native -kernel "$bin" </dev/null 2>&1)
     rc=$?
     echo "$out" >>"$log"
     got_scene=$(echo "$out" | sed -n 's/^scene=sphere:6 hash=\([0-9a-f]*\).*/\1/p')
