@@ -129,10 +129,11 @@ $(BUILD)/flags.txt:
 	@mkdir -p $(dir $@) && printf '%s\n' '$(FLAGS_LINE)' >$@
 
 # port/port.h is the program's OS layer, not a library header: the objects of tools/ and port/ (and
-# the tests) find it with -Iport, those of src/ cannot include it
+# the tests) find it with -Iport, those of src/ (and of tools/board_sim/, which has no port) cannot
+# include it
 $(BUILD)/%.o: %.c Makefile $(BUILD)/flags.txt
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) $(if $(filter $(BUILD)/src/%,$@),,-Iport) -MMD -MP -c $< -o $@
+	$(CC) $(ALLCFLAGS) $(if $(filter $(BUILD)/src/% $(BUILD)/tools/board_sim/%,$@),,-Iport) -MMD -MP -c $< -o $@
 
 $(BUILD)/libamorph.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
