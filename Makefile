@@ -6,6 +6,7 @@
 #                             bench-mpi: MPI ranks against threads; convergence: the default step
 #                             against a ten times smaller one on every kind of body)
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
+#   make sim-only TARGET=cortex-m4   build/cortex-m4/board_sim: the simulator alone on a board (no port)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
 #   make shared               build/libamorph.so, the library for other languages (docs/embedding.md)
 #   make install PREFIX=/usr/local   headers, libamorph.a, libamorph.so, amorph, amorph.pc (DESTDIR honoured)
@@ -68,8 +69,10 @@ endif
 TARGET_CFLAGS := $(wordlist 3,$(words $(TARGET_$(TARGET))),$(TARGET_$(TARGET)))
 endif
 LDLIBS  := -lm -lpthread
-# the port's source folders: port/<port>/, and any its port.mk adds
+# the port's source folders: port/<port>/, and any its port.mk adds; PORT_FILES: single sources of
+# another port's folder it builds on (port/mpi: port/posix/posix.c)
 PORT_DIRS := port/$(PORT) port/common
+PORT_FILES :=
 EXE     :=
 -include port/$(PORT)/port.mk
 
@@ -101,7 +104,7 @@ ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off
            -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c))
-PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)))
+PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)) $(PORT_FILES))
 TOOL_SRC := $(sort $(wildcard tools/*.c))
 TEST_SRC := $(sort $(wildcard tests/test_*.c))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -109,7 +112,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all shared install test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all shared install sim-only test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -127,9 +130,12 @@ endif
 $(BUILD)/flags.txt:
 	@mkdir -p $(dir $@) && printf '%s\n' '$(FLAGS_LINE)' >$@
 
+# port/port.h is the program's OS layer, not a library header: the objects of tools/ and port/ (and
+# the tests) find it with -Iport, those of src/ (and of tools/board_sim/, which has no port) cannot
+# include it
 $(BUILD)/%.o: %.c Makefile $(BUILD)/flags.txt
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(ALLCFLAGS) $(if $(filter $(BUILD)/src/% $(BUILD)/tools/board_sim/%,$@),,-Iport) -MMD -MP -c $< -o $@
 
 $(BUILD)/libamorph.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -167,13 +173,28 @@ install: all shared
 	@sh tools/install.sh $(BUILD) '$(DESTDIR)$(PREFIX)' '$(PREFIX)' '$(DEFS)'
 	@echo "install: headers, libamorph.a, libamorph.so, amorph and lib/pkgconfig/amorph.pc in $(DESTDIR)$(PREFIX)"
 
+# the simulator alone on a Cortex-M board (tools/board_sim/; docs/porting.md, The simulator alone):
+# the objects of src/base, src/sim and src/geno with board_sim's own start-up, linked with the C
+# library and libm only: no src/evo, src/io, tools/ or port. make sim-only TARGET=cortex-m4 (or
+# cortex-m3): $(BUILD)/board_sim, run by tools/sim_only.sh (make repro)
+SIM_ONLY_OBJ  := $(filter $(BUILD)/src/base/% $(BUILD)/src/sim/% $(BUILD)/src/geno/%,$(LIB_OBJ))
+BOARD_SIM_OBJ := $(BUILD)/tools/board_sim/board_sim.o $(BUILD)/tools/board_sim/cortex-m.o
+ifneq ($(filter sim-only $(BUILD)/board_sim,$(MAKECMDGOALS)),)
+ifeq ($(filter cortex-m3 cortex-m4,$(TARGET)),)
+$(error sim-only is a Cortex-M build: make sim-only TARGET=cortex-m4 (or cortex-m3), not TARGET='$(TARGET)')
+endif
+endif
+sim-only: $(BUILD)/board_sim
+$(BUILD)/board_sim: $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) tools/board_sim/cortex-m.ld
+	$(CC) $(ALLCFLAGS) -nostartfiles -Wl,--gc-sections -T tools/board_sim/cortex-m.ld -o $@ $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) -lm
+
 # every tools/ file but the one holding main() is linked into the tests too
 TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
 $(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -Iport -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
 
--include $(LIB_OBJ:.o=.d) $(PIC_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(TEST_BIN:=.d)
+-include $(LIB_OBJ:.o=.d) $(PIC_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(BOARD_SIM_OBJ:.o=.d) $(TEST_BIN:=.d)
 
 # no object of src/ or port/ may reference an allocator
 NM ?= nm
@@ -193,7 +214,7 @@ check-fma: $(LIB_OBJ)
 	echo "check-fma: no fused multiply-add in $(words $(LIB_OBJ)) objects of src/"
 
 # who may include whom: each layer of src/ only the headers of the layers before it, the ports only
-# amorph/base.h and amorph/port.h (tools/check_layers.sh, docs/architecture.md)
+# amorph/base.h and port.h (tools/check_layers.sh, docs/architecture.md)
 check-layers:
 	@sh tools/check_layers.sh
 

@@ -7,5 +7,4 @@
 #include "amorph/evo.h"
 #include "amorph/io.h"
 #include "amorph/api.h"
-#include "amorph/port.h"
 #endif

@@ -5,6 +5,7 @@
 #include "sink.h"
 
 #include "amorph.h"
+#include "port.h"
 
 static am_evo g_a, g_b, g_c;
 static am_evo_work g_work[3];

@@ -7,6 +7,7 @@
  * $BUILD/tests/port_scratch. */
 #define _POSIX_C_SOURCE 200809L
 #include "amorph.h"
+#include "port.h"
 #include "harness.h"
 
 #include <fcntl.h>

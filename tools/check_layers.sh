@@ -3,8 +3,9 @@
 #   base  sim  geno  evo  io  api
 # A source of src/L/ and the header include/amorph/L.h may include the public headers of L's layer
 # and of the layers before it, and src/L/'s own private headers (L_internal.h); nothing else of
-# amorph (no amorph.h, no amorph/port.h, no path into another folder). Of the library, the ports
-# (port/) may include amorph/base.h and amorph/port.h only. Prints one line per breach and exits 1 when there is one.
+# amorph (no amorph.h, no port.h: the porting layer is the program's, port/port.h; no path into
+# another folder). The ports (port/) may include port.h and, of the library, amorph/base.h only;
+# include/amorph/ holds no port.h. Prints one line per breach and exits 1 when there is one.
 LAYERS="base sim geno evo io api"
 bad=0 n=0
 # the public headers a file of layer $1 may include
@@ -36,9 +37,13 @@ done
 for f in $(find port -name '*.c' -o -name '*.h' | sort); do
     n=$((n + 1))
     for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$f"); do
-        case $inc in amorph/base.h | amorph/port.h) ;;
-        amorph.h | amorph/* | *src/*) echo "check-layers: $f includes \"$inc\" (a port may include amorph/base.h and amorph/port.h)"; bad=1 ;; esac
+        case $inc in amorph/base.h | port.h) ;;
+        amorph.h | amorph/* | *src/*) echo "check-layers: $f includes \"$inc\" (a port may include amorph/base.h and port.h)"; bad=1 ;;
+        *.c) echo "check-layers: $f includes the source \"$inc\" (a port compiles its sources as objects)"; bad=1 ;; esac
     done
+done
+for f in include/amorph/port.h include/port.h; do
+    [ -e "$f" ] && { echo "check-layers: $f: the porting layer is the program's (port/port.h), not the library's"; bad=1; }
 done
 if [ $bad -ne 0 ]; then echo "check-layers: 0 passed, 1 failed"; exit 1; fi
 echo "check-layers: $n files of src/, include/amorph/ and port/ include only what their layer may"

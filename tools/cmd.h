@@ -23,6 +23,7 @@
 #include <stdint.h>
 
 #include "amorph.h"
+#include "port.h"
 
 /* the workspaces of the commands (they run one at a time), owned by main */
 typedef struct tool_ctx {

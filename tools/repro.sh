@@ -9,6 +9,7 @@
 #   RISC-V 32-bit (rv32imafc, single-precision FPU): bare metal under qemu-system-riscv32 (virt)
 #   with semihosting
 #   Windows x86-64: mingw-w64, static, port/win32, under wine (tools/wine.sh: prefix build/wine)
+# and the simulator alone on the Cortex-M boards (make sim-only; tools/sim_only.sh)
 # Every build uses PROFILE=board. Prints a table (target, hash, seconds) and fails unless every
 # hash equals REPRO_EXPECT. Builds log to build/repro/<target>.log.
 # REPRO_ARGS is the reference computation: the amorph command line (without "amorph"); its
@@ -143,6 +144,10 @@ for name in cortex-m3 cortex-m4 rv32; do
     if [ "$ram" -gt $RAM_MAX ] || [ "$flash" -gt $FLASH_MAX ]; then mark="  OVER BUDGET"; bad=$((bad + 1)); fi
     printf 'memory %-15s RAM %7d of %d bytes, flash %7d of %d%s\n' "$name" "$ram" $RAM_MAX "$flash" $FLASH_MAX "$mark"
 done
+# the simulator alone (make sim-only, tools/board_sim/): its RAM and flash as rows beside the whole
+# program's, no symbol of src/evo, src/io, tools or the port in it (nm), and each of its robots'
+# hashes equal to the x86-64 build's for the same robot (tools/sim_only.sh)
+DESKTOP=$(build_of "BUILD=build/repro/gcc-O3-native-$REAL")/amorph JOBS=$JOBS MAKE=$MAKE sh tools/sim_only.sh "$REAL" || bad=$((bad + 1))
 # byte order: a run checkpointed by the x86-64 build resumes on the big-endian s390x build (and on
 # 32-bit i686) to the run the x86-64 build makes uninterrupted: same run hash, same best genome
 SMALL="--workspace 6 --population 8 --cycles 1 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 --quiet --no-pictures --threads 1"

@@ -6,7 +6,7 @@
  * exists on the host (opening "path/." succeeds only for a directory) and otherwise fails with
  * a message asking to create it on the host. Built with -DAM_SEMIHOST_MKDIR it instead asks
  * the host shell to create it through SYS_SYSTEM ("mkdir 'path'"), which a debugger may refuse. */
-#include "amorph/port.h"
+#include "port.h"
 
 #include "semihost.h"
 

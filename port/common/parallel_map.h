@@ -1,11 +1,13 @@
-/* port/common/parallel_map.h: am_port_parallel_map of amorph/port.h on threads that share the
+/* port/common/parallel_map.h: am_port_parallel_map of port.h on threads that share the
  * memory, for the ports that have threads (posix, win32). What the map promises is decided here
  * once: the calling thread is worker 0 and the others are threads of their own (at most
  * PORT_MAX_THREADS in all, never more than there are items); the items are handed out in order
  * under a lock, each exactly once; every item is done even when a thread fails to start (then the
  * map reports that failure); the results are in place (`out` is not read).
  *
- * A port's source includes this file once, after defining PORT_MAX_THREADS and the types
+ * A port's source includes this file once (the function is am_port_parallel_map unless the source
+ * defines PORT_FN(name) to name it otherwise, as port/posix does: am_posix_parallel_map), after
+ * defining PORT_MAX_THREADS and the types
  * port_mutex and port_thread, and then defines these static functions:
  *   int  sys_mutex_init(port_mutex* mu)             1, or 0 when it cannot be made
  *   void sys_mutex_lock(port_mutex* mu), sys_mutex_unlock(port_mutex* mu), sys_mutex_destroy(port_mutex* mu)
@@ -14,6 +16,10 @@
  *   void sys_thread_join(port_thread t)             waits for it, and frees it */
 #ifndef AMORPH_PORT_PARALLEL_MAP_H
 #define AMORPH_PORT_PARALLEL_MAP_H
+
+#ifndef PORT_FN
+#define PORT_FN(name) am_port_##name
+#endif
 
 typedef struct map_job {
     port_mutex lock;
@@ -47,7 +53,7 @@ static void map_loop(map_job* job, int worker)
     }
 }
 
-am_status am_port_parallel_map(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
+am_status PORT_FN(parallel_map)(int n, int workers, am_port_task task, void* ctx, void* out, long size, char* err, int errsz)
 {
     (void)out; /* the workers share this memory: each result is in place */
     if (workers < 1 || n < 0 || size < 0 || !task) return am_fail(err, errsz, AM_ERR_ARG, "parallel map: %d items on %d workers", n, workers);

@@ -1,7 +1,7 @@
-/* The parts of the porting layer's contract (include/amorph/port.h) that every port would write
+/* The parts of the porting layer's contract (port/port.h) that every port would write
  * the same way, written once here over the port's own functions. */
 #include <stddef.h>
-#include "amorph/port.h"
+#include "port.h"
 
 /* one write of a stream: the stream's atomic replace makes the whole file appear at once */
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz)

@@ -1,4 +1,4 @@
-/* port/common/stream_table.h: the streams of amorph/port.h (am_port_open_write, am_port_write,
+/* port/common/stream_table.h: the streams of port.h (am_port_open_write, am_port_write,
  * am_port_open_read, am_port_read, am_port_close) over a fixed table, shared by the ports that
  * keep files (posix, win32, baremetal). What a stream promises is decided here once: a written
  * stream goes to a temporary beside its file and replaces the file only when closed with commit
@@ -6,7 +6,9 @@
  * main thread only.
  *
  * A port's source includes this file once (it defines static tables and the contract's
- * functions), after defining:
+ * functions, named am_port_open_write ... unless the source defines PORT_FN(name) to name them
+ * otherwise: port/posix's are am_posix_open_write ..., which port/posix/port_posix.c and
+ * port/mpi/port_mpi.c call), after defining:
  *   PORT_STREAMS   how many streams may be open at once
  *   PORT_TMP_CAP   bytes for a temporary's name with its terminating zero (a stack buffer)
  *   port_handle    the system's handle of an open file
@@ -36,6 +38,10 @@
 #define AMORPH_PORT_STREAM_TABLE_H
 
 #include <stdint.h>
+
+#ifndef PORT_FN
+#define PORT_FN(name) am_port_##name
+#endif
 
 static struct {
     port_handle h;
@@ -71,7 +77,7 @@ static int claim(int k, port_handle h, const char* path, int writing)
     return k;
 }
 
-am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
+am_status PORT_FN(open_write)(const char* path, am_port_stream* s, char* err, int errsz)
 {
     char tmp[PORT_TMP_CAP];
     *s = -1;
@@ -87,7 +93,7 @@ am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int
     return AM_OK;
 }
 
-am_status am_port_write(am_port_stream s, const void* data, long n, char* err, int errsz)
+am_status PORT_FN(write)(am_port_stream s, const void* data, long n, char* err, int errsz)
 {
     if (!slot_ok(s) || !streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for writing", s);
     if (streams[s].failed) return am_fail(err, errsz, AM_ERR_IO, "%s: write error: an earlier write failed", streams[s].path);
@@ -96,7 +102,7 @@ am_status am_port_write(am_port_stream s, const void* data, long n, char* err, i
     return st;
 }
 
-am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int errsz)
+am_status PORT_FN(open_read)(const char* path, am_port_stream* s, char* err, int errsz)
 {
     *s = -1;
     const int k = free_slot(path, err, errsz);
@@ -108,7 +114,7 @@ am_status am_port_open_read(const char* path, am_port_stream* s, char* err, int 
     return AM_OK;
 }
 
-am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
+am_status PORT_FN(read)(am_port_stream s, void* buf, long cap, long* got, char* err, int errsz)
 {
     *got = 0;
     if (!slot_ok(s) || streams[s].writing) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open for reading", s);
@@ -116,7 +122,7 @@ am_status am_port_read(am_port_stream s, void* buf, long cap, long* got, char* e
     return sys_read(streams[s].h, buf, cap, got, streams[s].path, err, errsz);
 }
 
-am_status am_port_close(am_port_stream s, int commit, char* err, int errsz)
+am_status PORT_FN(close)(am_port_stream s, int commit, char* err, int errsz)
 {
     if (!slot_ok(s)) return am_fail(err, errsz, AM_ERR_ARG, "stream %d: not open", s);
     const char* path = streams[s].path;

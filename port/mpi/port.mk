@@ -1,6 +1,7 @@
 # port/mpi/port.mk: the MPI port (make PORT=mpi) builds with the MPI compiler wrapper (mpicc, or
-# MPICC=...) into build/mpi (build/mpi-fixed ...). Its sources are port/mpi/ only: posix_base.c
-# compiles port/posix/port_posix.c under other names, so that file is a dependency here.
+# MPICC=...) into build/mpi (build/mpi-fixed ...). Its sources are port/mpi/port_mpi.c, the contract,
+# and the POSIX port's work, port/posix/posix.c (its functions am_posix_*, which port_mpi.c calls;
+# port/posix/port_posix.c, the POSIX contract over them, is not built here).
 MPICC ?= mpicc
 ifneq ($(origin CC),command line)
 CC := $(MPICC)
@@ -12,4 +13,4 @@ ifeq ($(shell command -v $(firstword $(CC)) 2>/dev/null),)
 $(error PORT=mpi needs an MPI compiler wrapper: '$(CC)' not found (Debian: apt-get install libopenmpi-dev openmpi-bin))
 endif
 .DEFAULT_GOAL := all
-$(BUILD)/port/mpi/posix_base.o: port/posix/port_posix.c
+PORT_FILES += port/posix/posix.c

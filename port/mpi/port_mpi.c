@@ -3,8 +3,8 @@
  * Every rank runs the same program on the same inputs, and the port makes sure the inputs are the
  * same: rank 0 alone touches the outside world (clock, console, files, folder lock, environment,
  * terminal, interruptions) and every call made on the main thread outside a parallel map is
- * collective: rank 0 does the work (with the POSIX port, posix_base.c) and broadcasts what the
- * program sees (a status, a message, the bytes read, the time, a flag). The ranks therefore take
+ * collective: rank 0 does the work (with the POSIX port's functions, port/posix/posix.h) and
+ * broadcasts what the program sees (a status, a message, the bytes read, the time, a flag). The ranks therefore take
  * the same branches and reach the same calls in the same order, and the only thing a rank does on
  * its own is its share of each parallel map: each rank's main thread takes the next items (one per
  * thread) from a counter in rank 0's memory (MPI_Fetch_and_op, one-sided: rank 0 is not asked), runs
@@ -34,7 +34,7 @@
  * Test hooks: AMORPH_TEST_RANK=r (read by every rank from its own environment; default 0) names the
  * one rank on which am_port_raise acts, so a test's AMORPH_TEST_INTERRUPT stops or kills that rank. */
 #define _POSIX_C_SOURCE 200809L
-#include "posix_base.h"
+#include "../posix/posix.h"
 
 #include "amorph/base.h"
 

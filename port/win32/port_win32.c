@@ -15,7 +15,7 @@
  * Paths are passed to the ANSI ("A") functions as the program received them, in the process's
  * code page like argv; '/' and '\' both separate folders. */
 #define WIN32_LEAN_AND_MEAN
-#include "amorph/port.h"
+#include "port.h"
 #include "amorph/base.h"
 
 #include <windows.h>

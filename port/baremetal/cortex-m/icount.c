@@ -1,6 +1,6 @@
 /* The bare-metal clock of `make bench-board` (built with -DAM_BAREMETAL_ICOUNT, which replaces
  * port_baremetal.c's semihosting clock): instructions, read from QEMU's MPS2 boards. */
-#include "amorph/port.h"
+#include "port.h"
 
 #include <stdint.h>
 

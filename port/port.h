@@ -1,7 +1,11 @@
-/* amorph/port.h: the porting layer, the whole contract between amorph and a platform.
+/* port/port.h: the porting layer, the program's OS layer: the whole contract between the program
+ * (tools/) and a platform. The library (src/, include/amorph/) neither includes nor calls it: it
+ * never calls the OS, and the evolver runs on the executor its caller gives (tools/executor.c wraps
+ * this port's map and clock). Included as "port.h" by tools/, tests/ and port/ (-Iport, given to
+ * their objects only, so that a source of src/ cannot include it).
  *
- * The library in src/ never calls the OS: everything platform-bound (time, console, files,
- * threads, signals) goes through these functions, implemented once per platform in
+ * Everything platform-bound (time, console, files, threads, signals) goes through these
+ * functions, implemented once per platform in
  * port/<name>/ (port/posix: Linux and other POSIX systems; port/win32: Windows;
  * port/baremetal: Cortex-M and RISC-V boards with semihosting). A port is selected at build
  * time with `make PORT=name`; docs/porting.md says how to add one.

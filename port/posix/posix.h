@@ -1,11 +1,12 @@
-/* port/mpi/posix_base.h: the POSIX port's functions under the names am_posix_* (posix_base.c
- * compiles port/posix/port_posix.c with its contract names renamed to these). port/mpi is the
- * POSIX port seen from rank 0: each of its functions calls the one here, on rank 0 or on every
- * process, and adds what several processes need. */
-#ifndef AMORPH_PORT_MPI_POSIX_BASE_H
-#define AMORPH_PORT_MPI_POSIX_BASE_H
+/* port/posix/posix.h: the POSIX port's functions (posix.c), one per function of the contract
+ * (port.h), named am_posix_* instead of am_port_*. port_posix.c is the contract over them (each
+ * am_port_X calls am_posix_X); port/mpi is the POSIX port seen from rank 0: port_mpi.c takes
+ * port_posix.c's place in the MPI build, and each of its functions calls the one here, on rank 0
+ * or on every process, and adds what several processes need. */
+#ifndef AMORPH_PORT_POSIX_H
+#define AMORPH_PORT_POSIX_H
 
-#include "amorph/port.h"
+#include "port.h"
 
 void am_posix_start(int* argc, char*** argv);
 int am_posix_end(int status);
