@@ -34,9 +34,9 @@ typedef struct tool_ctx {
      * borrows the genomes of its population as its pool */
     am_evo evo;
 #if !defined(AM_PROFILE_BOARD)
-    /* the per-cell layers (phases, boundary conditions) of the robot tool_robot_load loaded last:
-     * a VXA file's, else none (tools/robot.h, tool_model_build) */
-    am_layers layers;
+    /* the room for the per-cell layers (phases, stiffnesses, boundary conditions) of the robot a
+     * command loads: tool_robot_load points its am_robot at it (tools/robot.h) */
+    am_layers robot_layers;
 #endif
 } tool_ctx;
 
@@ -234,12 +234,11 @@ int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 #else
 #define TOOL_PICTURES 1
 #endif
-/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording in
- * env with eval (its record field is ignored) and writes path atomically. Silent on success;
+/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording (its
+ * eval.record is ignored) and writes path atomically. Silent on success;
  * 0, or 1 after a one-line message on stderr. */
-int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path);
-int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
-                      const char* path);
+int tool_write_filmstrip(tool_ctx* c, const am_robot* r, const char* path);
+int tool_write_viewer(tool_ctx* c, const am_robot* r, const char* title, const char* path);
 /* the best fitness against evaluations of run folders or experiment folders (a mean line and a
  * standard-error band per variant) as SVG */
 int tool_write_plot(int ndirs, char** dirs, const char* path);

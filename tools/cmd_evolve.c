@@ -356,14 +356,18 @@ static int finish_pictures(tool_ctx* c, const char* dir)
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
-    am_eval_def ev = e->def.eval;
-    ev.record = NULL;
-    if (am_lattice_count(&c->work[0].lattice) > 0) {
+    /* the best robot: its body, no per-cell layers, the run's environment and evaluation */
+    am_robot best;
+    am_robot_init(&best, &c->work[0].lattice, NULL);
+    best.env = e->def.env;
+    best.eval = e->def.eval;
+    best.eval.record = NULL;
+    if (am_lattice_count(best.lattice) > 0) {
         path_join(path, sizeof path, dir, RUN_BEST_PNG);
-        if (tool_write_filmstrip(c, &c->work[0].lattice, &e->def.env, &ev, path)) return 1;
+        if (tool_write_filmstrip(c, &best, path)) return 1;
         path_join(path, sizeof path, dir, RUN_BEST_HTML);
         snprintf(title, sizeof title, "amorph: best of %.200s (%.4f m)", dir, e->best.fitness);
-        if (tool_write_viewer(c, &c->work[0].lattice, &e->def.env, &ev, title, path)) return 1;
+        if (tool_write_viewer(c, &best, title, path)) return 1;
     }
     path_join(path, sizeof path, dir, RUN_FITNESS_SVG);
     char* dirs[1] = {(char*)(uintptr_t)dir};

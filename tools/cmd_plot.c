@@ -463,11 +463,11 @@ static int plot_load(int ndirs, char** dirs)
  * horizontal distance from the settled frame's against the time since then, one point a frame */
 static int travel_load(tool_ctx* c, const tool_robot_args* ra, const char* label)
 {
-    tool_robot rob;
+    am_robot rob;
     int rc = tool_load_subject(c, ra, &rob, "plot");
     if (rc) return rc;
     static tool_motion mo;
-    rc = tool_record_motion(c, &c->work[0].lattice, &rob.env, &rob.eval, TOOL_REC_MAX_FRAMES, &mo, ra->name);
+    rc = tool_record_motion(c, &rob, TOOL_REC_MAX_FRAMES, &mo, ra->name);
     if (rc) return rc;
     plot_nruns = plot_nser = 0;
     plot_used = plot_mused = 0;

@@ -416,6 +416,12 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
 am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
                            am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz);
 
+/* the robot a VXA file read into r->lattice (am_vxa_parse or am_vxa_parse_vxd with lat = r->lattice)
+ * and info is: the file's environment, its period in seconds as env.period_s unless the file fixed
+ * period_steps, the default evaluation, and the file's per-cell layers copied into r->layers.
+ * AM_ERR_CAPACITY when the file has layers and r->layers is NULL. */
+am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
+
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
  * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment

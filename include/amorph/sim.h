@@ -445,6 +445,23 @@ typedef struct am_eval_def {
 
 am_eval_def am_default_eval(void);
 
+/* A robot as one unit: its body, what it carries per cell, the environment it moves in and how it
+ * is evaluated. A lattice file's robot is am_robot_init's; amorph/io.h fills one from a VXA file
+ * (am_vxa_robot), and whoever builds its model takes it whole (am_robot_build). The lattice and
+ * the layers are large: the robot points at them and their owner keeps them static. */
+typedef struct am_robot {
+    am_lattice* lattice;        /* the body */
+    am_layers* layers;          /* per-cell layers (a VXA file's); NULL: none */
+    am_env env;
+    am_eval_def eval;           /* record and gait NULL unless a caller sets them */
+} am_robot;
+
+/* a robot of lat with no layers yet (layers, when not NULL, cleared), am_default_env() and
+ * am_default_eval() */
+void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers);
+/* am_model_build_layers of the robot's lattice, environment and layers */
+am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz);
+
 /* what an evaluation scores (am_eval_def.score; docs/evolve.md, Fitness) */
 #define AM_SCORE_TRAVEL 0    /* the seed's: the centre of mass's travel over the whole movement */
 #define AM_SCORE_SUSTAINED 1 /* sustained locomotion: the travel per cycle after sustained_from cycles */
