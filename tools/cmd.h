@@ -62,22 +62,8 @@ int cmd_export(tool_ctx* c, int argc, char** argv);
 /* amorph stats: groups of run folders compared by Welch's t and Mann-Whitney (tools/cmd_stats.c, tools/stats.h) */
 int cmd_stats(tool_ctx* c, int argc, char** argv);
 
-/* a run folder of amorph evolve (README, "Run folders"; tools/run_dir.c writes and reads them) */
-#define RUN_CONFIG "config.txt"         /* the settings, key = value */
-#define RUN_LOG "log.csv"               /* a row per generation */
-#define RUN_EVALS "evals.csv"           /* a row per evaluation */
-#define RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
-#define RUN_BEST_GENOME "best.genome"
-#define RUN_BEST_LATTICE "best.lattice"
-#define RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
-#define RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
-#define RUN_LOCK "lock"                 /* held while a process runs the folder */
-#define RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
-#define RUN_BEST_HTML "best.html"       /* its viewer page */
-#define RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
-/* an experiment folder (amorph experiment): its run folders <variant>-<k>, and */
-#define EXP_ABOUT "experiment.txt"      /* what the experiment is */
-#define EXP_RESULTS "results.csv"       /* mean and standard error per variant */
+/* a run folder's and an experiment folder's file names and table rows: amorph/io.h (AM_RUN_*,
+ * AM_EXP_*); tools/run_dir.c writes and reads the files */
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);

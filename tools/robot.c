@@ -181,10 +181,10 @@ static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, 
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
     am_evo_def d = am_stored_evo(); /* a key config.txt does not name: as the run had it */
     /* a NUL byte ends these texts, as it ended them when they were parsed whole */
-    snprintf(path, sizeof path, "%s/" RUN_CONFIG, dir);
+    snprintf(path, sizeof path, "%s/" AM_RUN_CONFIG, dir);
     am_status st = tool_read_config(path, &d, 1, err, errsz);
     if (st != AM_OK) return st;
-    snprintf(path, sizeof path, "%s/" RUN_BEST_GENOME, dir);
+    snprintf(path, sizeof path, "%s/" AM_RUN_BEST_GENOME, dir);
     tool_src src;
     st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
     if (st == AM_OK) st = tool_read_genome(&src, tool_genome(c), err, errsz);

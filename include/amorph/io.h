@@ -442,6 +442,26 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
  * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
 int am_vxa_period_steps(double period_s, double dt);
 
+/* ==== the run folder of amorph evolve and the experiment folder of amorph experiment
+ * (docs/evolve.md): the names of their files, and below the texts they hold (the checkpoint, the
+ * rows of log.csv, evals.csv and results.csv, and their readers; config.txt is am_evo_write's).
+ * The program reads and writes the files through the port; every place that names one uses these. */
+#define AM_RUN_CONFIG "config.txt"         /* the settings, key = value */
+#define AM_RUN_LOG "log.csv"               /* a row per generation (am_evo_log_row) */
+#define AM_RUN_EVALS "evals.csv"           /* a row per evaluation (am_evo_evals_row) */
+#define AM_RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
+#define AM_RUN_BEST_GENOME "best.genome"
+#define AM_RUN_BEST_LATTICE "best.lattice"
+#define AM_RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
+#define AM_RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
+#define AM_RUN_LOCK "lock"                 /* held while a process runs the folder */
+#define AM_RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
+#define AM_RUN_BEST_HTML "best.html"       /* its viewer page */
+#define AM_RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
+/* an experiment folder: its run folders <variant>-<k>, and */
+#define AM_EXP_ABOUT "experiment.txt"      /* what the experiment is */
+#define AM_EXP_RESULTS "results.csv"       /* mean and standard error per variant (am_exp_results_row) */
+
 /* ---- checkpoints ---- */
 
 /* the run as text (config, stream, counters, population, best), ending with a checksum line */
@@ -543,6 +563,13 @@ am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
 #define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
 int am_evo_evals_header(int materials, char* buf, int cap);
 int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
+/* an experiment's results.csv: its header line (no newline), and one row (no newline) for a variant
+ * at an evaluation count: the mean and the standard error of its runs' best fitness there; returns
+ * the characters written (cut to cap - 1). AM_EXP_RESULTS_ROW_MAX: a capacity every row fits with
+ * a variant name of up to 160 characters. */
+#define AM_EXP_RESULTS_ROW_MAX 256
+const char* am_exp_results_header(void);
+int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
 
 #ifdef __cplusplus
 }

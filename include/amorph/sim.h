@@ -475,9 +475,18 @@ long am_steps_at(const am_model* m, const am_state* s, long n);
  * period_s / dt rounded, 1 to 10^7 */
 int am_period_steps(const am_model* m, const am_env* env, am_real dt);
 
+/* The score of a body that has none: it diverged, or it did not come to rest before the movement.
+ * It is the one meaning of "fitness when diverged" everywhere: am_result.fitness, the evolver's
+ * individuals (am_evo_ind), the checkpoint and what amorph sim prints. log.csv's statistics leave
+ * such bodies out, and evals.csv's fitness column is empty for a diverged row (its numbers are not
+ * results) and AM_NO_SCORE for an unsettled one (docs/evolve.md). An empty body (no voxel) has no
+ * model to evaluate: its callers give it fitness 0, a valid robot that goes nowhere. */
+#define AM_NO_SCORE (-1.0)
+
 typedef struct am_result {
-    double fitness;          /* m; -1 (worst) when the body diverged, did not settle or is empty: the
-                              * score; travel holds the displacement measured either way */
+    double fitness;          /* m: the score (travel, or sustained with AM_SCORE_SUSTAINED);
+                              * AM_NO_SCORE when the body diverged or did not settle; travel holds
+                              * the displacement measured either way */
     double travel;           /* m: the centre of mass displacement measured as the fitness is (0 when
                               * diverged) */
     double dx, dy, dz;       /* centre of mass displacement in the movement segment, m */
