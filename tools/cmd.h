@@ -61,6 +61,8 @@ int cmd_repro(tool_ctx* c, int argc, char** argv);
 int cmd_export(tool_ctx* c, int argc, char** argv);
 /* amorph stats: groups of run folders compared by Welch's t and Mann-Whitney (tools/cmd_stats.c, tools/stats.h) */
 int cmd_stats(tool_ctx* c, int argc, char** argv);
+/* amorph report: the tables of docs/results.md from run folders' log.csv (tools/cmd_report.c) */
+int cmd_report(tool_ctx* c, int argc, char** argv);
 
 /* a run folder's and an experiment folder's file names and table rows: amorph/io.h (AM_RUN_*,
  * AM_EXP_*); tools/run_dir.c writes and reads the files */
