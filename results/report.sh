@@ -20,9 +20,8 @@
 # 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
 # against the mean of the GMX runs, the seed's settings, to OTHERS_EVALS) and DIR/gaits.svg (each
 # best robot's travel in each of its 30 cycles, a row per run).
-# The numbers of log.csv come from the program (`amorph report last`, `fig6`, `compute` and
-# `amorph stats`); this script calls it and assembles the page (the body sizes from evals.csv.gz and
-# the other experiments' range are still computed here).
+# The numbers of log.csv come from the program (`amorph report last`, `fig6`, `compute`, `best-at`,
+# `range`, `bodies` and `amorph stats`); this script calls it and assembles the page.
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
 # the same files on every float build.
 set -eu
@@ -94,20 +93,11 @@ fi
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the
 # workspace" in numbers
+set --
+for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do [ -f "$f" ] && set -- "$@" "${f%/evals.csv.gz}"; done
 echo
-echo "| evaluations | DCT voxels | CPPN voxels | GMX voxels |"
-echo "|---:|---:|---:|---:|"
-for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do
-    [ -f "$f" ] || continue
-    rep=$(basename "$(dirname "$f")"); rep=${rep%-*}
-    gzip -dc "$f" | awk -F, -v rep="$rep" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
-        { print rep, int($col["evaluation"] / 500), $col["voxels"] }'
-done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
-    END { if (NR == 0) exit
-          split("dct cppn gmx", order, " ")
-          for (w = 0; w <= top; w++) { line = "| " (w * 500 + 1) "-" (w + 1) * 500 " |"
-              for (r = 1; r <= 3; r++) line = line ((order[r], w) in n ? sprintf(" %.0f (%d bodies) |", s[order[r], w] / n[order[r], w], n[order[r], w]) : " |")
-              print line } }'
+if [ $# -gt 0 ]; then "$AMORPH" report bodies "$@" || exit 1
+else echo "| evaluations | DCT voxels | CPPN voxels | GMX voxels |"; echo "|---:|---:|---:|---:|"; fi
 
 # the other experiments: each run's best fitness after OTHERS_EVALS evaluations (2,000, their
 # length) against the seed's settings at the same count, the GMX runs of Figure 6 (the
@@ -116,27 +106,21 @@ done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
 # lines of its config.txt that differ from representations/gmx-1's (but for the evaluations, the
 # seed and the threads); the gait is its best robot's over 30 cycles (gait30.json)
 n_at=${OTHERS_EVALS:-2000}
-# best_at RUN: the best fitness so far at n_at evaluations, from log.csv; nothing when the run
-# has not got there
-best_at() {
-    awk -F, -v n="$n_at" 'FNR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; best = -1; next }
-        { e = $col["evaluations"] + 0; if (e <= n && $col["best"] + 0 > best) best = $col["best"] + 0; if (e >= n) got = 1 }
-        END { if (got) printf "%.4f\n", best }' "$1/log.csv"
-}
 base=$DIR/representations/gmx-1/config.txt
 if [ -f "$base" ]; then
+    # the GMX runs' best fitness so far at n_at evaluations: runs, mean, standard error, range
+    # (amorph report range), and each other run's (amorph report best-at: nothing before it got there)
     set --
     for log in "$DIR"/representations/gmx-[0-9]*/log.csv; do
-        [ -f "$log" ] && set -- "$@" "$(best_at "${log%/log.csv}")"
+        [ -f "$log" ] && set -- "$@" "${log%/log.csv}"
     done
-    range=$(printf '%s\n' "$@" | awk 'NF { k++; s += $1; s2 += $1 * $1; if (k == 1 || $1 < lo) lo = $1; if (k == 1 || $1 > hi) hi = $1 }
-        END { if (!k) exit; m = s / k; v = k > 1 ? (s2 - k * m * m) / (k - 1) : 0
-              printf "%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(v > 0 ? v / k : 0), lo, hi }')
+    range=
+    if [ $# -gt 0 ]; then range=$("$AMORPH" report range "$n_at" "$@") || exit 1; fi
     rows=$(for cfg in "$DIR"/*/*/config.txt; do
         case $cfg in "$DIR"/representations/*) continue ;; esac
         [ -f "$cfg" ] || continue
         run=${cfg%/config.txt}
-        b=$(best_at "$run")
+        b=$("$AMORPH" report best-at "$n_at" "$run") || exit 1
         [ -n "$b" ] || continue
         changed=$(awk -F' = ' 'NR == FNR { if (NF == 2) v[$1] = $2; next }
             NF == 2 && $1 != "evaluations" && $1 != "seed" && $1 != "threads" && v[$1] != $2 { s = s (s ? ", " : "") $1 "=" $2 }

@@ -195,6 +195,30 @@ expect_ok "$AMORPH" report compute --root "$P" "$P/x-1" "$P/dct-1"
 check "report compute: $(cat "$TMPD/out")" [ "$(sed -n 3,4p "$TMPD/out")" = "$(printf '| x-1 | 40 | 4.00 | 1 |\n| dct-1 | 1000 | 0.00 | 0 |')" ]
 expect_ok "$AMORPH" report last "$P/gmx-1"
 check "report last: the last row's evaluations and best: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "1010 0.03" ]
+# best-at and range: the best so far at 1000 (gmx-1: its 990 row's 0.010; dct-1 and dct-2 their
+# 1000 rows), nothing for a run that has not got there; range over the three: 0.0100, 0.0160 and
+# 0.0200, mean 0.0153, standard error 0.0029 (sqrt(0.000025333 / 3))
+expect_ok "$AMORPH" report best-at 1000 "$P/gmx-1"
+check "report best-at: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "0.0100" ]
+expect_ok "$AMORPH" report best-at 1020 "$P/gmx-1"
+check "report best-at: nothing before the run got there: '$(cat "$TMPD/out")'" [ ! -s "$TMPD/out" ]
+expect_ok "$AMORPH" report range 1000 "$P/dct-1" "$P/dct-2" "$P/gmx-1"
+check "report range: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "3 0.0153 0.0029 0.0100 0.0200" ]
+expect_fail 2 "report: best-at needs a number of evaluations" "$AMORPH" report best-at x "$P/gmx-1"
+# bodies: the mean voxels per 500 evaluations from each run's evals.csv.gz, columns by name: dct-1
+# evaluated 10 and 20 voxels in 1-500 and 7 in 501-1000, gmx-1 5 in 1-500; cppn nothing
+printf 'evaluation,generation,voxels\n0,0,10\n499,1,20\n500,2,7\n' | gzip -9n >"$P/dct-1/evals.csv.gz"
+printf 'voxels,evaluation\n5,1\n' | gzip -9n >"$P/gmx-1/evals.csv.gz"
+expect_ok "$AMORPH" report bodies "$P/dct-1" "$P/gmx-1"
+cat >"$TMPD/want" <<'EOF'
+| evaluations | DCT voxels | CPPN voxels | GMX voxels |
+|---:|---:|---:|---:|
+| 1-500 | 15 (2 bodies) | | 5 (1 bodies) |
+| 501-1000 | 7 (1 bodies) | | |
+EOF
+check "report bodies: $(diff "$TMPD/want" "$TMPD/out" | head -5)" cmp -s "$TMPD/want" "$TMPD/out"
+head -c 30 "$P/dct-1/evals.csv.gz" >"$P/gmx-1/evals.csv.gz"
+expect_fail 2 "report: $P/gmx-1/evals.csv.gz: " "$AMORPH" report bodies "$P/dct-1" "$P/gmx-1"
 expect_fail 2 "report: unknown table 'nope'" "$AMORPH" report nope "$P/x-1"
 expect_fail 2 "$P/none/log.csv" "$AMORPH" report fig6 "$P/dct-1" "$P/none"
 printf '%s\n0,10\n' "$h" >"$P/x-1/log.csv"

@@ -7,7 +7,12 @@
  *                  runs that reached it; then each run's best so far every 1,000
  *   compute RUN... a row per run: evaluations, hours of one thread (the sum of log.csv's wall_s, a
  *                  generation that took more than 5 times the run's median counted as the median)
- *                  and the generations so counted (paused) */
+ *                  and the generations so counted (paused)
+ *   best-at N RUN  the run's best fitness so far at N evaluations (%.4f), nothing before it got there
+ *   range N RUN... over the runs that reached N evaluations, their best so far there (each as
+ *                  best-at prints it): "RUNS MEAN STDERR LOW HIGH", nothing when none did
+ *   bodies RUN...  the mean voxels of the bodies each representation evaluated in each window of
+ *                  500 evaluations (each run's evals.csv.gz, as results/ship.sh ships it) */
 #include "cmd.h"
 #if !defined(AM_PROFILE_BOARD)
 
@@ -175,6 +180,138 @@ static int report_fig6(int nruns, char** runs)
     return 0;
 }
 
+/* the best so far at n evaluations of the rows read, as best-at prints it (4 decimals) in out; 0
+ * when the run has not got there */
+static int best_at(long n, char* out, size_t cap)
+{
+    double best = -1;
+    int got = 0;
+    for (int i = 0; i < R.rows; i++) {
+        if (R.evals[i] <= n && R.best[i] > best) best = R.best[i];
+        if (R.evals[i] >= n) got = 1;
+    }
+    if (got) snprintf(out, cap, "%.4f", best);
+    return got;
+}
+
+static int report_best_at(long n, const char* run)
+{
+    char v[64];
+    int rc = read_rows(run);
+    if (rc) return rc;
+    if (best_at(n, v, sizeof v)) printf("%s\n", v);
+    return 0;
+}
+
+static int report_range(long n, int nruns, char** runs)
+{
+    int k = 0;
+    double s = 0, s2 = 0, lo = 0, hi = 0;
+    for (int r = 0; r < nruns; r++) {
+        char v[64];
+        int rc = read_rows(runs[r]);
+        if (rc) return rc;
+        if (!best_at(n, v, sizeof v)) continue;
+        const double x = strtod(v, NULL); /* the value as printed: the table compares the printed ones */
+        k++;
+        s += x;
+        s2 += x * x;
+        if (k == 1 || x < lo) lo = x;
+        if (k == 1 || x > hi) hi = x;
+    }
+    if (!k) return 0;
+    const double m = s / k;
+    const double var = k > 1 ? (s2 - k * m * m) / (k - 1) : 0;
+    printf("%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(var > 0 ? var / k : 0), lo, hi);
+    return 0;
+}
+
+#define REPORT_GZ_MAX (4L << 20)      /* a shipped evals.csv.gz */
+#define REPORT_CSV_MAX (64L << 20)    /* and its text */
+#define REPORT_WINDOWS 4096           /* windows of 500 evaluations */
+
+static int report_bodies(int nruns, char** runs)
+{
+    static char gz[REPORT_GZ_MAX];
+    static uint8_t csv[REPORT_CSV_MAX + 1];
+    static double sum[3][REPORT_WINDOWS];
+    static long count[3][REPORT_WINDOWS];
+    static am_inflate_work w;
+    memset(sum, 0, sizeof sum);
+    memset(count, 0, sizeof count);
+    long top = -1;
+    for (int r = 0; r < nruns; r++) {
+        char path[TOOL_PATH_MAX], err[AM_ERR_MAX], msg[AM_ERR_MAX], name[REPORT_NAME_MAX];
+        if (snprintf(path, sizeof path, "%s/" AM_RUN_EVALS ".gz", runs[r]) >= (int)sizeof path)
+            return tool_usage_error("report: %.60s...: path too long", runs[r]);
+        long n = 0, len = 0;
+        if (am_port_read_file(path, gz, REPORT_GZ_MAX, &n, err, sizeof err) != AM_OK) return tool_usage_error("report: %s", err);
+        if (am_gzip_inflate((const uint8_t*)gz, n, csv, REPORT_CSV_MAX, &len, &w, msg, sizeof msg) != AM_OK)
+            return tool_usage_error("report: %s: %s", path, msg);
+        csv[len] = 0;
+        /* the representation: the folder's name up to its last '-' */
+        base_of(runs[r], name, sizeof name);
+        char* dash = strrchr(name, '-');
+        if (dash) *dash = 0;
+        int p = -1;
+        for (int k = 0; k < 3; k++)
+            if (!strcmp(name, reps[k])) p = k;
+        /* the header names the columns */
+        char* const stop = (char*)csv + len;
+        char* line = (char*)csv;
+        int c_eval = -1, c_vox = -1, lineno = 1;
+        char* nl = memchr(line, '\n', (size_t)(stop - line));
+        if (!nl) return tool_usage_error("report: %s:1: no header line", path);
+        *nl = 0;
+        int col = 0;
+        for (char* f = line; f; col++) {
+            char* comma = strchr(f, ',');
+            size_t fl = comma ? (size_t)(comma - f) : strlen(f);
+            if (fl == 10 && !strncmp(f, "evaluation", 10)) c_eval = col;
+            if (fl == 6 && !strncmp(f, "voxels", 6)) c_vox = col;
+            f = comma ? comma + 1 : NULL;
+        }
+        if (c_eval < 0 || c_vox < 0) return tool_usage_error("report: %s:1: no evaluation or voxels column", path);
+        for (line = nl + 1; line < stop; line = nl + 1) {
+            lineno++;
+            nl = memchr(line, '\n', (size_t)(stop - line));
+            if (!nl) nl = stop; /* the last line without its newline (csv[len] is its NUL) */
+            *nl = 0;
+            if (!*line) continue;
+            long v[2] = {-1, -1};
+            col = 0;
+            for (char* f = line; f; col++) {
+                char* comma = strchr(f, ',');
+                if (col == c_eval || col == c_vox) {
+                    char* e2;
+                    long x = strtol(f, &e2, 10);
+                    if (e2 == f || (*e2 && *e2 != ',') || x < 0)
+                        return tool_usage_error("report: %s:%d: column %d: not a whole number from 0", path, lineno, col + 1);
+                    v[col == c_vox] = x;
+                }
+                f = comma ? comma + 1 : NULL;
+            }
+            if (v[0] < 0 || v[1] < 0) return tool_usage_error("report: %s:%d: fewer fields than the header", path, lineno);
+            const long win = v[0] / 500;
+            if (win >= REPORT_WINDOWS) return tool_usage_error("report: %s:%d: evaluation %ld past %d windows of 500", path, lineno, v[0], REPORT_WINDOWS);
+            if (win > top) top = win;
+            if (p >= 0) {
+                sum[p][win] += (double)v[1];
+                count[p][win]++;
+            }
+        }
+    }
+    printf("| evaluations | DCT voxels | CPPN voxels | GMX voxels |\n|---:|---:|---:|---:|\n");
+    for (long k = 0; k <= top; k++) {
+        printf("| %ld-%ld |", k * 500 + 1, (k + 1) * 500);
+        for (int p = 0; p < 3; p++)
+            if (count[p][k]) printf(" %.0f (%ld bodies) |", sum[p][k] / (double)count[p][k], count[p][k]);
+            else printf(" |");
+        printf("\n");
+    }
+    return 0;
+}
+
 static int cmp_double(const void* a, const void* b)
 {
     const double x = *(const double*)a, y = *(const double*)b;
@@ -214,7 +351,7 @@ static int report_compute(const char* root, int nruns, char** runs)
 }
 
 static const char report_help[] =
-    "usage: amorph report TABLE [--root DIR] RUN...\n"
+    "usage: amorph report TABLE [--root DIR] [N] RUN...\n"
     "Prints a table of docs/results.md from run folders' log.csv (results/report.sh assembles them):\n"
     "  last RUN        'EVALUATIONS BEST': the run's last logged generation\n"
     "  fig6 RUN...     Figure 6: per representation (runs named dct-<k>, cppn-<k>, gmx-<k>) the mean\n"
@@ -222,6 +359,11 @@ static const char report_help[] =
     "                  runs that reached it; then each run's best so far every 1,000\n"
     "  compute RUN...  a row per run: evaluations, hours (the sum of wall_s; a generation over 5 times\n"
     "                  the run's median counts as the median) and those paused generations\n"
+    "  best-at N RUN   the run's best fitness so far at N evaluations, nothing before it got there\n"
+    "  range N RUN...  over the runs that reached N evaluations: 'RUNS MEAN STDERR LOW HIGH' of their\n"
+    "                  best so far there (each to 4 decimals, as best-at prints it)\n"
+    "  bodies RUN...   the mean voxels of the bodies each representation evaluated per 500\n"
+    "                  evaluations, from each run's evals.csv.gz\n"
     "  --root DIR      compute: runs named relative to DIR\n";
 
 int cmd_report(tool_ctx* c, int argc, char** argv)
@@ -243,11 +385,19 @@ int cmd_report(tool_ctx* c, int argc, char** argv)
         if (n != 1) return tool_usage_error("report: last takes one run folder");
         return report_last(argv[first]);
     }
+    if (!strcmp(table, "best-at") || !strcmp(table, "range")) {
+        long at;
+        if (n < 1 || !tool_parse_long(argv[first], 1, 1000000000L, &at))
+            return tool_usage_error("report: %s needs a number of evaluations, 1..1000000000, then run folders", table);
+        if (n < 2 || (table[0] == 'b' && n != 2)) return tool_usage_error("report: %s N takes %s", table, table[0] == 'b' ? "one run folder" : "run folders");
+        return table[0] == 'b' ? report_best_at(at, argv[first + 1]) : report_range(at, n - 1, argv + first + 1);
+    }
     if (n < 1) return tool_usage_error("report: %s needs run folders (amorph report --help)", table);
     if (!strcmp(table, "fig6")) return report_fig6(n, argv + first);
     if (!strcmp(table, "compute")) return report_compute(root, n, argv + first);
+    if (!strcmp(table, "bodies")) return report_bodies(n, argv + first);
     char q[AM_QUOTE_BUF];
-    return tool_usage_error("report: unknown table '%s' (last, fig6, compute)", am_quote(q, sizeof q, table, -1));
+    return tool_usage_error("report: unknown table '%s' (last, fig6, compute, best-at, range, bodies)", am_quote(q, sizeof q, table, -1));
 }
 
 #else

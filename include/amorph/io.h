@@ -112,6 +112,12 @@ am_status am_inflate_raw(const uint8_t* in, long n, uint8_t* out, long cap, long
  * AM_ERR_CAPACITY as am_inflate_raw. */
 am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
                           int errsz);
+/* inflates one gzip member (RFC 1952: a header with its optional fields, deflate data, the CRC-32
+ * and the size of the output, little-endian) that fills in[0..n) exactly, as `gzip -9n` writes a
+ * run's evals.csv.gz; the same statuses as am_zlib_inflate (a bad magic, method, CRC-32 or size,
+ * or bytes after the member: AM_ERR_PARSE) */
+am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
+                          int errsz);
 
 /* ==== pictures without a library: checksums, a PNG encoder and a small software
  * rasteriser (docs/pictures.md).
