@@ -20,6 +20,8 @@
 # 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
 # against the mean of the GMX runs, the seed's settings, to OTHERS_EVALS) and DIR/gaits.svg (each
 # best robot's travel in each of its 30 cycles, a row per run).
+# The numbers of log.csv come from the program (`amorph report last`, `fig6`, `compute`, `best-at`,
+# `range`, `bodies` and `amorph stats`); this script calls it and assembles the page.
 # The files are deterministic (gait30.json leaves out the wall time): the same run folders give
 # the same files on every float build.
 set -eu
@@ -39,8 +41,8 @@ for cfg in "$DIR"/*/*/config.txt; do
     run=${cfg%/config.txt}
     [ -f "$run/best.genome" ] || continue
     name=${run#"$DIR"/}
-    evals=$(tail -n 1 "$run/log.csv" | cut -d, -f2)
-    best=$(tail -n 1 "$run/log.csv" | cut -d, -f3)
+    last=$("$AMORPH" report last "$run") || exit 1 # "EVALUATIONS BEST" of the last generation logged
+    evals=${last% *} best=${last#* }
     "$AMORPH" sim "$run" --cycles 30 --json 2>/dev/null | sed 's/"wall_seconds": [^,]*, //' >"$run/gait30.json"
     if [ "$PICTURES" = "--pictures" ]; then
         "$AMORPH" render "$run" --width 1200 --height 300 --out "$run/best.png" >/dev/null
@@ -60,46 +62,12 @@ done
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
 # of each representation that reached it, (n) the number of those runs; then each run's best so
 # far at every 1,000 evaluations it reached, the runs behind the means
-set -- "$DIR"/representations/*-[0-9]*/log.csv
-[ -f "$1" ] && {
-echo
-echo "| evaluations | DCT | CPPN | GMX |"
-echo "|---:|---|---|---|"
-awk -F, '
-    FNR == 1 { n = split(FILENAME, p, "/"); run = p[n - 1]; rep = run; sub(/-[0-9]+$/, "", rep); runs[run] = rep; names[++nr] = run
-               for (c = 1; c <= NF; c++) col[$c] = c; best = -1; prev = 0; next }
-    { e = $col["evaluations"] + 0; before = best; if ($col["best"] + 0 > best) best = $col["best"] + 0
-      # each multiple of 500 in (prev, e]: the best of the rows at or below it
-      for (m = 500 * (int(prev / 500) + 1); m <= e; m += 500) at[run, m] = m == e ? best : before
-      prev = e; if (e > top) top = e }
-    # stats(REP, M): over the runs of representation REP (in file order) that reached M evaluations,
-    # K their number, MEAN their mean best so far and SE its standard error
-    function stats(rep, m,    i, v, s, s2, var) {
-      K = 0; s = 0; s2 = 0
-      for (i = 1; i <= nr; i++) if (runs[names[i]] == rep && ((names[i], m) in at)) { v = at[names[i], m]; K++; s += v; s2 += v * v }
-      MEAN = K ? s / K : 0; var = K > 1 ? (s2 - K * MEAN * MEAN) / (K - 1) : 0; SE = sqrt(var > 0 ? var / K : 0)
-    }
-    END {
-      split("dct cppn gmx", order, " ")
-      for (m = 500; m <= top; m += 500) {
-        line = "| " m " |"
-        for (r = 1; r <= 3; r++) {
-          stats(order[r], m)
-          cell = K == 0 ? "" : K == 1 ? sprintf("%.4f (1 run)", MEAN) : sprintf("%.4f +- %.4f (%d runs)", MEAN, SE, K)
-          line = line " " cell " |"
-        }
-        print line
-      }
-      head = "| run |"; sep = "|---|"
-      for (m = 1000; m <= top; m += 1000) { head = head " " m " |"; sep = sep "---:|" }
-      print ""; print head; print sep
-      for (r = 1; r <= nr; r++) {
-        line = "| representations/" names[r] " |"
-        for (m = 1000; m <= top; m += 1000) line = line (((names[r], m) in at) ? sprintf(" %.4f |", at[names[r], m]) : " |")
-        print line
-      }
-    }' "$@"
-}
+set --
+for log in "$DIR"/representations/*-[0-9]*/log.csv; do [ -f "$log" ] && set -- "$@" "${log%/log.csv}"; done
+if [ $# -gt 0 ]; then
+    echo
+    "$AMORPH" report fig6 "$@" || exit 1
+fi
 
 # statistics (amorph stats; docs/results.md, Statistics): at every 1,000 evaluations that all the
 # runs of a representation have reached, each representation's best fitness so far and each pair
@@ -125,20 +93,11 @@ fi
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500
 # evaluations (evals.csv.gz of every run; the workspace holds 8,000), the seed's "CPPN fills the
 # workspace" in numbers
+set --
+for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do [ -f "$f" ] && set -- "$@" "${f%/evals.csv.gz}"; done
 echo
-echo "| evaluations | DCT voxels | CPPN voxels | GMX voxels |"
-echo "|---:|---:|---:|---:|"
-for f in "$DIR"/representations/*-[0-9]*/evals.csv.gz; do
-    [ -f "$f" ] || continue
-    rep=$(basename "$(dirname "$f")"); rep=${rep%-*}
-    gzip -dc "$f" | awk -F, -v rep="$rep" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
-        { print rep, int($col["evaluation"] / 500), $col["voxels"] }'
-done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
-    END { if (NR == 0) exit
-          split("dct cppn gmx", order, " ")
-          for (w = 0; w <= top; w++) { line = "| " (w * 500 + 1) "-" (w + 1) * 500 " |"
-              for (r = 1; r <= 3; r++) line = line ((order[r], w) in n ? sprintf(" %.0f (%d bodies) |", s[order[r], w] / n[order[r], w], n[order[r], w]) : " |")
-              print line } }'
+if [ $# -gt 0 ]; then "$AMORPH" report bodies "$@" || exit 1
+else echo "| evaluations | DCT voxels | CPPN voxels | GMX voxels |"; echo "|---:|---:|---:|---:|"; fi
 
 # the other experiments: each run's best fitness after OTHERS_EVALS evaluations (2,000, their
 # length) against the seed's settings at the same count, the GMX runs of Figure 6 (the
@@ -147,27 +106,21 @@ done | awk '{ s[$1, $2] += $3; n[$1, $2]++; if ($2 > top) top = $2 }
 # lines of its config.txt that differ from representations/gmx-1's (but for the evaluations, the
 # seed and the threads); the gait is its best robot's over 30 cycles (gait30.json)
 n_at=${OTHERS_EVALS:-2000}
-# best_at RUN: the best fitness so far at n_at evaluations, from log.csv; nothing when the run
-# has not got there
-best_at() {
-    awk -F, -v n="$n_at" 'FNR == 1 { for (c = 1; c <= NF; c++) col[$c] = c; best = -1; next }
-        { e = $col["evaluations"] + 0; if (e <= n && $col["best"] + 0 > best) best = $col["best"] + 0; if (e >= n) got = 1 }
-        END { if (got) printf "%.4f\n", best }' "$1/log.csv"
-}
 base=$DIR/representations/gmx-1/config.txt
 if [ -f "$base" ]; then
+    # the GMX runs' best fitness so far at n_at evaluations: runs, mean, standard error, range
+    # (amorph report range), and each other run's (amorph report best-at: nothing before it got there)
     set --
     for log in "$DIR"/representations/gmx-[0-9]*/log.csv; do
-        [ -f "$log" ] && set -- "$@" "$(best_at "${log%/log.csv}")"
+        [ -f "$log" ] && set -- "$@" "${log%/log.csv}"
     done
-    range=$(printf '%s\n' "$@" | awk 'NF { k++; s += $1; s2 += $1 * $1; if (k == 1 || $1 < lo) lo = $1; if (k == 1 || $1 > hi) hi = $1 }
-        END { if (!k) exit; m = s / k; v = k > 1 ? (s2 - k * m * m) / (k - 1) : 0
-              printf "%d %.4f %.4f %.4f %.4f\n", k, m, sqrt(v > 0 ? v / k : 0), lo, hi }')
+    range=
+    if [ $# -gt 0 ]; then range=$("$AMORPH" report range "$n_at" "$@") || exit 1; fi
     rows=$(for cfg in "$DIR"/*/*/config.txt; do
         case $cfg in "$DIR"/representations/*) continue ;; esac
         [ -f "$cfg" ] || continue
         run=${cfg%/config.txt}
-        b=$(best_at "$run")
+        b=$("$AMORPH" report best-at "$n_at" "$run") || exit 1
         [ -n "$b" ] || continue
         changed=$(awk -F' = ' 'NR == FNR { if (NF == 2) v[$1] = $2; next }
             NF == 2 && $1 != "evaluations" && $1 != "seed" && $1 != "threads" && v[$1] != $2 { s = s (s ? ", " : "") $1 "=" $2 }
@@ -189,17 +142,11 @@ fi
 # compute: hours of one thread per run, the sum of log.csv's wall_s. A generation that took more
 # than 5 times the run's median was paused (the runners are stopped while other work needs the
 # machine, and a VM may be suspended): it counts as the median, and the last column says how many
+set --
+for log in "$DIR"/*/*/log.csv; do [ -f "$log" ] && set -- "$@" "${log%/log.csv}"; done
 echo
-echo "| run | evaluations | hours | paused generations |"
-echo "|---|---:|---:|---:|"
-for log in "$DIR"/*/*/log.csv; do
-    [ -f "$log" ] || continue
-    run=${log%/log.csv}
-    col=$(head -n 1 "$log" | tr ',' '\n' | grep -n '^wall_s$' | cut -d: -f1)
-    med=$(tail -n +2 "$log" | cut -d, -f"$col" | sort -g | awk '{ a[NR] = $1 } END { print NR ? a[int((NR + 1) / 2)] : 0 }')
-    awk -F, -v name="${run#"$DIR"/}" -v c="$col" -v med="$med" 'FNR == 1 { for (k = 1; k <= NF; k++) if ($k == "evaluations") ce = k; next }
-        { w = $c + 0; if (w > 5 * med) { w = med; p++ } t += w; e = $ce } END { printf "| %s | %d | %.2f | %d |\n", name, e, t / 3600, p }' "$log"
-done
+if [ $# -gt 0 ]; then "$AMORPH" report compute --root "$DIR" "$@" || exit 1
+else echo "| run | evaluations | hours | paused generations |"; echo "|---|---:|---:|---:|"; fi
 
 if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     # the runs that have reached FIG6_MIN_EVALS (2,000: the first stage of results/run.sh), so

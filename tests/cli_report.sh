@@ -122,7 +122,7 @@ check "the ranking table: '$ranking'" [ "$ranking" = "| evaluations | ranking by
 check "the groups table at 2000: '$(grep '^| 2000 | cppn |' "$TMPD/out")'" grep -qxF "| 2000 | cppn | 2 | 16.02 | 0.03 | 0.02 |" "$TMPD/out"
 check "no bands table (not a test)" sh -c "! grep -q 'bands' '$TMPD/out'"
 check "no sustained table without gait30.json" sh -c "! grep -q '^| sustained' '$TMPD/out'"
-# a damaged log stops the report with amorph stats' message
+# a damaged log stops the report (exit 1) with the program's message (amorph report's, the first to read it)
 printf '%s\n0,1000,abc,0,0,0,0,1\n' "$h" >"$K/representations/gmx-3/log.csv"
 expect_fail 1 "gmx-3/log.csv:2: best \\(column 3\\): not a number" sh results/report.sh "$AMORPH" "$K"
 

@@ -265,7 +265,7 @@ check "evolve: --repr/--size/--relax-max/--dt-search/--evals are aliases: $(grep
 # tokens in the commands' messages are quoted as the readers quote them (am_quote): control bytes
 # escaped, cut at 40 characters with "..."
 long=$(printf 'x%.0s' $(seq 1 300))
-for cmd in sim render view export random express evolve experiment plot bench repro; do
+for cmd in sim render view export random express evolve experiment plot bench repro report; do
     "$AMORPH" $cmd "--bo$(printf '\033')[31mgus" >/dev/null 2>"$TMPD/err"
     check "$cmd: an escape byte in an unknown option is escaped: $(od -c "$TMPD/err" | head -3)" grep -q "unknown option '--bo\\\\x1b\[31mgus'" "$TMPD/err"
     check "$cmd: no raw control byte in the message" sh -c "! LC_ALL=C grep -q '[[:cntrl:]]' \"\$1\"" _ "$(tr -d '\n' <"$TMPD/err" >"$TMPD/err1"; echo "$TMPD/err1")"

@@ -165,8 +165,68 @@ expect_ok "$AMORPH" stats --help
 check "--help names the tests" grep -q "Welch's t" "$TMPD/out"
 check "amorph --help lists stats" sh -c "'$AMORPH' --help | grep -q '^  stats '"
 
+# amorph report: the tables results/report.sh takes from the program (docs/results.md). fig6 over
+# runs whose answers are worked out by hand: dct at 500 has 0.010 and 0.012 (mean 0.011, standard
+# error 0.001), at 1000 0.020 and 0.016; gmx-1 holds at 500 its row at 480 (the 990 row is past
+# it), at 1000 its 990 row's 0.010 (1010's 0.030 is past it); cppn has no run
+P=$TMPD/rep
+mkdir -p "$P/dct-1" "$P/dct-2" "$P/gmx-1" "$P/x-1"
+{ echo "$h"; echo "0,500,0.010,0,0,0,0,1,0"; echo "1,1000,0.020,0,0,0,0,1,0"; } >"$P/dct-1/log.csv"
+{ echo "$h"; echo "0,500,0.012,0,0,0,0,1,0"; echo "1,1000,0.016,0,0,0,0,1,0"; } >"$P/dct-2/log.csv"
+{ echo "$h"; echo "0,480,0.005,0,0,0,0,1,0"; echo "1,990,0.010,0,0,0,0,1,0"; echo "2,1010,0.030,0,0,0,0,1,0"; } >"$P/gmx-1/log.csv"
+expect_ok "$AMORPH" report fig6 "$P/dct-1" "$P/dct-2/" "$P/gmx-1"
+cat >"$TMPD/want" <<'EOF'
+| evaluations | DCT | CPPN | GMX |
+|---:|---|---|---|
+| 500 | 0.0110 +- 0.0010 (2 runs) |  | 0.0050 (1 run) |
+| 1000 | 0.0180 +- 0.0020 (2 runs) |  | 0.0100 (1 run) |
+
+| run | 1000 |
+|---|---:|
+| representations/dct-1 | 0.0200 |
+| representations/dct-2 | 0.0160 |
+| representations/gmx-1 | 0.0100 |
+EOF
+check "report fig6: $(diff "$TMPD/want" "$TMPD/out" | head -5)" cmp -s "$TMPD/want" "$TMPD/out"
+# compute: wall_s 3600, 3600, 3600 and 36000: the lower median is 3600, the last generation more
+# than 5 times it is a pause, counted as 3600: 4 hours, 1 paused; names relative to --root
+{ echo "$h"; for g in 0 1 2 3; do w=3600; [ $g = 3 ] && w=36000; echo "$g,$((g * 10 + 10)),0.01,0,0,0,0,$w,0"; done; } >"$P/x-1/log.csv"
+expect_ok "$AMORPH" report compute --root "$P" "$P/x-1" "$P/dct-1"
+check "report compute: $(cat "$TMPD/out")" [ "$(sed -n 3,4p "$TMPD/out")" = "$(printf '| x-1 | 40 | 4.00 | 1 |\n| dct-1 | 1000 | 0.00 | 0 |')" ]
+expect_ok "$AMORPH" report last "$P/gmx-1"
+check "report last: the last row's evaluations and best: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "1010 0.03" ]
+# best-at and range: the best so far at 1000 (gmx-1: its 990 row's 0.010; dct-1 and dct-2 their
+# 1000 rows), nothing for a run that has not got there; range over the three: 0.0100, 0.0160 and
+# 0.0200, mean 0.0153, standard error 0.0029 (sqrt(0.000025333 / 3))
+expect_ok "$AMORPH" report best-at 1000 "$P/gmx-1"
+check "report best-at: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "0.0100" ]
+expect_ok "$AMORPH" report best-at 1020 "$P/gmx-1"
+check "report best-at: nothing before the run got there: '$(cat "$TMPD/out")'" [ ! -s "$TMPD/out" ]
+expect_ok "$AMORPH" report range 1000 "$P/dct-1" "$P/dct-2" "$P/gmx-1"
+check "report range: $(cat "$TMPD/out")" [ "$(cat "$TMPD/out")" = "3 0.0153 0.0029 0.0100 0.0200" ]
+expect_fail 2 "report: best-at needs a number of evaluations" "$AMORPH" report best-at x "$P/gmx-1"
+# bodies: the mean voxels per 500 evaluations from each run's evals.csv.gz, columns by name: dct-1
+# evaluated 10 and 20 voxels in 1-500 and 7 in 501-1000, gmx-1 5 in 1-500; cppn nothing
+printf 'evaluation,generation,voxels\n0,0,10\n499,1,20\n500,2,7\n' | gzip -9n >"$P/dct-1/evals.csv.gz"
+printf 'voxels,evaluation\n5,1\n' | gzip -9n >"$P/gmx-1/evals.csv.gz"
+expect_ok "$AMORPH" report bodies "$P/dct-1" "$P/gmx-1"
+cat >"$TMPD/want" <<'EOF'
+| evaluations | DCT voxels | CPPN voxels | GMX voxels |
+|---:|---:|---:|---:|
+| 1-500 | 15 (2 bodies) | | 5 (1 bodies) |
+| 501-1000 | 7 (1 bodies) | | |
+EOF
+check "report bodies: $(diff "$TMPD/want" "$TMPD/out" | head -5)" cmp -s "$TMPD/want" "$TMPD/out"
+head -c 30 "$P/dct-1/evals.csv.gz" >"$P/gmx-1/evals.csv.gz"
+expect_fail 2 "report: $P/gmx-1/evals.csv.gz: " "$AMORPH" report bodies "$P/dct-1" "$P/gmx-1"
+expect_fail 2 "report: unknown table 'nope'" "$AMORPH" report nope "$P/x-1"
+expect_fail 2 "$P/none/log.csv" "$AMORPH" report fig6 "$P/dct-1" "$P/none"
+printf '%s\n0,10\n' "$h" >"$P/x-1/log.csv"
+expect_fail 2 "$P/x-1/log.csv:2: " "$AMORPH" report compute "$P/x-1"
+
 # the board build leaves statistics out
 if [ -n "${BOARD_BUILD:-}" ] && [ -x "$BOARD_BUILD/amorph" ]; then
     expect_fail 2 "stats: not in this build" "$BOARD_BUILD/amorph" stats "$R/A-1"
+    expect_fail 2 "report: not in this build" "$BOARD_BUILD/amorph" report fig6 "$R/A-1"
 fi
 summary cli_stats

@@ -1,4 +1,4 @@
-/* tests/test_evo_log.c: reading log.csv back (src/io/io_log.c, am_evo_log_read_*): rows written by
+/* tests/test_evo_log.c: reading log.csv back (src/io/io_run.c, am_evo_log_read_*): rows written by
  * am_evo_log_row read back exactly; columns are found by name (reordered, unknown ones skipped,
  * optional ones missing); a missing required column, a short or long row, a field that is not a
  * number, not finite or not whole are refused with "file:line: problem" (the field quoted by
@@ -204,6 +204,20 @@ static void test_crlf_line_ends(void)
     expect_refused("generation,evaluations,best\r\n0,20,0.5\r\r\n", AM_ERR_PARSE, "t.csv:2: best (column 3): not a number");
 }
 
+/* an experiment's results.csv rows come from the library as log.csv's do: the header amorph
+ * experiment has always written, a row in it, and a short buffer cut, not overrun */
+static void test_results_rows(void)
+{
+    CHECK(!strcmp(am_exp_results_header(), "variant,evaluations,mean_best,stderr_best,runs"), "%s", am_exp_results_header());
+    char row[AM_EXP_RESULTS_ROW_MAX];
+    int n = am_exp_results_row("gmx", 400, 0.0123456789, 0.001, 3, row, (int)sizeof row);
+    CHECK(n == (int)strlen(row) && !strcmp(row, "gmx,400,0.0123456789,0.001,3"), "%s", row);
+    CHECK(am_exp_results_row("gmx", 400, 0.5, 0.1, 3, row, 5) == 4 && !strcmp(row, "gmx,"), "a short buffer: %s", row);
+    /* the run folder's names, one place (amorph/io.h) */
+    CHECK(!strcmp(AM_RUN_LOG, "log.csv") && !strcmp(AM_RUN_EVALS, "evals.csv") && !strcmp(AM_RUN_CHECKPOINT, "checkpoint.txt") &&
+          !strcmp(AM_RUN_CONFIG, "config.txt") && !strcmp(AM_EXP_RESULTS, "results.csv"), "the run folder's file names changed");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -213,5 +227,6 @@ int main(int argc, char** argv)
     RUN(test_bad_header);
     RUN(test_bad_rows);
     RUN(test_crlf_line_ends);
+    RUN(test_results_rows);
     return SUMMARY();
 }

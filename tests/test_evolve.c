@@ -246,7 +246,7 @@ static void test_unsettled_generation(void)
     double sum = 0;
     for (int i = 0; i < d.population; i++) {
         const am_evo_ind* p = &g_a.pop[i];
-        const int u = !p->diverged && !p->empty && !g_a.eval[i].settled;
+        const int u = !p->diverged && !p->empty && !g_a.eval[i].sim.settled;
         unsettled += u;
         if (u) CHECK(p->fitness == -1.0, "member %d did not settle yet scored %g", i, p->fitness);
         if (!p->diverged && p->fitness >= 0) sum += p->fitness, scored++;

@@ -268,7 +268,11 @@ static void test_filmstrip_png(void)
     if (fd < 0) return;
     close(fd);
     static tool_ctx ctx;
-    CHECK(tool_write_filmstrip(&ctx, &lat, &env, &eval, path) == 0, "filmstrip written");
+    am_robot robot;
+    am_robot_init(&robot, &lat, NULL);
+    robot.env = env;
+    robot.eval = eval;
+    CHECK(tool_write_filmstrip(&ctx, &robot, path) == 0, "filmstrip written");
     png_image img;
     int r = png_read_file(path, &img, why, sizeof why);
     CHECK(r == 0, "decode the filmstrip: %s", why);
@@ -308,7 +312,11 @@ static void test_colour_scalars(void)
     am_eval_def eval = am_default_eval();
     eval.cycles = 1;
     eval.relax_max_steps = 2000;
-    CHECK(tool_record_motion(&ctx, &lat, &env, &eval, 40, &mo, "cantilever") == 0, "recorded");
+    am_robot robot;
+    am_robot_init(&robot, &lat, NULL);
+    robot.env = env;
+    robot.eval = eval;
+    CHECK(tool_record_motion(&ctx, &robot, 40, &mo, "cantilever") == 0, "recorded");
     CHECK(mo.nv == 6 && mo.nfixed == 1 && mo.fixed[0] == 1 && mo.nforced == 0, "%d voxels, %d clamped, %d forced", mo.nv, mo.nfixed,
           mo.nforced);
     const int f = mo.frames - 1;

@@ -612,9 +612,9 @@ static void test_vxa_period_for_commands(void)
     tool_robot_args a;
     memset(&a, 0, sizeof a);
     a.name = "tests/data/voxcad_quadruped.vxa";
-    tool_robot r;
+    am_robot r;
     CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
-    CHECK(r.kind == TOOL_ROBOT_VXA, "kind %d", r.kind);
+    CHECK(r.lattice == &lat && r.env.cte_mode == AM_CTE_LINEAR, "read as a VXA file (linear CTE) into the caller's lattice");
     CHECK(am_model_build(&m, &lat, &r.env, err, sizeof err) == AM_OK, "%s", err);
     double dt = am_dt_si(&m, r.env.dt_frac);
     CHECK(fabs((double)r.env.period_steps * dt - period_s) <= dt, "period %d steps of %g s, the file says %g s", r.env.period_steps, dt, period_s);
@@ -654,7 +654,7 @@ static void test_robot_settings(void)
     const char* vals[] = {"2.5", "0.7", "0.02", "0.005", "3", "50", "off", "linear"};
     for (int k = 0; k < 8; k++) a.key[k] = keys[k], a.val[k] = vals[k];
     a.nset = 8;
-    tool_robot r;
+    am_robot r;
     CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
     for (int m = 0; m < lat.palette.count; m++) {
         CHECK(lat.palette.mat[m].mu_static == AM_P(2.5) && lat.palette.mat[m].mu_kinetic == AM_P(0.7), "friction of %d", m);
@@ -666,7 +666,7 @@ static void test_robot_settings(void)
     tool_robot_args b;
     memset(&b, 0, sizeof b);
     b.name = "cube:3", b.is_scene = 1;
-    tool_robot r0;
+    am_robot r0;
     static am_lattice lat0;
     CHECK(tool_robot_load(&ctx, &b, &lat0, &r0, err, sizeof err) == AM_OK, "%s", err);
     for (int m = 0; m < lat0.palette.count; m++)
@@ -695,6 +695,43 @@ static int voxel_of(const am_model* m, int x, int y, int z)
 {
     return m->cell_voxel[x + m->nx * (y + m->ny * z)];
 }
+
+/* a robot is one unit (am_robot): a VXA file's layers come with the robot that carries them and
+ * its model is built from it alone; a robot loaded after it carries none */
+static void test_robot_carries_its_layers(void)
+{
+#if !defined(AM_COMPACT)
+    static tool_ctx ctx;
+    static am_lattice lat, lat2;
+    static am_model m1, m2;
+    char err[AM_ERR_MAX];
+    tool_robot_args a;
+    memset(&a, 0, sizeof a);
+    a.name = "tests/data/evosoro_phase.vxa";
+    am_robot r;
+    CHECK(tool_robot_load(&ctx, &a, &lat, &r, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(r.lattice == &lat && r.layers && r.layers->has_phase && r.layers->has_stiffness, "the file's layers with the robot");
+    CHECK(am_robot_build(&m1, &r, err, sizeof err) == AM_OK && m1.voxel_phase == 1, "%s", err);
+    CHECK(am_model_build_layers(&m2, &lat, &r.env, r.layers, err, sizeof err) == AM_OK && m2.dt_rec == m1.dt_rec, "%s", err);
+    /* a scene loaded next carries no layers: its model has no phase per voxel */
+    tool_robot_args b;
+    memset(&b, 0, sizeof b);
+    b.name = "cube:3", b.is_scene = 1;
+    am_robot r2;
+    CHECK(tool_robot_load(&ctx, &b, &lat2, &r2, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(!r2.layers || (!r2.layers->has_phase && !r2.layers->has_stiffness && !r2.layers->has_bc), "a scene with layers");
+    CHECK(am_robot_build(&m2, &r2, err, sizeof err) == AM_OK && m2.voxel_phase == 0, "%s", err);
+    /* am_vxa_robot refuses a file's layers when the robot has no room for them */
+    static am_vxa_info info;
+    static am_xml_doc xdoc;
+    if (!read_data("tests/data/evosoro_phase.vxa")) return;
+    CHECK(am_vxa_parse(&lat2, &info, &xdoc, ftext, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    am_robot_init(&r2, &lat2, NULL);
+    CHECK(am_vxa_robot(&r2, &info, err, sizeof err) == AM_ERR_CAPACITY, "layers dropped silently");
+#endif
+}
+
+
 
 static void test_vxa_phase_offset(void)
 {
@@ -1154,6 +1191,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_bad_tokens_quoted);
     RUN(test_vxa_format_errors);
     RUN(test_vxa_phase_offset);
+    RUN(test_robot_carries_its_layers);
     RUN(test_vxa_cantilever);
     RUN(test_vxa_regions_touch);
     RUN(test_vxa_poisson_and_fixed);

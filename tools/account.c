@@ -99,7 +99,7 @@ int account_read_evals(step_account* a, const char* dir)
     long n;
     int col[COLS];
     account_begin(a);
-    path_join(path, sizeof path, dir, RUN_EVALS);
+    path_join(path, sizeof path, dir, AM_RUN_EVALS);
     tool_src src;
     if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return -1;
     int r = tool_src_next(&src, &line, &n, err, sizeof err);

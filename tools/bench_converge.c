@@ -187,7 +187,7 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
         tool_robot_args ra;
         memset(&ra, 0, sizeof ra);
         ra.name = robots[k];
-        tool_robot rob;
+        am_robot rob;
         conv_body* b = &g_body[nb++];
         if (tool_robot_load(c, &ra, &b->lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         b->env = rob.env;

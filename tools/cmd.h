@@ -35,9 +35,9 @@ typedef struct tool_ctx {
      * borrows the genomes of its population as its pool */
     am_evo evo;
 #if !defined(AM_PROFILE_BOARD)
-    /* the per-cell layers (phases, boundary conditions) of the robot tool_robot_load loaded last:
-     * a VXA file's, else none (tools/robot.h, tool_model_build) */
-    am_layers layers;
+    /* the room for the per-cell layers (phases, stiffnesses, boundary conditions) of the robot a
+     * command loads: tool_robot_load points its am_robot at it (tools/robot.h) */
+    am_layers robot_layers;
 #endif
 } tool_ctx;
 
@@ -64,23 +64,11 @@ int cmd_export(tool_ctx* c, int argc, char** argv);
 int cmd_stats(tool_ctx* c, int argc, char** argv);
 /* amorph eval: robots as JSON lines on stdin, results as JSON lines (tools/cmd_eval.c, docs/embedding.md) */
 int cmd_eval(tool_ctx* c, int argc, char** argv);
+/* amorph report: the tables of docs/results.md from run folders' log.csv (tools/cmd_report.c) */
+int cmd_report(tool_ctx* c, int argc, char** argv);
 
-/* a run folder of amorph evolve (README, "Run folders"; tools/run_dir.c writes and reads them) */
-#define RUN_CONFIG "config.txt"         /* the settings, key = value */
-#define RUN_LOG "log.csv"               /* a row per generation */
-#define RUN_EVALS "evals.csv"           /* a row per evaluation */
-#define RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
-#define RUN_BEST_GENOME "best.genome"
-#define RUN_BEST_LATTICE "best.lattice"
-#define RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
-#define RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
-#define RUN_LOCK "lock"                 /* held while a process runs the folder */
-#define RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
-#define RUN_BEST_HTML "best.html"       /* its viewer page */
-#define RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
-/* an experiment folder (amorph experiment): its run folders <variant>-<k>, and */
-#define EXP_ABOUT "experiment.txt"      /* what the experiment is */
-#define EXP_RESULTS "results.csv"       /* mean and standard error per variant */
+/* a run folder's and an experiment folder's file names and table rows: amorph/io.h (AM_RUN_*,
+ * AM_EXP_*); tools/run_dir.c writes and reads the files */
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */
 int tool_is_run_dir(const char* path);
@@ -237,12 +225,11 @@ int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 #else
 #define TOOL_PICTURES 1
 #endif
-/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording in
- * env with eval (its record field is ignored) and writes path atomically. Silent on success;
+/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording (its
+ * eval.record is ignored) and writes path atomically. Silent on success;
  * 0, or 1 after a one-line message on stderr. */
-int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path);
-int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
-                      const char* path);
+int tool_write_filmstrip(tool_ctx* c, const am_robot* r, const char* path);
+int tool_write_viewer(tool_ctx* c, const am_robot* r, const char* title, const char* path);
 /* the best fitness against evaluations of run folders or experiment folders (a mean line and a
  * standard-error band per variant) as SVG */
 int tool_write_plot(int ndirs, char** dirs, const char* path);

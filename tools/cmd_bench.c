@@ -199,8 +199,8 @@ static void null_task(void* ctx, int item, int worker)
     null_job* j = (null_job*)ctx;
     (void)worker;
     memset(&j->res[item], 0, sizeof j->res[item]);
-    j->res[item].fitness = (double)item;
-    j->res[item].steps = item;
+    j->res[item].detail.sim.fitness = (double)item;
+    j->res[item].detail.sim.steps = item;
 }
 
 static double map_us_per_item(am_evo* e, int n, int workers, int reps)
@@ -211,7 +211,7 @@ static double map_us_per_item(am_evo* e, int n, int workers, int reps)
     for (int r = 0; r < reps; r++) {
         if (am_port_parallel_map(n, workers, null_task, &j, e->res, (long)sizeof e->res[0], err, sizeof err) != AM_OK) return -1.0;
         for (int i = 0; i < n; i++)
-            if (e->res[i].steps != i) return -1.0; /* a result that did not arrive */
+            if (e->res[i].detail.sim.steps != i) return -1.0; /* a result that did not arrive */
     }
     return (am_port_now() - t0) / ((double)reps * n) * 1e6;
 }
@@ -219,7 +219,7 @@ static double map_us_per_item(am_evo* e, int n, int workers, int reps)
 /* the am_evo_hooks.evaluated callback of bench --evolve: each evaluation into the account */
 static void account_evaluated(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
 {
-    account_add((step_account*)ctx, ind->voxels, ind->empty, ind->diverged, ev->settled, ev->relax_steps, ind->steps, ind->state_hash);
+    account_add((step_account*)ctx, ind->voxels, ind->empty, ind->diverged, ev->sim.settled, ev->sim.relax_steps, ind->steps, ind->state_hash);
 }
 
 /* name=value lines of the default experiment's evaluations per hour on `threads` (0: 1 and 2)

@@ -356,16 +356,20 @@ static int finish_pictures(tool_ctx* c, const char* dir)
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
-    am_eval_def ev = e->def.eval;
-    ev.record = NULL;
-    if (am_lattice_count(&c->work[0].lattice) > 0) {
-        path_join(path, sizeof path, dir, RUN_BEST_PNG);
-        if (tool_write_filmstrip(c, &c->work[0].lattice, &e->def.env, &ev, path)) return 1;
-        path_join(path, sizeof path, dir, RUN_BEST_HTML);
+    /* the best robot: its body, no per-cell layers, the run's environment and evaluation */
+    am_robot best;
+    am_robot_init(&best, &c->work[0].lattice, NULL);
+    best.env = e->def.env;
+    best.eval = e->def.eval;
+    best.eval.record = NULL;
+    if (am_lattice_count(best.lattice) > 0) {
+        path_join(path, sizeof path, dir, AM_RUN_BEST_PNG);
+        if (tool_write_filmstrip(c, &best, path)) return 1;
+        path_join(path, sizeof path, dir, AM_RUN_BEST_HTML);
         snprintf(title, sizeof title, "amorph: best of %.200s (%.4f m)", dir, e->best.fitness);
-        if (tool_write_viewer(c, &c->work[0].lattice, &e->def.env, &ev, title, path)) return 1;
+        if (tool_write_viewer(c, &best, title, path)) return 1;
     }
-    path_join(path, sizeof path, dir, RUN_FITNESS_SVG);
+    path_join(path, sizeof path, dir, AM_RUN_FITNESS_SVG);
     char* dirs[1] = {(char*)(uintptr_t)dir};
     return tool_write_plot(1, dirs, path);
 #endif
@@ -376,7 +380,7 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 static int refuse_used(const char* dir)
 {
     char path[TOOL_PATH_MAX];
-    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
+    path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
     return 0;
 }
@@ -421,11 +425,11 @@ static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictu
 static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
 {
     char path[TOOL_PATH_MAX], what[160];
-    path_join(path, sizeof path, dir, RUN_CONFIG);
+    path_join(path, sizeof path, dir, AM_RUN_CONFIG);
     int started = am_port_exists(path) || run_has_lock(dir);
-    path_join(path, sizeof path, dir, RUN_LOG);
+    path_join(path, sizeof path, dir, AM_RUN_LOG);
     started = started || am_port_exists(path);
-    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
+    path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
     if (started && !am_port_exists(path))
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
@@ -433,7 +437,7 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     int rc = read_checkpoint(path, e);
     if (rc) return rc;
     /* what the run folder's config.txt and today's flags say */
-    path_join(path, sizeof path, dir, RUN_CONFIG);
+    path_join(path, sizeof path, dir, AM_RUN_CONFIG);
     am_evo_def d;
     if (build_def(o, path, extra, 1, &d, "resume")) return 2;
     if (!am_evo_same_run(&e->def, &d, what, sizeof what))
@@ -443,19 +447,19 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     e->def.checkpoint_seconds = d.checkpoint_seconds;
     if (e->def.evaluations < e->evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, e->def.evaluations, e->evaluations);
-    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation", 0)) return 2;
+    if (trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 0)) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
-    path_join(path, sizeof path, dir, RUN_EVALS);
+    path_join(path, sizeof path, dir, AM_RUN_EVALS);
     hdr[n - 1] = 0;
     const int has_evals = am_port_exists(path);
-    if (has_evals && trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation", 0)) return 2;
+    if (has_evals && trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 0)) return 2;
     /* the tables are appended to: a link (or a file of several names) in their place is refused
      * now, before anything is written, not at the first row (appending nothing writes nothing) */
     char err[AM_ERR_MAX];
-    path_join(path, sizeof path, dir, RUN_LOG);
+    path_join(path, sizeof path, dir, AM_RUN_LOG);
     if (am_port_append_file(path, "", 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    path_join(path, sizeof path, dir, RUN_EVALS);
+    path_join(path, sizeof path, dir, AM_RUN_EVALS);
     if (has_evals && am_port_append_file(path, "", 0, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     return 0;
 }
@@ -465,16 +469,16 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
 static TOOL_NOINLINE int resume_prepare(const am_evo* e, const char* dir)
 {
     char path[TOOL_PATH_MAX];
-    if (trim_table(dir, RUN_LOG, am_evo_log_header(), e->generation, "generation", 1)) return 2;
+    if (trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 1)) return 2;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
-    path_join(path, sizeof path, dir, RUN_EVALS);
+    path_join(path, sizeof path, dir, AM_RUN_EVALS);
     if (!am_port_exists(path)) {
         /* a run begun by a build without evals.csv: the table starts at the checkpoint's evaluation */
-        if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
+        if (write_text(dir, AM_RUN_EVALS, hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, RUN_EVALS, hdr, e->evaluations, "evaluation", 1)) return 2;
+        if (trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 1)) return 2;
     }
     if (write_config(dir, &e->def)) return 1;
     return 0;

@@ -96,7 +96,7 @@ static am_status log_rows_line(void* ctx, int lineno, char* line, long n, char* 
 static TOOL_NOINLINE int read_log(const char* dir, long* evals, double* best, int cap)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
-    path_join(path, sizeof path, dir, RUN_LOG);
+    path_join(path, sizeof path, dir, AM_RUN_LOG);
     log_rows lr;
     memset(&lr, 0, sizeof lr);
     lr.evals = evals;
@@ -128,14 +128,14 @@ static TOOL_NOINLINE int write_about(const experiment* x, long runs, long evalua
     char about[512];
     int n = snprintf(about, sizeof about, "experiment = %s\nabout = %s\nruns = %ld\nevaluations = %ld\n", x->name, x->about, runs,
                      evaluations);
-    return write_text(dir, EXP_ABOUT, about, n);
+    return write_text(dir, AM_EXP_ABOUT, about, n);
 }
 
 /* 1 when the run folder holds a checkpoint */
 static TOOL_NOINLINE int run_has_checkpoint(const char* rdir)
 {
     char ck[TOOL_PATH_MAX];
-    path_join(ck, sizeof ck, rdir, RUN_CHECKPOINT);
+    path_join(ck, sizeof ck, rdir, AM_RUN_CHECKPOINT);
     return am_port_exists(ck);
 }
 
@@ -301,7 +301,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
                 return tool_usage_error("experiment: folder name too long");
             int n = read_log(rdir, g_exp_evals, g_exp_tmp, EXP_ROWS);
             if (n < 0) return 2;
-            if (n == 0) return tool_usage_error("%s/log.csv: no rows", rdir);
+            if (n == 0) return tool_usage_error("%s/" AM_RUN_LOG ": no rows", rdir);
             if (n < rows) rows = n;
         }
     double mean_at[6][8], se_at[6][8];
@@ -313,10 +313,11 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
     }
     {
         char path[TOOL_PATH_MAX];
-        path_join(path, sizeof path, dir, EXP_RESULTS);
+        path_join(path, sizeof path, dir, AM_EXP_RESULTS);
         tool_out out;
         if (tool_out_open(&out, path)) return 1;
-        am_text_put(&out.text, "variant,evaluations,mean_best,stderr_best,runs\n");
+        char row[AM_EXP_RESULTS_ROW_MAX];
+        am_text_put(&out.text, "%s\n", am_exp_results_header());
         for (int v = 0; v < nv; v++) {
             for (int pass = 0; pass < 2; pass++) {
                 for (int r = 0; r < rows; r++) (pass ? g_exp_dev : g_exp_sum)[r] = 0;
@@ -326,7 +327,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
                     int got = read_log(rdir, NULL, g_exp_tmp, rows);
                     if (got < rows) {
                         tool_out_close(&out, 0);
-                        return got < 0 ? 2 : tool_usage_error("%s/log.csv: changed while the table was made", rdir);
+                        return got < 0 ? 2 : tool_usage_error("%s/" AM_RUN_LOG ": changed while the table was made", rdir);
                     }
                     for (int r = 0; r < rows; r++) {
                         if (!pass) g_exp_sum[r] += g_exp_tmp[r];
@@ -339,7 +340,8 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
             for (int r = 0; r < rows; r++) {
                 double m = g_exp_sum[r];
                 double se = runs > 1 ? sqrt(g_exp_dev[r] / (double)(runs - 1)) / sqrt((double)runs) : 0.0;
-                am_text_put(&out.text, "%s,%ld,%.9g,%.9g,%ld\n", x->v[v].name, g_exp_evals[r], m, se, runs);
+                am_exp_results_row(x->v[v].name, g_exp_evals[r], m, se, runs, row, (int)sizeof row);
+                am_text_put(&out.text, "%s\n", row);
                 for (int q = 0; q < nm; q++)
                     if (marks[q] == r) {
                         mean_at[v][q] = m;
@@ -352,7 +354,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
     if (TOOL_PICTURES && pictures) {
         char svg[2048];
         char* dirs[1] = {(char*)(uintptr_t)dir};
-        if (snprintf(svg, sizeof svg, "%s/" RUN_FITNESS_SVG, dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
+        if (snprintf(svg, sizeof svg, "%s/" AM_RUN_FITNESS_SVG, dir) < (int)sizeof svg && tool_write_plot(1, dirs, svg)) return 1;
     }
     /* the summary: the final row per variant, and the variants ranked by it */
     exp_summary sum;
@@ -397,7 +399,7 @@ static TOOL_NOINLINE int experiment_results(const experiment* x, int nv, long ru
     }
     am_text_put(t, "ranking =");
     for (int v = 0; v < nv; v++) am_text_put(t, " %s", sum.ranked[v]);
-    am_text_put(t, "\nfolder = %s\nresults = %s/results.csv\nsummary = %s/summary.json\n", dir, dir, dir);
+    am_text_put(t, "\nfolder = %s\nresults = %s/" AM_EXP_RESULTS "\nsummary = %s/" AM_RUN_SUMMARY_JSON "\n", dir, dir, dir);
     return tool_out_close(&o, 1);
 }
 

@@ -22,7 +22,7 @@ static char g_stl_path[AM_MAX_MATERIALS][EXPORT_PATH_MAX]; /* the per-material S
 
 /* the pose at step `step` of the robot's evaluation into g_pose (its first frame when step is 0),
  * the step in *at; 0 or an exit status after a message */
-static int simulate_to(tool_ctx* c, const am_lattice* lat, const tool_robot* rob, const char* name, long step, double time_s,
+static int simulate_to(tool_ctx* c, const am_lattice* lat, const am_robot* rob, const char* name, long step, double time_s,
                        long* at)
 {
     char err[AM_ERR_MAX];
@@ -199,17 +199,18 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
 
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
-    tool_robot rob;
+    am_robot rob;
     am_status st = tool_robot_load(c, &ra, lat, &rob, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("%s", err);
     if (lattice) {
 #if TOOL_VXA
         /* the lattice format has no place for per-cell layers: said, then the lattice alone */
-        if (c->layers.has_phase || c->layers.has_stiffness || c->layers.has_bc) {
+        const am_layers* ly = rob.layers;
+        if (ly->has_phase || ly->has_stiffness || ly->has_bc) {
             char what[96] = "";
-            const char* item[3] = {c->layers.has_phase ? "per-voxel phases" : NULL,
-                                   c->layers.has_stiffness ? "per-voxel stiffness" : NULL,
-                                   c->layers.has_bc ? "boundary conditions" : NULL};
+            const char* item[3] = {ly->has_phase ? "per-voxel phases" : NULL,
+                                   ly->has_stiffness ? "per-voxel stiffness" : NULL,
+                                   ly->has_bc ? "boundary conditions" : NULL};
             for (int k = 0; k < 3; k++)
                 if (item[k]) {
                     if (what[0]) strcat(what, " or ");
@@ -233,9 +234,9 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         /* the time step turns the period in steps into seconds */
         double dt;
         long len = 0;
-        st = tool_robot_dt(c, lat, &rob.env, &dt, err, sizeof err);
+        st = tool_robot_dt(c, &rob, &dt, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", ra.name, err);
-        if (am_vxa_format_layers(lat, &c->layers, &rob.env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK)
+        if (am_vxa_format_layers(lat, rob.layers, &rob.env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK)
             return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }

@@ -104,7 +104,7 @@ static int load_run(const char* dir, int series)
     char path[PLOT_PATH_MAX + 16], err[AM_ERR_MAX];
     if (plot_nruns >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d runs", PLOT_MAX_RUNS);
     if (strlen(dir) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dir);
-    snprintf(path, sizeof path, "%s/" RUN_LOG, dir);
+    snprintf(path, sizeof path, "%s/" AM_RUN_LOG, dir);
     plot_run* r = &plot_runs[plot_nruns];
     snprintf(r->dir, sizeof r->dir, "%s", dir);
     base_name(dir, r->name, sizeof r->name);
@@ -157,7 +157,7 @@ static int load_experiment(const char* dir, const char* only, const char* asked)
         char sub[PLOT_PATH_MAX + 128], csv[PLOT_PATH_MAX + 160];
         if (name[0] == '.' || strlen(name) >= sizeof names[0]) continue;
         snprintf(sub, sizeof sub, "%s/%.95s", dir, name); /* a name that long was skipped above */
-        snprintf(csv, sizeof csv, "%s/" RUN_LOG, sub);
+        snprintf(csv, sizeof csv, "%s/" AM_RUN_LOG, sub);
         if (!am_port_exists(csv) || !strrchr(name, '-')) continue;
         if (only && (strlen(only) != (size_t)(strrchr(name, '-') - name) || strncmp(name, only, strlen(only)))) continue;
         if (n >= PLOT_MAX_RUNS) return tool_usage_error("plot: %s: more than %d runs", dir, PLOT_MAX_RUNS);
@@ -430,7 +430,7 @@ static int plot_load(int ndirs, char** dirs)
     for (int i = 0; i < ndirs; i++) {
         char csv[PLOT_PATH_MAX + 16];
         if (strlen(dirs[i]) >= PLOT_PATH_MAX) return tool_usage_error("plot: folder name too long: %.60s...", dirs[i]);
-        snprintf(csv, sizeof csv, "%s/" RUN_LOG, dirs[i]);
+        snprintf(csv, sizeof csv, "%s/" AM_RUN_LOG, dirs[i]);
         if (!am_port_exists(dirs[i])) {
             /* DIR/VARIANT: the runs VARIANT-<k> of the folder of runs DIR, as one line */
             char parent[PLOT_PATH_MAX], variant[96];
@@ -463,11 +463,11 @@ static int plot_load(int ndirs, char** dirs)
  * horizontal distance from the settled frame's against the time since then, one point a frame */
 static int travel_load(tool_ctx* c, const tool_robot_args* ra, const char* label)
 {
-    tool_robot rob;
+    am_robot rob;
     int rc = tool_load_subject(c, ra, &rob, "plot");
     if (rc) return rc;
     static tool_motion mo;
-    rc = tool_record_motion(c, &c->work[0].lattice, &rob.env, &rob.eval, TOOL_REC_MAX_FRAMES, &mo, ra->name);
+    rc = tool_record_motion(c, &rob, TOOL_REC_MAX_FRAMES, &mo, ra->name);
     if (rc) return rc;
     plot_nruns = plot_nser = 0;
     plot_used = plot_mused = 0;

@@ -377,11 +377,11 @@ static film_opts film_defaults(void)
 }
 
 /* records, draws and writes; 0, or an exit status after one line on stderr */
-static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const film_opts* o,
-                      const char* what, const char* path)
+static int film_write(tool_ctx* c, const am_robot* r, const film_opts* o, const char* what, const char* path)
 {
     static tool_motion mo;
-    int rc = tool_record_motion(c, lat, env, eval, 400, &mo, what);
+    const am_lattice* lat = r->lattice;
+    int rc = tool_record_motion(c, r, 400, &mo, what);
     if (rc) return rc;
     char err[AM_ERR_MAX];
     /* the body's mesh: its surface, and each voxel's half size for the boxes and the shadows */
@@ -404,10 +404,10 @@ static int film_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     return 0;
 }
 
-int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+int tool_write_filmstrip(tool_ctx* c, const am_robot* r, const char* path)
 {
     film_opts o = film_defaults();
-    return film_write(c, lat, env, eval, &o, path, path) ? 1 : 0;
+    return film_write(c, r, &o, path, path) ? 1 : 0;
 }
 
 static const char render_help[] =
@@ -469,10 +469,10 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
     if ((long)o.width * o.height > FILM_MAX_PIXELS)
         return tool_usage_error("render: %d x %d is more than %ld pixels", o.width, o.height, FILM_MAX_PIXELS);
     if (o.width / o.panels < 60) return tool_usage_error("render: %d frames need a width of at least %d", o.panels, 60 * o.panels);
-    tool_robot rob;
+    am_robot rob;
     rc = tool_load_subject(c, &ra, &rob, "render");
     if (rc) return rc;
-    return film_write(c, &c->work[0].lattice, &rob.env, &rob.eval, &o, ra.name, out);
+    return film_write(c, &rob, &o, ra.name, out);
 }
 
 #else

@@ -141,11 +141,11 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
 
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
-    tool_robot rob;
+    am_robot rob;
     const char* file = ra.name;
     if (tool_robot_load(c, &ra, lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (rob.eval.dt_search && ra.dt_s > 0) return tool_usage_error("sim: --dt and dt_search exclude each other");
-    am_status st = tool_model_build(c, &c->work[0].model, lat, &rob.env, err, sizeof err);
+    am_status st = am_robot_build(&c->work[0].model, &rob, err, sizeof err);
     if (st == AM_ERR_EMPTY && traj) return tool_usage_error("sim: %s: the robot has no voxel, no trajectory to write", file);
     if (st == AM_ERR_EMPTY) {
         /* an empty body is a valid robot that goes nowhere: flagged zero fitness, no simulation */

@@ -164,7 +164,7 @@ static am_status log_line(void* ctx, int lineno, char* line, long n, char* err, 
 static int read_log(stats_run* R)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
-    if (snprintf(path, sizeof path, "%s/" RUN_LOG, R->dir) >= (int)sizeof path) return tool_usage_error("stats: %.60s...: path too long", R->dir);
+    if (snprintf(path, sizeof path, "%s/" AM_RUN_LOG, R->dir) >= (int)sizeof path) return tool_usage_error("stats: %.60s...: path too long", R->dir);
     if (!am_port_exists(path)) return tool_usage_error("stats: %s: no such file (not a run folder of amorph evolve)", path);
     log_reading lr;
     am_evo_log_read_begin(&lr.rd, path);

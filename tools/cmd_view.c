@@ -231,11 +231,12 @@ static void view_data(am_text* o, const tool_motion* mo, const am_mesh* mesh, co
     out_str(o, "]}\n");
 }
 
-static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int frames, const char* title,
-                      const char* what, const char* path)
+static int view_write(tool_ctx* c, const am_robot* r, int frames, const char* title, const char* what, const char* path)
 {
     static tool_motion mo;
-    int rc = tool_record_motion(c, lat, env, eval, frames, &mo, what);
+    const am_lattice* lat = r->lattice;
+    const am_eval_def* eval = &r->eval;
+    int rc = tool_record_motion(c, r, frames, &mo, what);
     if (rc) return rc;
     am_text o = {view_html, VIEW_HTML_MAX, 0, 0, NULL, NULL, 0};
     view_html[0] = 0;
@@ -251,10 +252,9 @@ static int view_write(tool_ctx* c, const am_lattice* lat, const am_env* env, con
     return tool_write_output(path, view_html, o.len);
 }
 
-int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
-                      const char* path)
+int tool_write_viewer(tool_ctx* c, const am_robot* r, const char* title, const char* path)
 {
-    return view_write(c, lat, env, eval, 200, title ? title : path, path, path) ? 1 : 0;
+    return view_write(c, r, 200, title ? title : path, path, path) ? 1 : 0;
 }
 
 static const char view_help[] =
@@ -304,10 +304,10 @@ int cmd_view(tool_ctx* c, int argc, char** argv)
     if (!ra.name) return tool_usage_error("view: name a robot file, a run folder or --scene NAME (amorph view --help)");
     int rc = tool_check_output(out, "view", ".html");
     if (rc) return rc;
-    tool_robot rob;
+    am_robot rob;
     rc = tool_load_subject(c, &ra, &rob, "view");
     if (rc) return rc;
-    return view_write(c, &c->work[0].lattice, &rob.env, &rob.eval, frames, title ? title : ra.name, ra.name, out);
+    return view_write(c, &rob, frames, title ? title : ra.name, ra.name, out);
 }
 
 #else

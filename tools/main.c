@@ -26,6 +26,7 @@ static const struct {
     {"plot", cmd_plot, "plot best fitness against evaluations of runs or experiments (SVG)" TOOL_DESKTOP_ONLY},
     {"view", cmd_view, "write a self-contained HTML viewer of a robot's recorded motion" TOOL_DESKTOP_ONLY},
     {"stats", cmd_stats, "compare groups of runs by tests: Welch's t, Mann-Whitney, effect size, runs needed" TOOL_DESKTOP_ONLY},
+    {"report", cmd_report, "the tables of docs/results.md from run folders' log.csv (fig6, compute, last)" TOOL_DESKTOP_ONLY},
 };
 
 static void usage(FILE* f)

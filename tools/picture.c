@@ -98,12 +98,13 @@ static void rec_frame(void* ctx, const am_model* m, const struct am_state* s)
     pic_step[f] = s->step;
 }
 
-int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
-                       const char* what)
+int tool_record_motion(tool_ctx* c, const am_robot* r, int want, tool_motion* mo, const char* what)
 {
+    const am_env* env = &r->env;
+    const am_eval_def* eval = &r->eval;
     char err[AM_ERR_MAX];
     memset(mo, 0, sizeof *mo);
-    am_status st = tool_model_build(c, &c->work[0].model, lat, env, err, sizeof err);
+    am_status st = am_robot_build(&c->work[0].model, r, err, sizeof err);
     if (st == AM_ERR_EMPTY) return tool_usage_error("%s: the robot has no voxel, nothing to draw", what);
     if (st != AM_OK) return tool_usage_error("%s: %s", what, err);
     /* frames that fit: the float budget caps big bodies, the step list caps the count. Record as
@@ -290,7 +291,7 @@ void tool_motion_com(const tool_motion* mo, int frame, double com[3])
     for (int k = 0; k < 3; k++) com[k] = m > 0 ? com[k] / m : 0;
 }
 
-int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd)
+int tool_load_subject(tool_ctx* c, const tool_robot_args* a, am_robot* r, const char* cmd)
 {
     char err[AM_ERR_MAX];
     if (tool_robot_load(c, a, &c->work[0].lattice, r, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", cmd, err);
@@ -327,15 +328,14 @@ int cmd_view(tool_ctx* c, int argc, char** argv)
     (void)c, (void)argc, (void)argv;
     return not_built("view");
 }
-int tool_write_filmstrip(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* path)
+int tool_write_filmstrip(tool_ctx* c, const am_robot* r, const char* path)
 {
-    (void)c, (void)lat, (void)env, (void)eval;
+    (void)c, (void)r;
     return not_built(path) ? 1 : 0;
 }
-int tool_write_viewer(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, const char* title,
-                      const char* path)
+int tool_write_viewer(tool_ctx* c, const am_robot* r, const char* title, const char* path)
 {
-    (void)c, (void)lat, (void)env, (void)eval, (void)title;
+    (void)c, (void)r, (void)title;
     return not_built(path) ? 1 : 0;
 }
 int tool_write_plot(int ndirs, char** dirs, const char* path)

@@ -51,8 +51,7 @@ extern const uint8_t tool_col_clamp[3], tool_col_force[3];
 
 /* evaluates the robot with recording, about `want` frames over the longest possible run (fewer
  * for a big body); returns 0, or an exit status after a one-line message naming `what` */
-int tool_record_motion(tool_ctx* c, const am_lattice* lat, const am_env* env, const am_eval_def* eval, int want, tool_motion* mo,
-                       const char* what);
+int tool_record_motion(tool_ctx* c, const am_robot* r, int want, tool_motion* mo, const char* what);
 /* mass-weighted centre of frame `frame`, m */
 void tool_motion_com(const tool_motion* mo, int frame, double com[3]);
 
@@ -66,7 +65,7 @@ const int32_t* tool_mesh_tri_voxel(void);
 
 /* the robot of render and view (tools/robot.h) into c->work[0].lattice, with its environment and
  * evaluation; 0 or an exit status after a message naming cmd */
-int tool_load_subject(tool_ctx* c, const tool_robot_args* a, tool_robot* r, const char* cmd);
+int tool_load_subject(tool_ctx* c, const tool_robot_args* a, am_robot* r, const char* cmd);
 /* --out FILE present and not a folder name; 0 or 2 after a message */
 int tool_check_output(const char* path, const char* cmd, const char* ext);
 

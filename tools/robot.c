@@ -111,13 +111,12 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
 /* ---- loading ---- */
 
 #if TOOL_VXA
-/* VXA text (and a VXD file over it, vxd NULL when none) -> lattice and layers (c->layers); the
- * reader's warnings on stderr */
-static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, const char* vxd, am_lattice* lat, tool_robot* r,
-                          double* period_s, char* err, int errsz)
+/* VXA text (and a VXD file over it, vxd NULL when none) -> the robot r (its lattice, layers and
+ * environment); the reader's warnings on stderr */
+static am_status load_vxa(const char* text, const char* fname, const char* vxd, am_robot* r, char* err, int errsz)
 {
     static am_xml_doc doc, vxd_doc; /* the XML reader's workspaces, used during this call only */
-    static am_vxa_info info;        /* the file's environment and warnings, copied out below */
+    static am_vxa_info info;        /* the file's environment, layers and warnings, copied out below */
     static char vxd_text[4L << 20]; /* the VXD file's text (a structure and its layers): 4 MiB, as a VXA file's */
     am_status st;
     if (vxd) {
@@ -125,7 +124,7 @@ static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, cons
         if ((st = am_port_read_file(vxd, vxd_text, sizeof vxd_text, &len, err, errsz)) != AM_OK) return st;
         if ((long)strlen(vxd_text) != len) return am_fail(err, errsz, AM_ERR_PARSE, "%s:1: binary data (a NUL byte) in a text file", vxd);
     }
-    st = am_vxa_parse_vxd(lat, &info, &doc, text, fname, &vxd_doc, vxd ? vxd_text : NULL, vxd, err, errsz);
+    st = am_vxa_parse_vxd(r->lattice, &info, &doc, text, fname, &vxd_doc, vxd ? vxd_text : NULL, vxd, err, errsz);
     if (st != AM_OK) return st;
     int kept = 0;
     for (const char* p = info.warning; *p; p++) kept += *p == '\n';
@@ -135,10 +134,7 @@ static am_status load_vxa(tool_ctx* c, const char* text, const char* fname, cons
     if (info.differ[0])
         fprintf(stderr, "%s: warning: results will differ from the reference simulator: amorph does not simulate %s (warnings above)\n",
                 vxd ? vxd : fname, info.differ);
-    r->env = info.env;
-    *period_s = info.period_steps_given ? 0 : info.temp_period;
-    c->layers = info.layers;
-    return AM_OK;
+    return am_vxa_robot(r, &info, err, errsz);
 }
 #endif
 
@@ -180,15 +176,15 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
 }
 
 /* a run folder's best robot, with the environment and evaluation it evolved in */
-static am_status load_run(tool_ctx* c, const char* dir, am_lattice* lat, tool_robot* r, char* err, int errsz)
+static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, int errsz)
 {
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
     am_evo_def d = am_stored_evo(); /* a key config.txt does not name: as the run had it */
     /* a NUL byte ends these texts, as it ended them when they were parsed whole */
-    snprintf(path, sizeof path, "%s/" RUN_CONFIG, dir);
+    snprintf(path, sizeof path, "%s/" AM_RUN_CONFIG, dir);
     am_status st = tool_read_config(path, &d, 1, err, errsz);
     if (st != AM_OK) return st;
-    snprintf(path, sizeof path, "%s/" RUN_BEST_GENOME, dir);
+    snprintf(path, sizeof path, "%s/" AM_RUN_BEST_GENOME, dir);
     tool_src src;
     st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
     if (st == AM_OK) st = tool_read_genome(&src, tool_genome(c), err, errsz);
@@ -196,7 +192,7 @@ static am_status load_run(tool_ctx* c, const char* dir, am_lattice* lat, tool_ro
     if (st != AM_OK) return st;
     /* the run's palette, in the evolver's slot (idle: no run is going on) */
     am_evo_palette_into(&d, &c->evo.palette);
-    st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, lat, msg, sizeof msg);
+    st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, r->lattice, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
     r->env = d.env;
     r->eval = d.eval;
@@ -210,8 +206,7 @@ static am_status lattice_line(void* ctx, int lineno, char* line, long n, char* e
 }
 
 /* a file in any format amorph reads: lattice text, genome text (expressed), VXA (desktop) */
-static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_lattice* lat, tool_robot* r, double* period_s,
-                           char* err, int errsz)
+static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_robot* r, char* err, int errsz)
 {
     tool_src src;
     am_status st = tool_src_open(&src, name, TOOL_FILE_MAX, 0, err, errsz);
@@ -220,22 +215,18 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_la
     if (kind < 0) {
         st = src.binary ? tool_src_binary(&src, err, errsz) : AM_ERR_PARSE;
     } else if (kind == TOOL_TEXT_VXA) {
-        r->kind = TOOL_ROBOT_VXA;
 #if TOOL_VXA
-        st = load_vxa(c, tool_src_text(&src), name, vxd, lat, r, period_s, err, errsz);
+        st = load_vxa(tool_src_text(&src), name, vxd, r, err, errsz);
 #else
-        (void)period_s;
         st = am_fail(err, errsz, AM_ERR_ARG, "%s: a VXA file: not in this build: VXA files belong to the desktop profile", name);
 #endif
     } else if (vxd) {
         st = am_fail(err, errsz, AM_ERR_PARSE, "%s: not a VXA file: a VXD file (%s) goes over a base VXA file", name, vxd);
     } else if (kind == TOOL_TEXT_GENOME) {
-        r->kind = TOOL_ROBOT_GENOME;
-        st = tool_genome_to_lattice(c, &src, lat, err, errsz);
+        st = tool_genome_to_lattice(c, &src, r->lattice, err, errsz);
     } else {
-        r->kind = TOOL_ROBOT_LATTICE;
         am_lattice_reader lr;
-        am_lattice_read_begin(&lr, lat, name);
+        am_lattice_read_begin(&lr, r->lattice, name);
         st = tool_src_each(&src, lattice_line, &lr, err, errsz);
         if (st == AM_OK) st = am_lattice_read_end(&lr, err, errsz);
     }
@@ -243,9 +234,10 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_la
     return st;
 }
 
-/* the settings of a over r and lat, in order; *period_set becomes 1 when one gave period_steps */
-static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_robot* r, int* period_set, char* err, int errsz)
+/* the settings of a over r, in order; *period_set becomes 1 when one gave period_steps */
+static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* period_set, char* err, int errsz)
 {
+    am_lattice* lat = r->lattice;
     am_evo_def d = am_default_evo();
     d.env = r->env;
     d.eval = r->eval;
@@ -273,24 +265,16 @@ static am_status apply_settings(const tool_robot_args* a, am_lattice* lat, tool_
     return AM_OK;
 }
 
-am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
+am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, int errsz)
 {
-#if TOOL_VXA
-    return am_model_build_layers(m, lat, env, &c->layers, err, errsz);
-#else
-    (void)c;
-    return am_model_build(m, lat, env, err, errsz);
-#endif
-}
-
-am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz)
-{
+    am_lattice* lat = r->lattice;
+    const am_env* env = &r->env;
     /* dt_rec depends on the materials and the voxel size only: an empty robot is timed as one
      * voxel of its first material, set for the build and cleared again */
     const int empty = am_lattice_count(lat) == 0 && lat->palette.count > 0;
     if (empty) lat->cell[0] = 1;
     /* with the robot's layers: a stiffness per voxel sets dt_rec (none for the stand-in voxel) */
-    am_status st = empty ? am_model_build(&c->work[0].model, lat, env, err, errsz) : tool_model_build(c, &c->work[0].model, lat, env, err, errsz);
+    am_status st = empty ? am_model_build(&c->work[0].model, lat, env, err, errsz) : am_robot_build(&c->work[0].model, r, err, errsz);
     if (empty) lat->cell[0] = 0;
     if (st != AM_OK) return st;
     *dt = am_dt_si(&c->work[0].model, env->dt_frac);
@@ -343,42 +327,37 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
 }
 #endif
 
-am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz)
+am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz)
 {
-    r->kind = TOOL_ROBOT_SCENE;
-    r->env = am_default_env();
-    r->eval = am_default_eval();
+    /* no layers unless a VXA file brings them (the board reads no VXA file and keeps no room) */
 #if TOOL_VXA
-    am_layers_clear(&c->layers); /* none unless a VXA file brings them */
+    am_robot_init(r, lat, &c->robot_layers);
+#else
+    am_robot_init(r, lat, NULL);
 #endif
-    double period_s = 0; /* a VXA file's period in seconds, still to become steps */
     am_status st;
 #if TOOL_VXA
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
-    else if (tool_is_run_dir(a->name)) {
-        r->kind = TOOL_ROBOT_RUN;
-        st = load_run(c, a->name, lat, r, err, errsz);
-    }
+    else if (tool_is_run_dir(a->name)) st = load_run(c, a->name, r, err, errsz);
 #if TOOL_VXA
     else if (!a->vxd && (st = (am_status)voxcraft_dir(a->name, base, robot, err, errsz)) != 0) {
         if ((int)st < 0) return AM_ERR_ARG;
-        st = load_file(c, base, robot, lat, r, &period_s, err, errsz);
+        st = load_file(c, base, robot, r, err, errsz);
     }
 #endif
-    else st = load_file(c, a->name, a->vxd, lat, r, &period_s, err, errsz);
+    else st = load_file(c, a->name, a->vxd, r, err, errsz);
     if (st != AM_OK) return st;
-    if (period_s > 0) r->env.period_s = AM_PARAM_FROM_DOUBLE(period_s); /* a VXA file's period, in seconds */
     const am_env own = r->env; /* the robot's own, before the settings */
     int period_set = 0;
-    st = apply_settings(a, lat, r, &period_set, err, errsz);
+    st = apply_settings(a, r, &period_set, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
     if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
     double dt;
-    st = tool_robot_dt(c, lat, &r->env, &dt, err, errsz);
+    st = tool_robot_dt(c, r, &dt, err, errsz);
     if (st != AM_OK) return st;
     /* dt_rec, of the model just built, does not depend on dt_frac */
     const am_model* m = &c->work[0].model;

@@ -25,16 +25,6 @@ typedef struct tool_robot_args {
     const char* val[TOOL_MAX_SETTINGS];
 } tool_robot_args;
 
-/* the kinds of robot */
-enum { TOOL_ROBOT_SCENE = 1, TOOL_ROBOT_LATTICE, TOOL_ROBOT_GENOME, TOOL_ROBOT_VXA, TOOL_ROBOT_RUN };
-
-/* a loaded robot's environment and evaluation (the body goes into the caller's lattice) */
-typedef struct tool_robot {
-    int kind;                  /* TOOL_ROBOT_... */
-    am_env env;                /* ready to build the model with: every setting applied, seconds resolved */
-    am_eval_def eval;          /* record NULL */
-} tool_robot;
-
 /* The flag names every command shares (one vocabulary): "--KEY VALUE" or "--KEY=VALUE" for a key of
  * the configuration table (amorph evolve --help-config), '-' standing for '_' anywhere in KEY, and
  * these documented aliases of older spellings:
@@ -56,7 +46,9 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
  * as --population, a value missing). */
 int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_args* a);
 
-/* the robot of a into lat, with its environment and evaluation in *r: the file's (a VXA file's
+/* the robot of a as *r (amorph/sim.h, am_robot): its body in lat, its per-cell layers (a VXA
+ * file's; in c's static room, desktop profile), its environment and evaluation ready to build the
+ * model with (am_robot_build; eval.record NULL): the file's (a VXA file's
  * environment, a run folder's environment, evaluation and materials), else the seed's; then the
  * settings of a in order: environment and evaluation keys replace the values, materials keys
  * (cte, mu_static, mu_kinetic, voxel_size) change every material of the robot's palette that they
@@ -64,16 +56,11 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * below relax_min_steps lowers that too. Then seconds become steps: --dt sets env.dt_frac, and a VXA
  * file's period in seconds (unless the file or a setting gave period_steps) becomes period_steps of
  * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
-am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, tool_robot* r, char* err, int errsz);
+am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz);
 
-/* builds the model of the robot tool_robot_load loaded last into m: lat and env with that robot's
- * per-cell layers (a VXA file's phases and boundary conditions; none for other robots) */
-am_status tool_model_build(tool_ctx* c, am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
-
-/* the time step in seconds the simulator takes for lat in env with the per-cell layers of the robot
- * tool_robot_load loaded last (an empty robot is timed as one voxel of its first material); builds
- * the model into c->work[0].model */
-am_status tool_robot_dt(tool_ctx* c, am_lattice* lat, const am_env* env, double* dt, char* err, int errsz);
+/* the time step in seconds the simulator takes for the robot r (an empty robot is timed as one
+ * voxel of its first material); builds the model into c->work[0].model */
+am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, int errsz);
 
 /* the help lines of the robot commands' shared options */
 #define TOOL_ROBOT_HELP                                                                                 \

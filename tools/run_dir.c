@@ -69,23 +69,23 @@ static am_status lattice_writer(const void* obj, am_text* out, char* err, int er
 
 int write_config(const char* dir, const am_evo_def* d)
 {
-    return write_stream(dir, RUN_CONFIG, config_writer, d, NULL);
+    return write_stream(dir, AM_RUN_CONFIG, config_writer, d, NULL);
 }
 
 int write_checkpoint(const char* dir, const am_evo* e)
 {
-    return write_stream(dir, RUN_CHECKPOINT, checkpoint_writer, e, "checkpoint");
+    return write_stream(dir, AM_RUN_CHECKPOINT, checkpoint_writer, e, "checkpoint");
 }
 
 TOOL_NOINLINE int write_best(am_evo_work* w, const am_evo* e, const char* dir)
 {
     char err[AM_ERR_MAX];
-    if (write_stream(dir, RUN_BEST_GENOME, genome_writer, &e->best.genome, "best genome")) return 1;
+    if (write_stream(dir, AM_RUN_BEST_GENOME, genome_writer, &e->best.genome, "best genome")) return 1;
     if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best lattice: %s\n", err);
         return 1;
     }
-    return write_stream(dir, RUN_BEST_LATTICE, lattice_writer, &w->lattice, "best lattice");
+    return write_stream(dir, AM_RUN_BEST_LATTICE, lattice_writer, &w->lattice, "best lattice");
 }
 
 /* a run's summary as a record: the same fields in summary.txt, summary.json and the final output */
@@ -117,7 +117,7 @@ TOOL_NOINLINE int write_summaries(const char* dir, const char* comment, void (*p
 {
     for (int json = 0; json < 2; json++) {
         char path[TOOL_PATH_MAX];
-        path_join(path, sizeof path, dir, json ? RUN_SUMMARY_JSON : RUN_SUMMARY_TXT);
+        path_join(path, sizeof path, dir, json ? AM_RUN_SUMMARY_JSON : AM_RUN_SUMMARY_TXT);
         tool_out o;
         if (tool_out_open(&o, path)) return 1;
         if (!json) am_text_put(&o.text, "# %s\n", comment);
@@ -154,7 +154,7 @@ TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
     char row[256], path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     int n = am_evo_log_row(s, row, (int)sizeof row - 1);
     row[n++] = '\n';
-    path_join(path, sizeof path, dir, RUN_LOG);
+    path_join(path, sizeof path, dir, AM_RUN_LOG);
     if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s\n", err);
         return 1;
@@ -222,7 +222,7 @@ void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
     if (o->failed) return;
     int n = am_evo_evals_row(o->def, ind, ev, row, (int)sizeof row - 1);
     row[n++] = '\n';
-    path_join(path, sizeof path, o->dir, RUN_EVALS);
+    path_join(path, sizeof path, o->dir, AM_RUN_EVALS);
     if (am_port_append_file(path, row, n, err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s\n", err);
         o->failed = 1;
@@ -258,15 +258,15 @@ int default_out(char* out, size_t cap)
 TOOL_NOINLINE int start_prepare(am_evo* e, const am_evo_def* d, const char* dir)
 {
     char err[AM_ERR_MAX], path[TOOL_PATH_MAX];
-    path_join(path, sizeof path, dir, RUN_CHECKPOINT);
+    path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
     if (am_evo_init(e, d, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     if (write_config(dir, d)) return 1;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = snprintf(hdr, sizeof hdr, "%s\n", am_evo_log_header());
-    if (write_text(dir, RUN_LOG, hdr, n)) return 1;
+    if (write_text(dir, AM_RUN_LOG, hdr, n)) return 1;
     n = evals_header(d, hdr, (int)sizeof hdr);
-    if (write_text(dir, RUN_EVALS, hdr, n)) return 1;
+    if (write_text(dir, AM_RUN_EVALS, hdr, n)) return 1;
     /* a checkpoint before the first evaluation: a run stopped at any moment can be resumed */
     if (write_checkpoint(dir, e)) return 1;
     return 0;
@@ -280,7 +280,7 @@ TOOL_NOINLINE int start_prepare(am_evo* e, const am_evo_def* d, const char* dir)
 TOOL_NOINLINE int lock_run(const char* dir)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
-    path_join(path, sizeof path, dir, RUN_LOCK);
+    path_join(path, sizeof path, dir, AM_RUN_LOCK);
     am_status st = am_port_lock(path, err, sizeof err);
     if (st == AM_ERR_IO) return tool_usage_error("%s (another amorph is working in %s: wait for it to end, or stop it)", err, dir);
     if (st != AM_OK) return tool_usage_error("%s", err);
@@ -291,7 +291,7 @@ TOOL_NOINLINE int lock_run(const char* dir)
 int run_has_lock(const char* dir)
 {
     char path[TOOL_PATH_MAX];
-    path_join(path, sizeof path, dir, RUN_LOCK);
+    path_join(path, sizeof path, dir, AM_RUN_LOCK);
     return am_port_exists(path);
 }
 
@@ -350,9 +350,9 @@ TOOL_NOINLINE int read_checkpoint(const char* path, am_evo* e)
 int tool_is_run_dir(const char* path)
 {
     char p[TOOL_PATH_MAX];
-    if (snprintf(p, sizeof p, "%s/" RUN_CONFIG, path) >= (int)sizeof p) return 0;
+    if (snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, path) >= (int)sizeof p) return 0;
     if (!am_port_exists(p)) return 0;
-    if (snprintf(p, sizeof p, "%s/" RUN_BEST_GENOME, path) >= (int)sizeof p) return 0;
+    if (snprintf(p, sizeof p, "%s/" AM_RUN_BEST_GENOME, path) >= (int)sizeof p) return 0;
     return am_port_exists(p);
 }
 

@@ -110,7 +110,8 @@ void am_evo_palette_into(const am_evo_def* d, am_palette* out);
 /* one evaluated individual */
 typedef struct am_evo_ind {
     am_genome genome;
-    double fitness;           /* m; 0 for an empty body; -1 (no score) when diverged or unsettled */
+    double fitness;           /* m: am_result.fitness (AM_NO_SCORE when diverged or unsettled); 0 for an
+                               * empty body (not simulated) */
     int voxels;               /* voxels of the expressed body */
     int diverged;             /* 1: the simulation diverged (always loses) */
     int empty;                /* 1: the body was empty (fitness 0, not simulated) */
@@ -126,20 +127,18 @@ typedef struct am_evo_eval {
     long generation;          /* 0: the initial population */
     long parent[2];           /* ids of the two parents (-1 in generation 0 or when unknown) */
     int placed;               /* 1: it entered the population (generation 0, or beat its parent) */
-    double dx, dy, dz;        /* centre-of-mass displacement over the movement segment, m */
-    int settled;              /* 1: the body came to rest before the movement (am_result.settled) */
-    long relax_steps;         /* steps of the relaxation */
+    am_result sim;            /* the simulator's result as am_evaluate gave it (all zeros for an empty
+                               * body, which is not simulated; diverged 1 and fitness AM_NO_SCORE for a
+                               * body whose model could not be built) */
     int material_voxels[AM_MAX_GENO_MATERIALS]; /* voxels of each material (the genome's order) */
 } am_evo_eval;
 
-/* what one evaluation gives back: an individual's fields without its genome, and its measurements.
- * A port whose workers do not share memory (port/mpi) copies these bytes, and nothing else, between
- * processes (am_port_parallel_map's out). */
+/* what one evaluation gives back: the simulator's result and the body's counts (the individual's
+ * fields come from them: fitness, steps, state_hash and diverged are detail.sim's). A port whose
+ * workers do not share memory (port/mpi) copies these bytes, and nothing else, between processes
+ * (am_port_parallel_map's out). */
 typedef struct am_evo_result {
-    double fitness;           /* as am_evo_ind */
-    long steps;
-    uint64_t state_hash;
-    int voxels, diverged, empty;
+    int voxels, empty;        /* as am_evo_ind */
     int skipped;              /* 1: not evaluated (the caller cancelled it; am_evo_batch_end then cancels) */
     am_evo_eval detail;       /* the measurements (generation, parents and placed are am_evo_batch_end's) */
 } am_evo_result;

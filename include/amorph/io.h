@@ -112,6 +112,12 @@ am_status am_inflate_raw(const uint8_t* in, long n, uint8_t* out, long cap, long
  * AM_ERR_CAPACITY as am_inflate_raw. */
 am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
                           int errsz);
+/* inflates one gzip member (RFC 1952: a header with its optional fields, deflate data, the CRC-32
+ * and the size of the output, little-endian) that fills in[0..n) exactly, as `gzip -9n` writes a
+ * run's evals.csv.gz; the same statuses as am_zlib_inflate (a bad magic, method, CRC-32 or size,
+ * or bytes after the member: AM_ERR_PARSE) */
+am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
+                          int errsz);
 
 /* ==== pictures without a library: checksums, a PNG encoder and a small software
  * rasteriser (docs/pictures.md).
@@ -416,6 +422,12 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
 am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
                            am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz);
 
+/* the robot a VXA file read into r->lattice (am_vxa_parse or am_vxa_parse_vxd with lat = r->lattice)
+ * and info is: the file's environment, its period in seconds as env.period_s unless the file fixed
+ * period_steps, the default evaluation, and the file's per-cell layers copied into r->layers.
+ * AM_ERR_CAPACITY when the file has layers and r->layers is NULL. */
+am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
+
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
  * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment
@@ -435,6 +447,26 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
  * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
 int am_vxa_period_steps(double period_s, double dt);
+
+/* ==== the run folder of amorph evolve and the experiment folder of amorph experiment
+ * (docs/evolve.md): the names of their files, and below the texts they hold (the checkpoint, the
+ * rows of log.csv, evals.csv and results.csv, and their readers; config.txt is am_evo_write's).
+ * The program reads and writes the files through the port; every place that names one uses these. */
+#define AM_RUN_CONFIG "config.txt"         /* the settings, key = value */
+#define AM_RUN_LOG "log.csv"               /* a row per generation (am_evo_log_row) */
+#define AM_RUN_EVALS "evals.csv"           /* a row per evaluation (am_evo_evals_row) */
+#define AM_RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
+#define AM_RUN_BEST_GENOME "best.genome"
+#define AM_RUN_BEST_LATTICE "best.lattice"
+#define AM_RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
+#define AM_RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
+#define AM_RUN_LOCK "lock"                 /* held while a process runs the folder */
+#define AM_RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
+#define AM_RUN_BEST_HTML "best.html"       /* its viewer page */
+#define AM_RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
+/* an experiment folder: its run folders <variant>-<k>, and */
+#define AM_EXP_ABOUT "experiment.txt"      /* what the experiment is */
+#define AM_EXP_RESULTS "results.csv"       /* mean and standard error per variant (am_exp_results_row) */
 
 /* ---- checkpoints ---- */
 
@@ -537,6 +569,13 @@ am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
 #define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
 int am_evo_evals_header(int materials, char* buf, int cap);
 int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
+/* an experiment's results.csv: its header line (no newline), and one row (no newline) for a variant
+ * at an evaluation count: the mean and the standard error of its runs' best fitness there; returns
+ * the characters written (cut to cap - 1). AM_EXP_RESULTS_ROW_MAX: a capacity every row fits with
+ * a variant name of up to 160 characters. */
+#define AM_EXP_RESULTS_ROW_MAX 256
+const char* am_exp_results_header(void);
+int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
 
 #ifdef __cplusplus
 }

@@ -445,6 +445,23 @@ typedef struct am_eval_def {
 
 am_eval_def am_default_eval(void);
 
+/* A robot as one unit: its body, what it carries per cell, the environment it moves in and how it
+ * is evaluated. A lattice file's robot is am_robot_init's; amorph/io.h fills one from a VXA file
+ * (am_vxa_robot), and whoever builds its model takes it whole (am_robot_build). The lattice and
+ * the layers are large: the robot points at them and their owner keeps them static. */
+typedef struct am_robot {
+    am_lattice* lattice;        /* the body */
+    am_layers* layers;          /* per-cell layers (a VXA file's); NULL: none */
+    am_env env;
+    am_eval_def eval;           /* record and gait NULL unless a caller sets them */
+} am_robot;
+
+/* a robot of lat with no layers yet (layers, when not NULL, cleared), am_default_env() and
+ * am_default_eval() */
+void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers);
+/* am_model_build_layers of the robot's lattice, environment and layers */
+am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz);
+
 /* what an evaluation scores (am_eval_def.score; docs/evolve.md, Fitness) */
 #define AM_SCORE_TRAVEL 0    /* the seed's: the centre of mass's travel over the whole movement */
 #define AM_SCORE_SUSTAINED 1 /* sustained locomotion: the travel per cycle after sustained_from cycles */
@@ -458,9 +475,18 @@ long am_steps_at(const am_model* m, const am_state* s, long n);
  * period_s / dt rounded, 1 to 10^7 */
 int am_period_steps(const am_model* m, const am_env* env, am_real dt);
 
+/* The score of a body that has none: it diverged, or it did not come to rest before the movement.
+ * It is the one meaning of "fitness when diverged" everywhere: am_result.fitness, the evolver's
+ * individuals (am_evo_ind), the checkpoint and what amorph sim prints. log.csv's statistics leave
+ * such bodies out, and evals.csv's fitness column is empty for a diverged row (its numbers are not
+ * results) and AM_NO_SCORE for an unsettled one (docs/evolve.md). An empty body (no voxel) has no
+ * model to evaluate: its callers give it fitness 0, a valid robot that goes nowhere. */
+#define AM_NO_SCORE (-1.0)
+
 typedef struct am_result {
-    double fitness;          /* m; -1 (worst) when the body diverged, did not settle or is empty: the
-                              * score; travel holds the displacement measured either way */
+    double fitness;          /* m: the score (travel, or sustained with AM_SCORE_SUSTAINED);
+                              * AM_NO_SCORE when the body diverged or did not settle; travel holds
+                              * the displacement measured either way */
     double travel;           /* m: the centre of mass displacement measured as the fitness is (0 when
                               * diverged) */
     double dx, dy, dz;       /* centre of mass displacement in the movement segment, m */

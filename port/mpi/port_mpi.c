@@ -49,7 +49,7 @@
 #include <time.h>
 #include <unistd.h>
 
-/* the bytes of one map's results a rank sends and receives (am_evo_result is under 200 bytes: an
+/* the bytes of one map's results a rank sends and receives (am_evo_result is under 400 bytes: an
  * experiment's 16 runs of 256 offspring fit) */
 #define MPI_MAP_BYTES (4L << 20)
 #define MPI_MAP_ITEMS 8192       /* items of one map */

@@ -32,7 +32,8 @@ static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     memset(r, 0, sizeof *r);
     detail->parent[0] = detail->parent[1] = -1;
     if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
-        r->diverged = 1; /* cannot happen for a checked genome; never wins if it does */
+        detail->sim.diverged = 1; /* cannot happen for a checked genome; never wins if it does */
+        detail->sim.fitness = AM_NO_SCORE;
         return;
     }
     r->voxels = w->geno.voxels;
@@ -46,33 +47,25 @@ static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
         return;
     }
     if (st != AM_OK) {
-        r->diverged = 1;
+        detail->sim.diverged = 1;
+        detail->sim.fitness = AM_NO_SCORE;
         return;
     }
     am_eval_def ev = d->eval;
     ev.record = rec;
-    am_result res;
-    am_evaluate(&w->model, &w->state, &ev, &res);
-    r->fitness = res.diverged ? -1.0 : res.fitness;
-    detail->dx = res.dx;
-    detail->dy = res.dy;
-    detail->dz = res.dz;
-    detail->settled = res.settled;
-    detail->relax_steps = res.relax_steps;
-    r->diverged = res.diverged;
-    r->steps = res.steps;
-    r->state_hash = res.hash;
+    am_evaluate(&w->model, &w->state, &ev, &detail->sim);
 }
 
 /* the individual's fields from a result (its genome is set by the caller) */
 static void take_result(am_evo_ind* out, const am_evo_result* r)
 {
-    out->fitness = r->fitness;
+    const am_result* sim = &r->detail.sim;
+    out->fitness = sim->fitness;
     out->voxels = r->voxels;
-    out->diverged = r->diverged;
+    out->diverged = sim->diverged;
     out->empty = r->empty;
-    out->steps = r->steps;
-    out->state_hash = r->state_hash;
+    out->steps = sim->steps;
+    out->state_hash = sim->hash;
 }
 
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
@@ -328,7 +321,7 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         e->history = ind_hash(e->history, c);
         e->gen_diverged += c->diverged;
         e->gen_empty += c->empty;
-        e->gen_unsettled += !c->diverged && !c->empty && !e->eval[j].settled;
+        e->gen_unsettled += !c->diverged && !c->empty && !e->eval[j].sim.settled;
         e->gen_steps += c->steps;
         e->gen_voxel_steps += c->steps * c->voxels;
         if (!e->has_best || better(c, &e->best)) {

@@ -287,3 +287,40 @@ am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, lon
     if (len) *len = got;
     return AM_OK;
 }
+
+am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
+                          int errsz)
+{
+    if (len) *len = 0;
+    if (!in || n < 0 || !out || cap < 0 || !w) return am_fail(err, errsz, AM_ERR_ARG, "inflate: no input, output or workspace");
+    if (n < 18 || in[0] != 0x1f || in[1] != 0x8b) return am_fail(err, errsz, AM_ERR_PARSE, "not a gzip file (no gzip header)");
+    if (in[2] != 8) return am_fail(err, errsz, AM_ERR_PARSE, "bad gzip header: method %u (deflate, 8, expected)", (unsigned)in[2]);
+    const unsigned flg = in[3];
+    if (flg & 0xe0u) return am_fail(err, errsz, AM_ERR_PARSE, "bad gzip header: reserved flags 0x%02x", flg);
+    long at = 10;
+    if (flg & 4u) { /* FEXTRA: a length, then that many bytes */
+        if (n - at < 2) return am_fail(err, errsz, AM_ERR_PARSE, "the gzip header ends in its extra field");
+        at += 2 + (long)(in[at] | in[at + 1] << 8);
+    }
+    for (unsigned f = 8u; f <= 16u; f <<= 1) /* FNAME, FCOMMENT: NUL-terminated */
+        if (flg & f) {
+            while (at < n && in[at]) at++;
+            at++;
+        }
+    if (flg & 2u) at += 2; /* FHCRC */
+    if (n - at < 8) return am_fail(err, errsz, AM_ERR_PARSE, "the gzip file ends in its header");
+    long got = 0, used = 0;
+    am_status st = am_inflate_raw(in + at, n - at - 8, out, cap, &got, &used, w, err, errsz);
+    if (st != AM_OK) return st;
+    at += used;
+    if (n - at < 8) return am_fail(err, errsz, AM_ERR_PARSE, "the gzip file ends before its CRC-32 and size");
+    const uint32_t crc = (uint32_t)in[at] | (uint32_t)in[at + 1] << 8 | (uint32_t)in[at + 2] << 16 | (uint32_t)in[at + 3] << 24;
+    const uint32_t size = (uint32_t)in[at + 4] | (uint32_t)in[at + 5] << 8 | (uint32_t)in[at + 6] << 16 | (uint32_t)in[at + 7] << 24;
+    if (crc != am_crc32(0, out, got))
+        return am_fail(err, errsz, AM_ERR_PARSE, "bad CRC-32: the file says %08lx, the data gives %08lx", (unsigned long)crc,
+                       (unsigned long)am_crc32(0, out, got));
+    if (size != (uint32_t)got) return am_fail(err, errsz, AM_ERR_PARSE, "the file says %lu bytes, the data holds %ld", (unsigned long)size, got);
+    if (n - at > 8) return am_fail(err, errsz, AM_ERR_PARSE, "%ld bytes after the gzip member", n - at - 8);
+    if (len) *len = got;
+    return AM_OK;
+}

@@ -1168,6 +1168,18 @@ static am_status read_vxd(vctx* c)
     return AM_OK;
 }
 
+am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz)
+{
+    const am_layers* ly = &info->layers;
+    if (!r->layers && (ly->has_phase || ly->has_stiffness || ly->has_bc))
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "the robot has no room for the file's per-cell layers");
+    r->env = info->env;
+    if (!info->period_steps_given && info->temp_period > 0) r->env.period_s = AM_PARAM_FROM_DOUBLE(info->temp_period);
+    r->eval = am_default_eval();
+    if (r->layers) *r->layers = *ly;
+    return AM_OK;
+}
+
 am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
                            am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz)
 {

@@ -572,6 +572,6 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->sustained = !s->diverged && after > 0 ? measured_travel(def->fitness, cs, c1) / (double)after : 0.0;
     /* a body that diverged, or did not come to rest before the actuation started (its travel
      * counts motion the actuation did not make: docs/evolve.md), has no score */
-    out->fitness = s->diverged || !out->settled ? -1.0 : def->score == AM_SCORE_SUSTAINED ? out->sustained : out->travel;
+    out->fitness = s->diverged || !out->settled ? AM_NO_SCORE : def->score == AM_SCORE_SUSTAINED ? out->sustained : out->travel;
     out->hash = am_state_hash(m, s);
 }

@@ -125,6 +125,20 @@ am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, 
     return am_model_build_layers(m, lat, env, NULL, err, errsz);
 }
 
+void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers)
+{
+    r->lattice = lat;
+    r->layers = layers;
+    if (layers) am_layers_clear(layers);
+    r->env = am_default_env();
+    r->eval = am_default_eval();
+}
+
+am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz)
+{
+    return am_model_build_layers(m, r->lattice, &r->env, r->layers, err, errsz);
+}
+
 /* the elastic modulus of filled cell c, Pa: the layers' stiffness when they have one, else its
  * material's (the same value, so a robot without the layer builds bit for bit as before) */
 static am_param cell_E(const am_lattice* lat, const am_layers* ly, int c)

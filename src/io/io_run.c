@@ -1,5 +1,6 @@
 /* A run's tables: log.csv (one row per generation) and evals.csv (one row per evaluation), their
- * writers, and the reader of log.csv.
+ * writers, and the reader of log.csv; an experiment's results.csv rows (amorph/io.h, the run
+ * folder).
  *
  * The reader is the one parser of log.csv (amorph plot and amorph experiment read logs through
  * it). It takes a line at a time, like the lattice and genome readers, so a log streamed through a
@@ -63,13 +64,24 @@ int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_ev
     for (int k = 0; k < d->geno.materials && k < AM_MAX_GENO_MATERIALS; k++)
         n += held(snprintf(buf + n, (size_t)(cap - n), ",%d", ev->material_voxels[k]), cap - n);
     n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ind->fitness);
-    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->dx);
-    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->dy);
-    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->dz);
-    n += held(snprintf(buf + n, (size_t)(cap - n), ",%d,%d,%d,%ld,%ld,%016llx", ev->settled, ind->diverged, ind->empty,
-                       ev->relax_steps, ind->steps, (unsigned long long)ind->state_hash),
+    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->sim.dx);
+    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->sim.dy);
+    n += put_len(buf + n, cap - n, ind->diverged ? (double)NAN : ev->sim.dz);
+    n += held(snprintf(buf + n, (size_t)(cap - n), ",%d,%d,%d,%ld,%ld,%016llx", ev->sim.settled, ind->diverged, ind->empty,
+                       ev->sim.relax_steps, ind->steps, (unsigned long long)ind->state_hash),
               cap - n);
     return n;
+}
+
+const char* am_exp_results_header(void)
+{
+    return "variant,evaluations,mean_best,stderr_best,runs";
+}
+
+int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap)
+{
+    if (cap <= 0) return 0;
+    return held(snprintf(buf, (size_t)cap, "%s,%ld,%.9g,%.9g,%ld", variant, evaluations, mean, stderr_best, runs), cap);
 }
 
 /* ---- reading log.csv ---- */
