@@ -150,15 +150,15 @@ endif
 # objects it tests (TEST_TOOLS_<test>, default none: then it also cannot see tools/'s headers) and
 # the port when it calls am_port_* (TEST_PORT_<test> := 1). make check-test-links proves that a
 # library-only test holds no symbol of tools/ (nor of the port).
-TEST_TOOLS_test_image  := tools/account.o tools/args.o tools/cmd_render.o tools/files.o tools/picture.o \
+TEST_TOOLS_test_io_png := tools/account.o tools/args.o tools/cmd_render.o tools/files.o tools/picture.o \
                           tools/record.o tools/robot.o tools/run_dir.o
-TEST_TOOLS_test_vxa    := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/run_dir.o
+TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/run_dir.o
 TEST_TOOLS_test_record := tools/record.o
 TEST_TOOLS_test_stats  := tools/stats.o
-TEST_PORT_test_image   := 1
-TEST_PORT_test_vxa     := 1
+TEST_PORT_test_io_png  := 1
+TEST_PORT_test_io_vxa  := 1
 TEST_PORT_test_port    := 1
-TEST_PORT_test_evolve  := 1
+TEST_PORT_test_evo     := 1
 test_tools = $(addprefix $(BUILD)/,$(TEST_TOOLS_$(1)))
 test_port = $(if $(TEST_PORT_$(1)),$(BUILD)/libamorph_port.a)
 .SECONDEXPANSION:

@@ -4,17 +4,17 @@
  *
  * The program doubles as the PNG inspector of the shell tests (tests/cli_render.sh,
  * tests/cli_browser.sh):
- *   test_image --png-info FILE [RRGGBB ...]    prints "W H N1 N2 ..." (pixels in shades of each colour)
- *   test_image --png-diff A B RRGGBB ...       prints the pixels shaded like one of the colours in
+ *   test_io_png --png-info FILE [RRGGBB ...]    prints "W H N1 N2 ..." (pixels in shades of each colour)
+ *   test_io_png --png-diff A B RRGGBB ...       prints the pixels shaded like one of the colours in
  *                                              A or B that differ between A and B
- *   test_image --png-holes FILE RRGGBB ...     prints "HOLES ROBOT": HOLES the light grey pixels
+ *   test_io_png --png-holes FILE RRGGBB ...     prints "HOLES ROBOT": HOLES the light grey pixels
  *                                              (background, floor, grid, shadow) enclosed by pixels
  *                                              shaded like the colours (not reachable from the
  *                                              picture's border without crossing one), ROBOT the
  *                                              pixels shaded like them
- *   test_image --png-count FILE X0 Y0 X1 Y1 RRGGBB ...   prints the pixels of each colour (each
+ *   test_io_png --png-count FILE X0 Y0 X1 Y1 RRGGBB ...   prints the pixels of each colour (each
  *                                              channel within 2) in the box [X0, X1) x [Y0, Y1)
- *   test_image --png-changed A B               prints the pixels that differ between A and B
+ *   test_io_png --png-changed A B               prints the pixels that differ between A and B
  * All exit 1 with a message when a file is not a valid PNG. */
 #define _POSIX_C_SOURCE 200809L /* mkstemp, close */
 #include "amorph.h"
@@ -456,7 +456,7 @@ static int inspector(int argc, char** argv)
         png_free(&b);
         return 0;
     }
-    fprintf(stderr, "usage: test_image --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB... |\n"
+    fprintf(stderr, "usage: test_io_png --png-info FILE [RRGGBB...] | --png-diff A B RRGGBB... | --png-holes FILE RRGGBB... |\n"
                     "       --png-count FILE X0 Y0 X1 Y1 RRGGBB... | --png-changed A B\n");
     return 2;
 }
