@@ -178,12 +178,12 @@ check-alloc: $(LIB_OBJ) $(PORT_OBJ)
 
 # a test without TEST_TOOLS_<test> holds no global symbol that tools/ defines, and one without
 # TEST_PORT_<test> none that the port defines (run by make unit)
-syms = $(NM) -g --defined-only $(1) | awk 'NF == 3 && $$3 != "main" {print $$3}' | sort -u
+test_syms = $(NM) -g --defined-only $(1) | awk 'NF == 3 && $$3 != "main" {print $$3}' | sort -u
 check-test-links: $(TEST_BIN) $(TOOL_OBJ) $(PORT_OBJ)
-	@$(call syms,$(TOOL_OBJ)) >$(BUILD)/tests/tools.syms && $(call syms,$(PORT_OBJ)) >$(BUILD)/tests/port.syms && \
+	@$(call test_syms,$(TOOL_OBJ)) >$(BUILD)/tests/tools.syms && $(call test_syms,$(PORT_OBJ)) >$(BUILD)/tests/port.syms && \
 	test -s $(BUILD)/tests/tools.syms && bad=0 && n=0 && \
 	for t in $(foreach t,$(TEST_BIN),$(notdir $(t)):$(if $(TEST_TOOLS_$(notdir $(t))),t)$(if $(TEST_PORT_$(notdir $(t))),p)); do \
-	    name=$${t%%:*} && $(call syms,$(BUILD)/tests/$$name) >$(BUILD)/tests/$$name.syms || exit 1; \
+	    name=$${t%%:*} && $(call test_syms,$(BUILD)/tests/$$name) >$(BUILD)/tests/$$name.syms || exit 1; \
 	    for part in tools port; do case $$part:$${t#*:} in tools:*t*|port:*p*) continue;; esac; n=$$((n + 1)); \
 	        s=$$(comm -12 $(BUILD)/tests/$$name.syms $(BUILD)/tests/$$part.syms | head -n 4 | tr '\n' ' '); \
 	        if [ -n "$$s" ]; then echo "check-test-links: $$name links $$part/ but does not list it: $$s"; bad=1; fi; done; done; \
