@@ -112,7 +112,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all shared install sim-only test unit check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all shared install sim-only test unit check-test-links check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -188,11 +188,26 @@ sim-only: $(BUILD)/board_sim
 $(BUILD)/board_sim: $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) tools/board_sim/cortex-m.ld
 	$(CC) $(ALLCFLAGS) -nostartfiles -Wl,--gc-sections -T tools/board_sim/cortex-m.ld -o $@ $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) -lm
 
-# every tools/ file but the one holding main() is linked into the tests too
-TOOL_LIB_OBJ := $(filter-out $(BUILD)/tools/main.o,$(TOOL_OBJ))
-$(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a
+# A test links the library archive (the linker takes only the objects it needs), plus the tools/
+# objects it tests (TEST_TOOLS_<test>, default none: then it also cannot see tools/'s headers) and
+# the port when it calls am_port_* (TEST_PORT_<test> := 1). make check-test-links proves that a
+# library-only test holds no symbol of tools/ (nor of the port).
+TEST_TOOLS_test_io_png := tools/account.o tools/args.o tools/cmd_render.o tools/files.o tools/picture.o \
+                          tools/record.o tools/robot.o tools/run_dir.o
+TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/run_dir.o
+TEST_TOOLS_test_record := tools/record.o
+TEST_TOOLS_test_stats  := tools/stats.o
+TEST_PORT_test_io_png  := 1
+TEST_PORT_test_io_vxa  := 1
+TEST_PORT_test_port    := 1
+TEST_PORT_test_evo     := 1
+test_tools = $(addprefix $(BUILD)/,$(TEST_TOOLS_$(1)))
+test_port = $(if $(TEST_PORT_$(1)),$(BUILD)/libamorph_port.a)
+.SECONDEXPANSION:
+$(BUILD)/tests/%: tests/%.c Makefile $(BUILD)/flags.txt $$(call test_tools,$$*) $$(call test_port,$$*) $(BUILD)/libamorph.a
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ -Itools -Iport -o $@ $< $(TOOL_LIB_OBJ) $(BUILD)/libamorph.a $(BUILD)/libamorph_port.a $(LDLIBS)
+	$(CC) $(ALLCFLAGS) $(TARGET_LDFLAGS) -MMD -MP -MF $@.d -MT $@ $(if $(TEST_TOOLS_$*),-Itools)$(if $(TEST_TOOLS_$*)$(TEST_PORT_$*), -Iport) -o $@ $< \
+	    $(call test_tools,$*) $(call test_port,$*) $(BUILD)/libamorph.a $(LDLIBS)
 
 -include $(LIB_OBJ:.o=.d) $(PIC_OBJ:.o=.d) $(PORT_OBJ:.o=.d) $(TOOL_OBJ:.o=.d) $(BOARD_SIM_OBJ:.o=.d) $(TEST_BIN:=.d)
 
@@ -202,6 +217,20 @@ check-alloc: $(LIB_OBJ) $(PORT_OBJ)
 	@bad=$$(for o in $(LIB_OBJ) $(PORT_OBJ); do $(NM) -u $$o | awk -v o=$$o '$$2 ~ /^(malloc|calloc|realloc|free|aligned_alloc|posix_memalign|alloca|strdup|strndup)$$/ {print o": "$$2}'; done); \
 	if [ -n "$$bad" ]; then echo "check-alloc: allocation found:"; echo "$$bad"; echo "check-alloc: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-alloc: no allocator referenced by $(words $(LIB_OBJ) $(PORT_OBJ)) objects of src/ and port/"
+
+# a test without TEST_TOOLS_<test> holds no global symbol that tools/ defines, and one without
+# TEST_PORT_<test> none that the port defines (run by make unit)
+test_syms = $(NM) -g --defined-only $(1) | awk 'NF == 3 && $$3 != "main" {print $$3}' | sort -u
+check-test-links: $(TEST_BIN) $(TOOL_OBJ) $(PORT_OBJ)
+	@$(call test_syms,$(TOOL_OBJ)) >$(BUILD)/tests/tools.syms && $(call test_syms,$(PORT_OBJ)) >$(BUILD)/tests/port.syms && \
+	test -s $(BUILD)/tests/tools.syms && bad=0 && n=0 && \
+	for t in $(foreach t,$(TEST_BIN),$(notdir $(t)):$(if $(TEST_TOOLS_$(notdir $(t))),t)$(if $(TEST_PORT_$(notdir $(t))),p)); do \
+	    name=$${t%%:*} && $(call test_syms,$(BUILD)/tests/$$name) >$(BUILD)/tests/$$name.syms || exit 1; \
+	    for part in tools port; do case $$part:$${t#*:} in tools:*t*|port:*p*) continue;; esac; n=$$((n + 1)); \
+	        s=$$(comm -12 $(BUILD)/tests/$$name.syms $(BUILD)/tests/$$part.syms | head -n 4 | tr '\n' ' '); \
+	        if [ -n "$$s" ]; then echo "check-test-links: $$name links $$part/ but does not list it: $$s"; bad=1; fi; done; done; \
+	if [ $$bad -ne 0 ]; then echo "check-test-links: 0 passed, 1 failed"; exit 1; fi; \
+	echo "check-test-links: $$n checks: no test holds a symbol of tools/ or the port it does not list"
 
 # determinism: -ffp-contract=off forbids fused multiply-adds, but GCC 12's vectoriser still fuses a
 # multiply with an alternating add/subtract (vfmaddsub) in some inlining contexts, which rounds
@@ -225,7 +254,7 @@ check-tests:
 	    echo "$$bad"; echo "check-tests: 0 passed, 1 failed"; exit 1; fi; \
 	echo "check-tests: no check in tests/*.sh chains a condition it does not judge"
 
-unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so
+unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so check-test-links
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
 test: all check-alloc check-fma check-tests check-layers

@@ -10,7 +10,7 @@
 # Without chromium (or with AM_NO_BROWSER=1) the test prints SKIPPED; CI installs it (.ci/run).
 # Run from the repository root: sh tests/cli_browser.sh
 . tests/shlib.sh
-PNG=${PNG_TOOL:-$BUILD/tests/test_image}
+PNG=${PNG_TOOL:-$BUILD/tests/test_io_png}
 if ! "$AMORPH" render --help >/dev/null 2>&1; then
     # the board profile builds no pictures: the commands must say so in one line
     expect_fail 2 "render: not in this build" "$AMORPH" render --scene cube:2 --out "$TMPD/x.png"

@@ -1,5 +1,5 @@
 # tests/cli_printable.sh: amorph export --stl (a file per material, or --merge: the body's), --amf,
-# and --step's self-intersection warning. Every STL file is read back by test_mesh --stl-check,
+# and --step's self-intersection warning. Every STL file is read back by test_io_mesh --stl-check,
 # our own manifold check (one solid; every edge, by position, in exactly two facets once each way
 # round; every vertex's facets one disc around it) with the solid's signed volume from its own
 # numbers (voxels x 1000 mm^3 at rest, 10 mm voxels, a sliver less where a pinch is opened); with
@@ -16,7 +16,7 @@ if ! "$AMORPH" render --help >/dev/null 2>&1; then
     exit $?
 fi
 W=tests/data/walker.lattice
-MESH=${MESH_TOOL:-$BUILD/tests/test_mesh}
+MESH=${MESH_TOOL:-$BUILD/tests/test_io_mesh}
 
 # stlcheck FILE: "solids S facets F volume V open_edges E bad_vertices B" (V in mm^3)
 stlcheck() { "$MESH" --stl-check "$1"; }

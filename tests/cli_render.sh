@@ -3,7 +3,7 @@
 # their parts), and bad input gives one line, a non-zero exit and no damaged output.
 # Run from the repository root: sh tests/cli_render.sh
 . tests/shlib.sh
-PNG=${PNG_TOOL:-$BUILD/tests/test_image}
+PNG=${PNG_TOOL:-$BUILD/tests/test_io_png}
 if ! "$AMORPH" render --help >/dev/null 2>&1; then
     # the board profile builds no pictures: the commands must say so in one line
     expect_fail 2 "render: not in this build" "$AMORPH" render --scene cube:2 --out "$TMPD/x.png"

@@ -146,7 +146,7 @@ if grep -q "^tests/data/evosoro_stiffness.vxa: warning: the lattice format holds
 else ko "no warning for a lattice without stiffness: $(cat "$D/st.err")"; fi
 "$AMORPH" sim "$D/ph.lattice" --cycles 1 --relax-max 200 >"$D/ph.out" 2>/dev/null
 if [ "$(hash_of "$D/ph.out")" != "$(hash_of "$D/evosoro_phase.a")" ]; then ok; else ko "phases made no difference"; fi
-# the cantilever moves down under its load (0.5 mm at rest, tests/test_vxa.c checks the figure), and
+# the cantilever moves down under its load (0.5 mm at rest, tests/test_io_vxa.c checks the figure), and
 # sits without it: a relaxation cut short (200 steps, before the tip has come down) leaves the rest
 # of the deflection to the movement segment, whose displacement sim reports
 "$AMORPH" sim tests/data/voxcad_cantilever.vxa --cycles 1 --relax-max 200 --json >"$D/cant.json" 2>/dev/null

@@ -1,5 +1,6 @@
-/* The evaluation protocol around the step: recording, fitness modes, empty bodies, capacity and
- * range errors of the model build, and the seed's time step search. */
+/* The evaluation protocol around the step (src/sim/sim_eval.c): recording, fitness modes, empty
+ * bodies, the seed's time step search, the gait figures and the sustained score. The model build's
+ * errors and link layout are tests/test_sim_model.c. */
 #include "amorph.h"
 #include "harness.h"
 
@@ -173,75 +174,6 @@ static void test_steps_in_seconds(void)
     /* a period in seconds too long for 10^7 steps is refused with the numbers */
     env.period_s = AM_P(1e4);
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "period_s = 10000 s is"), "%s", err);
-}
-
-/* bad models are statuses with messages, never crashes */
-static void test_model_errors(void)
-{
-    char err[AM_ERR_MAX];
-    am_env env = am_default_env();
-    CHECK(am_lattice_init(&g_lat, 3, 3, 3, AM_P(0.01), err, sizeof err) == AM_OK, "%s", err);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_EMPTY, "empty lattice accepted");
-    g_lat.cell[0] = 1;
-    g_lat.palette.mat[0].E = AM_P(-1);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "E must"), "negative E: %s", err);
-    g_lat.palette = am_default_palette();
-    g_lat.cell[1] = (uint8_t)(g_lat.palette.count + 1);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "unknown material accepted");
-    g_lat.cell[1] = 1;
-    env.period_steps = 0;
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "period 0 accepted");
-    env.period_steps = 500;
-    /* a cell edge outside the configuration's voxel_size range, however the lattice got it (issue
-     * 31: a subnormal one gave NaN scales, a NaN cast to long in the collision grid) */
-    g_lat.voxel_size = AM_PARAM_FROM_DOUBLE(1e-45);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "voxel size"), "voxel size 1e-45: %s", err);
-    g_lat.voxel_size = AM_P(100);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "outside 1e-05..10"), "voxel size 100: %s", err);
-    g_lat.voxel_size = AM_P(0.01);
-    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "voxel size 0.01: %s", err);
-    CHECK(am_lattice_init(&g_lat, AM_MAX_DIM + 1, 1, 1, AM_P(0.01), err, sizeof err) == AM_ERR_CAPACITY, "over capacity");
-}
-
-/* the link entries of random bodies: the live ones are exactly the face pairs of the lattice,
- * each in the slots of its two voxels; x lane e joins voxels e - 1 and e, lanes 0 and nv are
- * empty, and the x lanes are nv + 1 */
-static void test_link_layout(void)
-{
-    char err[AM_ERR_MAX];
-    am_env env = am_default_env();
-    am_rng r;
-    am_rng_seed(&r, 7);
-    for (int t = 0; t < 20; t++) {
-        const int nx = 1 + (int)am_rng_below(&r, 6), ny = 1 + (int)am_rng_below(&r, 6), nz = 1 + (int)am_rng_below(&r, 6);
-        CHECK(am_lattice_init(&g_lat, nx, ny, nz, AM_P(0.01), err, sizeof err) == AM_OK, "%s", err);
-        for (int c = 0; c < nx * ny * nz; c++) g_lat.cell[c] = (uint8_t)(am_rng_below(&r, 3) == 0 ? 0 : 1 + am_rng_below(&r, 2));
-        g_lat.cell[0] = 1;
-        CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
-        int pairs = 0;
-        for (int z = 0; z < nz; z++)
-            for (int y = 0; y < ny; y++)
-                for (int x = 0; x < nx; x++) {
-                    if (!g_lat.cell[am_lattice_index(&g_lat, x, y, z)]) continue;
-                    pairs += x + 1 < nx && g_lat.cell[am_lattice_index(&g_lat, x + 1, y, z)];
-                    pairs += y + 1 < ny && g_lat.cell[am_lattice_index(&g_lat, x, y + 1, z)];
-                    pairs += z + 1 < nz && g_lat.cell[am_lattice_index(&g_lat, x, y, z + 1)];
-                }
-        int live = 0, wrong = 0;
-        for (int l = 0; l < g_m.nl; l++) {
-            if (!am_link_live(&g_m, l)) continue;
-            live++;
-            const int a = g_m.lneg[l], b = g_m.lpos[l], axis = l < g_m.axis_end[0] ? 0 : (l < g_m.axis_end[1] ? 1 : 2);
-            const int step = axis == 0 ? 1 : (axis == 1 ? nx : nx * ny);
-            wrong += g_m.cell[b] - g_m.cell[a] != step || g_m.slot[2 * axis][a] != l || g_m.slot[2 * axis + 1][b] != l;
-            wrong += axis == 0 && (a != l - 1 || b != l);
-        }
-        CHECK(live == pairs && g_m.links == pairs, "body %d (%dx%dx%d): %d live entries, %d links, %d face pairs", t, nx, ny, nz, live,
-              g_m.links, pairs);
-        CHECK(wrong == 0, "body %d: %d entries join the wrong voxels or miss their slots", t, wrong);
-        CHECK(g_m.axis_end[0] == g_m.nv + 1 && !am_link_live(&g_m, 0) && !am_link_live(&g_m, g_m.nv),
-              "body %d: %d x lanes for %d voxels", t, g_m.axis_end[0], g_m.nv);
-    }
 }
 
 /* the seed's search: deterministic, between the tried extremes, and stable for 2000 steps */
@@ -450,8 +382,6 @@ int main(int argc, char** argv)
     RUN(test_fitness_modes);
     RUN(test_unsettled_no_score);
     RUN(test_steps_in_seconds);
-    RUN(test_model_errors);
-    RUN(test_link_layout);
     RUN(test_dt_search);
     RUN(test_gait_free_fall);
     RUN(test_gait_modes);

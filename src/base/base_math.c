@@ -200,7 +200,7 @@ am_real am_cbrt(am_real xr)
  * kernels work in Q30 on int64_t (a product of two Q30 values below 4 fits in 63 bits), range
  * reduction subtracts multiples of pi/2 or ln 2 held in Q40, and every rounding is to nearest
  * (half up), so the results are the same on every platform; the error is within an ulp or two of
- * Q24 (tests/test_util.c measures it). */
+ * Q24 (tests/test_base.c measures it). */
 #define Q30 ((int64_t)1 << 30)
 #define Q40_PIO2 INT64_C(1727108826179)  /* pi/2 * 2^40 */
 #define Q40_LN2 INT64_C(762123384786)    /* ln 2 * 2^40 */

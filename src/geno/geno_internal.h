@@ -4,7 +4,7 @@
  * public interface is include/amorph/geno.h. Here: the operations table every representation
  * implements and its dispatch, the helpers of the representations' text lines, the lookup tables
  * of the CPPN and GMX functions (read with linear interpolation, see src/geno/geno_common.c), the value
- * perturbation of mutations, and the steps of the GMX and CPPN operators that tests/test_genotype.c
+ * perturbation of mutations, and the steps of the GMX and CPPN operators that tests/test_geno.c
  * checks one by one.
  */
 #ifndef AMORPH_GENO_INTERNAL_H

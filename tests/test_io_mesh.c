@@ -1,4 +1,4 @@
-/* tests/test_mesh.c: the surface mesh (src/io/io_mesh.c), its self-intersection check (src/io/io_mesh_cross.c)
+/* tests/test_io_mesh.c: the surface mesh (src/io/io_mesh.c), its self-intersection check (src/io/io_mesh_cross.c)
  * and its STL and AMF files (src/io/io_printable.c). A manifold check of our own, over a triangle soup:
  * every edge in exactly two triangles, once each way round (closed, consistently turned), and
  * every vertex's link (the far edges of its triangles) one cycle (a single disc of triangles
@@ -10,7 +10,7 @@
  * no crossing at rest and crossings found where voxels are pushed into each other; the written
  * files read back.
  *
- * `test_mesh --stl-check FILE` checks an STL file the same way (what tests/cli_printable.sh uses)
+ * `test_io_mesh --stl-check FILE` checks an STL file the same way (what tests/cli_printable.sh uses)
  * and prints "solids S facets F volume V open_edges E bad_vertices B" (V in the file's units^3). */
 #include "amorph.h"
 #include "amorph/io.h"
@@ -600,19 +600,19 @@ static void test_amf(void)
     CHECK(strstr(g_text, "<metadata type=\"name\">a &lt;b&gt; &amp; c</metadata>") != NULL, "the title is not escaped");
 }
 
-/* test_mesh --stl-check FILE: the file's solids, facets, volume and manifold check on one line */
+/* test_io_mesh --stl-check FILE: the file's solids, facets, volume and manifold check on one line */
 static int stl_check(const char* path)
 {
     FILE* f = fopen(path, "rb");
     if (!f) {
-        fprintf(stderr, "test_mesh: cannot open %s\n", path);
+        fprintf(stderr, "test_io_mesh: cannot open %s\n", path);
         return 2;
     }
     size_t n = fread(g_text, 1, sizeof g_text - 1, f);
     int big = !feof(f);
     fclose(f);
     if (big) {
-        fprintf(stderr, "test_mesh: %s is larger than %ld bytes\n", path, (long)sizeof g_text - 1);
+        fprintf(stderr, "test_io_mesh: %s is larger than %ld bytes\n", path, (long)sizeof g_text - 1);
         return 2;
     }
     g_text[n] = 0;

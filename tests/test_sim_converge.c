@@ -1,4 +1,4 @@
-/* tests/test_converge.c: the default time step gives the small-step answer (docs/physics.md, Time
+/* tests/test_sim_converge.c: the default time step gives the small-step answer (docs/physics.md, Time
  * step). Each body is evaluated at the default 0.9 dt_rec and at 0.1 dt_rec with the same physics
  * in seconds: the actuation period held (env.period_s) and the relaxation scaled (its step counts
  * are steps of the default step). The calibration bars (halfbar:6, antibar:6) and small random

@@ -1,4 +1,4 @@
-/* tests/test_settle.c: the evaluation on the bodies evolution meets (docs/physics.md, Evaluation
+/* tests/test_sim_settle.c: the evaluation on the bodies evolution meets (docs/physics.md, Evaluation
  * and Time step). 30 random genomes, 10 per representation (seeds 1..10, what `amorph random
  * --repr R --seed N` writes), expressed in the seed's 20^3 workspace with the built-in palette:
  * - relaxation settles every one (settled = 1), and with the actuation off each travels less than

@@ -825,7 +825,7 @@ static void test_vxa_phase_offset(void)
  * (1% of l: small enough for linear theory, whose geometric error is of order (w / l)^2, 1e-4).
  * The file's global damping gives the first bending mode a damping ratio of 0.3 and the run lasts
  * 16 / (0.3 omega_1), leaving e^-16 of the initial swing: the 1% tolerance is the one of
- * test_physics.c's cantilevers (float positions and the fixed-point force unit, 0.2% of this load). */
+ * test_sim_step.c's cantilevers (float positions and the fixed-point force unit, 0.2% of this load). */
 static void test_vxa_cantilever(void)
 {
     char err[AM_ERR_MAX] = "";

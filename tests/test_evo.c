@@ -1,4 +1,4 @@
-/* tests/test_evolve.c: the evolver. Configuration parsing and printing, the deterministic
+/* tests/test_evo.c: the evolver. Configuration parsing and printing, the deterministic
  * crowding rule, bit-identical runs for 1, 2 and 3 workers, checkpoints (round trip, resume
  * equals an uninterrupted run, damage detected), cancellation, and a pinned golden run hash. */
 #include "harness.h"
