@@ -188,6 +188,11 @@ int tool_src_sniff(tool_src* s, char* err, int errsz);
  * or the source's with its message */
 typedef am_status (*tool_line_fn)(void* ctx, int lineno, char* line, long n, char* err, int errsz);
 am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int errsz);
+/* a run's log.csv read row by row (am_evo_log_read_*): fn(ctx, fname, lineno, &row, ...) for each
+ * row in order, the header and blank lines skipped; AM_OK, or the first failure (fn's, or the
+ * file's or reader's with its "path:line: problem" message) (files.c) */
+typedef am_status (*tool_log_row_fn)(void* ctx, const char* fname, int lineno, const am_evo_stats* row, char* err, int errsz);
+am_status tool_log_each(const char* path, tool_log_row_fn fn, void* ctx, char* err, int errsz);
 /* a configuration file over d (am_evo_parse_line per line); nul_ends as tool_src_open (run_dir.c) */
 am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* err, int errsz);
 /* the same, with the line that set each key (key_line[i] for am_evo_key_name(i), left as it is for

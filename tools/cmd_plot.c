@@ -68,24 +68,20 @@ static const char* base_name(const char* path, char* buf, int n)
 
 /* one run being read from its log.csv: the library's reader, and the best fitness so far */
 typedef struct plot_reading {
-    am_evo_log_reader rd;
     plot_run* r;
     double best;
 } plot_reading;
 
 /* one line of a log.csv: a row becomes a point (evaluations, best so far) of the run */
-static am_status plot_log_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+static am_status plot_log_row(void* ctx, const char* fname, int lineno, const am_evo_stats* rowp, char* err, int errsz)
 {
     plot_reading* pr = (plot_reading*)ctx;
     plot_run* r = pr->r;
-    am_evo_stats row;
-    int is_row = 0;
-    am_status st = am_evo_log_read_line(&pr->rd, line, n, &row, &is_row, err, errsz);
-    if (st != AM_OK || !is_row) return st;
+    const am_evo_stats row = *rowp;
     if (plot_max_evals > 0 && row.evaluations > plot_max_evals) return AM_OK; /* read on: the rest is checked */
     double e = (double)row.evaluations;
     if (r->n > 0 && e < plot_x[plot_used - 1])
-        return am_fail_at(err, errsz, AM_ERR_PARSE, pr->rd.fname, lineno, "evaluations go backwards (%ld after %.17g)", row.evaluations,
+        return am_fail_at(err, errsz, AM_ERR_PARSE, fname, lineno, "evaluations go backwards (%ld after %.17g)", row.evaluations,
                           plot_x[plot_used - 1]);
     if (plot_used >= PLOT_MAX_POINTS) return am_fail(err, errsz, AM_ERR_CAPACITY, "more than %ld rows in all", PLOT_MAX_POINTS);
     /* the best so far: a generation's best may fall back under crowding */
@@ -112,17 +108,9 @@ static int load_run(const char* dir, int series)
     r->n = 0;
     r->series = series;
     plot_reading pr;
-    am_evo_log_read_begin(&pr.rd, path);
     pr.r = r;
     pr.best = -HUGE_VAL;
-    tool_src src;
-    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err);
-    if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, sizeof err);
-    if (st == AM_OK) {
-        st = tool_src_each(&src, plot_log_line, &pr, err, sizeof err);
-        if (st == AM_OK) st = am_evo_log_read_end(&pr.rd, err, sizeof err);
-        tool_src_close(&src);
-    }
+    am_status st = tool_log_each(path, plot_log_row, &pr, err, sizeof err);
     if (st != AM_OK) {
         plot_used = r->first; /* the points of a run that failed are not kept */
         return tool_usage_error("plot: %s", err);

@@ -40,22 +40,14 @@ static struct {
 
 static const char* const reps[3] = {"dct", "cppn", "gmx"};
 
-typedef struct report_reading {
-    am_evo_log_reader rd;
-} report_reading;
-
-static am_status report_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+/* one row of a run's log.csv into R's rows */
+static am_status report_row(void* ctx, const char* fname, int lineno, const am_evo_stats* row, char* err, int errsz)
 {
-    report_reading* rr = (report_reading*)ctx;
-    am_evo_stats row;
-    int is_row = 0;
-    am_status st = am_evo_log_read_line(&rr->rd, line, n, &row, &is_row, err, errsz);
-    if (st != AM_OK || !is_row) return st;
-    if (R.rows >= REPORT_MAX_ROWS)
-        return am_fail_at(err, errsz, AM_ERR_CAPACITY, rr->rd.fname, lineno, "more than %d generations", REPORT_MAX_ROWS);
-    R.evals[R.rows] = row.evaluations;
-    R.best[R.rows] = row.best;
-    R.wall[R.rows++] = row.wall_s;
+    (void)ctx;
+    if (R.rows >= REPORT_MAX_ROWS) return am_fail_at(err, errsz, AM_ERR_CAPACITY, fname, lineno, "more than %d generations", REPORT_MAX_ROWS);
+    R.evals[R.rows] = row->evaluations;
+    R.best[R.rows] = row->best;
+    R.wall[R.rows++] = row->wall_s;
     return AM_OK;
 }
 
@@ -65,16 +57,7 @@ static int read_rows(const char* run)
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     if (snprintf(path, sizeof path, "%s/" AM_RUN_LOG, run) >= (int)sizeof path) return tool_usage_error("report: %.60s...: path too long", run);
     R.rows = 0;
-    report_reading rr;
-    am_evo_log_read_begin(&rr.rd, path);
-    tool_src src;
-    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err);
-    if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, sizeof err);
-    if (st == AM_OK) {
-        st = tool_src_each(&src, report_line, &rr, err, sizeof err);
-        if (st == AM_OK) st = am_evo_log_read_end(&rr.rd, err, sizeof err);
-        tool_src_close(&src);
-    }
+    am_status st = tool_log_each(path, report_row, NULL, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("report: %s", err);
     return 0;
 }

@@ -121,7 +121,6 @@ static int add_run(const char* dir, const char* name, long len)
 
 /* one run's log.csv being read: the best so far, and the checkpoints passed */
 typedef struct log_reading {
-    am_evo_log_reader rd;
     stats_run* R;
     double best;
     int rows;
@@ -130,20 +129,17 @@ typedef struct log_reading {
 /* one line of log.csv: every checkpoint m from the last row's evaluations up to (not including)
  * this row's takes the best so far of the rows at or below it (the first row's, for a checkpoint
  * before the first row) */
-static am_status log_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+static am_status log_row(void* ctx, const char* fname, int lineno, const am_evo_stats* rowp, char* err, int errsz)
 {
     log_reading* lr = (log_reading*)ctx;
     stats_run* R = lr->R;
-    am_evo_stats row;
-    int is_row = 0;
-    am_status st = am_evo_log_read_line(&lr->rd, line, n, &row, &is_row, err, errsz);
-    if (st != AM_OK || !is_row) return st;
+    const am_evo_stats row = *rowp;
     if (lr->rows > 0 && row.evaluations < R->last)
-        return am_fail_at(err, errsz, AM_ERR_PARSE, lr->rd.fname, lineno, "evaluations go backwards (%ld after %ld)", row.evaluations, R->last);
+        return am_fail_at(err, errsz, AM_ERR_PARSE, fname, lineno, "evaluations go backwards (%ld after %ld)", row.evaluations, R->last);
     const double before = lr->rows > 0 ? lr->best : row.best;
     for (long m = (R->counts + 1) * S.every; m < row.evaluations; m += S.every) {
         if (R->counts >= STATS_MAX_COUNTS)
-            return am_fail_at(err, errsz, AM_ERR_CAPACITY, lr->rd.fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
+            return am_fail_at(err, errsz, AM_ERR_CAPACITY, fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
                               STATS_MAX_COUNTS, S.every);
         R->val[R->counts++] = before;
     }
@@ -153,7 +149,7 @@ static am_status log_line(void* ctx, int lineno, char* line, long n, char* err, 
     /* a row at a checkpoint holds it itself */
     if (row.evaluations == (R->counts + 1) * S.every) {
         if (R->counts >= STATS_MAX_COUNTS)
-            return am_fail_at(err, errsz, AM_ERR_CAPACITY, lr->rd.fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
+            return am_fail_at(err, errsz, AM_ERR_CAPACITY, fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
                               STATS_MAX_COUNTS, S.every);
         R->val[R->counts++] = lr->best;
     }
@@ -167,18 +163,10 @@ static int read_log(stats_run* R)
     if (snprintf(path, sizeof path, "%s/" AM_RUN_LOG, R->dir) >= (int)sizeof path) return tool_usage_error("stats: %.60s...: path too long", R->dir);
     if (!am_port_exists(path)) return tool_usage_error("stats: %s: no such file (not a run folder of amorph evolve)", path);
     log_reading lr;
-    am_evo_log_read_begin(&lr.rd, path);
     lr.R = R;
     lr.best = 0;
     lr.rows = 0;
-    tool_src src;
-    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, sizeof err);
-    if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, sizeof err);
-    if (st == AM_OK) {
-        st = tool_src_each(&src, log_line, &lr, err, sizeof err);
-        if (st == AM_OK) st = am_evo_log_read_end(&lr.rd, err, sizeof err);
-        tool_src_close(&src);
-    }
+    am_status st = tool_log_each(path, log_row, &lr, err, sizeof err);
     if (st != AM_OK) return tool_usage_error("stats: %s", err);
     if (lr.rows == 0) return tool_usage_error("stats: %s: no generations logged yet", path);
     return 0;

@@ -298,3 +298,37 @@ am_status tool_src_each(tool_src* s, tool_line_fn fn, void* ctx, char* err, int 
     if (r < 0) return s->binary ? tool_src_binary(s, err, errsz) : s->st;
     return AM_OK;
 }
+
+/* ---- a run's log.csv, row by row ---- */
+
+typedef struct log_each {
+    am_evo_log_reader rd;
+    tool_log_row_fn fn;
+    void* ctx;
+} log_each;
+
+static am_status log_each_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
+{
+    log_each* le = (log_each*)ctx;
+    am_evo_stats row;
+    int is_row = 0;
+    am_status st = am_evo_log_read_line(&le->rd, line, n, &row, &is_row, err, errsz);
+    if (st != AM_OK || !is_row) return st;
+    return le->fn(le->ctx, le->rd.fname, lineno, &row, err, errsz);
+}
+
+am_status tool_log_each(const char* path, tool_log_row_fn fn, void* ctx, char* err, int errsz)
+{
+    log_each le;
+    am_evo_log_read_begin(&le.rd, path);
+    le.fn = fn;
+    le.ctx = ctx;
+    tool_src src;
+    am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, 0, err, errsz);
+    if (st != AM_OK && src.binary) st = tool_src_binary(&src, err, errsz);
+    if (st != AM_OK) return st;
+    st = tool_src_each(&src, log_each_line, &le, err, errsz);
+    if (st == AM_OK) st = am_evo_log_read_end(&le.rd, err, errsz);
+    tool_src_close(&src);
+    return st;
+}
