@@ -16,6 +16,6 @@ static double port_now(void* self)
 
 am_executor tool_executor(int workers)
 {
-    am_executor ex = {port_map, port_now, NULL, workers < 1 ? 1 : (workers > AM_MAX_WORKERS ? AM_MAX_WORKERS : workers)};
+    am_executor ex = {port_map, port_now, NULL, workers}; /* the evolver keeps workers within 1..AM_MAX_WORKERS */
     return ex;
 }

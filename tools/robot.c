@@ -242,23 +242,11 @@ static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* peri
     d.env = r->env;
     d.eval = r->eval;
     for (int k = 0; k < a->nset; k++) {
-        const char* key = a->key[k];
-        am_status st = am_evo_set(&d, key, a->val[k], err, errsz);
+        unsigned material = 0;
+        am_status st = am_evo_set_over(&d, a->key[k], a->val[k], &material, err, errsz);
         if (st != AM_OK) return st;
-        if (!strcmp(key, "period_steps")) {
-            *period_set = 1;
-            d.env.period_s = AM_P(0); /* the period in steps, as this setting says (a later period_s wins) */
-        }
-        if (!strcmp(key, "relax_max_steps") && d.eval.relax_min_steps > d.eval.relax_max_steps)
-            d.eval.relax_min_steps = d.eval.relax_max_steps;
-        if (am_evo_key_group(key) != AM_KEYS_MATERIALS) continue;
-        if (!strcmp(key, "voxel_size")) lat->voxel_size = d.voxel_size;
-        for (int m = 0; m < lat->palette.count; m++) {
-            am_material* mt = &lat->palette.mat[m];
-            if (!strcmp(key, "cte") && mt->cte != AM_P(0)) mt->cte = d.cte;
-            if (!strcmp(key, "mu_static")) mt->mu_static = d.mu_static;
-            if (!strcmp(key, "mu_kinetic")) mt->mu_kinetic = d.mu_kinetic;
-        }
+        if (!strcmp(a->key[k], "period_steps")) *period_set = 1;
+        am_evo_apply_materials(&d, material, lat); /* in order: a later --cte sees the earlier one's materials */
     }
     r->env = d.env;
     r->eval = d.eval;

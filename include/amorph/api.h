@@ -30,7 +30,7 @@ extern "C" {
 typedef struct am_api_work {
     long size;                /* sizeof(am_api_work) once am_api_init has run (a check of the caller's buffer) */
     am_evo_def def;           /* the settings: am_default_evo(), then each am_api_set in order */
-    unsigned materials_set;   /* bit k: material key k (cte, mu_static, mu_kinetic, voxel_size) was set */
+    unsigned materials_set;   /* the AM_MATERIAL_* bits (evo.h) of the material keys that were set */
     am_palette palette;       /* the palette a genome is expressed with (am_evo_palette(&def)) */
     am_genome genome;         /* the genome being evaluated */
     am_evo_work work;         /* expression, lattice, model, state */

@@ -59,6 +59,16 @@ am_evo_def am_stored_evo(void);
  * (the caller adds "file:line: " or "--flag: "). AM_ERR_ARG for an unknown key, AM_ERR_RANGE for
  * a value out of range or malformed */
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
+/* A setting over one robot's own values, as `amorph sim ROBOT --KEY VALUE` and the embedding API
+ * apply it: am_evo_set, then period_steps holds the period in steps (period_s 0) and a
+ * relax_max_steps below relax_min_steps lowers that too. *material gets the key's AM_MATERIAL_* bit
+ * (0 for a key that is not a material's): what am_evo_apply_materials writes into a lattice. */
+enum { AM_MATERIAL_CTE = 1, AM_MATERIAL_MU_STATIC = 2, AM_MATERIAL_MU_KINETIC = 4, AM_MATERIAL_VOXEL_SIZE = 8 };
+am_status am_evo_set_over(am_evo_def* d, const char* key, const char* value, unsigned* material, char* err, int errsz);
+/* d's values of the material keys in mask (AM_MATERIAL_* bits) written over lat: cte over the
+ * actuated materials (cte not 0), mu_static and mu_kinetic over every material, voxel_size over the
+ * lattice's */
+void am_evo_apply_materials(const am_evo_def* d, unsigned mask, am_lattice* lat);
 /* checks the whole definition (relations between keys); messages name the key */
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
 /* am_evo_check, with the index (am_evo_key_name) of the key its message names in *key (-1 when
@@ -289,6 +299,10 @@ am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_e
  * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
 void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
                      am_record* rec, am_evo_ind* out, am_evo_eval* detail);
+/* the model of w->lattice in d's environment evaluated by d's evaluation into *out (rec may be
+ * NULL): what am_evo_evaluate does after the expression. AM_ERR_EMPTY (out untouched) for a body
+ * with no voxel, a failure of am_model_build with its message */
+am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz);
 /* expresses g into lat with the run's palette and voxel size */
 am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
                          am_lattice* lat, char* err, int errsz);

@@ -7,10 +7,6 @@
 #include <stdint.h>
 #include <string.h>
 
-/* the material keys of the configuration, in the order of am_api_work.materials_set's bits */
-static const char* const material_keys[] = {"cte", "mu_static", "mu_kinetic", "voxel_size"};
-enum { MATERIAL_KEYS = (int)(sizeof material_keys / sizeof material_keys[0]) };
-
 int am_api_version(void)
 {
     return AM_API_VERSION;
@@ -52,30 +48,20 @@ am_status am_api_set(am_api_work* w, const char* key, const char* value, char* e
     if (st != AM_OK) return st;
     if (!key || !value) return am_fail(err, errsz, AM_ERR_ARG, "a setting needs a key and a value (NULL)");
     am_evo_def d = w->def;
-    st = am_evo_set(&d, key, value, err, errsz);
+    unsigned material = 0;
+    st = am_evo_set_over(&d, key, value, &material, err, errsz);
     if (st != AM_OK) return st;
-    /* as amorph sim's flags: the period in steps, and a relaxation no shorter than its minimum */
-    if (!strcmp(key, "period_steps")) d.env.period_s = AM_P(0);
-    if (!strcmp(key, "relax_max_steps") && d.eval.relax_min_steps > d.eval.relax_max_steps) d.eval.relax_min_steps = d.eval.relax_max_steps;
-    for (int k = 0; k < MATERIAL_KEYS; k++)
-        if (!strcmp(key, material_keys[k])) w->materials_set |= 1u << k;
     w->def = d;
+    w->materials_set |= material;
     return AM_OK;
 }
 
 /* the model of w's lattice in w's environment, evaluated into *out (a zero result for an empty body) */
 static am_status simulate(am_api_work* w, am_result* out, char* err, int errsz)
 {
-    am_evo_work* k = &w->work;
     memset(out, 0, sizeof *out);
-    am_status st = am_model_build(&k->model, &k->lattice, &w->def.env, err, errsz);
-    if (st == AM_ERR_EMPTY) return AM_OK; /* a valid body that goes nowhere: fitness 0 */
-    if (st != AM_OK) return st;
-    am_eval_def ev = w->def.eval;
-    ev.record = NULL;
-    ev.gait = NULL;
-    am_evaluate(&k->model, &k->state, &ev, out);
-    return AM_OK;
+    am_status st = am_evo_simulate(&w->def, &w->work, NULL, out, err, errsz);
+    return st == AM_ERR_EMPTY ? AM_OK : st; /* an empty body is a valid one that goes nowhere: fitness 0 */
 }
 
 am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, char* err, int errsz)
@@ -101,13 +87,6 @@ am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, 
     st = am_lattice_parse(lat, text, "lattice", err, errsz);
     if (st != AM_OK) return st;
     /* the material keys that were set change the lattice's own materials (amorph sim's rule) */
-    const am_evo_def* d = &w->def;
-    if (w->materials_set & 8u) lat->voxel_size = d->voxel_size;
-    for (int m = 0; m < lat->palette.count; m++) {
-        am_material* mt = &lat->palette.mat[m];
-        if ((w->materials_set & 1u) && mt->cte != AM_P(0)) mt->cte = d->cte;
-        if (w->materials_set & 2u) mt->mu_static = d->mu_static;
-        if (w->materials_set & 4u) mt->mu_kinetic = d->mu_kinetic;
-    }
+    am_evo_apply_materials(&w->def, w->materials_set, lat);
     return simulate(w, out, err, errsz);
 }

@@ -463,3 +463,28 @@ am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char*
     }
     return AM_OK;
 }
+
+am_status am_evo_set_over(am_evo_def* d, const char* key, const char* value, unsigned* material, char* err, int errsz)
+{
+    static const char* const material_keys[] = {"cte", "mu_static", "mu_kinetic", "voxel_size"}; /* AM_MATERIAL_* bits in order */
+    am_status st = am_evo_set(d, key, value, err, errsz);
+    if (st != AM_OK) return st;
+    if (!strcmp(key, "period_steps")) d->env.period_s = AM_P(0); /* the period in steps, as this setting says */
+    if (!strcmp(key, "relax_max_steps") && d->eval.relax_min_steps > d->eval.relax_max_steps)
+        d->eval.relax_min_steps = d->eval.relax_max_steps;
+    *material = 0;
+    for (int k = 0; k < (int)(sizeof material_keys / sizeof material_keys[0]); k++)
+        if (!strcmp(key, material_keys[k])) *material = 1u << k;
+    return AM_OK;
+}
+
+void am_evo_apply_materials(const am_evo_def* d, unsigned mask, am_lattice* lat)
+{
+    if (mask & AM_MATERIAL_VOXEL_SIZE) lat->voxel_size = d->voxel_size;
+    for (int m = 0; m < lat->palette.count; m++) {
+        am_material* mt = &lat->palette.mat[m];
+        if ((mask & AM_MATERIAL_CTE) && mt->cte != AM_P(0)) mt->cte = d->cte;
+        if (mask & AM_MATERIAL_MU_STATIC) mt->mu_static = d->mu_static;
+        if (mask & AM_MATERIAL_MU_KINETIC) mt->mu_kinetic = d->mu_kinetic;
+    }
+}

@@ -23,6 +23,16 @@ am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_ge
     return am_genome_to_lattice(g, &ex, w, lat, err, errsz);
 }
 
+am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz)
+{
+    am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, errsz);
+    if (st != AM_OK) return st;
+    am_eval_def ev = d->eval;
+    ev.record = rec;
+    am_evaluate(&w->model, &w->state, &ev, out);
+    return AM_OK;
+}
+
 /* one evaluation of g on the workspace w into *r and *detail (rec may be NULL) */
 static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w, am_record* rec,
                      am_evo_result* r)
@@ -41,19 +51,12 @@ static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     const int cells = g->nx * g->ny * g->nz;
     for (int c = 0; c < cells; c++)
         if (w->geno.cell[c] > 0 && w->geno.cell[c] <= AM_MAX_GENO_MATERIALS) detail->material_voxels[w->geno.cell[c] - 1]++;
-    am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, sizeof err);
-    if (st == AM_ERR_EMPTY) {
-        r->empty = 1; /* a valid body that goes nowhere */
-        return;
-    }
-    if (st != AM_OK) {
+    am_status st = am_evo_simulate(d, w, rec, &detail->sim, err, sizeof err);
+    if (st == AM_ERR_EMPTY) r->empty = 1; /* a valid body that goes nowhere */
+    else if (st != AM_OK) {
         detail->sim.diverged = 1;
         detail->sim.fitness = AM_NO_SCORE;
-        return;
     }
-    am_eval_def ev = d->eval;
-    ev.record = rec;
-    am_evaluate(&w->model, &w->state, &ev, &detail->sim);
 }
 
 /* the individual's fields from a result (its genome is set by the caller) */
