@@ -438,7 +438,8 @@ static void test_checkpoint_members_checked(void)
         for (size_t k = 0; k < o; k += 7) am_evo_checkpoint_scan(&sc, g_text2 + k, (long)(o - k < 7 ? o - k : 7));
         CHECK(am_evo_checkpoint_scan_end(&sc, "ck.txt", err, sizeof err) == AM_OK, "CRLF in pieces: %s", err);
     }
-    /* version 1 (individuals without ids) still reads, the ids unknown; version 3 does not */
+    /* version 1 (individuals without ids, no remembered bodies) still reads, the ids unknown and
+     * the table empty; version 4 does not */
     {
         static char v1[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
         size_t o = 0;
@@ -449,6 +450,11 @@ static void test_checkpoint_members_checked(void)
             if (!strncmp(p, "individual ", 11))
                 while (keep > 0 && p[keep - 1] != ' ') keep--; /* drop the last token (the id) and its space */
             if (keep < n && keep > 0) keep--;
+            if (!strncmp(p, "reused ", 7) || !strncmp(p, "memo ", 5) || !strncmp(p, "m ", 2)) { /* not in version 1 */
+                p = nl ? nl + 1 : p + n;
+                if (!nl) break;
+                continue;
+            }
             memcpy(v1 + o, p, keep);
             o += keep;
             if (!nl) break;
@@ -458,14 +464,17 @@ static void test_checkpoint_members_checked(void)
         v1[o] = 0;
         memcpy(g_text, v1, o + 1);
     }
-    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 2", "amorph-checkpoint 1") &&
+    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 3", "amorph-checkpoint 1") &&
               am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_OK,
           "version 1: %s", err);
     CHECK(am_evo_hash(&g_b) == am_evo_hash(&g_a) && g_b.pop[0].id == -1 && g_b.best.id == -1, "version 1 read differently");
-    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 2", "amorph-checkpoint 3") &&
+    int kept = 0;
+    for (int k = 0; k < AM_EVO_MEMO; k++) kept += g_b.memo[k].key != 0;
+    CHECK(kept == 0 && g_b.reused == 0 && g_b.reused_voxel_steps == 0, "version 1: %d remembered bodies, %ld reused", kept, g_b.reused);
+    CHECK(edit_checkpoint(g_text, "amorph-checkpoint 3", "amorph-checkpoint 4") &&
               am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "ck.txt:1:") &&
-              strstr(err, "versions 1 to 2"),
-          "version 3: %s", err);
+              strstr(err, "versions 1 to 3"),
+          "version 4: %s", err);
 }
 
 /* the checkpoint's message for text (sealed with a matching checksum first): exactly want, one
@@ -487,7 +496,7 @@ static void test_checkpoint_bad_tokens_quoted(void)
     char want[AM_ERR_MAX], tok[301];
     const char* head = "amorph-checkpoint 2\nconfig-begin\nseed = 1\nconfig-end\n";
     expect_checkpoint_message("amorph-checkpoint \x1b[31m\n",
-                              "ck.txt:1: checkpoint version '\\x1b[31m': this build reads versions 1 to 2");
+                              "ck.txt:1: checkpoint version '\\x1b[31m': this build reads versions 1 to 3");
     snprintf(t, sizeof t, "%s\x01rng\t1 2\n", head);
     expect_checkpoint_message(t, "ck.txt:5: unexpected line '\\x01rng\\t1'");
     /* the configuration inside goes through the configuration's reader */
@@ -509,7 +518,7 @@ static void test_checkpoint_bad_tokens_quoted(void)
     memset(tok, 'v', 300);
     tok[300] = 0;
     snprintf(t, sizeof t, "amorph-checkpoint %s\n", tok);
-    snprintf(want, sizeof want, "ck.txt:1: checkpoint version '%.40s...': this build reads versions 1 to 2", tok);
+    snprintf(want, sizeof want, "ck.txt:1: checkpoint version '%.40s...': this build reads versions 1 to 3", tok);
     expect_checkpoint_message(t, want);
     snprintf(t, sizeof t, "%s%s 1\n", head, tok);
     snprintf(want, sizeof want, "ck.txt:5: unexpected line '%.40s...'", tok);
@@ -699,6 +708,176 @@ static void test_log_row(void)
     CHECK(strcmp(am_evo_log_header(), "generation,evaluations,best,mean,median,diverged,empty,wall_s,unsettled") == 0, "header");
 }
 
+/* ---- same body, same result (am_evo.memo) ---- */
+
+/* a run whose bodies repeat often: CPPN in a 5^3 workspace */
+static am_evo_def repeat_def(void)
+{
+    am_evo_def d = small_def(AM_REPR_CPPN);
+    char err[AM_ERR_MAX];
+    am_evo_set(&d, "workspace", "5", err, sizeof err);
+    d.population = 20;
+    d.evaluations = 200;
+    d.seed = 3;
+    return d;
+}
+
+/* what the rows of a run said, and the test's own count of bodies seen before: each body expressed
+ * again here, set down to its lowest layer, and compared cell for cell with every earlier one */
+#define SEEN_MAX 256
+typedef struct reuse_watch {
+    const am_evo* e;
+    uint64_t rows;                      /* a hash of every row's measurements */
+    long bodies, repeats;
+    uint8_t body[SEEN_MAX][5 * 5 * 5];
+} reuse_watch;
+static reuse_watch g_watch[2];
+static am_geno_work g_geno;
+static am_lattice g_lat;
+
+static void on_reuse_eval(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
+{
+    reuse_watch* w = (reuse_watch*)ctx;
+    const am_result* r = &ev->sim;
+    uint64_t h = am_hash_u64(w->rows, (uint64_t)ind->id);
+    const double v[10] = {r->fitness, r->travel, r->dx, r->dy, r->dz, r->sustained, r->dt, r->relax_dt, r->residual_speed, r->sim_seconds};
+    h = am_hash_bytes(h, v, sizeof v);
+    const long n[12] = {r->voxels, r->links, r->period_steps, r->relax_steps, r->move_steps, r->steps, r->relax_retried, r->diverged,
+                        r->settled, r->kinetic_resets, r->rebuilds, r->max_pairs};
+    h = am_hash_bytes(h, n, sizeof n);
+    h = am_hash_u64(h, r->hash);
+    for (int m = 0; m < AM_MAX_GENO_MATERIALS; m++) h = am_hash_u64(h, (uint64_t)ev->material_voxels[m]);
+    w->rows = h;
+    char err[AM_ERR_MAX];
+    if (ind->empty || am_evo_lattice(&w->e->def, &w->e->palette, &ind->genome, &g_geno, &g_lat, err, sizeof err) != AM_OK) return;
+    const int cells = 125, layer = 25;
+    uint8_t low[125];
+    int from = 0;
+    while (from < cells && !g_lat.cell[from]) from++;
+    from -= from % layer;
+    memset(low, 0, sizeof low);
+    memcpy(low, g_lat.cell + from, (size_t)(cells - from));
+    int seen = 0;
+    for (long k = 0; k < w->bodies && !seen; k++) seen = !memcmp(w->body[k], low, sizeof low);
+    if (seen) w->repeats++;
+    else if (w->bodies < SEEN_MAX) memcpy(w->body[w->bodies++], low, sizeof low);
+}
+
+static int watched_run(am_evo* e, reuse_watch* w, int workers, int limit)
+{
+    char err[AM_ERR_MAX];
+    am_evo_def d = repeat_def();
+    if (am_evo_init(e, &d, err, sizeof err) != AM_OK) return 0;
+    e->memo_limit = limit;
+    memset(w, 0, sizeof *w);
+    w->e = e;
+    const am_evo_hooks hooks = {NULL, on_reuse_eval, w};
+    while (!am_evo_done(e))
+        if (am_evo_generation(e, g_work, on(workers), &hooks, err, sizeof err) != AM_OK) return 0;
+    return 1;
+}
+
+static void test_reuse_gives_the_same_run(void)
+{
+    /* with the table and without: the same rows and run, and every repeated body taken from it */
+    CHECK(watched_run(&g_a, &g_watch[0], 2, 0), "run with reuse");
+    CHECK(watched_run(&g_b, &g_watch[1], 2, -1), "run without");
+    CHECK(am_evo_hash(&g_a) == am_evo_hash(&g_b) && g_watch[0].rows == g_watch[1].rows, "reuse changed the run");
+    CHECK(g_b.reused == 0 && g_b.reused_voxel_steps == 0, "no reuse: %ld reused", g_b.reused);
+    CHECK(g_watch[0].repeats >= 10 && g_a.reused == g_watch[0].repeats, "%ld reused, the rows repeat %ld bodies", g_a.reused,
+          g_watch[0].repeats);
+    CHECK(g_a.reused_voxel_steps > 0, "reused voxel-steps %g", g_a.reused_voxel_steps);
+    /* the steps simulated exclude the reused ones */
+    CHECK(g_a.last_steps <= g_b.last_steps, "steps %ld with reuse, %ld without", g_a.last_steps, g_b.last_steps);
+    /* any number of workers: the same reuse */
+    CHECK(watched_run(&g_c, &g_watch[1], 3, 0), "3 workers");
+    CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a) && g_c.reused == g_a.reused && g_watch[1].rows == g_watch[0].rows,
+          "3 workers: %ld reused against %ld", g_c.reused, g_a.reused);
+    CHECK(watched_run(&g_c, &g_watch[1], 0, 0), "no executor");
+    CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a) && g_c.reused == g_a.reused, "no executor: %ld reused against %ld", g_c.reused, g_a.reused);
+    /* a table of 2 slots: bodies pushed out are simulated again, with the same results */
+    CHECK(watched_run(&g_c, &g_watch[1], 2, 2), "2 slots");
+    CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a) && g_watch[1].rows == g_watch[0].rows && g_c.reused < g_a.reused,
+          "2 slots: %ld reused against %ld", g_c.reused, g_a.reused);
+    int used = 0;
+    for (int k = 0; k < AM_EVO_MEMO; k++) used += g_c.memo[k].key != 0;
+    CHECK(used == 2, "2 slots: %d filled", used);
+}
+
+static void test_reuse_survives_a_checkpoint(void)
+{
+    char err[AM_ERR_MAX];
+    long la = 0, lb = 0;
+    am_evo_def d = repeat_def();
+    CHECK(am_evo_init(&g_a, &d, err, sizeof err) == AM_OK && run_to_end(&g_a, 0), "uninterrupted");
+    CHECK(am_evo_init(&g_b, &d, err, sizeof err) == AM_OK, "%s", err);
+    for (int k = 0; k < 5; k++) CHECK(am_evo_generation(&g_b, g_work, NULL, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(g_b.reused > 0, "no reuse in the first half");
+    CHECK(am_evo_checkpoint_format(&g_b, g_text, sizeof g_text, &la, err, sizeof err) == AM_OK, "%s", err);
+    memcpy(g_text2, g_text, (size_t)la + 1);
+    CHECK(am_evo_checkpoint_parse(&g_c, g_text2, "ck", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(g_c.reused == g_b.reused && g_c.reused_voxel_steps == g_b.reused_voxel_steps, "reused %ld, was %ld", g_c.reused, g_b.reused);
+    int same = 1;
+    for (int k = 0; k < AM_EVO_MEMO; k++) {
+        const am_evo_memo *x = &g_b.memo[k], *y = &g_c.memo[k];
+        same = same && x->key == y->key && (!x->key || (x->used == y->used && !memcmp(x->cells, y->cells, sizeof x->cells) &&
+                                                        x->res.voxels == y->res.voxels && x->res.detail.sim.hash == y->res.detail.sim.hash &&
+                                                        !memcmp(&x->res.detail.sim.fitness, &y->res.detail.sim.fitness, sizeof(double)) &&
+                                                        x->res.detail.sim.relax_steps == y->res.detail.sim.relax_steps));
+    }
+    CHECK(same, "the table read back differs");
+    CHECK(run_to_end(&g_c, 0), "resumed");
+    CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a) && g_c.reused == g_a.reused, "resumed: %ld reused, uninterrupted %ld", g_c.reused,
+          g_a.reused);
+    CHECK(am_evo_checkpoint_format(&g_a, g_text, sizeof g_text, &la, err, sizeof err) == AM_OK &&
+              am_evo_checkpoint_format(&g_c, g_text2, sizeof g_text2, &lb, err, sizeof err) == AM_OK && la == lb &&
+              !memcmp(g_text, g_text2, (size_t)la),
+          "the resumed run's last checkpoint differs from the uninterrupted run's");
+    /* damage in a remembered body: refused in one line that names it */
+    static char src[AM_EVO_CHECKPOINT_MAX(AM_MAX_POPULATION)];
+    memcpy(src, g_text, (size_t)la + 1);
+    char* memo = strstr(src, "\nmemo 0 ");
+    CHECK(memo != NULL, "no remembered body 0 in the checkpoint");
+    if (!memo) return;
+    char line[128];
+    const char* eol = strchr(memo + 1, '\n');
+    snprintf(line, sizeof line, "%.*s", (int)(eol - memo - 1), memo + 1);
+    char* last = strrchr(line, ' ');
+    char bad[128];
+    snprintf(bad, sizeof bad, "%.*s 999", (int)(last - line), line);
+    CHECK(edit_checkpoint(src, line, bad) && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+              strstr(err, "ck.txt:") && strstr(err, "remembered body of 999 bytes"),
+          "bytes: %s", err);
+    snprintf(bad, sizeof bad, "memo %d%.100s", AM_EVO_MEMO, line + 6);
+    CHECK(edit_checkpoint(src, line, bad) && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+              strstr(err, "malformed 'memo' line"),
+          "slot: %s", err);
+    /* its last base64 line (the cells) changed: the key no longer matches */
+    const char* next = strstr(eol, "\nmemo ");
+    const char* end = next ? next : strstr(eol, "\nchecksum");
+    const char* lastm = end;
+    while (lastm > eol && strncmp(lastm, "\nm ", 3)) lastm--;
+    char mline[80], mbad[80];
+    const char* mend = strchr(lastm + 1, '\n');
+    snprintf(mline, sizeof mline, "%.*s", (int)(mend - lastm), lastm);
+    snprintf(mbad, sizeof mbad, "%s", mline);
+    mbad[3] = mbad[3] == 'A' ? 'B' : 'A';
+    CHECK(edit_checkpoint(src, mline, mbad) && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+              strstr(err, "remembered body 0"),
+          "cells: %s", err);
+    /* a base64 line dropped: the entry ends early */
+    CHECK(edit_checkpoint(src, mline, "") && am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE &&
+              strstr(err, "remembered body 0 ends early"),
+          "dropped: %s", err);
+    /* a base64 line with no entry before it */
+    CHECK(edit_checkpoint(src, "\nreused ", "\nm QUJD\nreused ") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "outside a remembered body"),
+          "stray m line: %s", err);
+    CHECK(edit_checkpoint(src, "\nreused ", "\nreused -1 0 ") &&
+              am_evo_checkpoint_parse(&g_b, g_text2, "ck.txt", err, sizeof err) == AM_ERR_PARSE && strstr(err, "malformed 'reused' line"),
+          "reused: %s", err);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -718,5 +897,7 @@ int main(int argc, char** argv)
     RUN(test_checkpoint_members_checked);
     RUN(test_checkpoint_bad_tokens_quoted);
     RUN(test_evaluations_are_reported);
+    RUN(test_reuse_gives_the_same_run);
+    RUN(test_reuse_survives_a_checkpoint);
     return SUMMARY();
 }

@@ -80,11 +80,13 @@ extern "C" {
 #define AM_MAX_WORKERS 1        /* evaluation workspaces (one per thread) */
 #define AM_EVO_BATCH 2          /* offspring made, evaluated and placed at a time (even, >= 2) */
 #define AM_EVO_WAVE_MAX 1       /* runs evolved in lockstep by am_evo_generations */
+#define AM_EVO_MEMO 2           /* bodies whose results a run remembers (am_evo.memo) */
 #else
 #define AM_MAX_POPULATION 256
 #define AM_MAX_WORKERS 16
 #define AM_EVO_BATCH AM_MAX_POPULATION /* a whole generation: one parallel map */
 #define AM_EVO_WAVE_MAX 16
+#define AM_EVO_MEMO 256
 #endif
 
 /* ---- XML and VXA files (include/amorph/io.h, include/amorph/io.h, docs/vxa.md) ---- */

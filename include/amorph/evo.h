@@ -153,6 +153,23 @@ typedef struct am_evo_result {
     am_evo_eval detail;       /* the measurements (generation, parents and placed are am_evo_batch_end's) */
 } am_evo_result;
 
+/* One body a run has simulated, and what it gave (am_evo.memo). The result of an evaluation is a
+ * function of the expressed body alone (the run's settings and palette are the run's), so an
+ * offspring whose body equals a remembered one, cell for cell, takes the remembered result instead
+ * of a simulation: the same bytes a simulation would give, so nothing of the run changes but its
+ * speed (docs/evolve.md, Same body, same result). */
+#define AM_EVO_MEMO_BYTES ((AM_MAX_CELLS + 3) / 4) /* a body, 2 bits a cell (materials 0..3) */
+typedef struct am_evo_memo {
+    long used;                /* the id of the last evaluation that stored or took it (a full table
+                               * gives the slot used longest ago to the next new body) */
+    uint64_t key;             /* am_evo_body_key of the body; 0: a free slot */
+    uint8_t cells[AM_EVO_MEMO_BYTES]; /* the body, 4 cells a byte, the first in the low bits */
+    am_evo_result res;        /* its result as the evaluation gave it */
+} am_evo_memo;
+
+/* the key of a body of n cells packed as am_evo_memo.cells: a hash of them, never 0 */
+uint64_t am_evo_body_key(const uint8_t* packed, int n);
+
 /* what a caller of am_evo_generation may watch; every member may be NULL */
 typedef struct am_evo_hooks {
     /* on the workers, before each evaluation of the generation's first batch: non-zero stops the
@@ -200,6 +217,12 @@ typedef struct am_evo {
     int order_voxels[AM_EVO_BATCH];           /* voxels of item i's body (the order's key) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
                                                  (the second's is in w[0].geno.other) */
+    /* same body, same result: the bodies simulated last and their results (in the checkpoint) */
+    am_evo_memo memo[AM_EVO_MEMO];
+    long reused;                              /* evaluations that took a remembered result (in the checkpoint) */
+    double reused_voxel_steps;                /* their voxel-steps, not simulated (in the checkpoint) */
+    int memo_limit;                           /* slots the table may fill: 0 all AM_EVO_MEMO, < 0 none (no
+                                                 reuse); a speed setting, not in the checkpoint */
     /* the generation under way (am_evo_gen_begin .. am_evo_gen_end; never in a checkpoint) */
     int gen_parent[AM_MAX_POPULATION];        /* offspring 2k, 2k + 1 come from these two members */
     int gen_b, gen_m;                         /* the current batch: individuals [gen_b, gen_b + gen_m) */
@@ -207,6 +230,11 @@ typedef struct am_evo {
     double gen_t0;                            /* am_port_now() at its start */
     long gen_steps, gen_voxel_steps;          /* its time steps so far */
     int gen_diverged, gen_empty, gen_unsettled; /* its diverged, empty and unsettled evaluations so far */
+    int reuse[AM_EVO_BATCH];                  /* the current batch's offspring j: -1 simulated, k >= 0 takes
+                                                 memo[k]'s result, -2 - i takes offspring i's */
+    uint64_t child_key[AM_EVO_BATCH];         /* its body's key (0: empty or not expressed) */
+    uint8_t packed[AM_EVO_MEMO_BYTES];        /* scratch: a body packed as memo's */
+    int gen_reused;                           /* the generation's evaluations that took a result */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */

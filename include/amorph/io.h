@@ -519,6 +519,10 @@ typedef struct am_evo_ckpt_reader {
     char where[96];             /* "fname (genome from line N)", the genome's file name in messages */
     int key_line[AM_EVO_KEY_MAX]; /* the line that set each key of the configuration, 0 if none */
     am_genome_reader gr;
+    int memo_slot;              /* the remembered body being read, -1 none */
+    int memo_line;              /* its 'memo' line */
+    long memo_have, memo_need;  /* its bytes read, and all of them */
+    uint8_t memo_res[224];      /* its result's numbers as read */
 } am_evo_ckpt_reader;
 void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
 /* one line of n characters, NUL-terminated at n (used as scratch: its spaces may be overwritten);
@@ -526,7 +530,9 @@ void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo
 am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz);
 am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz);
 /* the largest checkpoint text of a population of n */
-#define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L))
+#define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L) + AM_EVO_MEMO * AM_EVO_MEMO_TEXT_MAX)
+/* the text of one remembered body: its memo line, then base64 lines of 48 bytes (64 characters) */
+#define AM_EVO_MEMO_TEXT_MAX (80L + (224L + AM_EVO_MEMO_BYTES + 47L) / 48L * 68L)
 
 /* ---- statistics ---- */
 

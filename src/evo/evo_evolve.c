@@ -230,7 +230,7 @@ void am_evo_gen_begin(am_evo* e, double now)
     e->gen_b = 0;
     e->gen_m = 0;
     e->gen_steps = e->gen_voxel_steps = 0;
-    e->gen_diverged = e->gen_empty = e->gen_unsettled = 0;
+    e->gen_diverged = e->gen_empty = e->gen_unsettled = e->gen_reused = 0;
     for (int i = 0; i < n; i++) e->gen_parent[i] = i;
     if (e->generation > 0) {
         /* random pairs: a Fisher-Yates shuffle of the population */
@@ -239,6 +239,97 @@ void am_evo_gen_begin(am_evo* e, double now)
             int t = e->gen_parent[i];
             e->gen_parent[i] = e->gen_parent[j];
             e->gen_parent[j] = t;
+        }
+    }
+}
+
+/* ---- same body, same result ---- */
+
+_Static_assert(AM_MAX_GENO_MATERIALS <= 3, "a remembered body holds 2 bits a cell");
+
+uint64_t am_evo_body_key(const uint8_t* packed, int n)
+{
+    uint64_t h = am_hash_bytes(am_hash_u64(AM_HASH_INIT, (uint64_t)n), packed, (unsigned long)(n + 3) / 4);
+    return h ? h : 1;
+}
+
+/* the body of n cells in layers of `layer` cells, packed 4 a byte into out, lowered to the first
+ * layer: the simulator sets a body down on the floor from its lowest voxel (sim_model.c), so two
+ * bodies that differ only in their height in the workspace are one body to it */
+static void pack_body(const uint8_t* cell, int layer, int n, uint8_t* out)
+{
+    int from = 0;
+    while (from < n && !cell[from]) from++;
+    from -= from % layer;
+    memset(out, 0, (size_t)(n + 3) / 4);
+    for (int c = from; c < n; c++) out[(c - from) >> 2] |= (uint8_t)((cell[c] & 3) << 2 * ((c - from) & 3));
+}
+
+/* the slots the table may use now */
+static int memo_slots(const am_evo* e)
+{
+    return e->memo_limit < 0 ? 0 : e->memo_limit > 0 && e->memo_limit < AM_EVO_MEMO ? e->memo_limit : AM_EVO_MEMO;
+}
+
+/* the slot holding the body packed in e->packed (key, n cells), or -1 */
+static int memo_find(const am_evo* e, uint64_t key, int n)
+{
+    for (int k = 0; k < AM_EVO_MEMO; k++)
+        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, e->packed, (size_t)(n + 3) / 4)) return k;
+    return -1;
+}
+
+/* the body packed in e->packed and its result into the table: a free slot, else the one used
+ * longest ago (the lowest index on a tie) among the slots it may use */
+static void memo_store(am_evo* e, uint64_t key, int n, long id, const am_evo_result* r)
+{
+    const int slots = memo_slots(e);
+    int k = -1;
+    for (int i = 0; i < slots && k < 0; i++)
+        if (e->memo[i].key == 0) k = i;
+    if (k < 0) {
+        k = 0;
+        for (int i = 1; i < slots; i++)
+            if (e->memo[i].used < e->memo[k].used) k = i;
+    }
+    am_evo_memo* m = &e->memo[k];
+    m->key = key;
+    m->used = id;
+    memcpy(m->cells, e->packed, (size_t)(n + 3) / 4);
+    memset(m->cells + (n + 3) / 4, 0, sizeof m->cells - (size_t)(n + 3) / 4);
+    m->res = *r;
+    m->res.skipped = 0;
+}
+
+/* whether offspring j of the batch takes a result instead of a simulation (e->reuse[j], and its
+ * body's key in e->child_key[j]): a body the table holds, or one an earlier offspring of the batch
+ * has. w->cell holds its body when `expressed` (am_genome_express succeeded). Nothing of the table
+ * changes here, so a cancelled batch leaves the run as it was. */
+static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const am_express_def* ex)
+{
+    const am_genome* g = &e->child[j].genome;
+    const int n = g->nx * g->ny * g->nz;
+    char msg[AM_ERR_MAX];
+    e->reuse[j] = -1;
+    e->child_key[j] = 0;
+    if (!expressed || w->voxels == 0 || memo_slots(e) == 0) return;
+    pack_body(w->cell, g->nx * g->ny, n, e->packed);
+    const uint64_t key = am_evo_body_key(e->packed, n);
+    e->child_key[j] = key;
+    int k = memo_find(e, key, n);
+    if (k >= 0) {
+        e->reuse[j] = k;
+        return;
+    }
+    for (int i = 0; i < j; i++) {
+        if (e->child_key[i] != key || e->reuse[i] != -1) continue;
+        /* a key in common: the bodies compared cell for cell */
+        if (am_genome_express(&e->child[i].genome, ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
+        uint8_t* other = e->body; /* free until crowding */
+        pack_body(w->cell, g->nx * g->ny, n, other);
+        if (!memcmp(other, e->packed, (size_t)(n + 3) / 4)) {
+            e->reuse[j] = -2 - i;
+            return;
         }
     }
 }
@@ -275,7 +366,10 @@ am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m_out, char* err, 
     char msg[AM_ERR_MAX];
     for (int i = 0; i < m; i++) {
         e->order[i] = i;
-        voxels[i] = am_genome_express(&e->child[i].genome, &ex, w, NULL, msg, sizeof msg) == AM_OK ? w->voxels : 0;
+        const int expressed = am_genome_express(&e->child[i].genome, &ex, w, NULL, msg, sizeof msg) == AM_OK;
+        voxels[i] = expressed ? w->voxels : 0;
+        mark_reuse(e, i, expressed, w, &ex);
+        if (e->reuse[i] != -1) voxels[i] = 0; /* not simulated: last in the order */
     }
     for (int i = 1; i < m; i++) {
         int k = e->order[i], j = i;
@@ -294,7 +388,12 @@ am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m_out, char* err, 
 
 void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r)
 {
-    evaluate(&e->def, &e->palette, &e->child[e->order[i]].genome, w, NULL, r);
+    const int j = e->order[i];
+    if (e->reuse[j] != -1) {
+        memset(r, 0, sizeof *r); /* its result is taken in am_evo_batch_end */
+        return;
+    }
+    evaluate(&e->def, &e->palette, &e->child[j].genome, w, NULL, r);
 }
 
 int am_evo_batch_cancellable(const am_evo* e)
@@ -313,20 +412,31 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
             e->gen_m = 0;
             return am_fail(err, errsz, AM_ERR_CANCELLED, "interrupted");
         }
-    for (int i = 0; i < m; i++) {
-        const int j = e->order[i];
-        take_result(&e->child[j], &res[i]);
-        e->eval[j] = res[i].detail;
+    int item[AM_EVO_BATCH]; /* offspring j is map item item[j] */
+    for (int i = 0; i < m; i++) item[e->order[i]] = i;
+    for (int j = 0; j < m; j++) {
+        /* a remembered body's result, an earlier offspring's of the same body, or its own */
+        const int k = e->reuse[j];
+        const am_evo_result* r = k >= 0 ? &e->memo[k].res : k <= -2 ? &res[item[-2 - k]] : &res[item[j]];
+        take_result(&e->child[j], r);
+        e->eval[j] = r->detail;
     }
     for (int j = 0; j < m; j++) {
         am_evo_ind* c = &e->child[j];
         c->id = e->evaluations + b + j;
+        if (e->reuse[j] != -1) {
+            e->reused++;
+            e->gen_reused++;
+            e->reused_voxel_steps += (double)c->steps * (double)c->voxels;
+        }
         e->history = ind_hash(e->history, c);
         e->gen_diverged += c->diverged;
         e->gen_empty += c->empty;
         e->gen_unsettled += !c->diverged && !c->empty && !e->eval[j].sim.settled;
-        e->gen_steps += c->steps;
-        e->gen_voxel_steps += c->steps * c->voxels;
+        if (e->reuse[j] == -1) { /* simulated */
+            e->gen_steps += c->steps;
+            e->gen_voxel_steps += c->steps * c->voxels;
+        }
         if (!e->has_best || better(c, &e->best)) {
             e->best = *c;
             e->has_best = 1;
@@ -338,6 +448,18 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         ev->parent[0] = e->generation == 0 ? -1 : e->pop[parent[b + (j & ~1)]].id;
         ev->parent[1] = e->generation == 0 ? -1 : e->pop[parent[b + (j | 1)]].id;
         ev->placed = 1; /* generation 0; crowding decides for the others */
+    }
+    /* the table: the remembered bodies taken now count as used now, then the simulated bodies go in */
+    for (int j = 0; j < m; j++)
+        if (e->reuse[j] >= 0) e->memo[e->reuse[j]].used = e->child[j].id;
+    am_express_def ex = express_def(&e->def, &e->palette);
+    char msg[AM_ERR_MAX];
+    for (int j = 0; j < m; j++) {
+        const am_genome* g = &e->child[j].genome;
+        const int n = g->nx * g->ny * g->nz;
+        if (e->reuse[j] != -1 || e->child_key[j] == 0 || am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
+        pack_body(w->cell, g->nx * g->ny, n, e->packed);
+        memo_store(e, e->child_key[j], n, e->child[j].id, &res[item[j]]);
     }
     if (e->generation == 0) {
         for (int j = 0; j < m; j++) e->pop[b + j] = e->child[j];

@@ -15,6 +15,10 @@
  *   individual pop|best INDEX FITNESS VOXELS DIVERGED EMPTY STEPS STATEHASH ID
  *   amorph-genome 1 ... end    (the individual's genome, am_genome_format)
  *   ...
+ *   reused N VOXELSTEPS        (evaluations that took a remembered result; VOXELSTEPS as HEX bits)
+ *   memo SLOT USED KEY BYTES   (a remembered body, am_evo.memo[SLOT]: BYTES bytes follow, its
+ *   m BASE64 ...                result's 28 numbers of 8 bytes little-endian, then its packed cells,
+ *                               in base64 lines of up to 48 bytes)
  *   checksum HEX               (am_hash_bytes of every byte before this line)
  */
 #include "amorph/io.h"
@@ -24,7 +28,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#define CHECKPOINT_VERSION 2 /* 2: individuals carry the id of their evaluation; 1 (read): without */
+#define CHECKPOINT_VERSION 3 /* 3: the remembered bodies (memo, reused); 2 (read): individuals carry
+                                the id of their evaluation; 1 (read): without */
 
 static unsigned long long dbits(double v)
 {
@@ -90,6 +95,131 @@ static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* i
     am_genome_write(&it->genome, s, NULL, 0); /* only the output can fail now: seen at the end */
 }
 
+/* ---- remembered bodies: a result as 28 numbers of 8 bytes, little-endian ---- */
+
+#define MEMO_NUMBERS 28
+#define MEMO_RESULT_BYTES (8 * MEMO_NUMBERS)
+#define MEMO_LINE_BYTES 48 /* bytes of one base64 line: 64 characters */
+
+static const char b64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+
+/* the result's numbers in their order: integers as two's complement, doubles as bit patterns */
+static void memo_numbers(const am_evo_result* r, uint64_t v[MEMO_NUMBERS])
+{
+    const am_result* m = &r->detail.sim;
+    int k = 0;
+    v[k++] = (uint64_t)(int64_t)r->voxels;
+    v[k++] = (uint64_t)(int64_t)r->empty;
+    for (int i = 0; i < 3; i++) v[k++] = (uint64_t)(int64_t)r->detail.material_voxels[i];
+    v[k++] = dbits(m->fitness);
+    v[k++] = dbits(m->travel);
+    v[k++] = dbits(m->dx);
+    v[k++] = dbits(m->dy);
+    v[k++] = dbits(m->dz);
+    v[k++] = dbits(m->sustained);
+    v[k++] = (uint64_t)(int64_t)m->voxels;
+    v[k++] = (uint64_t)(int64_t)m->links;
+    v[k++] = dbits(m->dt);
+    v[k++] = (uint64_t)(int64_t)m->period_steps;
+    v[k++] = (uint64_t)(int64_t)m->relax_steps;
+    v[k++] = (uint64_t)(int64_t)m->move_steps;
+    v[k++] = (uint64_t)(int64_t)m->steps;
+    v[k++] = dbits(m->relax_dt);
+    v[k++] = (uint64_t)(int64_t)m->relax_retried;
+    v[k++] = (uint64_t)(int64_t)m->diverged;
+    v[k++] = (uint64_t)(int64_t)m->settled;
+    v[k++] = dbits(m->residual_speed);
+    v[k++] = (uint64_t)(int64_t)m->kinetic_resets;
+    v[k++] = dbits(m->sim_seconds);
+    v[k++] = (uint64_t)(int64_t)m->rebuilds;
+    v[k++] = (uint64_t)(int64_t)m->max_pairs;
+    v[k++] = m->hash;
+}
+
+/* the numbers back into *r; 0 when one is out of its range (a damaged checkpoint) */
+static int memo_result(const uint64_t v[MEMO_NUMBERS], am_evo_result* r)
+{
+    am_result* m = &r->detail.sim;
+    int ok = 1, k = 0;
+    memset(r, 0, sizeof *r);
+    r->detail.parent[0] = r->detail.parent[1] = -1;
+#define INT_IN(dst, lo, hi)                                                                                           \
+    do {                                                                                                              \
+        const int64_t x_ = (int64_t)v[k++];                                                                           \
+        ok = ok && x_ >= (lo) && x_ <= (hi);                                                                          \
+        if (ok) dst = x_;                                                                                             \
+    } while (0)
+#define REAL_IN(dst)                                                                                                  \
+    do {                                                                                                              \
+        const double x_ = bits_d(v[k++]);                                                                             \
+        ok = ok && isfinite(x_);                                                                                      \
+        if (ok) dst = x_;                                                                                             \
+    } while (0)
+    INT_IN(r->voxels, 0, AM_MAX_CELLS);
+    INT_IN(r->empty, 0, 1);
+    for (int i = 0; i < 3; i++) INT_IN(r->detail.material_voxels[i], 0, AM_MAX_CELLS);
+    REAL_IN(m->fitness);
+    REAL_IN(m->travel);
+    REAL_IN(m->dx);
+    REAL_IN(m->dy);
+    REAL_IN(m->dz);
+    REAL_IN(m->sustained);
+    INT_IN(m->voxels, 0, AM_MAX_CELLS);
+    INT_IN(m->links, 0, AM_MAX_LINKS);
+    REAL_IN(m->dt);
+    INT_IN(m->period_steps, 0, 2000000000L);
+    INT_IN(m->relax_steps, 0, 2000000000L);
+    INT_IN(m->move_steps, 0, 2000000000L);
+    INT_IN(m->steps, 0, 2000000000L);
+    REAL_IN(m->relax_dt);
+    INT_IN(m->relax_retried, 0, 1);
+    INT_IN(m->diverged, 0, 1);
+    INT_IN(m->settled, 0, 1);
+    REAL_IN(m->residual_speed);
+    INT_IN(m->kinetic_resets, 0, 2000000000L);
+    REAL_IN(m->sim_seconds);
+    INT_IN(m->rebuilds, 0, 2000000000L);
+    INT_IN(m->max_pairs, 0, 2000000000L);
+    m->hash = v[k++];
+#undef INT_IN
+#undef REAL_IN
+    return ok;
+}
+
+/* byte i of slot k's text: its result's numbers, then its packed cells */
+static uint8_t memo_byte(const uint64_t v[MEMO_NUMBERS], const am_evo_memo* m, long i)
+{
+    return i < MEMO_RESULT_BYTES ? (uint8_t)(v[i / 8] >> 8 * (i % 8)) : m->cells[i - MEMO_RESULT_BYTES];
+}
+
+/* the bytes of a remembered body of a run of n cells */
+static long memo_bytes(int n) { return MEMO_RESULT_BYTES + (n + 3) / 4; }
+
+static void put_memo(am_text* s, const am_evo* e, int k)
+{
+    const am_evo_memo* m = &e->memo[k];
+    const long bytes = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz);
+    uint64_t v[MEMO_NUMBERS];
+    memo_numbers(&m->res, v);
+    am_text_put(s, "memo %d %ld %016llx %ld\n", k, m->used, (unsigned long long)m->key, bytes);
+    for (long at = 0; at < bytes; at += MEMO_LINE_BYTES) {
+        char line[2 + 4 * MEMO_LINE_BYTES / 3 + 2];
+        int len = 0;
+        const long end = at + MEMO_LINE_BYTES < bytes ? at + MEMO_LINE_BYTES : bytes;
+        for (long i = at; i < end; i += 3) {
+            const long left = end - i;
+            const unsigned t = (unsigned)memo_byte(v, m, i) << 16 | (left > 1 ? (unsigned)memo_byte(v, m, i + 1) << 8 : 0u) |
+                               (left > 2 ? (unsigned)memo_byte(v, m, i + 2) : 0u);
+            line[len++] = b64[t >> 18 & 63];
+            line[len++] = b64[t >> 12 & 63];
+            line[len++] = left > 1 ? b64[t >> 6 & 63] : '=';
+            line[len++] = left > 2 ? b64[t & 63] : '=';
+        }
+        line[len] = 0;
+        am_text_put(s, "m %s\n", line);
+    }
+}
+
 am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz)
 {
     char piece[320]; /* longer than any one piece the writers put */
@@ -110,6 +240,9 @@ am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int 
     for (int i = 0; i < e->def.population; i++) put_ind(&s, "pop", i, &e->pop[i], err, errsz, &st);
     if (e->has_best) put_ind(&s, "best", 0, &e->best, err, errsz, &st);
     if (st != AM_OK) return st;
+    am_text_put(&s, "reused %ld %016llx\n", e->reused, dbits(e->reused_voxel_steps));
+    for (int k = 0; k < AM_EVO_MEMO; k++)
+        if (e->memo[k].key) put_memo(&s, e, k);
     if (am_text_flush(&s) == AM_OK) am_text_put(out, "checksum %016llx\n", (unsigned long long)pass.hash);
     if (out->full == 1) return am_fail(err, errsz, AM_ERR_CAPACITY, "checkpoint needs more than the %ld bytes given", out->cap);
     if (out->full || s.full) return am_fail(err, errsz, AM_ERR_IO, "checkpoint: the output failed");
@@ -257,6 +390,7 @@ void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo
     r->last_end = sc->last_end;
     memset(e, 0, sizeof *e);
     e->def = am_stored_evo(); /* a key the checkpoint does not name: as runs made before it had it */
+    r->memo_slot = -1;
 }
 
 /* an "individual" line (tokens tok): its numbers, then its genome from the next line */
@@ -318,6 +452,89 @@ static am_status read_genome_line(am_evo_ckpt_reader* r, const char* text, long 
     if (am_genome_check(g, cerr, sizeof cerr) != AM_OK) BAD("%s:%d: %s", r->fname, r->first, cerr);
     if (r->ind_pop) r->pop_seen++;
     return AM_OK;
+}
+
+static int b64_value(char c)
+{
+    const char* p = c ? strchr(b64, c) : NULL;
+    return p ? (int)(p - b64) : -1;
+}
+
+/* a remembered body's numbers and cells, read: checked against the run */
+static am_status memo_done(am_evo_ckpt_reader* r, char* err, int errsz)
+{
+    am_evo* e = r->e;
+    am_evo_memo* m = &e->memo[r->memo_slot];
+    const int n = e->def.geno.nx * e->def.geno.ny * e->def.geno.nz;
+    uint64_t v[MEMO_NUMBERS];
+    for (int i = 0; i < MEMO_NUMBERS; i++) {
+        v[i] = 0;
+        for (int b = 7; b >= 0; b--) v[i] = v[i] << 8 | r->memo_res[8 * i + b];
+    }
+    if (!memo_result(v, &m->res)) BAD("%s:%d: remembered body %d: a number of its result out of range", r->fname, r->memo_line, r->memo_slot);
+    for (int c = 0; c < n; c++)
+        if ((m->cells[c >> 2] >> 2 * (c & 3) & 3) > e->def.geno.materials)
+            BAD("%s:%d: remembered body %d: a cell beyond the run's %d materials", r->fname, r->memo_line, r->memo_slot, e->def.geno.materials);
+    for (int c = n; c < 4 * ((n + 3) / 4); c++)
+        if (m->cells[c >> 2] >> 2 * (c & 3) & 3) BAD("%s:%d: remembered body %d: bits past its last cell", r->fname, r->memo_line, r->memo_slot);
+    if (am_evo_body_key(m->cells, n) != m->key) BAD("%s:%d: remembered body %d: its key is not its cells'", r->fname, r->memo_line, r->memo_slot);
+    r->memo_slot = -1;
+    return AM_OK;
+}
+
+/* the "reused", "memo" and "m" lines (tokens tok) */
+static am_status read_memo(am_evo_ckpt_reader* r, char** tok, int ntok, char* err, int errsz)
+{
+    am_evo* e = r->e;
+    const char* fname = r->fname;
+    if (strcmp(tok[0], "reused") == 0) {
+        uint64_t vs;
+        if (ntok != 3 || !to_long(tok[1], 0, LONG_MAX, &e->reused) || !hex64(tok[2], &vs) || !isfinite(bits_d(vs)) || bits_d(vs) < 0)
+            BAD("%s:%d: malformed 'reused' line", fname, r->line);
+        e->reused_voxel_steps = bits_d(vs);
+        return AM_OK;
+    }
+    if (strcmp(tok[0], "memo") == 0) {
+        long slot, used, bytes;
+        uint64_t key;
+        const long want = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz);
+        if (r->memo_slot >= 0) BAD("%s:%d: remembered body %d ends early", fname, r->line, r->memo_slot);
+        if (ntok != 5 || !to_long(tok[1], 0, AM_EVO_MEMO - 1, &slot) || !to_long(tok[2], -1, LONG_MAX, &used) || !hex64(tok[3], &key) ||
+            key == 0 || !to_long(tok[4], 0, LONG_MAX, &bytes))
+            BAD("%s:%d: malformed 'memo' line (slots 0 to %d)", fname, r->line, AM_EVO_MEMO - 1);
+        if (bytes != want) BAD("%s:%d: remembered body of %ld bytes: the run's take %ld", fname, r->line, bytes, want);
+        if (e->memo[slot].key) BAD("%s:%d: remembered body %ld given twice", fname, r->line, slot);
+        e->memo[slot].key = key;
+        e->memo[slot].used = used;
+        r->memo_slot = (int)slot;
+        r->memo_line = r->line;
+        r->memo_have = 0;
+        r->memo_need = bytes;
+        return AM_OK;
+    }
+    /* "m": the next bytes of the remembered body */
+    if (r->memo_slot < 0 || ntok != 2) BAD("%s:%d: an 'm' line outside a remembered body", fname, r->line);
+    const char* t = tok[1];
+    const long len = (long)strlen(t);
+    if (len % 4 || len > 4 * MEMO_LINE_BYTES / 3) BAD("%s:%d: malformed base64", fname, r->line);
+    am_evo_memo* m = &e->memo[r->memo_slot];
+    for (long i = 0; i < len; i += 4) {
+        int d[4], pad = 0;
+        for (int q = 0; q < 4; q++) {
+            d[q] = b64_value(t[i + q]);
+            if (t[i + q] == '=' && q >= 2 && i + 4 == len) d[q] = 0, pad++;
+            else if (d[q] < 0 || pad) BAD("%s:%d: malformed base64", fname, r->line);
+        }
+        const unsigned v = (unsigned)d[0] << 18 | (unsigned)d[1] << 12 | (unsigned)d[2] << 6 | (unsigned)d[3];
+        for (int q = 0; q < 3 - pad; q++) {
+            if (r->memo_have >= r->memo_need) BAD("%s:%d: remembered body %d longer than its %ld bytes", fname, r->line, r->memo_slot, r->memo_need);
+            const uint8_t byte = (uint8_t)(v >> (16 - 8 * q));
+            if (r->memo_have < MEMO_RESULT_BYTES) r->memo_res[r->memo_have] = byte;
+            else m->cells[r->memo_have - MEMO_RESULT_BYTES] = byte;
+            r->memo_have++;
+        }
+    }
+    return r->memo_have == r->memo_need ? memo_done(r, err, errsz) : AM_OK;
 }
 
 am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz)
@@ -399,6 +616,8 @@ am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n,
         r->seen_last = 1;
     } else if (strcmp(tok[0], "individual") == 0) {
         return read_ind(r, tok, ntok, err, errsz);
+    } else if (strcmp(tok[0], "reused") == 0 || strcmp(tok[0], "memo") == 0 || strcmp(tok[0], "m") == 0) {
+        return read_memo(r, tok, ntok, err, errsz);
     } else {
         BAD("%s:%d: unexpected line '%s'", fname, r->line, am_quote(qb, sizeof qb, tok[0], -1));
     }
@@ -413,6 +632,7 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
     if (read < 1) BAD("%s:1: not an amorph checkpoint", fname);
     if (read < 2) BAD("%s:%d: expected config-begin", fname, read);
     if (r->in_genome) BAD("%s:%d: genome of individual %ld not closed by 'end'", fname, read, r->idx);
+    if (r->memo_slot >= 0) BAD("%s:%d: remembered body %d ends early", fname, read, r->memo_slot);
     if (!r->seen_rng || !r->seen_gen || !r->seen_evals || !r->seen_hist || !r->seen_last)
         BAD("%s:%d: checkpoint misses its rng, generation, evaluations, history or last line", fname, read);
     for (int i = 0; i < r->e->def.population; i++)
