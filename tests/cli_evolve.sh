@@ -246,6 +246,23 @@ if [ "$want" = "$got" ] && [ "$(echo "$want" | cut -d' ' -f6)" -gt 0 ] && [ "$(e
 else ko "step account: summary '$got', evals.csv by awk '$want' (the test wants repeats and unsettled bodies)"; fi
 if grep -q '"steps_relax": [0-9]' "$TMPD/acct/summary.json" && grep -q '"repeat_share": ' "$TMPD/acct/summary.json"; then ok
 else ko "summary.json lacks the step account: $(head -c 300 "$TMPD/acct/summary.json")"; fi
+# same body, same result: repeated bodies take the result they gave before (at most the repeats
+# the final state hashes show: bodies set down at another height are one body), and --no-reuse,
+# which simulates every one, changes nothing but the count
+reused=$(sumval "$TMPD/acct" evals_reused)
+if [ "$reused" -gt 0 ] && [ "$reused" -le "$(sumval "$TMPD/acct" evals_repeat)" ] &&
+   awk -v s="$(sumval "$TMPD/acct" reused_share)" 'BEGIN { exit !(s > 0 && s <= 1) }'; then ok
+else ko "evals_reused '$reused', reused_share '$(sumval "$TMPD/acct" reused_share)' (evals_repeat $(sumval "$TMPD/acct" evals_repeat))"; fi
+expect_ok $E --out "$TMPD/acct0" --workspace 4 --evaluations 60 --seed 1 --gmx_points 16 --no-reuse
+if cmp -s "$TMPD/acct/evals.csv" "$TMPD/acct0/evals.csv" && [ "$(nowall "$TMPD/acct/log.csv")" = "$(nowall "$TMPD/acct0/log.csv")" ] &&
+   cmp -s "$TMPD/acct/best.genome" "$TMPD/acct0/best.genome" && [ "$(sumval "$TMPD/acct0" evals_reused)" = 0 ] &&
+   [ "$(sumval "$TMPD/acct0" run_hash)" = "$(sumval "$TMPD/acct" run_hash)" ]; then ok
+else ko "--no-reuse: evals.csv, log or best differ, or evals_reused '$(sumval "$TMPD/acct0" evals_reused)' is not 0"; fi
+# resumed with reuse after a start without it: the table fills from there, the results the same
+expect_ok $E --out "$TMPD/acct1" --workspace 4 --evaluations 30 --seed 1 --gmx_points 16 --no-reuse
+expect_ok "$AMORPH" evolve --resume "$TMPD/acct1" --evaluations 60 --quiet --no-pictures
+if cmp -s "$TMPD/acct/evals.csv" "$TMPD/acct1/evals.csv" && [ "$(sumval "$TMPD/acct1" evals_reused)" -lt "$reused" ]; then ok
+else ko "--no-reuse then reuse: evals.csv differs or evals_reused $(sumval "$TMPD/acct1" evals_reused) not below $reused"; fi
 
 # --- interruptions: Ctrl-C (SIGINT), SIGTERM and kill -9, then --resume ---
 # AMORPH_TEST_INTERRUPT=SIG:N makes the run send itself SIG when it is about to start evaluation

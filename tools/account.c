@@ -140,3 +140,9 @@ void account_put(tool_rec* q, const step_account* a)
     if (a->tracked < simulated) tool_rec_int(q, "evals_repeat_tracked", a->tracked);
 #endif
 }
+
+void account_put_reuse(tool_rec* q, const step_account* a, const am_evo* e)
+{
+    tool_rec_int(q, "evals_reused", e->reused);
+    if (a) tool_rec_num(q, "reused_share", share(e->reused_voxel_steps, a->voxel_steps));
+}

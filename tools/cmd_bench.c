@@ -264,6 +264,7 @@ static int bench_evolve(tool_ctx* c, long evaluations, int threads)
             tool_rec q;
             tool_rec_begin_tight(&q, &o.text);
             account_put(&q, &acct);
+            account_put_reuse(&q, &acct, &c->evo);
             tool_rec_end(&q);
             if (tool_out_close(&o, 1)) return 1;
         }

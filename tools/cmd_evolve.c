@@ -24,6 +24,8 @@ static const char evolve_help[] =
     "  --quiet            no progress output\n"
     "  --no-pictures      no filmstrip, plot or viewer page at the end\n"
     "  --json             the final summary as one JSON line (summary.json holds the same)\n"
+    "  --no-reuse         simulate every body, also one the run has simulated before (the results\n"
+    "                     are the same either way: docs/evolve.md, Same body, same result)\n"
     "The run folder holds config.txt, log.csv, evals.csv (a row per evaluation), best.genome,\n"
     "best.lattice, checkpoint.txt, lock (one process at a time), and at the end summary.txt,\n"
     "summary.json, best.png (filmstrip), best.html (viewer) and fitness.svg.\n"
@@ -405,10 +407,11 @@ int open_start(am_evo* e, const am_evo_def* d, const char* dir)
 }
 
 /* the run opened in c->evo (status rc of its opening) run to its end in dir, then its pictures;
- * its lock released. 0, 1, 2 or 130 */
-static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictures)
+ * its lock released; reuse 0: every body simulated (am_evo.memo_limit). 0, 1, 2 or 130 */
+static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictures, int reuse)
 {
     if (rc == 0) {
+        if (!reuse) c->evo.memo_limit = -1;
         run_slot s;
         memset(&s, 0, sizeof s);
         s.e = &c->evo;
@@ -515,6 +518,7 @@ static int print_result(const am_evo* e, const char* dir, double wall, int json)
 int cmd_evolve(tool_ctx* c, int argc, char** argv)
 {
     evo_opts o;
+    int reuse = 1;
     memset(&o, 0, sizeof o);
     o.pictures = 1;
     for (int i = 1; i < argc; i++) {
@@ -525,6 +529,10 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
         if (!strcmp(argv[i], "--help-config")) {
             help_config();
             return 0;
+        }
+        if (!strcmp(argv[i], "--no-reuse")) {
+            reuse = 0;
+            continue;
         }
         int r = parse_common(argc, argv, &i, &o, "evolve");
         if (r == 2) return 2;
@@ -553,7 +561,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
     else if (default_out(dir, sizeof dir)) return 2;
     am_port_catch_interrupt();
     const double t0 = am_port_now();
-    int rc = run_opened(c, o.resume ? open_resume(&c->evo, dir, &o, NULL) : open_start(&c->evo, &d, dir), dir, o.quiet, o.pictures);
+    int rc = run_opened(c, o.resume ? open_resume(&c->evo, dir, &o, NULL) : open_start(&c->evo, &d, dir), dir, o.quiet, o.pictures, reuse);
     if (rc == 0) rc = print_result(&c->evo, dir, am_port_now() - t0, o.json);
     return rc;
 }

@@ -109,6 +109,9 @@ void account_add(step_account* a, long voxels, int empty, int diverged, int sett
 int account_read_evals(step_account* a, const char* dir);
 /* the account's summary fields */
 void account_put(tool_rec* q, const step_account* a);
+/* the evaluations that took a remembered result instead of a simulation (am_evo.reused) and their
+ * share of the account's voxel-steps (a may be NULL: the count alone) */
+void account_put_reuse(tool_rec* q, const step_account* a, const am_evo* e);
 /* a run's summary fields (summary.txt, summary.json and the final output); acct may be NULL */
 void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall, const step_account* acct);
 /* a run's summary.txt and summary.json */

@@ -105,6 +105,7 @@ void put_summary(tool_rec* q, const am_evo* e, const char* dir, double wall, con
     tool_rec_num(q, "final_median", e->last.median);
     tool_rec_hex(q, "run_hash", am_evo_hash(e));
     if (acct) account_put(q, acct);
+    account_put_reuse(q, acct, e);
     tool_rec_num(q, "wall_s", wall);
     char build[64];
     snprintf(build, sizeof build, "%s %s", AM_REAL_NAME, AM_PROFILE_NAME);
