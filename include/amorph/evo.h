@@ -216,7 +216,8 @@ typedef struct am_evo {
                                                  map evaluates child[order[i]] (largest body first) */
     int order_voxels[AM_EVO_BATCH];           /* voxels of item i's body (the order's key) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
-                                                 (the second's is in w[0].geno.other) */
+                                                 (the second's is in w[0].geno.other); before
+                                                 crowding, bodies packed as memo's */
     /* same body, same result: the bodies simulated last and their results (in the checkpoint) */
     am_evo_memo memo[AM_EVO_MEMO];
     long reused;                              /* evaluations that took a remembered result (in the checkpoint) */
@@ -233,7 +234,6 @@ typedef struct am_evo {
     int reuse[AM_EVO_BATCH];                  /* the current batch's offspring j: -1 simulated, k >= 0 takes
                                                  memo[k]'s result, -2 - i takes offspring i's */
     uint64_t child_key[AM_EVO_BATCH];         /* its body's key (0: empty or not expressed) */
-    uint8_t packed[AM_EVO_MEMO_BYTES];        /* scratch: a body packed as memo's */
     int gen_reused;                           /* the generation's evaluations that took a result */
 } am_evo;
 

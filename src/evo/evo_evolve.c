@@ -246,6 +246,12 @@ void am_evo_gen_begin(am_evo* e, double now)
 /* ---- same body, same result ---- */
 
 _Static_assert(AM_MAX_GENO_MATERIALS <= 3, "a remembered body holds 2 bits a cell");
+_Static_assert(AM_MAX_CELLS >= 2 * AM_EVO_MEMO_BYTES, "e->body holds two packed bodies");
+
+/* scratch for packed bodies: e->body, free outside crowding, holds the body looked up (its first
+ * AM_EVO_MEMO_BYTES) and one it is compared with (the next) */
+#define PACKED(e) ((e)->body)
+#define PACKED_OTHER(e) ((e)->body + AM_EVO_MEMO_BYTES)
 
 uint64_t am_evo_body_key(const uint8_t* packed, int n)
 {
@@ -271,15 +277,15 @@ static int memo_slots(const am_evo* e)
     return e->memo_limit < 0 ? 0 : e->memo_limit > 0 && e->memo_limit < AM_EVO_MEMO ? e->memo_limit : AM_EVO_MEMO;
 }
 
-/* the slot holding the body packed in e->packed (key, n cells), or -1 */
+/* the slot holding the body packed in PACKED(e) (key, n cells), or -1 */
 static int memo_find(const am_evo* e, uint64_t key, int n)
 {
     for (int k = 0; k < AM_EVO_MEMO; k++)
-        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, e->packed, (size_t)(n + 3) / 4)) return k;
+        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, PACKED(e), (size_t)(n + 3) / 4)) return k;
     return -1;
 }
 
-/* the body packed in e->packed and its result into the table: a free slot, else the one used
+/* the body packed in PACKED(e) and its result into the table: a free slot, else the one used
  * longest ago (the lowest index on a tie) among the slots it may use */
 static void memo_store(am_evo* e, uint64_t key, int n, long id, const am_evo_result* r)
 {
@@ -295,7 +301,7 @@ static void memo_store(am_evo* e, uint64_t key, int n, long id, const am_evo_res
     am_evo_memo* m = &e->memo[k];
     m->key = key;
     m->used = id;
-    memcpy(m->cells, e->packed, (size_t)(n + 3) / 4);
+    memcpy(m->cells, PACKED(e), (size_t)(n + 3) / 4);
     memset(m->cells + (n + 3) / 4, 0, sizeof m->cells - (size_t)(n + 3) / 4);
     m->res = *r;
     m->res.skipped = 0;
@@ -313,8 +319,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
     e->reuse[j] = -1;
     e->child_key[j] = 0;
     if (!expressed || w->voxels == 0 || memo_slots(e) == 0) return;
-    pack_body(w->cell, g->nx * g->ny, n, e->packed);
-    const uint64_t key = am_evo_body_key(e->packed, n);
+    pack_body(w->cell, g->nx * g->ny, n, PACKED(e));
+    const uint64_t key = am_evo_body_key(PACKED(e), n);
     e->child_key[j] = key;
     int k = memo_find(e, key, n);
     if (k >= 0) {
@@ -325,9 +331,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
         if (e->child_key[i] != key || e->reuse[i] != -1) continue;
         /* a key in common: the bodies compared cell for cell */
         if (am_genome_express(&e->child[i].genome, ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        uint8_t* other = e->body; /* free until crowding */
-        pack_body(w->cell, g->nx * g->ny, n, other);
-        if (!memcmp(other, e->packed, (size_t)(n + 3) / 4)) {
+        pack_body(w->cell, g->nx * g->ny, n, PACKED_OTHER(e));
+        if (!memcmp(PACKED_OTHER(e), PACKED(e), (size_t)(n + 3) / 4)) {
             e->reuse[j] = -2 - i;
             return;
         }
@@ -458,7 +463,7 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         const am_genome* g = &e->child[j].genome;
         const int n = g->nx * g->ny * g->nz;
         if (e->reuse[j] != -1 || e->child_key[j] == 0 || am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        pack_body(w->cell, g->nx * g->ny, n, e->packed);
+        pack_body(w->cell, g->nx * g->ny, n, PACKED(e));
         memo_store(e, e->child_key[j], n, e->child[j].id, &res[item[j]]);
     }
     if (e->generation == 0) {
