@@ -24,9 +24,17 @@ fi
 WEXE="$WIN_BUILD/amorph.exe"
 # W ARGS...: the Windows build under wine; the console's CR LF line ends (the C runtime's text
 # mode) become LF, so its output compares with the Linux build's
+# amorph never fails without a message; an exit 1 or 127 with nothing on either stream is wine
+# failing to start the program (CI saw each once, in runs that passed again unchanged), so it is
+# tried once more and said on stderr (a kill's 137, silent by design, is left as it is)
 W() {
     tools/wine.sh "$WEXE" "$@" >"$TMPD/w.out" 2>"$TMPD/w.err"
     r=$?
+    if { [ $r -eq 1 ] || [ $r -eq 127 ]; } && ! [ -s "$TMPD/w.out" ] && ! [ -s "$TMPD/w.err" ]; then
+        echo "cli_win: wine exited $r with no output: started again ($*)" >&2
+        tools/wine.sh "$WEXE" "$@" >"$TMPD/w.out" 2>"$TMPD/w.err"
+        r=$?
+    fi
     tr -d '\r' <"$TMPD/w.out"
     tr -d '\r' <"$TMPD/w.err" >&2
     return $r
