@@ -826,6 +826,19 @@ static void test_reuse_survives_a_checkpoint(void)
                                                         x->res.detail.sim.relax_steps == y->res.detail.sim.relax_steps));
     }
     CHECK(same, "the table read back differs");
+    /* a diverged body's result may hold NaN (its last speed): read back bit for bit */
+    {
+        int k = 0;
+        while (k < AM_EVO_MEMO - 1 && !g_c.memo[k].key) k++;
+        const double inf = HUGE_VAL;
+        g_c.memo[k].res.detail.sim.residual_speed = inf - inf;
+        g_c.memo[k].res.detail.sim.dx = -inf;
+        CHECK(am_evo_checkpoint_format(&g_c, g_text2, sizeof g_text2, &lb, err, sizeof err) == AM_OK &&
+                  am_evo_checkpoint_parse(&g_b, g_text2, "ck", err, sizeof err) == AM_OK && isnan(g_b.memo[k].res.detail.sim.residual_speed) &&
+                  g_b.memo[k].res.detail.sim.dx == -inf,
+              "NaN and infinity in a remembered result: %s", err);
+        CHECK(am_evo_checkpoint_parse(&g_c, g_text, "ck", err, sizeof err) == AM_OK, "the checkpoint read again: %s", err);
+    }
     CHECK(run_to_end(&g_c, 0), "resumed");
     CHECK(am_evo_hash(&g_c) == am_evo_hash(&g_a) && g_c.reused == g_a.reused, "resumed: %ld reused, uninterrupted %ld", g_c.reused,
           g_a.reused);
