@@ -501,6 +501,9 @@ void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
 /* after the last byte: AM_OK when the last line is a checksum that matches the text before it */
 am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
 
+/* a remembered body's result in a checkpoint: 28 numbers of 8 bytes */
+#define AM_EVO_MEMO_RESULT_BYTES 224
+
 /* pass 2, after a successful scan: begin (clears e), every line in order, end */
 typedef struct am_evo_ckpt_reader {
     am_evo* e;
@@ -522,7 +525,7 @@ typedef struct am_evo_ckpt_reader {
     int memo_slot;              /* the remembered body being read, -1 none */
     int memo_line;              /* its 'memo' line */
     long memo_have, memo_need;  /* its bytes read, and all of them */
-    uint8_t memo_res[224];      /* its result's numbers as read */
+    uint8_t memo_res[AM_EVO_MEMO_RESULT_BYTES]; /* its result's numbers as read */
 } am_evo_ckpt_reader;
 void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
 /* one line of n characters, NUL-terminated at n (used as scratch: its spaces may be overwritten);
@@ -532,7 +535,7 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
 /* the largest checkpoint text of a population of n */
 #define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L) + AM_EVO_MEMO * AM_EVO_MEMO_TEXT_MAX)
 /* the text of one remembered body: its memo line, then base64 lines of 48 bytes (64 characters) */
-#define AM_EVO_MEMO_TEXT_MAX (80L + (224L + AM_EVO_MEMO_BYTES + 47L) / 48L * 68L)
+#define AM_EVO_MEMO_TEXT_MAX (80L + (AM_EVO_MEMO_RESULT_BYTES + AM_EVO_MEMO_BYTES + 47L) / 48L * 68L)
 
 /* ---- statistics ---- */
 

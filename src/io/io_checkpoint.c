@@ -98,7 +98,8 @@ static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* i
 /* ---- remembered bodies: a result as 28 numbers of 8 bytes, little-endian ---- */
 
 #define MEMO_NUMBERS 28
-#define MEMO_RESULT_BYTES (8 * MEMO_NUMBERS)
+#define MEMO_RESULT_BYTES AM_EVO_MEMO_RESULT_BYTES
+_Static_assert(MEMO_RESULT_BYTES == 8 * MEMO_NUMBERS, "a remembered result is 28 numbers of 8 bytes");
 #define MEMO_LINE_BYTES 48 /* bytes of one base64 line: 64 characters */
 
 static const char b64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
