@@ -234,7 +234,6 @@ typedef struct am_evo {
     int reuse[AM_EVO_BATCH];                  /* the current batch's offspring j: -1 simulated, k >= 0 takes
                                                  memo[k]'s result, -2 - i takes offspring i's */
     uint64_t child_key[AM_EVO_BATCH];         /* its body's key (0: empty or not expressed) */
-    int gen_reused;                           /* the generation's evaluations that took a result */
 } am_evo;
 
 /* one worker's workspace for evaluations. Large: declare them static, one per worker. */

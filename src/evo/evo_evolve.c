@@ -230,7 +230,7 @@ void am_evo_gen_begin(am_evo* e, double now)
     e->gen_b = 0;
     e->gen_m = 0;
     e->gen_steps = e->gen_voxel_steps = 0;
-    e->gen_diverged = e->gen_empty = e->gen_unsettled = e->gen_reused = 0;
+    e->gen_diverged = e->gen_empty = e->gen_unsettled = 0;
     for (int i = 0; i < n; i++) e->gen_parent[i] = i;
     if (e->generation > 0) {
         /* random pairs: a Fisher-Yates shuffle of the population */
@@ -431,7 +431,6 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         c->id = e->evaluations + b + j;
         if (e->reuse[j] != -1) {
             e->reused++;
-            e->gen_reused++;
             e->reused_voxel_steps += (double)c->steps * (double)c->voxels;
         }
         e->history = ind_hash(e->history, c);

@@ -25,6 +25,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -104,82 +105,72 @@ _Static_assert(MEMO_RESULT_BYTES == 8 * MEMO_NUMBERS, "a remembered result is 28
 
 static const char b64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
-/* the result's numbers in their order: integers as two's complement, doubles as bit patterns */
+/* a remembered result's numbers, in their order in the text: where each lives in am_evo_result,
+ * its C type, and for an integer the range a checkpoint may hold (doubles: any bit pattern, since
+ * a diverged body's last speed may be NaN) */
+enum { NUM_INT, NUM_LONG, NUM_REAL, NUM_U64 };
+typedef struct memo_field {
+    size_t at;
+    int type;
+    long lo, hi;
+} memo_field;
+#define F_INT(m, lo, hi) {offsetof(am_evo_result, m), NUM_INT, lo, hi}
+#define F_LONG(m) {offsetof(am_evo_result, m), NUM_LONG, 0, 2000000000L}
+#define F_REAL(m) {offsetof(am_evo_result, m), NUM_REAL, 0, 0}
+static const memo_field memo_fields[MEMO_NUMBERS] = {
+    F_INT(voxels, 0, AM_MAX_CELLS), F_INT(empty, 0, 1), F_INT(detail.material_voxels[0], 0, AM_MAX_CELLS),
+    F_INT(detail.material_voxels[1], 0, AM_MAX_CELLS), F_INT(detail.material_voxels[2], 0, AM_MAX_CELLS),
+    F_REAL(detail.sim.fitness), F_REAL(detail.sim.travel), F_REAL(detail.sim.dx), F_REAL(detail.sim.dy), F_REAL(detail.sim.dz),
+    F_REAL(detail.sim.sustained), F_INT(detail.sim.voxels, 0, AM_MAX_CELLS), F_INT(detail.sim.links, 0, AM_MAX_LINKS),
+    F_REAL(detail.sim.dt), F_INT(detail.sim.period_steps, 0, 2000000000L), F_LONG(detail.sim.relax_steps),
+    F_LONG(detail.sim.move_steps), F_LONG(detail.sim.steps), F_REAL(detail.sim.relax_dt), F_INT(detail.sim.relax_retried, 0, 1),
+    F_INT(detail.sim.diverged, 0, 1), F_INT(detail.sim.settled, 0, 1), F_REAL(detail.sim.residual_speed),
+    F_LONG(detail.sim.kinetic_resets), F_REAL(detail.sim.sim_seconds), F_LONG(detail.sim.rebuilds),
+    F_INT(detail.sim.max_pairs, 0, 2000000000L), {offsetof(am_evo_result, detail.sim.hash), NUM_U64, 0, 0},
+};
+_Static_assert(AM_MAX_GENO_MATERIALS == 3, "a remembered result holds 3 material counts");
+
+/* the result's numbers: integers as two's complement, doubles as bit patterns */
 static void memo_numbers(const am_evo_result* r, uint64_t v[MEMO_NUMBERS])
 {
-    const am_result* m = &r->detail.sim;
-    int k = 0;
-    v[k++] = (uint64_t)(int64_t)r->voxels;
-    v[k++] = (uint64_t)(int64_t)r->empty;
-    for (int i = 0; i < 3; i++) v[k++] = (uint64_t)(int64_t)r->detail.material_voxels[i];
-    v[k++] = dbits(m->fitness);
-    v[k++] = dbits(m->travel);
-    v[k++] = dbits(m->dx);
-    v[k++] = dbits(m->dy);
-    v[k++] = dbits(m->dz);
-    v[k++] = dbits(m->sustained);
-    v[k++] = (uint64_t)(int64_t)m->voxels;
-    v[k++] = (uint64_t)(int64_t)m->links;
-    v[k++] = dbits(m->dt);
-    v[k++] = (uint64_t)(int64_t)m->period_steps;
-    v[k++] = (uint64_t)(int64_t)m->relax_steps;
-    v[k++] = (uint64_t)(int64_t)m->move_steps;
-    v[k++] = (uint64_t)(int64_t)m->steps;
-    v[k++] = dbits(m->relax_dt);
-    v[k++] = (uint64_t)(int64_t)m->relax_retried;
-    v[k++] = (uint64_t)(int64_t)m->diverged;
-    v[k++] = (uint64_t)(int64_t)m->settled;
-    v[k++] = dbits(m->residual_speed);
-    v[k++] = (uint64_t)(int64_t)m->kinetic_resets;
-    v[k++] = dbits(m->sim_seconds);
-    v[k++] = (uint64_t)(int64_t)m->rebuilds;
-    v[k++] = (uint64_t)(int64_t)m->max_pairs;
-    v[k++] = m->hash;
+    const char* base = (const char*)r;
+    for (int k = 0; k < MEMO_NUMBERS; k++) {
+        const memo_field* f = &memo_fields[k];
+        int i;
+        long l;
+        double d;
+        switch (f->type) {
+        case NUM_INT: memcpy(&i, base + f->at, sizeof i); v[k] = (uint64_t)(int64_t)i; break;
+        case NUM_LONG: memcpy(&l, base + f->at, sizeof l); v[k] = (uint64_t)(int64_t)l; break;
+        case NUM_REAL: memcpy(&d, base + f->at, sizeof d); v[k] = dbits(d); break;
+        default: memcpy(&v[k], base + f->at, sizeof v[k]); break;
+        }
+    }
 }
 
-/* the numbers back into *r; 0 when an integer is out of its range (a damaged checkpoint) */
+/* the numbers back into *r (the rest of it cleared, parents unknown); 0 when an integer is out
+ * of its range (a damaged checkpoint) */
 static int memo_result(const uint64_t v[MEMO_NUMBERS], am_evo_result* r)
 {
-    am_result* m = &r->detail.sim;
-    int ok = 1, k = 0;
+    char* base = (char*)r;
     memset(r, 0, sizeof *r);
     r->detail.parent[0] = r->detail.parent[1] = -1;
-#define INT_IN(dst, lo, hi)                                                                                           \
-    do {                                                                                                              \
-        const int64_t x_ = (int64_t)v[k++];                                                                           \
-        ok = ok && x_ >= (lo) && x_ <= (hi);                                                                          \
-        if (ok) dst = x_;                                                                                             \
-    } while (0)
-#define REAL_IN(dst) dst = bits_d(v[k++]) /* any bit pattern: a diverged body's speeds may be NaN */
-    INT_IN(r->voxels, 0, AM_MAX_CELLS);
-    INT_IN(r->empty, 0, 1);
-    for (int i = 0; i < 3; i++) INT_IN(r->detail.material_voxels[i], 0, AM_MAX_CELLS);
-    REAL_IN(m->fitness);
-    REAL_IN(m->travel);
-    REAL_IN(m->dx);
-    REAL_IN(m->dy);
-    REAL_IN(m->dz);
-    REAL_IN(m->sustained);
-    INT_IN(m->voxels, 0, AM_MAX_CELLS);
-    INT_IN(m->links, 0, AM_MAX_LINKS);
-    REAL_IN(m->dt);
-    INT_IN(m->period_steps, 0, 2000000000L);
-    INT_IN(m->relax_steps, 0, 2000000000L);
-    INT_IN(m->move_steps, 0, 2000000000L);
-    INT_IN(m->steps, 0, 2000000000L);
-    REAL_IN(m->relax_dt);
-    INT_IN(m->relax_retried, 0, 1);
-    INT_IN(m->diverged, 0, 1);
-    INT_IN(m->settled, 0, 1);
-    REAL_IN(m->residual_speed);
-    INT_IN(m->kinetic_resets, 0, 2000000000L);
-    REAL_IN(m->sim_seconds);
-    INT_IN(m->rebuilds, 0, 2000000000L);
-    INT_IN(m->max_pairs, 0, 2000000000L);
-    m->hash = v[k++];
-#undef INT_IN
-#undef REAL_IN
-    return ok;
+    for (int k = 0; k < MEMO_NUMBERS; k++) {
+        const memo_field* f = &memo_fields[k];
+        const int64_t x = (int64_t)v[k];
+        if ((f->type == NUM_INT || f->type == NUM_LONG) && (x < f->lo || x > f->hi)) return 0;
+        if (f->type == NUM_INT) {
+            const int i = (int)x;
+            memcpy(base + f->at, &i, sizeof i);
+        } else if (f->type == NUM_LONG) {
+            const long l = (long)x;
+            memcpy(base + f->at, &l, sizeof l);
+        } else if (f->type == NUM_REAL) {
+            const double d = bits_d(v[k]);
+            memcpy(base + f->at, &d, sizeof d);
+        } else memcpy(base + f->at, &v[k], sizeof v[k]);
+    }
+    return 1;
 }
 
 /* byte i of slot k's text: its result's numbers, then its packed cells */
