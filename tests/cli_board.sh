@@ -28,6 +28,8 @@ expect_fail 2 "view: not in this build" "$B" view --scene cube:2 --out "$TMPD/x.
 expect_fail 2 "export --vxa: not in this build" "$B" export --scene cube:2 --vxa "$TMPD/x.vxa"
 expect_fail 2 "voxcad_quadruped.vxa: a VXA file: not in this build" "$B" sim tests/data/voxcad_quadruped.vxa
 expect_fail 2 "bench --kernels: not in this build" "$B" bench --kernels
+expect_fail 2 "sim --scalars: not in this build" "$B" sim --scene cube:2 --trajectory "$TMPD/t.csv" --scalars
+check "sim --scalars on the board left a file" [ ! -e "$TMPD/t.csv" ]
 expect_fail 2 "eval: not in this build" "$B" eval </dev/null
 if [ ! -e "$TMPD/x.png" ] && [ ! -e "$TMPD/x.vxa" ]; then ok; else ko "a refused command wrote a file"; fi
 # the lattice export works and reads back

@@ -1,6 +1,8 @@
 # tests/cli_trajectory.sh: amorph sim --trajectory (docs/formats.md, Trajectory): the rows and
 # their steps, the centre of mass against what sim reports, voxel positions at rest, a free fall
-# against 1/2 g t^2, CSV and JSON lines holding the same numbers, bad flags and unwritable paths.
+# against 1/2 g t^2, CSV and JSON lines holding the same numbers, the voxels' scalars (--scalars:
+# zero at rest, stress against strain, the phase against the actuation, a free fall's speed), bad
+# flags and unwritable paths.
 # Run from the repository root: sh tests/cli_trajectory.sh
 . tests/shlib.sh
 
@@ -103,6 +105,50 @@ check "free fall: the drop should be 1/2 g t^2 within g dt t, and 1/2 g t (t + d
         e = d - 0.5 * g * t * (t + dt); if (e < 0) e = -e; if (e > 3e-4 * d) exit 1; n++ } END { exit !(n == 20 && d > 0.01) }' "$TMPD/f.csv"
 check "free fall: x and y stay" awk -F, 'NR == 2 { x = $4; y = $5 } NR > 2 && ($4 != x || $5 != y) { exit 1 }' "$TMPD/f.csv"
 
+# --scalars: each voxel's strain, stress, speed and phase after its quaternion (11 columns a voxel)
+expect_ok "$AMORPH" sim tests/data/walker.lattice --cycles 1 --every 25 --trajectory "$TMPD/s.csv" --scalars --json
+cp "$TMPD/out" "$TMPD/s.json"
+sr=$(field relax_steps "$TMPD/s.json"); sp=$(field period_steps "$TMPD/s.json")
+check "--scalars: the header names v0_strain,v0_stress,v0_speed,v0_phase after v0_qz" \
+    grep -q '^step,time,segment,com_x,com_y,com_z,v0_x,v0_y,v0_z,v0_qw,v0_qx,v0_qy,v0_qz,v0_strain,v0_stress,v0_speed,v0_phase,v1_x,' "$TMPD/s.csv"
+check "--scalars: 6 + 11 x $nv columns in every line" awk -F, -v n=$((6 + 11 * nv)) 'NF != n { exit 1 }' "$TMPD/s.csv"
+expect_ok "$AMORPH" sim tests/data/walker.lattice --cycles 1 --every 25 --trajectory "$TMPD/p.csv" --json
+check "--scalars changed the result (all but wall_seconds)" \
+    sh -c "sed 's/\"wall_seconds\": [0-9.e+-]*//' '$TMPD/out' >'$TMPD/r1'; sed 's/\"wall_seconds\": [0-9.e+-]*//' '$TMPD/s.json' | cmp -s - '$TMPD/r1'"
+check "--scalars: the other columns are the trajectory without it, byte for byte" \
+    sh -c "awk -F, -v OFS=, -v n=$nv '{ o = \$1; for (i = 2; i <= 6; i++) o = o OFS \$i; for (v = 0; v < n; v++) for (k = 0; k < 7; k++) o = o OFS \$(7 + 11 * v + k); print o }' '$TMPD/s.csv' | cmp -s - '$TMPD/p.csv'"
+# at step 0 every link is at its rest length and unturned, and nothing moves: all scalars 0
+check "--scalars: strain, stress, speed and phase 0 at step 0" \
+    awk -F, -v n="$nv" 'NR == 2 { for (v = 0; v < n; v++) for (k = 0; k < 4; k++) if ($(14 + 11 * v + k) != 0) exit 1; ok = 1 } END { exit !ok }' "$TMPD/s.csv"
+# the walker's materials all have E = 1 MPa: a link's stress is its strain times E, so the voxel's
+# mean stress is its mean strain times 1e6 Pa; under gravity some voxel is strained
+check "--scalars: stress = 1e6 Pa x strain in every row, and some strain above 1e-6" \
+    awk -F, -v n="$nv" 'function a(x) { return x < 0 ? -x : x } NR > 1 { for (v = 0; v < n; v++) { e = $(14 + 11 * v); s = $(15 + 11 * v);
+        if (e < 0 || a(s - 1e6 * e) > 1e-6 * s + 1e-9) exit 1; if (e > 1e-6) big = 1 } } END { exit !big }' "$TMPD/s.csv"
+# the phase: 0 through the relaxation (held at temp_base); in the movement, the expansion the step
+# ending at the row used, cbrt(1 + cte A sin(2 pi (step - 1 - relax_steps) / period + phase)) - 1 with
+# cte 0.01 and A 30: voxel 0 (passive) 0, voxel 40 (active) in phase, voxel 10 (active90) -90 degrees
+check "--scalars: the phase 0 in the relaxation and the materials' expansion in the movement (relax $sr, period $sp)" \
+    awk -F, -v r="$sr" -v P="$sp" 'function a(x) { return x < 0 ? -x : x }
+        function ex(st, ph) { return exp(log(1 + 0.3 * sin(2 * 3.14159265358979 * (st - 1 - r) / P + ph)) / 3) - 1 }
+        NR == 1 { next } $3 == 0 && ($17 != 0 || $(17 + 11 * 40) != 0 || $(17 + 11 * 10) != 0) { exit 1 }
+        $3 == 1 { if ($17 != 0 || a($(17 + 11 * 40) - ex($1, 0)) > 1e-5 || a($(17 + 11 * 10) - ex($1, -1.5707963)) > 1e-5) exit 1;
+            m = a($(17 + 11 * 40)) > m ? a($(17 + 11 * 40)) : m; n++ } END { exit !(n >= 20 && m > 0.09) }' "$TMPD/s.csv"
+# the speed: in a free fall (no floor, kinetic damping stops nothing while the energy rises) every
+# voxel moves at g t, t the row's time (the semi-implicit step: v = g x the sum of the steps; the
+# fixed-point build's gravity is 1.7e-4 low)
+expect_ok "$AMORPH" sim --scene cube:2 --floor off --cycles 0 --relax_max_steps 2000 --every 100 --trajectory "$TMPD/fs.csv" --scalars
+check "--scalars: a free fall's speed is g t for every voxel, within 3e-4 (0.8 m/s at the end)" \
+    awk -F, 'NR > 1 { g = 9.80665; for (v = 0; v < 8; v++) { s = $(16 + 11 * v); e = s - g * $2; if (e < 0) e = -e; if (e > 3e-4 * g * $2 + 1e-9) exit 1 } m = s }
+        END { exit !(m > 0.8) }' "$TMPD/fs.csv"
+# JSON lines: the four arrays after "quat", the CSV's numbers
+expect_ok "$AMORPH" sim tests/data/walker.lattice --cycles 1 --every 25 --trajectory "$TMPD/s.jsonl" --scalars
+check "--scalars jsonl: every line ends with the strain, stress, speed and phase arrays" \
+    awk '!/"quat": \[\[.*\]\], "strain": \[[^]]*\], "stress": \[[^]]*\], "speed": \[[^]]*\], "phase": \[[^]]*\]\}$/ { exit 1 }' "$TMPD/s.jsonl"
+check "--scalars jsonl: the last row's speeds are the CSV's" \
+    [ "$(tail -n 1 "$TMPD/s.jsonl" | sed 's/.*"speed": \[\([^]]*\)\].*/\1/; s/, /,/g')" = "$(tail -n 1 "$TMPD/s.csv" | awk -F, -v n="$nv" -v OFS=, '{ o = $16; for (v = 1; v < n; v++) o = o OFS $(16 + 11 * v); print o }')" ]
+expect_fail 2 "^amorph: sim: --scalars needs --trajectory FILE$" "$AMORPH" sim --scene cube:2 --scalars
+
 # bad flags: one line, exit 2, no file
 for args in "--every 0" "--every x" "--every 1000000001" "--every" "--trajectory-format xml" "--trajectory-format" "--trajectory" \
             "--trajectory $TMPD/" ; do
@@ -124,7 +170,7 @@ check "unwritable path: a result was printed" [ ! -s "$TMPD/out" ]
 check "unwritable path: a file or folder was made" [ ! -e "$TMPD/nodir" ]
 check "no temporary left beside the files" [ -z "$(ls "$TMPD" | grep '\.tmp')" ]
 expect_ok "$AMORPH" sim --help
-check "sim --help names --trajectory, --every and --trajectory-format" \
-    sh -c "grep -q -- '--trajectory FILE' '$TMPD/out' && grep -q -- '--every K' '$TMPD/out' && grep -q -- '--trajectory-format' '$TMPD/out'"
+check "sim --help names --trajectory, --every, --trajectory-format and --scalars" \
+    sh -c "grep -q -- '--trajectory FILE' '$TMPD/out' && grep -q -- '--every K' '$TMPD/out' && grep -q -- '--trajectory-format' '$TMPD/out' && grep -q -- '--scalars' '$TMPD/out'"
 
 summary cli_trajectory.sh

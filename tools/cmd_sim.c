@@ -19,6 +19,8 @@ static const char sim_help[] =
     "                     FILE ends in .jsonl\n"
     "  --every K          a trajectory row every K steps, 1..1000000000 (period_steps / 10: 10 a cycle)\n"
     "  --trajectory-format csv|jsonl   the trajectory's format, whatever FILE's name\n"
+    "  --scalars          the trajectory also holds each voxel's strain, stress (Pa), speed (m/s) and\n"
+    "                     phase (the actuation's expansion), as amorph render --colour shows them" TOOL_DESKTOP_ONLY "\n"
     "A run that diverged or did not settle has no score (fitness -1; travel is the displacement either\n"
     "way) and prints one warning line on stderr; the exit status is still 0 (it is a result).\n"
     "Besides the fitness: residual_speed (m/s, the largest RMS voxel speed through the release\n"
@@ -96,7 +98,7 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
 
 int cmd_sim(tool_ctx* c, int argc, char** argv)
 {
-    int json = 0, every = 0, format = -1;
+    int json = 0, every = 0, format = -1, scalars = 0;
     const char* traj = NULL;
     tool_robot_args ra;
     memset(&ra, 0, sizeof ra);
@@ -124,6 +126,11 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
             i++;
             continue;
         }
+        if (!strcmp(a, "--scalars")) {
+            if (!TOOL_PICTURES) return tool_not_in_build("sim --scalars", "the voxels' scalars (strain, stress, speed, phase)");
+            scalars = 1;
+            continue;
+        }
         if (!strcmp(a, "--trajectory-format")) {
             if (v && !strcmp(v, "csv")) format = TOOL_TRAJ_CSV;
             else if (v && !strcmp(v, "jsonl")) format = TOOL_TRAJ_JSONL;
@@ -136,8 +143,8 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
         if (r == 0) return tool_unknown_option("sim", a);
     }
     if (!ra.name) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
-    if (!traj && (every || format >= 0))
-        return tool_usage_error("sim: %s needs --trajectory FILE", every ? "--every" : "--trajectory-format");
+    if (!traj && (every || format >= 0 || scalars))
+        return tool_usage_error("sim: %s needs --trajectory FILE", every ? "--every" : scalars ? "--scalars" : "--trajectory-format");
 
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
@@ -172,7 +179,7 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     static tool_traj tr;
     if (traj) {
         if (!every) every = rob.env.period_steps >= 10 ? rob.env.period_steps / 10 : 1;
-        if (tool_traj_open(&tr, traj, format >= 0 ? format : tool_traj_format_of(traj), every, &def)) return 1;
+        if (tool_traj_open(&tr, traj, format >= 0 ? format : tool_traj_format_of(traj), every, scalars, &def)) return 1;
     }
     double t0 = am_port_now();
     am_evaluate(&c->work[0].model, &c->work[0].state, &def, &res);

@@ -73,6 +73,19 @@ static void link_scalars(const am_model* m, const am_state* s, int i, double* st
     *stress = n ? sg / n : 0;
 }
 
+void tool_voxel_scalars(const am_model* m, const am_state* s, int i, double out[TOOL_REC_SCALARS])
+{
+    double v2 = 0;
+    link_scalars(m, s, i, &out[0], &out[1]);
+    const double mass = am_to_si(m, m->mass[AM_VC(m, i)], AM_DIM_MASS);
+    for (int k = 0; k < 3; k++) {
+        double v = am_to_si(m, s->p[k][i], AM_DIM_MOMENTUM) / mass;
+        v2 += v * v;
+    }
+    out[2] = sqrt(v2);
+    out[3] = AM_TO_DOUBLE(s->s[i]) - 1;
+}
+
 static void rec_frame(void* ctx, const am_model* m, const struct am_state* s)
 {
     pic_rec* r = (pic_rec*)ctx;
@@ -83,17 +96,9 @@ static void rec_frame(void* ctx, const am_model* m, const struct am_state* s)
     for (int i = 0; i < m->nv; i++) {
         for (int k = 0; k < 3; k++) p[7 * i + k] = (float)((AM_TO_DOUBLE(m->x0[k][i]) + AM_TO_DOUBLE(s->x[k][i])) * unit);
         for (int k = 0; k < 4; k++) p[7 * i + 3 + k] = (float)AM_TO_DOUBLE(s->q[k][i]);
-        double strain, stress, v2 = 0;
-        link_scalars(m, s, i, &strain, &stress);
-        const double mass = am_to_si(m, m->mass[AM_VC(m, i)], AM_DIM_MASS);
-        for (int k = 0; k < 3; k++) {
-            double v = am_to_si(m, s->p[k][i], AM_DIM_MOMENTUM) / mass;
-            v2 += v * v;
-        }
-        sc[TOOL_REC_SCALARS * i] = (float)strain;
-        sc[TOOL_REC_SCALARS * i + 1] = (float)stress;
-        sc[TOOL_REC_SCALARS * i + 2] = (float)sqrt(v2);
-        sc[TOOL_REC_SCALARS * i + 3] = (float)(AM_TO_DOUBLE(s->s[i]) - 1);
+        double v[TOOL_REC_SCALARS];
+        tool_voxel_scalars(m, s, i, v);
+        for (int k = 0; k < TOOL_REC_SCALARS; k++) sc[TOOL_REC_SCALARS * i + k] = (float)v[k];
     }
     pic_step[f] = s->step;
 }

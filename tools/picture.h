@@ -31,6 +31,12 @@ typedef struct tool_motion {
     int nfixed, nforced;     /* clamped voxels, voxels with a non-zero force */
 } tool_motion;
 
+/* voxel i's scalars in state s, in SI, as render and view colour them and sim --trajectory --scalars
+ * writes them: out[0] strain (1; the mean over its links of |e| + |theta| / 2), out[1] stress (Pa;
+ * each link's strain times its modulus, the mean), out[2] speed (m/s), out[3] phase (the actuation's
+ * expansion s - 1) */
+void tool_voxel_scalars(const am_model* m, const am_state* s, int i, double out[TOOL_REC_SCALARS]);
+
 /* the colouring's name ("material", "strain", "stress", "speed", "phase"), and the mode of a name
  * (-1 when none) */
 const char* tool_colour_name(int mode);

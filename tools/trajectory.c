@@ -2,6 +2,8 @@
  * recording sink (am_record.sink) through a small buffer into an atomic replace. */
 #include "trajectory.h"
 
+#include "picture.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -18,11 +20,29 @@ static void num(am_text* o, int json, const char* sep, double v, int digits)
     else am_text_put(o, "%s%.*g", sep, digits, v);
 }
 
-/* the CSV header: step, time, segment, the centre of mass, then 7 columns per voxel */
-static void csv_header(am_text* o, int nv)
+/* voxel i's scalars (tool_voxel_scalars: desktop profile; the board's sim refuses --scalars) */
+static void voxel_scalars(const am_model* m, const am_state* s, int i, double v[TOOL_REC_SCALARS])
+{
+#if TOOL_PICTURES
+    tool_voxel_scalars(m, s, i, v);
+#else
+    (void)m, (void)s, (void)i;
+    for (int k = 0; k < TOOL_REC_SCALARS; k++) v[k] = 0;
+#endif
+}
+
+/* the scalars' names, in tool_voxel_scalars' order */
+static const char* const scalar_name[TOOL_REC_SCALARS] = {"strain", "stress", "speed", "phase"};
+
+/* the CSV header: step, time, segment, the centre of mass, then 7 columns per voxel (11 with the
+ * scalars) */
+static void csv_header(am_text* o, int nv, int scalars)
 {
     am_text_put(o, "step,time,segment,com_x,com_y,com_z");
-    for (int i = 0; i < nv; i++) am_text_put(o, ",v%d_x,v%d_y,v%d_z,v%d_qw,v%d_qx,v%d_qy,v%d_qz", i, i, i, i, i, i, i);
+    for (int i = 0; i < nv; i++) {
+        am_text_put(o, ",v%d_x,v%d_y,v%d_z,v%d_qw,v%d_qx,v%d_qy,v%d_qz", i, i, i, i, i, i, i);
+        for (int k = 0; scalars && k < TOOL_REC_SCALARS; k++) am_text_put(o, ",v%d_%s", i, scalar_name[k]);
+    }
     am_text_put(o, "\n");
 }
 
@@ -32,7 +52,7 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
     tool_traj* t = (tool_traj*)ctx;
     am_text* o = &t->out.text;
     const int json = t->format == TOOL_TRAJ_JSONL;
-    if (t->rows == 0 && !json) csv_header(o, m->nv);
+    if (t->rows == 0 && !json) csv_header(o, m->nv, t->scalars);
     double com[3];
     am_com(m, s, com);
     const double time = am_sim_time(m, s), unit = am_unit(m, AM_DIM_LENGTH);
@@ -46,9 +66,16 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
         if (json) am_text_put(o, i ? ", [" : "[");
         for (int k = 0; k < 3; k++)
             num(o, json, json && !k ? "" : json ? ", " : ",", (AM_TO_DOUBLE(m->x0[k][i]) + AM_TO_DOUBLE(s->x[k][i])) * unit, 9);
-        if (json) am_text_put(o, "]");
-        else
-            for (int k = 0; k < 4; k++) num(o, 0, ",", AM_TO_DOUBLE(s->q[k][i]), 9);
+        if (json) {
+            am_text_put(o, "]");
+            continue;
+        }
+        for (int k = 0; k < 4; k++) num(o, 0, ",", AM_TO_DOUBLE(s->q[k][i]), 9);
+        if (t->scalars) {
+            double v[TOOL_REC_SCALARS];
+            voxel_scalars(m, s, i, v);
+            for (int k = 0; k < TOOL_REC_SCALARS; k++) num(o, 0, ",", v[k], 9);
+        }
     }
     if (json) {
         am_text_put(o, "], \"quat\": [");
@@ -57,16 +84,28 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
             for (int k = 0; k < 4; k++) num(o, 1, k ? ", " : "", AM_TO_DOUBLE(s->q[k][i]), 9);
             am_text_put(o, "]");
         }
-        am_text_put(o, "]}");
+        am_text_put(o, "]");
+        /* the scalars, one array each: "strain": [e0, e1, ...], ... */
+        for (int k = 0; t->scalars && k < TOOL_REC_SCALARS; k++) {
+            am_text_put(o, ", \"%s\": [", scalar_name[k]);
+            for (int i = 0; i < m->nv; i++) {
+                double v[TOOL_REC_SCALARS];
+                voxel_scalars(m, s, i, v);
+                num(o, 1, i ? ", " : "", v[k], 9);
+            }
+            am_text_put(o, "]");
+        }
+        am_text_put(o, "}");
     }
     am_text_put(o, "\n");
     t->rows++;
 }
 
-int tool_traj_open(tool_traj* t, const char* path, int format, int every, am_eval_def* eval)
+int tool_traj_open(tool_traj* t, const char* path, int format, int every, int scalars, am_eval_def* eval)
 {
     memset(t, 0, sizeof *t);
     t->format = format;
+    t->scalars = scalars;
     if (tool_out_open(&t->out, path)) return 1;
     t->rec.every = every;
     t->rec.sink = traj_row;
