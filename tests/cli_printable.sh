@@ -93,6 +93,19 @@ manifold "$TMPD/w500-passive.stl" 24000 0.2
 manifold "$TMPD/w500-active.stl" 24000 0.2
 manifold "$TMPD/w500-active90.stl" 12000 0.2
 check "STL at step 500 equals the rest shape" sh -c "! cmp -s '$TMPD/w-active.stl' '$TMPD/w500-active.stl'"
+# a VXA robot's moment takes its layers (per-voxel phases), as sim does: at the evaluation's last step
+# the surface's middle in x and y is that of the voxels' centres in sim's trajectory, within 1 mm (the
+# robot travels 11 mm; without its phases 1 mm, and the surface then sits 11 mm away)
+V=tests/data/evosoro_phase.vxa
+"$AMORPH" sim "$V" --trajectory "$TMPD/vp.csv" --every 1000000 >"$TMPD/vp.txt" 2>/dev/null
+vsteps=$(sed -n 's/^steps = //p' "$TMPD/vp.txt")
+expect_ok "$AMORPH" export "$V" --step "$vsteps" --stl "$TMPD/vp.stl" --merge
+for axis in 1 2; do
+    smid=$(awk -v k=$((axis + 1)) '$1 == "vertex" { if (!n || $k < lo) lo = $k; if (!n || $k > hi) hi = $k; n++ } END { print (lo + hi) / 2 }' "$TMPD/vp.stl")
+    tmid=$(tail -n 1 "$TMPD/vp.csv" | awk -F, -v a="$axis" '{ n = (NF - 6) / 7; for (i = 0; i < n; i++) { x = 1000 * $(6 + a + 7 * i); if (!i || x < lo) lo = x; if (!i || x > hi) hi = x } print (lo + hi) / 2 }')
+    check "$V at step $vsteps: the STL's middle along axis $axis ($smid mm) should be the trajectory's ($tmid mm)" \
+        awk -v s="$smid" -v t="$tmid" 'BEGIN { exit !(s != "" && t != "" && s - t < 1 && t - s < 1) }'
+done
 expect_ok "$AMORPH" export "$W" --cycles 1 --relax-max 400 --time 0 --amf "$TMPD/t0.amf"
 check "AMF at time 0: 3 volumes" [ "$(grep -c '<volume materialid=' "$TMPD/t0.amf")" -eq 3 ]
 # a robot that folds into itself as it settles: one warning line, the file still written

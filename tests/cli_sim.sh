@@ -200,6 +200,15 @@ check "summary, sim_s_per_s: $(tail -n 1 "$TMPD/out")" awk '/^scene=cube:3 colli
 expect_fail 2 "bench: --repeat needs a whole number from 1 to 64" "$AMORPH" bench --repeat 65
 expect_fail 2 "bench: unknown option '--kernel'" "$AMORPH" bench --kernel
 expect_fail 2 "bench: --steps needs a whole number" "$AMORPH" bench --steps 0
+# bench --convergence takes a VXA robot with its layers (per-voxel phases, stiffnesses): at its own
+# step each robot travels what amorph sim says it does (the two files share their lattice and
+# differ only in their layers)
+"$AMORPH" bench --convergence --random 0 --threads 2 tests/data/evosoro_phase.vxa tests/data/evosoro_stiffness.vxa >"$TMPD/conv" 2>/dev/null
+for f in evosoro_phase evosoro_stiffness; do
+    t=$("$AMORPH" sim "tests/data/$f.vxa" 2>/dev/null | sed -n 's/^travel = //p')
+    check "bench --convergence: $f.vxa's default_mm is sim's travel $t m: $(grep "$f" "$TMPD/conv")" \
+        awk -v t="$t" -v f="tests/data/$f.vxa" '$1 == f { d = $3 - 1000 * t; n++; ok = t > 0.001 && (d < 0 ? -d : d) < 1e-4 } END { exit !(n == 1 && ok) }' "$TMPD/conv"
+done
 
 # --- the evolver's release_steps key (docs/evolve.md): a config key and a flag, 0..1e8 ---
 expect_ok "$AMORPH" evolve --help-config

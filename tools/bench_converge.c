@@ -6,7 +6,8 @@
  * step itself (the default's settling pseudo-step, relax_dt_frac, is part of what is checked). The bodies: the two
  * calibration bars (halfbar:6, antibar:6), random genomes of every representation as evolution
  * meets them (the default experiment's settings), and the robots named on the command line (run
- * folders: their best robot in their own settings). Then the margins, at the default step: the
+ * folders: their best robot in their own settings; robot files, a VXA file's layers with it). Then
+ * the margins, at the default step: the
  * friction 10% lower and higher, the internal damping scale 0.5 and 1.0, and a step 1.2 times as
  * long. Prints a table and a summary (docs/physics.md, Time step). */
 #include "evolve_cmd.h"
@@ -20,6 +21,7 @@
 #if !defined(AM_PROFILE_BOARD)
 
 #define CONV_MAX_BODIES 96
+#define CONV_MAX_ROBOTS (CONV_MAX_BODIES - 64) /* the bars and up to 3 x 20 random genomes take the rest */
 enum { V_DEFAULT, V_FINE, V_MU_LOW, V_MU_HIGH, V_ZETA_HALF, V_ZETA_ONE, V_STEP_LONG, V_COUNT };
 static const char* const g_variant_name[V_COUNT] = {"default", "fine", "mu-10%", "mu+10%", "zeta0.5", "zeta1.0", "step1.2"};
 
@@ -27,6 +29,7 @@ typedef struct conv_body {
     char name[80];
     int kind;                 /* 0 bar, 1 random genome, 2 robot */
     am_lattice lat;
+    const am_layers* layers;  /* a VXA robot's per-cell phases, stiffnesses and boundary conditions; NULL: none */
     am_env env;
     am_eval_def eval;
 } conv_body;
@@ -45,6 +48,7 @@ typedef struct conv_job {
 } conv_job;
 
 static conv_body g_body[CONV_MAX_BODIES];
+static am_layers g_layers[CONV_MAX_ROBOTS]; /* the robots' layers (read by every worker, written by none) */
 static conv_job g_job;
 
 /* the body's settings for one variant into env and ev, and its lattice into lat */
@@ -89,13 +93,13 @@ static void conv_task(void* ctx, int item, int worker)
     if (v == V_FINE || v == V_STEP_LONG) {
         /* hold the period of the body's own step in seconds */
         am_env own = g_body[b].env;
-        if (am_model_build(&w->model, &w->lattice, &own, err, sizeof err) != AM_OK) {
+        if (am_model_build_layers(&w->model, &w->lattice, &own, g_body[b].layers, err, sizeof err) != AM_OK) {
             o->diverged = 1;
             return;
         }
         env.period_s = AM_PARAM_FROM_DOUBLE(w->model.env.period_steps * am_dt_si(&w->model, own.dt_frac));
     }
-    if (am_model_build(&w->model, &w->lattice, &env, err, sizeof err) != AM_OK) {
+    if (am_model_build_layers(&w->model, &w->lattice, &env, g_body[b].layers, err, sizeof err) != AM_OK) {
         o->diverged = 1;
         return;
     }
@@ -124,6 +128,7 @@ static int random_body(tool_ctx* c, int repr, int seed, conv_body* b)
     if (am_evo_lattice(&d, &pal, g, &c->work[0].geno, &b->lat, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
     b->env = d.env;
     b->eval = d.eval;
+    b->layers = NULL;
     b->kind = 1;
     snprintf(b->name, sizeof b->name, "random %s %d", am_repr_name(repr), seed);
     return 0;
@@ -158,7 +163,7 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
             if (!tool_parse_long(v, 1, AM_MAX_WORKERS, &n)) return tool_usage_error("bench: --threads needs a whole number from 1 to %d", AM_MAX_WORKERS);
             threads = (int)n, i++;
         } else if (a[0] == '-') return tool_unknown_option("bench --convergence", a);
-        else if (nrobots + 4 + 3 * 20 >= CONV_MAX_BODIES) return tool_usage_error("bench: at most %d robots", CONV_MAX_BODIES - 64);
+        else if (nrobots >= CONV_MAX_ROBOTS) return tool_usage_error("bench: at most %d robots", CONV_MAX_ROBOTS);
         else robots[nrobots++] = a;
     }
     /* the bodies */
@@ -176,6 +181,7 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
         if (k >= 2) b->env.period_s = AM_P(0.0075493820);
         b->eval = am_default_eval();
         b->eval.fitness = AM_FIT_PLUS_X;
+        b->layers = NULL;
         b->kind = 0;
         snprintf(b->name, sizeof b->name, "%s at %s ms", bars[k], k < 2 ? "22.6" : "7.5");
     }
@@ -192,6 +198,12 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
         if (tool_robot_load(c, &ra, &b->lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         b->env = rob.env;
         b->eval = rob.eval;
+        b->layers = NULL;
+        if (rob.layers && (rob.layers->has_phase || rob.layers->has_bc || rob.layers->has_stiffness)) {
+            /* the file's layers go with its lattice (tool_robot_load's room is the next robot's) */
+            g_layers[k] = *rob.layers;
+            b->layers = &g_layers[k];
+        }
         b->kind = 2;
         snprintf(b->name, sizeof b->name, "%s", robots[k]);
     }

@@ -294,10 +294,11 @@ static const char bench_help[] =
     "vectorisable loops" TOOL_DESKTOP_ONLY ".\n"
     "--convergence: does the default step give the small-step answer? The calibration bars\n"
     "(halfbar:6, antibar:6), N random bodies of each representation (10) and every ROBOT (a run\n"
-    "folder: its best robot in its own settings) at their own step and at F dt_rec (0.1), the period\n"
-    "held in seconds and the relaxation scaled; then the margins at the default step (friction\n"
-    "-10% and +10%, internal damping 0.5 and 1.0, 1.2 times the step). A table, a summary line and\n"
-    "pass or FAIL (docs/physics.md, Time step; make convergence)" TOOL_DESKTOP_ONLY ".\n";
+    "folder: its best robot in its own settings; a lattice, genome or VXA file, with its layers) at\n"
+    "their own step and at F dt_rec (0.1), the period held in seconds and the relaxation scaled;\n"
+    "then the margins at the default step (friction -10% and +10%, internal damping 0.5 and 1.0,\n"
+    "1.2 times the step). A table, a summary line and pass or FAIL (docs/physics.md, Time step;\n"
+    "make convergence)" TOOL_DESKTOP_ONLY ".\n";
 
 /* the build's number type and profile, and what the compiler was allowed to vectorise with: the
  * widest vector extension it was given and whether gathers were left out (Makefile GATHER=,

@@ -28,7 +28,8 @@ static int simulate_to(tool_ctx* c, const am_lattice* lat, const am_robot* rob, 
     char err[AM_ERR_MAX];
     am_model* m = &c->work[0].model;
     am_state* s = &c->work[0].state;
-    if (am_model_build(m, lat, &rob->env, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", name, err);
+    /* with the robot's layers (a VXA file's phases, stiffnesses, clamps and forces), as sim runs it */
+    if (am_model_build_layers(m, lat, &rob->env, rob->layers, err, sizeof err) != AM_OK) return tool_usage_error("%s: %s", name, err);
     if (time_s >= 0) {
         /* seconds become steps of the time step the evaluation will take */
         double dt = rob->eval.dt_search ? am_to_si(m, am_dt_search(m, s), AM_DIM_TIME) : am_dt_si(m, rob->env.dt_frac);
