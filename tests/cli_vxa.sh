@@ -35,6 +35,19 @@ expect_ok "$AMORPH" export "$D/g.genome" --vxa "$D/g.vxa"
 "$AMORPH" sim "$D/g.vxa" --cycles 1 --relax-max 50 >"$D/g2.out" 2>&1
 if [ -n "$(hash_of "$D/g1.out")" ] && [ "$(hash_of "$D/g1.out")" = "$(hash_of "$D/g2.out")" ]; then ok
 else ko "genome and its VXA simulate differently: $(cat "$D/g1.out" "$D/g2.out" | head -c 600)"; fi
+# a run folder's evaluation travels with its robot (<Amorph>'s <Evaluation>): sim of the VXA is
+# sim of the run, 4 cycles, its release window and direction, to the same state; a flag still wins
+expect_ok "$AMORPH" evolve --workspace 5 --population 4 --evaluations 8 --cycles 4 --release_steps 300 --fitness x \
+    --quiet --no-pictures --out "$D/run"
+expect_ok "$AMORPH" export "$D/run" --vxa "$D/run.vxa"
+check "the run's VXA holds its evaluation: $(grep -o '<Evaluation>.*</Evaluation>' "$D/run.vxa")" \
+    grep -q '<Evaluation><cycles>4</cycles><fitness>x</fitness>.*<release_steps>300</release_steps></Evaluation>' "$D/run.vxa"
+"$AMORPH" sim "$D/run" >"$D/run1.out" 2>&1
+"$AMORPH" sim "$D/run.vxa" >"$D/run2.out" 2>&1
+check "the run and its VXA simulate alike: $(grep -E '^(hash|steps|move_steps) ' "$D/run1.out" "$D/run2.out" | tr '\n' ' ')" \
+    sh -c "[ -n \"\$(grep '^hash = ' '$D/run1.out')\" ] && [ \"\$(grep -E '^(hash|steps|fitness) = ' '$D/run1.out')\" = \"\$(grep -E '^(hash|steps|fitness) = ' '$D/run2.out')\" ] && grep -q '^move_steps = 2000$' '$D/run2.out'"
+"$AMORPH" sim "$D/run.vxa" --cycles 1 >"$D/run3.out" 2>&1
+check "sim --cycles 1 over the VXA's evaluation: $(grep '^move_steps' "$D/run3.out")" grep -q '^move_steps = 500$' "$D/run3.out"
 # to the standard output with '-'
 "$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
 if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi

@@ -26,6 +26,7 @@ if [ -x "$A" ]; then
     tmp=$(mktemp -d)
     for r in dct cppn gmx; do "$A" random --repr $r --seed 3 --workspace 6 >"$tmp/$r.genome" && add 1 "$tmp/$r.genome"; done
     "$A" evolve --print-config >"$tmp/c.cfg" && add 2 "$tmp/c.cfg"
+    "$A" export --scene cube:2 --cycles 3 --vxa "$tmp/c.vxa" 2>/dev/null && add 4 "$tmp/c.vxa"
     "$A" evolve --workspace 6 --population 4 --evaluations 8 --quiet --no-pictures --out "$tmp/run" >/dev/null 2>&1 &&
         add 3 "$tmp/run/checkpoint.txt" && add 7 "$tmp/run/log.csv"
     rm -rf "$tmp"

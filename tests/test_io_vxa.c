@@ -674,6 +674,65 @@ static void test_robot_settings(void)
               "cte of material %d follows its actuation", m);
 }
 
+/* the evaluation travels with the robot: am_vxa_format_robot writes every evaluation key into
+ * <Amorph>'s <Evaluation>, am_vxa_parse and am_vxa_robot give it back field for field; a file
+ * without one has the default evaluation; a bad value is refused with its line, an unknown key is
+ * a warning */
+static void test_vxa_evaluation(void)
+{
+    char err[AM_ERR_MAX] = "";
+    long len = 0;
+    CHECK(am_scene_build(&lat_a, "cube:3", err, sizeof err) == AM_OK, "%s", err);
+    am_robot r;
+    am_robot_init(&r, &lat_a, NULL);
+    am_eval_def* e = &r.eval;
+    e->cycles = 4, e->fitness = AM_FIT_3D, e->score = AM_SCORE_SUSTAINED, e->sustained_from = 2, e->dt_search = 1;
+    e->relax_min_steps = 300, e->relax_max_steps = 20000, e->settle_speed = AM_P(3.25e-5), e->relax_dt_frac = AM_P(1.5);
+    e->release_steps = 250;
+    CHECK(am_vxa_format_robot(&r, 2.5e-5, text, sizeof text, &len, err, sizeof err) == AM_OK && len == (long)strlen(text), "%s", err);
+    CHECK(strstr(text, "<Evaluation><cycles>4</cycles>") != NULL, "no <Evaluation> written");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(info_b.eval_given == 1 && info_b.warnings == 0, "eval_given %d, warnings %d: %s", info_b.eval_given, info_b.warnings, info_b.warning);
+    am_robot r2;
+    am_robot_init(&r2, &lat_b, NULL);
+    CHECK(am_vxa_robot(&r2, &info_b, err, sizeof err) == AM_OK, "%s", err);
+    const am_eval_def* g = &r2.eval;
+    CHECK(g->cycles == 4 && g->fitness == AM_FIT_3D && g->score == AM_SCORE_SUSTAINED && g->sustained_from == 2 && g->dt_search == 1,
+          "cycles %d fitness %d score %d sustained_from %d dt_search %d", g->cycles, g->fitness, g->score, g->sustained_from, g->dt_search);
+    CHECK(g->relax_min_steps == 300 && g->relax_max_steps == 20000 && g->release_steps == 250, "relaxation steps %ld %ld %ld",
+          g->relax_min_steps, g->relax_max_steps, g->release_steps);
+    CHECK(g->settle_speed == AM_P(3.25e-5) && g->relax_dt_frac == AM_P(1.5), "settle_speed %.9g relax_dt_frac %.9g", (double)g->settle_speed,
+          (double)g->relax_dt_frac);
+    /* without an evaluation (am_vxa_format_layers, other programs' files): the default one */
+    CHECK(am_vxa_format_layers(&lat_a, NULL, &r.env, 2.5e-5, text2, sizeof text2, &len, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(strstr(text2, "<Evaluation>") == NULL, "an <Evaluation> without an evaluation");
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text2, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    am_eval_def d = am_default_eval();
+    CHECK(info_b.eval_given == 0 && info_b.eval.cycles == d.cycles && info_b.eval.relax_max_steps == d.relax_max_steps &&
+              info_b.eval.relax_dt_frac == d.relax_dt_frac && info_b.eval.fitness == d.fitness,
+          "a file without <Evaluation>: not the default evaluation");
+    /* a bad value: its line and the configuration's own words; an unknown key: a warning */
+    const char* ev = strstr(text, "<Evaluation>");
+    int line = 1;
+    for (const char* t = text; t < ev; t++) line += *t == '\n';
+    char want[AM_ERR_MAX];
+    snprintf(big, sizeof big, "%.*s<Evaluation><cycles>x</cycles></Evaluation>%s", (int)(ev - text), text, strstr(ev, "</Evaluation>") + 13);
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, big, "e.vxa", err, sizeof err) == AM_ERR_RANGE, "cycles x read");
+    snprintf(want, sizeof want, "e.vxa:%d: <cycles> in <Evaluation>: ", line);
+    CHECK(strncmp(err, want, strlen(want)) == 0 && strchr(err, '\n') == NULL, "message '%s' (want '%s...')", err, want);
+    snprintf(big, sizeof big, "%.*s<Evaluation><release_steps>-1</release_steps></Evaluation>%s", (int)(ev - text), text,
+             strstr(ev, "</Evaluation>") + 13);
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, big, "e.vxa", err, sizeof err) == AM_ERR_RANGE, "release_steps -1 read");
+    snprintf(want, sizeof want, "e.vxa:%d: <release_steps> in <Evaluation>: ", line);
+    CHECK(strncmp(err, want, strlen(want)) == 0, "message '%s' (want '%s...')", err, want);
+    snprintf(big, sizeof big, "%.*s<Evaluation><cycles>3</cycles><population>5</population></Evaluation>%s", (int)(ev - text), text,
+             strstr(ev, "</Evaluation>") + 13);
+    CHECK(am_vxa_parse(&lat_b, &info_b, &doc, big, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
+    snprintf(want, sizeof want, "e.vxa:%d: warning: unsupported tag <population> ignored", line);
+    CHECK(info_b.eval.cycles == 3 && info_b.warnings == 1 && strstr(info_b.warning, want) != NULL, "cycles %d, warnings '%s' (want '%s')",
+          info_b.eval.cycles, info_b.warning, want);
+}
+
 /* ---- per-cell layers: evosoro's PhaseOffset, VoxCAD's boundary conditions --------------- */
 
 static char ftext[1 << 16];
@@ -1190,6 +1249,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_errors);
     RUN(test_vxa_bad_tokens_quoted);
     RUN(test_vxa_format_errors);
+    RUN(test_vxa_evaluation);
     RUN(test_vxa_phase_offset);
     RUN(test_robot_carries_its_layers);
     RUN(test_vxa_cantilever);

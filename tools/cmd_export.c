@@ -124,6 +124,8 @@ static const char export_help[] =
     "                     --stl FILE.stl [--merge] | --amf FILE.amf  [--step N | --time S]\n"
     "Writes a robot (a lattice, genome or VXA file, a run folder, or a built-in scene) in another format:\n"
     "  --vxa FILE       a VXA 1.1 file that VoxCAD and Voxelyze load (docs/vxa.md); '-' for stdout" TOOL_DESKTOP_ONLY "\n"
+    "                   (with the robot's layers, environment and evaluation: amorph sim FILE.vxa\n"
+    "                   evaluates it as the run or the command's settings did)\n"
     "  --lattice FILE   the amorph lattice text format (docs/formats.md); '-' for stdout\n"
     "  --stl FILE       the surface for printing, ASCII STL in mm: one file per material the robot uses,\n"
     "                   FILE-NAME.stl (NAME the material's; robot.stl gives robot-passive.stl,\n"
@@ -237,7 +239,7 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         long len = 0;
         st = tool_robot_dt(c, &rob, &dt, err, sizeof err);
         if (st != AM_OK) return tool_usage_error("%s: %s", ra.name, err);
-        if (am_vxa_format_layers(lat, rob.layers, &rob.env, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK)
+        if (am_vxa_format_robot(&rob, dt, g_out, sizeof g_out, &len, err, sizeof err) != AM_OK)
             return tool_usage_error("%s", err);
         if (tool_write_output(strcmp(vxa, "-") ? vxa : NULL, g_out, len)) return 1;
     }

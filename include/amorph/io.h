@@ -395,6 +395,8 @@ typedef struct am_vxa_info {
     double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
     int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
                                 converts temp_period with am_vxa_period_steps once dt is known */
+    am_eval_def eval;        /* how the robot is evaluated: <Amorph>'s <Evaluation>, else am_default_eval() */
+    int eval_given;          /* 1 when the file had an <Evaluation> */
     am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
                                 conditions' fixed cells and forces (docs/vxa.md); build the model with
                                 am_model_build_layers */
@@ -424,7 +426,8 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
 
 /* the robot a VXA file read into r->lattice (am_vxa_parse or am_vxa_parse_vxd with lat = r->lattice)
  * and info is: the file's environment, its period in seconds as env.period_s unless the file fixed
- * period_steps, the default evaluation, and the file's per-cell layers copied into r->layers.
+ * period_steps, the file's evaluation (the default one unless <Amorph> holds an <Evaluation>), and
+ * the file's per-cell layers copied into r->layers.
  * AM_ERR_CAPACITY when the file has layers and r->layers is NULL. */
 am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
 
@@ -441,6 +444,11 @@ am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, cha
  * of them (AM_ERR_CAPACITY past that) */
 am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
                                long* len, char* err, int errsz);
+/* the whole robot: its lattice and layers as am_vxa_format_layers writes them, its environment, and
+ * its evaluation (cycles, the relaxation's settings, fitness and score) as an <Evaluation> element in
+ * <Amorph>, one element per evaluation key of the configuration, so that am_vxa_robot gives back
+ * the robot whole and amorph sim evaluates it as the run did (amorph export --vxa) */
+am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, long cap, long* len, char* err, int errsz);
 #define AM_VXA_MAX_BC_VOXELS 256
 #define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 36L + AM_MAX_DIM * 128L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 

@@ -1009,11 +1009,36 @@ static am_status read_environment(vctx* c, int n, const am_lattice* lat)
 
 /* ---- Amorph: the exact values VXA has no place for ---------------------------------------- */
 
+/* <Evaluation> in <Amorph>: how the robot is evaluated, one element per evaluation key of the
+ * configuration (<cycles>10</cycles>, ...), each read by the configuration's own rule and range */
+static am_status read_evaluation(vctx* c, int n)
+{
+    const char* tags[MAX_TAGS];
+    int at[MAX_TAGS], nt = 0;
+    for (int i = 0; i < am_evo_key_count() && nt < MAX_TAGS; i++)
+        if (am_evo_key_group(am_evo_key_name(i)) == AM_KEYS_EVAL) tags[nt++] = am_evo_key_name(i);
+    am_status st = children(c, n, tags, nt, at, NULL);
+    if (st != AM_OK) return st;
+    am_evo_def d = am_default_evo();
+    d.eval = c->info->eval;
+    for (int i = 0; i < nt; i++) {
+        if (at[i] < 0) continue;
+        char v[VXA_VALUE_MAX], why[AM_ERR_MAX];
+        unsigned mat = 0;
+        if ((st = text_of(c, at[i], v, sizeof v, NULL)) != AM_OK) return st;
+        if (am_evo_set_over(&d, tags[i], v, &mat, why, sizeof why) != AM_OK)
+            return verr(c, at[i], AM_ERR_RANGE, "<%s> in <Evaluation>: %s", tags[i], why);
+    }
+    c->info->eval = d.eval;
+    c->info->eval_given = 1;
+    return AM_OK;
+}
+
 static am_status read_amorph(vctx* c, int n, am_lattice* lat)
 {
     char qv[AM_QUOTE_BUF];
     static const char* const tags[] = {"CTEMode", "PeriodSteps", "TempOffset", "Lift", "ZetaInternalScale", "ZetaGlobalScale",
-                                       "DtFrac"};
+                                       "DtFrac", "Evaluation"};
     static const char* const mtags[] = {"CTE", "ZetaInternal", "ZetaGlobal", "ZetaCollision", "Fixed"};
     int at[MAX_TAGS], mt[MAX_TAGS];
     int cte_given[AM_MAX_MATERIALS] = {0};
@@ -1025,7 +1050,8 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     if (a >= 0 && attr_text(c, a, ver, sizeof ver, NULL) != AM_OK) ver[0] = 0;
     if (strcmp(ver, "1") != 0)
         return verr(c, n, AM_ERR_PARSE, "<Amorph Version=\"%s\">: this build reads version 1", val(ver, qv));
-    if ((st = children(c, n, tags, 7, at, "Material")) != AM_OK) return st;
+    if ((st = children(c, n, tags, 8, at, "Material")) != AM_OK) return st;
+    if (at[7] >= 0 && (st = read_evaluation(c, at[7])) != AM_OK) return st;
     if (at[0] >= 0) {
         char m[VXA_VALUE_MAX];
         if ((st = text_of(c, at[0], m, sizeof m, NULL)) != AM_OK) return st;
@@ -1175,7 +1201,7 @@ am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errs
         return am_fail(err, errsz, AM_ERR_CAPACITY, "the robot has no room for the file's per-cell layers");
     r->env = info->env;
     if (!info->period_steps_given && info->temp_period > 0) r->env.period_s = AM_PARAM_FROM_DOUBLE(info->temp_period);
-    r->eval = am_default_eval();
+    r->eval = info->eval;
     if (r->layers) *r->layers = *ly;
     return AM_OK;
 }
@@ -1190,6 +1216,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
     memset(info, 0, sizeof *info);
     lat->voxel_size = AM_P(0.001); /* VoxCAD's default Lattice_Dim */
     info->env = am_default_env();
+    info->eval = am_default_eval();
     info->env.cte_mode = AM_CTE_LINEAR; /* VXA's CTE is linear */
     info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
     am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
@@ -1358,8 +1385,24 @@ static am_status put_regions(wbuf* w, const am_lattice* lat, const am_layers* ly
     return AM_OK;
 }
 
+static am_status format_vxa(const am_lattice* lat, const am_layers* layers, const am_env* env, const am_eval_def* eval, double dt,
+                            char* buf, long cap, long* len, char* err, int errsz);
+
 am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
                                long* len, char* err, int errsz)
+{
+    return format_vxa(lat, layers, env, NULL, dt, buf, cap, len, err, errsz);
+}
+
+am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, long cap, long* len, char* err, int errsz)
+{
+    if (!r) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: no robot");
+    return format_vxa(r->lattice, r->layers, &r->env, &r->eval, dt, buf, cap, len, err, errsz);
+}
+
+/* the whole file: lat, its layers (NULL: none), env, and eval (NULL: no <Evaluation>) */
+static am_status format_vxa(const am_lattice* lat, const am_layers* layers, const am_env* env, const am_eval_def* eval, double dt,
+                            char* buf, long cap, long* len, char* err, int errsz)
 {
     if (len) *len = 0;
     if (!lat || !env || !buf || cap < 1) return am_fail(err, errsz, AM_ERR_ARG, "vxa format: no lattice, environment or buffer");
@@ -1475,6 +1518,20 @@ am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, c
     put(&w, "    <ZetaInternalScale>%s</ZetaInternalScale>\n", num(a, (double)env->zeta_internal_scale, 1));
     put(&w, "    <ZetaGlobalScale>%s</ZetaGlobalScale>\n", num(a, (double)env->zeta_global_scale, 1));
     put(&w, "    <DtFrac>%s</DtFrac>\n", num(a, (double)env->dt_frac, 1));
+    if (eval) {
+        /* every evaluation key as the configuration writes it */
+        am_evo_def d = am_default_evo();
+        d.eval = *eval;
+        put(&w, "    <Evaluation>");
+        for (int i = 0; i < am_evo_key_count(); i++) {
+            const char* key = am_evo_key_name(i);
+            if (am_evo_key_group(key) != AM_KEYS_EVAL) continue;
+            char v[64];
+            am_evo_key_value(&d, i, v, sizeof v);
+            put(&w, "<%s>%s</%s>", key, v, key);
+        }
+        put(&w, "</Evaluation>\n");
+    }
     for (int i = 0; i < pal->count; i++) {
         const am_material* m = &pal->mat[i];
         put(&w, "    <Material ID=\"%d\">", i + 1);
