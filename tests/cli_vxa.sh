@@ -48,6 +48,13 @@ check "the run and its VXA simulate alike: $(grep -E '^(hash|steps|move_steps) '
     sh -c "[ -n \"\$(grep '^hash = ' '$D/run1.out')\" ] && [ \"\$(grep -E '^(hash|steps|fitness) = ' '$D/run1.out')\" = \"\$(grep -E '^(hash|steps|fitness) = ' '$D/run2.out')\" ] && grep -q '^move_steps = 2000$' '$D/run2.out'"
 "$AMORPH" sim "$D/run.vxa" --cycles 1 >"$D/run3.out" 2>&1
 check "sim --cycles 1 over the VXA's evaluation: $(grep '^move_steps' "$D/run3.out")" grep -q '^move_steps = 500$' "$D/run3.out"
+# the lattice format holds no evaluation: exporting the run to it says which settings it leaves out,
+# in one line, and a scene at the defaults exports without a word
+"$AMORPH" export "$D/run" --lattice "$D/run.lattice" >"$D/lat.out" 2>"$D/lat.err"
+check "export --lattice of the 4-cycle run: one warning naming cycles = 4, fitness = x and release_steps = 300: $(cat "$D/lat.err")" \
+    sh -c "[ -s '$D/run.lattice' ] && [ \$(wc -l <'$D/lat.err') -eq 1 ] && grep -q 'warning: the lattice format holds no environment or evaluation: --lattice .* leaves out cycles = 4, fitness = x, .*release_steps = 300' '$D/lat.err'"
+"$AMORPH" export --scene cube:2 --lattice "$D/c2.lattice" >"$D/c2.out" 2>"$D/c2.err"
+check "export --lattice of a scene at the defaults said something: $(cat "$D/c2.err")" [ ! -s "$D/c2.err" ]
 # to the standard output with '-'
 "$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
 if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi

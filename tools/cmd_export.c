@@ -20,6 +20,35 @@ static am_mesh_grid g_grid; /* the self-intersection check's scratch */
 static char g_stl_path[AM_MAX_MATERIALS][EXPORT_PATH_MAX]; /* the per-material STL files */
 #define EXPORT_MAX_VISITS 200000000L /* the self-intersection check's work: some seconds at most */
 
+/* the robot's environment and evaluation settings that differ from the defaults, as "key = value"
+ * items separated by ", " into out (cut short with "..." when out is full); their count */
+static int settings_apart(const am_robot* r, char* out, int cap)
+{
+    am_evo_def d = am_default_evo(), d0 = am_default_evo();
+    d.env = r->env;
+    d.eval = r->eval;
+    int n = 0;
+    size_t len = 0;
+    out[0] = 0;
+    for (int i = 0; i < am_evo_key_count(); i++) {
+        const char* key = am_evo_key_name(i);
+        const int g = am_evo_key_group(key);
+        if (g != AM_KEYS_ENV && g != AM_KEYS_EVAL) continue;
+        char v[64], v0[64];
+        am_evo_key_value(&d, i, v, sizeof v);
+        am_evo_key_value(&d0, i, v0, sizeof v0);
+        if (!strcmp(v, v0)) continue;
+        int w = snprintf(out + len, (size_t)cap - len, "%s%s = %s", n ? ", " : "", key, v);
+        if (w < 0 || len + (size_t)w + 4 >= (size_t)cap) {
+            if (len + 4 < (size_t)cap) strcpy(out + len, ", ...");
+            return n + 1;
+        }
+        len += (size_t)w;
+        n++;
+    }
+    return n;
+}
+
 /* the pose at step `step` of the robot's evaluation into g_pose (its first frame when step is 0),
  * the step in *at; 0 or an exit status after a message */
 static int simulate_to(tool_ctx* c, const am_lattice* lat, const am_robot* rob, const char* name, long step, double time_s,
@@ -223,6 +252,13 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
                             "(--vxa keeps them)\n", ra.name, what, lattice);
         }
 #endif
+        /* nor for the environment and the evaluation: the settings away from the defaults, said */
+        char apart[512];
+        int napart = settings_apart(&rob, apart, (int)sizeof apart);
+        if (napart > 0)
+            fprintf(stderr, "%s: warning: the lattice format holds no environment or evaluation: --lattice %s leaves out %s "
+                            "(give %s to amorph sim%s)\n", ra.name, lattice, apart, napart > 1 ? "them" : "it",
+                    TOOL_VXA ? ", or export --vxa, which keeps them" : "");
         tool_out o;
         if (tool_out_open(&o, strcmp(lattice, "-") ? lattice : NULL)) return 1;
         st = am_lattice_write(lat, &o.text, err, sizeof err);
