@@ -55,6 +55,15 @@ check "export --lattice of the 4-cycle run: one warning naming cycles = 4, fitne
     sh -c "[ -s '$D/run.lattice' ] && [ \$(wc -l <'$D/lat.err') -eq 1 ] && grep -q 'warning: the lattice format holds no environment or evaluation: --lattice .* leaves out cycles = 4, fitness = x, .*release_steps = 300' '$D/lat.err'"
 "$AMORPH" export --scene cube:2 --lattice "$D/c2.lattice" >"$D/c2.out" 2>"$D/c2.err"
 check "export --lattice of a scene at the defaults said something: $(cat "$D/c2.err")" [ ! -s "$D/c2.err" ]
+# the run's best.lattice carries none of the run's evaluation: sim says so in one note naming the
+# run's settings and the command that replays the run; with those settings as flags, no note and
+# the run's own result
+"$AMORPH" sim "$D/run/best.lattice" >"$D/bl.out" 2>"$D/bl.err"
+check "sim of the run's best.lattice: one note naming cycles = 4, fitness = x, release_steps = 300 and amorph sim DIR: $(cat "$D/bl.err")" \
+    sh -c "[ \$(wc -l <'$D/bl.err') -eq 1 ] && grep -q '^amorph: note: $D/run/best.lattice is in the run folder $D/run, whose settings differ from these: the run had cycles = 4, fitness = x, .*release_steps = 300 (amorph sim $D/run evaluates' '$D/bl.err'"
+"$AMORPH" sim "$D/run/best.lattice" --cycles 4 --fitness x --release_steps 300 >"$D/bl2.out" 2>"$D/bl2.err"
+check "sim of best.lattice in the run's settings: a note, or another result than the run's: $(cat "$D/bl2.err")" \
+    sh -c "[ ! -s '$D/bl2.err' ] && [ \"\$(grep -E '^(hash|fitness) = ' '$D/bl2.out')\" = \"\$(grep -E '^(hash|fitness) = ' '$D/run1.out')\" ]"
 # to the standard output with '-'
 "$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
 if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi

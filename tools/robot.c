@@ -315,6 +315,64 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
 }
 #endif
 
+/* a robot file (a lattice or a genome) that sits in a run folder carries none of the run's
+ * environment and evaluation, and a genome none of its materials: when the run's differ from the
+ * robot's, one note on stderr names them and the command that evaluates the run's best robot in the
+ * run's settings */
+static void run_note(const char* name, const am_robot* r)
+{
+    char dir[TOOL_PATH_MAX], path[TOOL_PATH_MAX], err[AM_ERR_MAX], apart[400];
+    const char* slash = strrchr(name, '/');
+    if (snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - name) : 1, slash ? name : ".") >= (int)sizeof dir) return;
+    if (!dir[0] || !tool_is_run_dir(dir)) return;
+    am_evo_def d = am_stored_evo(), h = am_default_evo();
+    if (snprintf(path, sizeof path, "%s/" AM_RUN_CONFIG, dir) >= (int)sizeof path || tool_read_config(path, &d, 1, err, sizeof err) != AM_OK)
+        return;
+    h.env = r->env;
+    h.eval = r->eval;
+    /* the run's materials against the robot's, by name: the keys that set them */
+    static am_palette pal;
+    am_evo_palette_into(&d, &pal);
+    const am_palette* own = &r->lattice->palette;
+    int mat_apart[3] = {0, 0, 0}; /* mu_static, mu_kinetic, cte */
+    for (int k = 0; k < own->count; k++) {
+        const int j = am_palette_find(&pal, own->mat[k].name);
+        if (j < 0) continue;
+        mat_apart[0] |= pal.mat[j].mu_static != own->mat[k].mu_static;
+        mat_apart[1] |= pal.mat[j].mu_kinetic != own->mat[k].mu_kinetic;
+        mat_apart[2] |= pal.mat[j].cte != own->mat[k].cte;
+    }
+    int n = 0;
+    size_t len = 0;
+    apart[0] = 0;
+    for (int i = 0; i < am_evo_key_count(); i++) {
+        const char* key = am_evo_key_name(i);
+        const int g = am_evo_key_group(key);
+        char v[64], v0[64];
+        am_evo_key_value(&d, i, v, sizeof v);
+        if (g == AM_KEYS_ENV || g == AM_KEYS_EVAL) {
+            am_evo_key_value(&h, i, v0, sizeof v0);
+            if (!strcmp(v, v0)) continue;
+        } else if (g == AM_KEYS_MATERIALS) {
+            const int m = !strcmp(key, "mu_static") ? 0 : !strcmp(key, "mu_kinetic") ? 1 : !strcmp(key, "cte") ? 2 : -1;
+            if (m >= 0 ? !mat_apart[m] : !strcmp(key, "voxel_size") ? d.voxel_size == r->lattice->voxel_size : 1) continue;
+        } else {
+            continue;
+        }
+        int w = snprintf(apart + len, sizeof apart - len, "%s%s = %s", n ? ", " : "", key, v);
+        if (w < 0 || len + (size_t)w + 6 >= sizeof apart) {
+            strcpy(apart + len, ", ...");
+            n++;
+            break;
+        }
+        len += (size_t)w;
+        n++;
+    }
+    if (n > 0)
+        fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
+                        "(amorph sim %s evaluates the run's best robot as the run did)\n", name, dir, apart, dir);
+}
+
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz)
 {
     /* no layers unless a VXA file brings them (the board reads no VXA file and keeps no room) */
@@ -342,6 +400,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     st = apply_settings(a, r, &period_set, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
+    if (!a->is_scene && !a->vxd && !tool_is_run_dir(a->name)) run_note(a->name, r);
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
     if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
     double dt;
