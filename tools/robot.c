@@ -319,28 +319,35 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
  * environment and evaluation, and a genome none of its materials: when the run's differ from the
  * robot's, one note on stderr names them and the command that evaluates the run's best robot in the
  * run's settings */
-static void run_note(const char* name, const am_robot* r)
+static void run_note(tool_ctx* c, const char* name, const am_robot* r)
 {
-    char dir[TOOL_PATH_MAX], path[TOOL_PATH_MAX], err[AM_ERR_MAX], apart[400];
+    /* one path buffer (the board's stack is small): the folder, then its config.txt */
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], apart[256];
     const char* slash = strrchr(name, '/');
-    if (snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - name) : 1, slash ? name : ".") >= (int)sizeof dir) return;
-    if (!dir[0] || !tool_is_run_dir(dir)) return;
+    const int dlen = slash ? (int)(slash - name) : 1;
+    const size_t cl = strlen("/" AM_RUN_CONFIG);
+    if (dlen < 1 || (size_t)dlen + cl >= sizeof path) return;
+    memcpy(path, slash ? name : ".", (size_t)dlen);
+    path[dlen] = 0;
+    if (!tool_is_run_dir(path)) return;
+    memcpy(path + dlen, "/" AM_RUN_CONFIG, cl + 1);
     am_evo_def d = am_stored_evo(), h = am_default_evo();
-    if (snprintf(path, sizeof path, "%s/" AM_RUN_CONFIG, dir) >= (int)sizeof path || tool_read_config(path, &d, 1, err, sizeof err) != AM_OK)
-        return;
+    if (tool_read_config(path, &d, 1, err, sizeof err) != AM_OK) return;
+    path[dlen] = 0; /* the folder again, for the note */
     h.env = r->env;
     h.eval = r->eval;
-    /* the run's materials against the robot's, by name: the keys that set them */
-    static am_palette pal;
-    am_evo_palette_into(&d, &pal);
+    /* the run's materials against the robot's, by name: the keys that set them (the run's palette
+     * in the evolver's slot, idle: no run is going on) */
+    am_palette* pal = &c->evo.palette;
+    am_evo_palette_into(&d, pal);
     const am_palette* own = &r->lattice->palette;
     int mat_apart[3] = {0, 0, 0}; /* mu_static, mu_kinetic, cte */
     for (int k = 0; k < own->count; k++) {
-        const int j = am_palette_find(&pal, own->mat[k].name);
+        const int j = am_palette_find(pal, own->mat[k].name);
         if (j < 0) continue;
-        mat_apart[0] |= pal.mat[j].mu_static != own->mat[k].mu_static;
-        mat_apart[1] |= pal.mat[j].mu_kinetic != own->mat[k].mu_kinetic;
-        mat_apart[2] |= pal.mat[j].cte != own->mat[k].cte;
+        mat_apart[0] |= pal->mat[j].mu_static != own->mat[k].mu_static;
+        mat_apart[1] |= pal->mat[j].mu_kinetic != own->mat[k].mu_kinetic;
+        mat_apart[2] |= pal->mat[j].cte != own->mat[k].cte;
     }
     int n = 0;
     size_t len = 0;
@@ -370,7 +377,7 @@ static void run_note(const char* name, const am_robot* r)
     }
     if (n > 0)
         fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
-                        "(amorph sim %s evaluates the run's best robot as the run did)\n", name, dir, apart, dir);
+                        "(amorph sim %s evaluates the run's best robot as the run did)\n", name, path, apart, path);
 }
 
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz)
@@ -400,7 +407,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     st = apply_settings(a, r, &period_set, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
-    if (!a->is_scene && !a->vxd && !tool_is_run_dir(a->name)) run_note(a->name, r);
+    if (!a->is_scene && !a->vxd && !tool_is_run_dir(a->name)) run_note(c, a->name, r);
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
     if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
     double dt;
