@@ -40,34 +40,39 @@ function q(s) { sub(/^"/, "", s); sub(/"$/, "", s); return s }
 # whole-text writer of am_text_format (the write_ adapters of the genome, configuration and
 # checkpoint formats), the fields of a summary for write_summaries (put_*), the frame sink of the recorder
 # (the sink of am_record_frame, tools/trajectory.c), the hooks of an evolution run (its cancel
-# test and its per-evaluation record, tools/cmd_evolve.c);
+# test and its per-evaluation record, tools/cmd_evolve.c), the executor of the evolver (its map
+# and clock, tools/executor.c), a row function of tool_log_each (plot, report, stats);
 # any other indirect call may reach any function of kind "other"
 # the name of a function without the suffixes of the clones GCC makes (.part.0, .constprop.0, .isra.0)
 function base(f) { sub(/(\.(part|constprop|isra|cold)\.[0-9]+)+$/, "", f); return f }
 function kind_of(c) {
     c = base(c)
-    if (c ~ /^src\/geno_(dct|cppn|gmx)\.c:/) return "geno"
+    if (c ~ /^src\/geno\/geno_(dct|cppn|gmx)\.c:/) return "geno"
     if (c ~ /_task$/) return "task"
     if (c ~ /(_flush|am_text_drop)$/) return "flush"
     if (c ~ /^tools\/.*_line$/) return "line"
     if (c ~ /_writer$/) return "writer"
-    if (c ~ /^src\/(evo_checkpoint|evo_config|format_genome)\.c:write_/) return "textwriter"
+    if (c ~ /^src\/(evo\/evo_config|geno\/geno_format|io\/io_checkpoint)\.c:write_/) return "textwriter"
     if (c ~ /(^|:)put_[a-z_]+$/) return "put"
     if (c ~ /(^|:)traj_row$/) return "sink"
     if (c ~ /(^|:)(run_cancel|evals_append)$/) return "hook"
+    if (c ~ /(^|:)(port_map|port_now)$/) return "exec"
+    if (c ~ /(^|:)(plot_log_row|report_row|log_row)$/) return "logrow"
     return "other"
 }
 function site_of(f) {
     f = base(f)
-    if (f ~ /^(am_genome_|src\/(format_genome|geno_common|geno_levelset)\.c:)/) return "geno"
+    if (f ~ /^(am_genome_|src\/geno\/(geno_format|geno_common|geno_levelset)\.c:)/) return "geno"
     if (f ~ /(am_port_parallel_map|map_loop|map_thread)$/) return "task"
-    if (f ~ /(util_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
+    if (f ~ /(base_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
     if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
     if (f ~ /:write_stream$/) return "writer"
     if (f ~ /(^|:)am_text_format$/) return "textwriter"
     if (f ~ /(^|:)write_summaries$/) return "put"
     if (f ~ /(^|:)(am_record_frame|record_extra|am_evaluate)$/) return "sink" # record_extra is inlined into am_evaluate
     if (f ~ /(^|:)(eval_task|am_evo_batch_end)$/) return "hook"
+    if (f ~ /(^|:)(generations|map_items|clock_of|am_evo_generations?)$/) return "exec" # the executor of the evolver (map, clock)
+    if (f ~ /(^|:)log_each_line$/) return "logrow" # the row function of tool_log_each
     return "other"
 }
 # the deepest callee of an indirect call made by f: a command (cmd_*) when f is the root, else
