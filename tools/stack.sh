@@ -63,7 +63,7 @@ function kind_of(c) {
 function site_of(f) {
     f = base(f)
     if (f ~ /^(am_genome_|src\/geno\/(geno_format|geno_common|geno_levelset)\.c:)/) return "geno"
-    if (f ~ /(am_port_parallel_map|map_loop|map_thread)$/) return "task"
+    if (f ~ /(am_port_parallel_map|am_[a-z0-9]+_parallel_map|map_loop|map_thread)$/) return "task"
     if (f ~ /(base_text\.c:drain|:ck_flush|^am_text_(put|vput|write|flush))$/) return "flush"
     if (f ~ /(^|:)tool_src_each$/ || f ~ /^tool_(read_config|read_genome|genome_to_lattice|load_robot)$/) return "line"
     if (f ~ /:write_stream$/) return "writer"
