@@ -11,15 +11,6 @@
 static char g_out[AM_VXA_TEXT_MAX]; /* the VXA text, during one call */
 #endif
 
-#if TOOL_PICTURES
-/* the printable surfaces (desktop profile: the mesh is many times a board's RAM) */
-static float g_pose[2 * 7 * AM_MAX_VOXELS];
-static long g_pose_step[2];
-static am_mesh_grid g_grid; /* the self-intersection check's scratch */
-#define EXPORT_PATH_MAX 4096
-static char g_stl_path[AM_MAX_MATERIALS][EXPORT_PATH_MAX]; /* the per-material STL files */
-#define EXPORT_MAX_VISITS 200000000L /* the self-intersection check's work: some seconds at most */
-
 /* the robot's environment and evaluation settings that differ from the defaults, as "key = value"
  * items separated by ", " into out (cut short with "..." when out is full); their count */
 static int settings_apart(const am_robot* r, char* out, int cap)
@@ -48,6 +39,15 @@ static int settings_apart(const am_robot* r, char* out, int cap)
     }
     return n;
 }
+
+#if TOOL_PICTURES
+/* the printable surfaces (desktop profile: the mesh is many times a board's RAM) */
+static float g_pose[2 * 7 * AM_MAX_VOXELS];
+static long g_pose_step[2];
+static am_mesh_grid g_grid; /* the self-intersection check's scratch */
+#define EXPORT_PATH_MAX 4096
+static char g_stl_path[AM_MAX_MATERIALS][EXPORT_PATH_MAX]; /* the per-material STL files */
+#define EXPORT_MAX_VISITS 200000000L /* the self-intersection check's work: some seconds at most */
 
 /* the pose at step `step` of the robot's evaluation into g_pose (its first frame when step is 0),
  * the step in *at; 0 or an exit status after a message */
