@@ -11,35 +11,6 @@
 static char g_out[AM_VXA_TEXT_MAX]; /* the VXA text, during one call */
 #endif
 
-/* the robot's environment and evaluation settings that differ from the defaults, as "key = value"
- * items separated by ", " into out (cut short with "..." when out is full); their count */
-static int settings_apart(const am_robot* r, char* out, int cap)
-{
-    am_evo_def d = am_default_evo(), d0 = am_default_evo();
-    d.env = r->env;
-    d.eval = r->eval;
-    int n = 0;
-    size_t len = 0;
-    out[0] = 0;
-    for (int i = 0; i < am_evo_key_count(); i++) {
-        const char* key = am_evo_key_name(i);
-        const int g = am_evo_key_group(key);
-        if (g != AM_KEYS_ENV && g != AM_KEYS_EVAL) continue;
-        char v[64], v0[64];
-        am_evo_key_value(&d, i, v, sizeof v);
-        am_evo_key_value(&d0, i, v0, sizeof v0);
-        if (!strcmp(v, v0)) continue;
-        int w = snprintf(out + len, (size_t)cap - len, "%s%s = %s", n ? ", " : "", key, v);
-        if (w < 0 || len + (size_t)w + 4 >= (size_t)cap) {
-            if (len + 4 < (size_t)cap) strcpy(out + len, ", ...");
-            return n + 1;
-        }
-        len += (size_t)w;
-        n++;
-    }
-    return n;
-}
-
 #if TOOL_PICTURES
 /* the printable surfaces (desktop profile: the mesh is many times a board's RAM) */
 static float g_pose[2 * 7 * AM_MAX_VOXELS];
@@ -254,7 +225,11 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
 #endif
         /* nor for the environment and the evaluation: the settings away from the defaults, said */
         char apart[512];
-        int napart = settings_apart(&rob, apart, (int)sizeof apart);
+        am_evo_def dr = am_default_evo();
+        const am_evo_def d0 = dr;
+        dr.env = rob.env;
+        dr.eval = rob.eval;
+        const int napart = tool_settings_apart(&d0, &dr, 0, apart, (int)sizeof apart);
         if (napart > 0)
             fprintf(stderr, "%s: warning: the lattice format holds no environment or evaluation: --lattice %s leaves out %s "
                             "(give %s to amorph sim%s)\n", ra.name, lattice, apart, napart > 1 ? "them" : "it",

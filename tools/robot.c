@@ -315,6 +315,36 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
 }
 #endif
 
+int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned materials, char* out, int cap)
+{
+    static const char* const mat_key[4] = {"cte", "mu_static", "mu_kinetic", "voxel_size"}; /* AM_MATERIAL_* bits 0..3 */
+    int n = 0;
+    size_t len = 0;
+    out[0] = 0;
+    for (int i = 0; i < am_evo_key_count(); i++) {
+        const char* key = am_evo_key_name(i);
+        const int g = am_evo_key_group(key);
+        char v[64], v0[64];
+        am_evo_key_value(to, i, v, sizeof v);
+        if (g == AM_KEYS_ENV || g == AM_KEYS_EVAL) {
+            am_evo_key_value(from, i, v0, sizeof v0);
+            if (!strcmp(v, v0)) continue;
+        } else {
+            int named = 0;
+            for (int b = 0; b < 4; b++) named |= (materials >> b & 1u) && !strcmp(key, mat_key[b]);
+            if (!named) continue;
+        }
+        int w = snprintf(out + len, (size_t)cap - len, "%s%s = %s", n ? ", " : "", key, v);
+        if (w < 0 || len + (size_t)w + 6 >= (size_t)cap) {
+            if (len + 6 < (size_t)cap) strcpy(out + len, ", ...");
+            return n + 1;
+        }
+        len += (size_t)w;
+        n++;
+    }
+    return n;
+}
+
 /* a robot file (a lattice or a genome) that sits in a run folder carries none of the run's
  * environment and evaluation, and a genome none of its materials: when the run's differ from the
  * robot's, one note on stderr names them and the command that evaluates the run's best robot in the
@@ -341,40 +371,15 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
     am_palette* pal = &c->evo.palette;
     am_evo_palette_into(&d, pal);
     const am_palette* own = &r->lattice->palette;
-    int mat_apart[3] = {0, 0, 0}; /* mu_static, mu_kinetic, cte */
+    unsigned mat = r->lattice->voxel_size != d.voxel_size ? AM_MATERIAL_VOXEL_SIZE : 0u;
     for (int k = 0; k < own->count; k++) {
         const int j = am_palette_find(pal, own->mat[k].name);
         if (j < 0) continue;
-        mat_apart[0] |= pal->mat[j].mu_static != own->mat[k].mu_static;
-        mat_apart[1] |= pal->mat[j].mu_kinetic != own->mat[k].mu_kinetic;
-        mat_apart[2] |= pal->mat[j].cte != own->mat[k].cte;
+        if (pal->mat[j].mu_static != own->mat[k].mu_static) mat |= AM_MATERIAL_MU_STATIC;
+        if (pal->mat[j].mu_kinetic != own->mat[k].mu_kinetic) mat |= AM_MATERIAL_MU_KINETIC;
+        if (pal->mat[j].cte != own->mat[k].cte) mat |= AM_MATERIAL_CTE;
     }
-    int n = 0;
-    size_t len = 0;
-    apart[0] = 0;
-    for (int i = 0; i < am_evo_key_count(); i++) {
-        const char* key = am_evo_key_name(i);
-        const int g = am_evo_key_group(key);
-        char v[64], v0[64];
-        am_evo_key_value(&d, i, v, sizeof v);
-        if (g == AM_KEYS_ENV || g == AM_KEYS_EVAL) {
-            am_evo_key_value(&h, i, v0, sizeof v0);
-            if (!strcmp(v, v0)) continue;
-        } else if (g == AM_KEYS_MATERIALS) {
-            const int m = !strcmp(key, "mu_static") ? 0 : !strcmp(key, "mu_kinetic") ? 1 : !strcmp(key, "cte") ? 2 : -1;
-            if (m >= 0 ? !mat_apart[m] : !strcmp(key, "voxel_size") ? d.voxel_size == r->lattice->voxel_size : 1) continue;
-        } else {
-            continue;
-        }
-        int w = snprintf(apart + len, sizeof apart - len, "%s%s = %s", n ? ", " : "", key, v);
-        if (w < 0 || len + (size_t)w + 6 >= sizeof apart) {
-            strcpy(apart + len, ", ...");
-            n++;
-            break;
-        }
-        len += (size_t)w;
-        n++;
-    }
+    const int n = tool_settings_apart(&h, &d, mat, apart, (int)sizeof apart);
     if (n > 0)
         fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
                         "(amorph sim %s evaluates the run's best robot as the run did)\n", name, path, apart, path);

@@ -58,6 +58,11 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz);
 
+/* the environment and evaluation keys whose values in `to` differ from those in `from`, and the
+ * material keys named by the AM_MATERIAL_* bits of `materials`, as "key = value" items (to's
+ * values) separated by ", " into out (cut short with ", ..." when out is full); their count */
+int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned materials, char* out, int cap);
+
 /* the time step in seconds the simulator takes for the robot r (an empty robot is timed as one
  * voxel of its first material); builds the model into c->work[0].model */
 am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, int errsz);
