@@ -9,6 +9,8 @@ flags=$(cat "$BUILD/flags.txt" 2>/dev/null)
 check "$BUILD/flags.txt holds the build's compiler and flags" test -n "$flags"
 defs=$(printf '%s\n' "$flags" | tr ' ' '\n' | grep -E '^-DAM_(REAL|PROFILE)_' | tr '\n' ' ')
 case $defs in *AM_REAL_*AM_PROFILE_*) ok ;; *) ko "flags.txt names no number type and profile: $defs" ;; esac
+# a sanitizer build's library needs the sanitizer's runtime at the link (make asan)
+san=$(printf '%s\n' "$flags" | tr ' ' '\n' | grep -E '^-fsanitize=' | tr '\n' ' ')
 
 # compile C source $1 with the flags $2: the compiler's first error line, or "ok"
 compile() {
@@ -41,7 +43,7 @@ int main()
 }
 EOF
     # shellcheck disable=SC2086
-    if g++ -std=c++11 -Wall -Werror $defs -Iinclude "$TMPD/api.cpp" "$BUILD/libamorph.a" -lm -o "$TMPD/api" 2>"$TMPD/cxx"; then
+    if g++ -std=c++11 -Wall -Werror $defs $san -Iinclude "$TMPD/api.cpp" "$BUILD/libamorph.a" -lm -o "$TMPD/api" 2>"$TMPD/cxx"; then
         out=$("$TMPD/api")
         check "a C++ program calls the library: $out" test "$out" = "cycles=10 rng=1"
     else
