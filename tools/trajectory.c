@@ -20,16 +20,23 @@ static void num(am_text* o, int json, const char* sep, double v, int digits)
     else am_text_put(o, "%s%.*g", sep, digits, v);
 }
 
-/* voxel i's scalars (tool_voxel_scalars: desktop profile; the board's sim refuses --scalars) */
-static void voxel_scalars(const am_model* m, const am_state* s, int i, double v[TOOL_REC_SCALARS])
-{
+/* one row's scalars, every voxel's found once (tool_voxel_scalars) for either format; the board
+ * profile has none (its sim refuses --scalars) */
+typedef double voxel_scalars[TOOL_REC_SCALARS];
 #if TOOL_PICTURES
-    tool_voxel_scalars(m, s, i, v);
-#else
-    (void)m, (void)s, (void)i;
-    for (int k = 0; k < TOOL_REC_SCALARS; k++) v[k] = 0;
-#endif
+static voxel_scalars g_row[AM_MAX_VOXELS];
+static voxel_scalars* row_scalars(const am_model* m, const am_state* s)
+{
+    for (int i = 0; i < m->nv; i++) tool_voxel_scalars(m, s, i, g_row[i]);
+    return g_row;
 }
+#else
+static voxel_scalars* row_scalars(const am_model* m, const am_state* s)
+{
+    (void)m, (void)s;
+    return NULL;
+}
+#endif
 
 /* the scalars' names, in tool_voxel_scalars' order */
 static const char* const scalar_name[TOOL_REC_SCALARS] = {"strain", "stress", "speed", "phase"};
@@ -52,7 +59,8 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
     tool_traj* t = (tool_traj*)ctx;
     am_text* o = &t->out.text;
     const int json = t->format == TOOL_TRAJ_JSONL;
-    if (t->rows == 0 && !json) csv_header(o, m->nv, t->scalars);
+    voxel_scalars* sc = t->scalars ? row_scalars(m, s) : NULL;
+    if (t->rows == 0 && !json) csv_header(o, m->nv, sc != NULL);
     double com[3];
     am_com(m, s, com);
     const double time = am_sim_time(m, s), unit = am_unit(m, AM_DIM_LENGTH);
@@ -71,11 +79,7 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
             continue;
         }
         for (int k = 0; k < 4; k++) num(o, 0, ",", AM_TO_DOUBLE(s->q[k][i]), 9);
-        if (t->scalars) {
-            double v[TOOL_REC_SCALARS];
-            voxel_scalars(m, s, i, v);
-            for (int k = 0; k < TOOL_REC_SCALARS; k++) num(o, 0, ",", v[k], 9);
-        }
+        for (int k = 0; sc && k < TOOL_REC_SCALARS; k++) num(o, 0, ",", sc[i][k], 9);
     }
     if (json) {
         am_text_put(o, "], \"quat\": [");
@@ -86,13 +90,9 @@ static void traj_row(void* ctx, const am_model* m, const struct am_state* s)
         }
         am_text_put(o, "]");
         /* the scalars, one array each: "strain": [e0, e1, ...], ... */
-        for (int k = 0; t->scalars && k < TOOL_REC_SCALARS; k++) {
+        for (int k = 0; sc && k < TOOL_REC_SCALARS; k++) {
             am_text_put(o, ", \"%s\": [", scalar_name[k]);
-            for (int i = 0; i < m->nv; i++) {
-                double v[TOOL_REC_SCALARS];
-                voxel_scalars(m, s, i, v);
-                num(o, 1, i ? ", " : "", v[k], 9);
-            }
+            for (int i = 0; i < m->nv; i++) num(o, 1, i ? ", " : "", sc[i][k], 9);
             am_text_put(o, "]");
         }
         am_text_put(o, "}");
