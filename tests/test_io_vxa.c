@@ -692,7 +692,7 @@ static void test_vxa_evaluation(void)
     CHECK(am_vxa_format_robot(&r, 2.5e-5, text, sizeof text, &len, err, sizeof err) == AM_OK && len == (long)strlen(text), "%s", err);
     CHECK(strstr(text, "<Evaluation><cycles>4</cycles>") != NULL, "no <Evaluation> written");
     CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
-    CHECK(info_b.eval_given == 1 && info_b.warnings == 0, "eval_given %d, warnings %d: %s", info_b.eval_given, info_b.warnings, info_b.warning);
+    CHECK(info_b.warnings == 0, "warnings %d: %s", info_b.warnings, info_b.warning);
     am_robot r2;
     am_robot_init(&r2, &lat_b, NULL);
     CHECK(am_vxa_robot(&r2, &info_b, err, sizeof err) == AM_OK, "%s", err);
@@ -708,7 +708,7 @@ static void test_vxa_evaluation(void)
     CHECK(strstr(text2, "<Evaluation>") == NULL, "an <Evaluation> without an evaluation");
     CHECK(am_vxa_parse(&lat_b, &info_b, &doc, text2, "e.vxa", err, sizeof err) == AM_OK, "%s", err);
     am_eval_def d = am_default_eval();
-    CHECK(info_b.eval_given == 0 && info_b.eval.cycles == d.cycles && info_b.eval.relax_max_steps == d.relax_max_steps &&
+    CHECK(info_b.eval.cycles == d.cycles && info_b.eval.relax_max_steps == d.relax_max_steps &&
               info_b.eval.relax_dt_frac == d.relax_dt_frac && info_b.eval.fitness == d.fitness,
           "a file without <Evaluation>: not the default evaluation");
     /* a bad value: its line and the configuration's own words; an unknown key: a warning */

@@ -396,7 +396,6 @@ typedef struct am_vxa_info {
     int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
                                 converts temp_period with am_vxa_period_steps once dt is known */
     am_eval_def eval;        /* how the robot is evaluated: <Amorph>'s <Evaluation>, else am_default_eval() */
-    int eval_given;          /* 1 when the file had an <Evaluation> */
     am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
                                 conditions' fixed cells and forces (docs/vxa.md); build the model with
                                 am_model_build_layers */

@@ -1030,7 +1030,6 @@ static am_status read_evaluation(vctx* c, int n)
             return verr(c, at[i], AM_ERR_RANGE, "<%s> in <Evaluation>: %s", tags[i], why);
     }
     c->info->eval = d.eval;
-    c->info->eval_given = 1;
     return AM_OK;
 }
 
