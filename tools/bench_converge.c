@@ -198,12 +198,8 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
         if (tool_robot_load(c, &ra, &b->lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("bench: %s", err);
         b->env = rob.env;
         b->eval = rob.eval;
-        b->layers = NULL;
-        if (rob.layers && (rob.layers->has_phase || rob.layers->has_bc || rob.layers->has_stiffness)) {
-            /* the file's layers go with its lattice (tool_robot_load's room is the next robot's) */
-            g_layers[k] = *rob.layers;
-            b->layers = &g_layers[k];
-        }
+        /* the file's layers go with its lattice (tool_robot_load's room is the next robot's) */
+        b->layers = rob.layers ? (g_layers[k] = *rob.layers, &g_layers[k]) : NULL;
         b->kind = 2;
         snprintf(b->name, sizeof b->name, "%s", robots[k]);
     }

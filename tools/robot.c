@@ -394,6 +394,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     am_robot_init(r, lat, NULL);
 #endif
     am_status st;
+    int one_file = 0; /* a robot file named alone (not a scene, a run folder or a VXD over a VXA) */
 #if TOOL_VXA
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
@@ -405,14 +406,17 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         st = load_file(c, base, robot, r, err, errsz);
     }
 #endif
-    else st = load_file(c, a->name, a->vxd, r, err, errsz);
+    else {
+        st = load_file(c, a->name, a->vxd, r, err, errsz);
+        one_file = !a->vxd;
+    }
     if (st != AM_OK) return st;
     const am_env own = r->env; /* the robot's own, before the settings */
     int period_set = 0;
     st = apply_settings(a, r, &period_set, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
-    if (!a->is_scene && !a->vxd && !tool_is_run_dir(a->name)) run_note(c, a->name, r);
+    if (one_file) run_note(c, a->name, r);
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
     if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
     double dt;
