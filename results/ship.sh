@@ -1,6 +1,7 @@
 #!/bin/sh
 # Copies the reference runs as they stand into results/ (the repository's copy), small enough for
-# git: every run folder of SRC (made by results/run.sh) with its config.txt, log.csv, checkpoint.txt,
+# git: every run folder of SRC (made by results/run.sh) with its config.txt, log.csv, checkpoint.txt
+# (without the same-body table, amorph export --checkpoint),
 # best.genome, best.lattice and summaries as they are, and evals.csv compressed (gzip -9n: no name
 # or time in the header, so the same table gives the same bytes); then results/report.sh writes
 # each best robot's gait30.json and best.png and results/report.md, the table of docs/results.md.
@@ -31,7 +32,9 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
         try=$((try + 1))
         rm -rf "$new"
         mkdir -p "$new"
-        cp "$run/checkpoint.txt" "$new/"
+        # without the table of bodies already simulated (a cache: a resume from the copy simulates
+        # them again, to the same rows)
+        "$AMORPH" export "$run" --checkpoint "$new/checkpoint.txt" || exit 1
         for f in config.txt best.genome best.lattice; do
             [ -f "$run/$f" ] && cp "$run/$f" "$new/"
         done

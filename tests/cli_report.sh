@@ -203,6 +203,23 @@ expect_ok "$AMORPH" sim "$D/representations/dct-1" --json
 check "ship: the copied best robot ends in the checkpoint's best state $want" grep -q "\"hash\": \"$want\"" "$TMPD/out"
 check "ship: the report" grep -q '| representations/dct-1 | 12 |' "$D/report.md"
 check "ship: no folder of its own left behind" [ ! -d "$D/representations/dct-1/.ship" ]
+# the checkpoint is shipped without its table of simulated bodies (a cache, most of its size):
+# resumed from the copy, the run goes on to the rows and best robot of the run never stopped
+if grep -q '^memo ' "$S/representations/dct-1/checkpoint.txt" && ! grep -q '^memo \|^m ' "$D/representations/dct-1/checkpoint.txt"; then ok
+else ko "ship: the run's checkpoint has remembered bodies and the shipped one none"; fi
+cp -r "$D/representations/dct-1" "$TMPD/lean-resumed"
+gzip -dc "$TMPD/lean-resumed/evals.csv.gz" >"$TMPD/lean-resumed/evals.csv" && rm "$TMPD/lean-resumed/evals.csv.gz"
+expect_ok "$AMORPH" evolve --resume "$TMPD/lean-resumed" --evaluations 16 --quiet
+# shellcheck disable=SC2086
+expect_ok "$AMORPH" evolve $SMALL --representation dct --seed 1 --evaluations 16 --out "$TMPD/never-stopped"
+check "ship: resumed from the shipped checkpoint, evals.csv is the uninterrupted run's" cmp -s "$TMPD/lean-resumed/evals.csv" "$TMPD/never-stopped/evals.csv"
+check "ship: log.csv too (but the wall times)" sh -c "cut -d, -f1-7,9- '$TMPD/lean-resumed/log.csv' >'$TMPD/l1'; cut -d, -f1-7,9- '$TMPD/never-stopped/log.csv' >'$TMPD/l2'; cmp -s '$TMPD/l1' '$TMPD/l2'"
+check "ship: and the best robot" cmp -s "$TMPD/lean-resumed/best.genome" "$TMPD/never-stopped/best.genome"
+# export --checkpoint alone: a run folder, nothing else
+expect_fail 2 "takes a run folder of amorph evolve; $TMPD is not one" "$AMORPH" export "$TMPD" --checkpoint "$TMPD/x.txt"
+expect_fail 2 "--checkpoint takes a run folder and no other output or setting" "$AMORPH" export "$S/representations/gmx-1" --checkpoint "$TMPD/x.txt" --cycles 3
+expect_fail 2 "--checkpoint needs a file name" "$AMORPH" export "$S/representations/gmx-1" --checkpoint
+check "export --checkpoint: no file left by a refusal" [ ! -e "$TMPD/x.txt" ]
 # a resume with nothing left to do rewrites the summaries with its own wall time: the shipped ones stay
 cp "$D/representations/gmx-1/summary.txt" "$TMPD/shipped-summary.txt"
 cp "$S/representations/gmx-1/summary.txt" "$TMPD/run-summary.txt"

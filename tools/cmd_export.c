@@ -1,6 +1,7 @@
 /* amorph export: a robot in another format (VXA for VoxCAD / Voxelyze, the lattice text format,
  * and printable surfaces: STL and AMF, at rest or at a simulated moment; a moment whose surface
  * crosses itself gets a warning). */
+#include "evolve_cmd.h"
 #include "picture.h"
 
 #include <math.h>
@@ -119,6 +120,29 @@ static int write_printable(const char* path, const am_palette* pal, const char* 
 }
 #endif
 
+/* --checkpoint: the run folder dir's checkpoint again, without its same-body table (am_evo.memo, a
+ * cache of results: a run resumed from the copy simulates those bodies again, to the same results,
+ * rows and best robot; only its count of reused evaluations is lower). 0, 1 or 2 */
+static int export_checkpoint(tool_ctx* c, const char* dir, const char* out)
+{
+    char path[4096], err[AM_ERR_MAX];
+    if (!tool_is_run_dir(dir)) return tool_usage_error("export: --checkpoint takes a run folder of amorph evolve; %s is not one", dir);
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, AM_RUN_CHECKPOINT) >= sizeof path)
+        return tool_usage_error("export: %s: the path is too long", dir);
+    am_evo* e = &c->evo;
+    int rc = read_checkpoint(path, e);
+    if (rc) return rc;
+    memset(e->memo, 0, sizeof e->memo);
+    tool_out o;
+    if (tool_out_open(&o, strcmp(out, "-") ? out : NULL)) return 1;
+    am_status st = am_evo_checkpoint_write(e, &o.text, err, sizeof err);
+    if (st != AM_OK && st != AM_ERR_IO) {
+        tool_out_close(&o, 0);
+        return tool_usage_error("%s", err);
+    }
+    return tool_out_close(&o, 1);
+}
+
 static const char export_help[] =
     "usage: amorph export ROBOT | --scene NAME  --vxa FILE.vxa | --lattice FILE.lattice |\n"
     "                     --stl FILE.stl [--merge] | --amf FILE.amf  [--step N | --time S]\n"
@@ -139,6 +163,9 @@ static const char export_help[] =
     "                   it) instead of the rest shape; a warning on stderr when that surface crosses\n"
     "                   itself (a printer would fuse the parts that overlap)\n"
     "  --time S         the same at simulated time S seconds (the nearest step)\n"
+    "  --checkpoint FILE  ROBOT a run folder: its checkpoint.txt without the table of bodies already\n"
+    "                   simulated (a cache, most of the file's size): a run resumed from it goes on to\n"
+    "                   the same rows and best robot, simulating those bodies again; '-' for stdout\n"
     "Where voxels of one surface touch only along an edge or at a corner, its vertex there is split and\n"
     "each part moved 2.5% of the way to its own voxels' centre, so every file is manifold.\n"
     "The environment in a VXA file is the robot's own (a VXA file's or a run folder's), else the\n"
@@ -147,7 +174,7 @@ static const char export_help[] =
 
 int cmd_export(tool_ctx* c, int argc, char** argv)
 {
-    const char *vxa = 0, *lattice = 0, *stl = 0, *amf = 0;
+    const char *vxa = 0, *lattice = 0, *stl = 0, *amf = 0, *ckpt = 0;
     int merge = 0;
     long step = -1;
     double time_s = -1;
@@ -168,6 +195,9 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--stl") || !strcmp(a, "--amf")) {
             if (!v || !v[0]) return tool_usage_error("export: %s needs a file name", a);
             *(a[2] == 's' ? &stl : &amf) = v, i++;
+        } else if (!strcmp(a, "--checkpoint")) {
+            if (!v || !v[0]) return tool_usage_error("export: --checkpoint needs a file name");
+            ckpt = v, i++;
         } else if (!strcmp(a, "--merge")) {
             merge = 1;
         } else if (!strcmp(a, "--step")) {
@@ -183,6 +213,11 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         }
     }
     if (!ra.name) return tool_usage_error("export: name a robot file or --scene NAME (amorph export --help)");
+    if (ckpt) {
+        if (ra.is_scene || ra.vxd || ra.nset || ra.dt_s > 0 || vxa || lattice || stl || amf || step >= 0 || time_s >= 0 || merge)
+            return tool_usage_error("export: --checkpoint takes a run folder and no other output or setting");
+        return export_checkpoint(c, ra.name, ckpt);
+    }
     if (!vxa && !lattice && !stl && !amf)
         return tool_usage_error("export: say what to write: --vxa FILE, --lattice FILE, --stl FILE or --amf FILE");
     {
