@@ -70,6 +70,11 @@ am_status am_port_write_file(const char* path, const void* data, long n, char* e
  * at path is refused with AM_ERR_IO, never written (port/baremetal: the host's semihosting cannot
  * tell, and writes where it points). */
 am_status am_port_append_file(const char* path, const void* data, long n, char* err, int errsz);
+/* flushes path (a regular file of one name, opened without following a link, as for appending;
+ * never created) to the storage: once it returns AM_OK, what was appended to it survives a power
+ * cut. A run's tables are synced so before the checkpoint that counts their rows is written.
+ * AM_ERR_IO when path cannot be opened or flushed (port/baremetal: AM_OK, semihosting cannot) */
+am_status am_port_sync_file(const char* path, char* err, int errsz);
 /* streams: a file written or read piece by piece, so a text of any length needs only a small
  * buffer. A written stream is an atomic replace like am_port_write_file: its pieces go to a
  * temporary file beside path, which a committing am_port_close flushes and renames over path; a

@@ -145,6 +145,17 @@ static void test_files(void)
     CHECK(am_port_append_file(q, "b,2\n", 4, err, sizeof err) == AM_OK, "append: %s", err);
     CHECK(am_port_read_file(q, buf, sizeof buf, &len, err, sizeof err) == AM_OK && !strcmp(buf, "a,1\nb,2\n"),
           "appended file reads '%s'", buf);
+    /* sync: the appended rows flushed to the storage, the file unchanged; a missing file is an
+     * error (never created), and so is a folder */
+    CHECK(am_port_sync_file(q, err, sizeof err) == AM_OK, "sync: %s", err);
+    CHECK(am_port_read_file(q, buf, sizeof buf, &len, err, sizeof err) == AM_OK && !strcmp(buf, "a,1\nb,2\n"), "synced file reads '%s'", buf);
+    path_of(q, sizeof q, "no-such-log.txt");
+    err[0] = 0;
+    CHECK(am_port_sync_file(q, err, sizeof err) == AM_ERR_IO && strstr(err, "no-such-log.txt") && !am_port_exists(q),
+          "sync of a missing file: '%s'", err);
+    path_of(q, sizeof q, "");
+    err[0] = 0;
+    CHECK(am_port_sync_file(q, err, sizeof err) == AM_ERR_IO && err[0], "sync of a folder accepted");
 
     /* writing into a missing directory fails with a message */
     path_of(q, sizeof q, "no/such/dir/file");
@@ -412,6 +423,9 @@ static void test_no_write_through_links(void)
     CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && strstr(err, "log.csv: a symbolic link: refused"),
           "append through a symlink: '%s'", err);
     CHECK(!strcmp(text_of(victim, buf, sizeof buf), "secret\n"), "a row was appended to the victim: '%s'", buf);
+    err[0] = 0;
+    CHECK(am_port_sync_file(p, err, sizeof err) == AM_ERR_IO && strstr(err, "log.csv: a symbolic link: refused"), "sync through a symlink: '%s'",
+          err);
     snprintf(q, sizeof q, "%s/nowhere", d);
     CHECK(unlink(p) == 0 && symlink(q, p) == 0, "symlink %s", p);
     CHECK(am_port_append_file(p, "row\n", 4, err, sizeof err) == AM_ERR_IO && !am_port_exists(q), "append through a dangling link made %s", q);

@@ -276,6 +276,13 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
     return bcast_status(st, err, errsz);
 }
 
+am_status am_port_sync_file(const char* path, char* err, int errsz)
+{
+    if (!collective()) return am_posix_sync_file(path, err, errsz);
+    am_status st = rank == 0 ? am_posix_sync_file(path, err, errsz) : AM_OK;
+    return bcast_status(st, err, errsz);
+}
+
 am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
 {
     if (!collective()) return am_posix_open_write(path, s, err, errsz);

@@ -19,6 +19,7 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
 {
     return am_posix_append_file(path, data, n, err, errsz);
 }
+am_status am_port_sync_file(const char* path, char* err, int errsz) { return am_posix_sync_file(path, err, errsz); }
 am_status am_port_open_write(const char* path, am_port_stream* s, char* err, int errsz)
 {
     return am_posix_open_write(path, s, err, errsz);

@@ -345,6 +345,16 @@ am_status am_posix_append_file(const char* path, const void* data, long n, char*
     return AM_OK;
 }
 
+am_status am_posix_sync_file(const char* path, char* err, int errsz)
+{
+    int fd = open_own(path, O_WRONLY | O_APPEND, "cannot open to sync", err, errsz);
+    if (fd < 0) return AM_ERR_IO;
+    int bad = fsync(fd) != 0, e = errno;
+    if (close(fd) != 0 && !bad) bad = 1, e = errno;
+    if (bad) return am_fail(err, errsz, AM_ERR_IO, "%s: cannot sync: %s", path, strerror(e));
+    return AM_OK;
+}
+
 /* ---- owning a folder: an fcntl lock, released by the kernel when the process ends ---- */
 
 static int lock_fd[AM_PORT_LOCKS];

@@ -17,6 +17,7 @@ int am_posix_is_terminal(void);
 void am_posix_progress(const char* line);
 am_status am_posix_read_file(const char* path, char* buf, long cap, long* len, char* err, int errsz);
 am_status am_posix_append_file(const char* path, const void* data, long n, char* err, int errsz);
+am_status am_posix_sync_file(const char* path, char* err, int errsz);
 am_status am_posix_open_write(const char* path, am_port_stream* s, char* err, int errsz);
 am_status am_posix_write(am_port_stream s, const void* data, long n, char* err, int errsz);
 am_status am_posix_open_read(const char* path, am_port_stream* s, char* err, int errsz);

@@ -383,6 +383,21 @@ am_status am_port_append_file(const char* path, const void* data, long n, char* 
     return AM_OK;
 }
 
+am_status am_port_sync_file(const char* path, char* err, int errsz)
+{
+    /* opened as for appending (never created: OPEN_ALWAYS would make it, so it must exist) */
+    if (GetFileAttributesA(path) == INVALID_FILE_ATTRIBUTES) return fail_last(err, errsz, AM_ERR_IO, "cannot open to sync", path);
+    HANDLE h = open_own(path, FILE_APPEND_DATA | FILE_READ_ATTRIBUTES, "cannot open to sync", err, errsz);
+    if (h == INVALID_HANDLE_VALUE) return AM_ERR_IO;
+    if (!FlushFileBuffers(h)) {
+        am_status st = fail_last(err, errsz, AM_ERR_IO, "cannot sync", path);
+        CloseHandle(h);
+        return st;
+    }
+    if (!CloseHandle(h)) return fail_last(err, errsz, AM_ERR_IO, "cannot sync", path);
+    return AM_OK;
+}
+
 /* ---- owning a folder: LockFileEx on the lock file, released by the system when the process
  * ends, however it ends. The locked byte lies far beyond the file's text (the owner's process id),
  * so that a refused process can still read who owns it. ---- */
