@@ -171,6 +171,7 @@ static TOOL_NOINLINE void progress(const run_slot* s, int n, double t_start, lon
  * when that generation returns, before it is logged, as a Ctrl-C is there. Fired at most once. */
 static struct {
     am_port_signal sig;       /* 0: no interruption asked for */
+    int at_checkpoint;        /* 1: SIG:checkpoint:N, before the checkpoint at N evaluations */
     long after;               /* N */
     long base;                /* the run's evaluations before the generation under way */
     atomic_long started;      /* cancel polls (evaluations about to start) of that generation */
@@ -188,10 +189,14 @@ TOOL_NOINLINE int test_interrupt_setup(void)
     g_test_int.sig = (am_port_signal)0;
     if (!v || !*v) return 0;
     const char* colon = strchr(v, ':');
+    const char* num = colon ? colon + 1 : NULL;
+    const int at_checkpoint = num && !strncmp(num, "checkpoint:", 11);
+    if (at_checkpoint) num += 11;
     for (size_t k = 0; colon && k < sizeof sigs / sizeof sigs[0]; k++)
         if (strlen(sigs[k].name) == (size_t)(colon - v) && !strncmp(v, sigs[k].name, (size_t)(colon - v)) &&
-            tool_parse_long(colon + 1, 0, 1000000000L, &g_test_int.after)) {
+            tool_parse_long(num, 0, 1000000000L, &g_test_int.after)) {
             g_test_int.sig = sigs[k].sig;
+            g_test_int.at_checkpoint = at_checkpoint;
             atomic_store(&g_test_int.fired, 0);
             return 0;
         }
@@ -199,8 +204,8 @@ TOOL_NOINLINE int test_interrupt_setup(void)
     snprintf(shown, sizeof shown, "%s", v);
     for (char* c = shown; *c; c++)
         if ((unsigned char)*c < 32 || *c == 127) *c = '?'; /* the message stays one line */
-    return tool_usage_error("AMORPH_TEST_INTERRUPT = '%s%s': expected SIG:N, SIG one of INT, TERM, KILL, STOP and N a whole number "
-                            "of evaluations >= 0 (a test setting, docs/evolve.md)",
+    return tool_usage_error("AMORPH_TEST_INTERRUPT = '%s%s': expected SIG:N or SIG:checkpoint:N, SIG one of INT, TERM, KILL, STOP "
+                            "and N a whole number of evaluations >= 0 (a test setting, docs/evolve.md)",
                             shown, strlen(v) >= sizeof shown ? "..." : "");
 }
 
@@ -213,7 +218,8 @@ static void test_interrupt_fire(void)
 static int run_cancel(void* ctx)
 {
     (void)ctx;
-    if (g_test_int.sig && !atomic_load(&g_test_int.fired) && g_test_int.base + atomic_fetch_add(&g_test_int.started, 1) == g_test_int.after)
+    if (g_test_int.sig && !g_test_int.at_checkpoint && !atomic_load(&g_test_int.fired) &&
+        g_test_int.base + atomic_fetch_add(&g_test_int.started, 1) == g_test_int.after)
         test_interrupt_fire();
     return am_port_interrupted();
 }
@@ -242,6 +248,16 @@ static am_evo_wave g_wave;
 #define WAVE_SCRATCH(n) NULL
 #endif
 
+/* run e's checkpoint in dir, after its tables: their rows flushed to the storage first, so that
+ * a power cut never leaves a checkpoint that counts rows the tables lost (a test's point
+ * SIG:checkpoint:N is taken between the two); 0 or 1 */
+static int save_checkpoint(const char* dir, const am_evo* e)
+{
+    if (sync_tables(dir)) return 1;
+    if (g_test_int.sig && g_test_int.at_checkpoint && e->evaluations == g_test_int.after) test_interrupt_fire();
+    return write_checkpoint(dir, e);
+}
+
 /* after run k's generation: its log row, best robot and (when due) checkpoint; 0 or 1 */
 static int after_generation(tool_ctx* c, run_slot* r, double best_before, int had_best)
 {
@@ -252,7 +268,7 @@ static int after_generation(tool_ctx* c, run_slot* r, double best_before, int ha
     r->dirty = 1;
     double now = am_port_now();
     if (e->def.checkpoint_seconds == 0 || now - r->last_ckpt >= (double)e->def.checkpoint_seconds || am_evo_done(e)) {
-        if (write_checkpoint(r->dir, e)) return 1;
+        if (save_checkpoint(r->dir, e)) return 1;
         r->last_ckpt = now;
         r->dirty = 0;
     }
@@ -288,7 +304,8 @@ static int wave_generation(tool_ctx* c, run_slot* s, int n, int workers)
     }
     for (int k = 0; k < n; k++) after += s[k].e->evaluations;
     /* a test's point inside this generation that no cancel poll saw (several batches) */
-    if (st == AM_OK && g_test_int.sig && !atomic_load(&g_test_int.fired) && base <= g_test_int.after && g_test_int.after < after)
+    if (st == AM_OK && g_test_int.sig && !g_test_int.at_checkpoint && !atomic_load(&g_test_int.fired) && base <= g_test_int.after &&
+        g_test_int.after < after)
         test_interrupt_fire();
     for (int k = 0; k < n; k++)
         if (s[k].e->generation != gen_before[k] && after_generation(c, &s[k], best_before[k], had_best[k])) return 1;
@@ -329,7 +346,7 @@ int run_wave(tool_ctx* c, run_slot* s, int n, int quiet)
     for (int k = 0; k < n; k++) unfinished += !am_evo_done(s[k].e);
     if ((rc == 130 || am_port_interrupted()) && unfinished) {
         for (int k = 0; k < n; k++)
-            if (s[k].dirty && write_checkpoint(s[k].dir, s[k].e)) return 1;
+            if (s[k].dirty && save_checkpoint(s[k].dir, s[k].e)) return 1;
         am_port_progress(NULL);
         if (n == 1)
             fprintf(stderr, "amorph: interrupted after %ld evaluations (generation %ld); the checkpoint in %s stands.\n"
@@ -423,6 +440,16 @@ static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictu
     return rc;
 }
 
+/* the log row of the checkpoint's last generation (the checkpoint holds its figures), without its
+ * newline, into buf; NULL before the first generation */
+static const char* last_row(const am_evo* e, char* buf, int cap)
+{
+    if (e->generation < 1 || e->last.generation + 1 != e->generation || e->last.evaluations != e->evaluations) return NULL;
+    int n = am_evo_log_row(&e->last, buf, cap - 1);
+    buf[n] = 0;
+    return buf;
+}
+
 /* loads the run in dir into e and checks it against the settings the user gives now (flags o,
  * then `extra` keys and values), its tables included; writes nothing. 0, 1 or 2 */
 static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
@@ -450,13 +477,15 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     e->def.checkpoint_seconds = d.checkpoint_seconds;
     if (e->def.evaluations < e->evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, e->def.evaluations, e->evaluations);
-    if (trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 0)) return 2;
+    char last[256];
+    if ((rc = trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 0, last_row(e, last, sizeof last))) != 0)
+        return rc;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, AM_RUN_EVALS);
     hdr[n - 1] = 0;
     const int has_evals = am_port_exists(path);
-    if (has_evals && trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 0)) return 2;
+    if (has_evals && (rc = trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 0, NULL)) != 0) return rc;
     /* the tables are appended to: a link (or a file of several names) in their place is refused
      * now, before anything is written, not at the first row (appending nothing writes nothing) */
     char err[AM_ERR_MAX];
@@ -471,8 +500,9 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
  * configuration written; 0, 1 or 2 */
 static TOOL_NOINLINE int resume_prepare(const am_evo* e, const char* dir)
 {
-    char path[TOOL_PATH_MAX];
-    if (trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 1)) return 2;
+    char path[TOOL_PATH_MAX], last[256];
+    int rc = trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 1, last_row(e, last, sizeof last));
+    if (rc) return rc;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, AM_RUN_EVALS);
@@ -481,7 +511,7 @@ static TOOL_NOINLINE int resume_prepare(const am_evo* e, const char* dir)
         if (write_text(dir, AM_RUN_EVALS, hdr, n)) return 1;
     } else {
         hdr[n - 1] = 0;
-        if (trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 1)) return 2;
+        if ((rc = trim_table(dir, AM_RUN_EVALS, hdr, e->evaluations, "evaluation", 1, NULL)) != 0) return rc;
     }
     if (write_config(dir, &e->def)) return 1;
     return 0;

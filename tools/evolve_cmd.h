@@ -119,8 +119,11 @@ int write_summary(const char* dir, const am_evo* e, double wall, const step_acco
 /* one row of log.csv */
 int append_log(const char* dir, const am_evo_stats* s);
 /* dir/file (a table with header hdr) checked to hold its first `rows` rows, and cut back to them
- * when cut is 1 (cut 0 writes nothing) */
-int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut);
+ * when cut is 1 (cut 0 writes nothing); one row short, it is mended with `last` when not NULL.
+ * 0, 2 for a damaged table, 1 when it cannot be written */
+int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut, const char* last);
+/* dir's log.csv and evals.csv (those there) flushed to the storage (am_port_sync_file) */
+int sync_tables(const char* dir);
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
 /* the header of a run's evals.csv, with its newline; its length */

@@ -72,6 +72,22 @@ int write_config(const char* dir, const am_evo_def* d)
     return write_stream(dir, AM_RUN_CONFIG, config_writer, d, NULL);
 }
 
+/* log.csv and evals.csv (those there) flushed to the storage, so that the checkpoint written next
+ * never counts a row that a power cut could take back: 0, or 1 after a message */
+TOOL_NOINLINE int sync_tables(const char* dir)
+{
+    static const char* const tables[] = {AM_RUN_LOG, AM_RUN_EVALS};
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    for (int k = 0; k < 2; k++) {
+        path_join(path, sizeof path, dir, tables[k]);
+        if (am_port_exists(path) && am_port_sync_file(path, err, sizeof err) != AM_OK) {
+            fprintf(stderr, "amorph: %s\n", err);
+            return 1;
+        }
+    }
+    return 0;
+}
+
 int write_checkpoint(const char* dir, const am_evo* e)
 {
     return write_stream(dir, AM_RUN_CHECKPOINT, checkpoint_writer, e, "checkpoint");
@@ -166,8 +182,11 @@ TOOL_NOINLINE int append_log(const char* dir, const am_evo_stats* s)
 /* dir/file (a table: log.csv or evals.csv with header hdr) cut back to the header and the first
  * `rows` rows (rows the checkpoint has seen, `unit` its count's name in messages): the file is
  * read line by line, then, when it holds more and cut is 1, copied that far into its replacement
- * (cut 0 only checks it, writing nothing) */
-TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut)
+ * (cut 0 only checks it, writing nothing). A table one row short of the checkpoint (a crash took
+ * back a row the checkpoint counts, or left half of it) is whole again with `last` (the row the
+ * checkpoint can give, without its newline; NULL when it cannot). 0, 2 for a damaged table, 1
+ * when the replacement cannot be written */
+TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut, const char* last)
 {
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
     long n, have = 0;
@@ -195,25 +214,36 @@ TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr,
         tool_src_close(&src);
         return tool_usage_error("%s", err);
     }
-    if (have < rows) {
+    const int mend = have == rows - 1 && last != NULL;
+    if (have < rows && !mend) {
         tool_src_close(&src);
-        return tool_usage_error("%s: %ld rows, but the checkpoint is at %s %ld (the table is damaged)", path, have, unit, rows);
+        return tool_usage_error("%s: %ld whole rows, but the checkpoint counts %ld %ss: the rows a crash took back cannot be rebuilt, "
+                                "so the run cannot go on (its files are left as they are)",
+                                path, have, rows, unit);
     }
-    if (!more || !cut) {
+    if ((!more && !mend) || !cut) {
         tool_src_close(&src);
         return 0;
     }
     tool_out o;
-    if (tool_src_rewind(&src, err, sizeof err) != AM_OK || tool_out_open(&o, path)) {
+    if (tool_src_rewind(&src, err, sizeof err) != AM_OK) {
         tool_src_close(&src);
         return tool_usage_error("%s", err);
     }
-    for (long k = 0; k <= rows && tool_src_next(&src, &line, &n, err, sizeof err) == 1; k++) {
+    if (tool_out_open(&o, path)) {
+        tool_src_close(&src);
+        return 1;
+    }
+    for (long k = 0; k <= have && tool_src_next(&src, &line, &n, err, sizeof err) == 1; k++) {
         am_text_write(&o.text, line, n);
         am_text_write(&o.text, "\n", 1);
     }
     tool_src_close(&src);
-    return tool_out_close(&o, 1) ? 2 : 0;
+    if (mend) {
+        am_text_write(&o.text, last, (long)strlen(last));
+        am_text_write(&o.text, "\n", 1);
+    }
+    return tool_out_close(&o, 1);
 }
 
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
