@@ -1,8 +1,8 @@
-# tests/cli_run_folder.sh: no run lost (issue 46): the tables reach the disk before the checkpoint
-# that counts their rows, a resume after a torn write mends what it can or refuses in one line
-# (tables cut short, half a row, a kill between the tables and the checkpoint at a counted point),
-# and a write failure in an accepted resume is a runtime failure (exit 1). Run from the
-# repository root.
+# tests/cli_run_folder.sh: no run lost (issue 46): a run folder without its checkpoint is told as it
+# is and never overwritten, the tables reach the disk before the checkpoint that counts their rows,
+# a resume after a torn write mends what it can or refuses in one line (tables cut short, half a
+# row, a kill between the tables and the checkpoint at a counted point), and a write failure in an
+# accepted resume is a runtime failure (exit 1). Run from the repository root.
 . tests/shlib.sh
 
 cat >"$TMPD/small.cfg" <<'CFG'
@@ -21,6 +21,19 @@ E="$AMORPH evolve --config $TMPD/small.cfg --quiet --no-pictures"
 # snapall DIR: every entry of DIR, a link as its target, a file by its checksum
 snapall() { (cd "$1" && for f in $(ls -A | sort); do if [ -L "$f" ]; then echo "$f -> $(readlink "$f")"; elif [ -d "$f" ]; then echo "$f/"; else echo "$f $(cksum <"$f")"; fi; done); }
 expect_ok $E --out "$TMPD/a" --threads 1
+
+# --- a folder without its checkpoint: what it holds is said, and --out does not overwrite it ---
+for how in missing dangling; do
+    d="$TMPD/nock-$how"
+    cp -r "$TMPD/a" "$d" && rm "$d/checkpoint.txt"
+    if [ $how = dangling ]; then ln -s "$TMPD/nothere" "$d/checkpoint.txt"; fi
+    before=$(snapall "$d")
+    expect_fail 2 "no checkpoint.txt \(missing, or a link to nothing\), so the run cannot go on; the folder holds what it did: log.csv 6 rows \(generations\), evals.csv 36 rows \(evaluations\), and summary.txt .*keep them" \
+        "$AMORPH" evolve --resume "$d" --quiet
+    expect_fail 2 "holds the tables of a run without its checkpoint \(log.csv 6 rows.*evals.csv 36 rows.*\): a new run would overwrite them" \
+        $E --out "$d"
+    if [ "$(snapall "$d")" = "$before" ]; then ok; else ko "$how checkpoint: a refused --resume or --out changed the folder"; fi
+done
 
 # --- the tables are on the disk before the checkpoint that counts their rows ---
 # strace lists every write, fsync and rename: no checkpoint is renamed into place while a row

@@ -395,12 +395,29 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 }
 
 
-/* dir holds a run already: --out is refused (nothing written) */
-static int refuse_used(const char* dir)
+/* what a run folder without its checkpoint holds of a run: its tables' rows and a summary; 1 when
+ * a table holds a row (the text then says so, for a message), else 0 */
+static int folder_holds(const char* dir, char* text, size_t cap)
 {
     char path[TOOL_PATH_MAX];
+    const long log_rows = table_rows(dir, AM_RUN_LOG), eval_rows = table_rows(dir, AM_RUN_EVALS);
+    path_join(path, sizeof path, dir, AM_RUN_SUMMARY_TXT);
+    snprintf(text, cap, "log.csv %ld rows (generations), evals.csv %ld rows (evaluations)%s", log_rows > 0 ? log_rows : 0,
+             eval_rows > 0 ? eval_rows : 0, am_port_exists(path) ? ", and summary.txt (the run's end)" : "");
+    return log_rows > 0 || eval_rows > 0;
+}
+
+/* dir holds a run already, or tables of one without their checkpoint: --out is refused (nothing
+ * written) */
+static int refuse_used(const char* dir)
+{
+    char path[TOOL_PATH_MAX], holds[192];
     path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
     if (am_port_exists(path)) return tool_usage_error("%s holds a run already: continue it with --resume %s, or choose another --out", dir, dir);
+    if (folder_holds(dir, holds, sizeof holds))
+        return tool_usage_error("%s holds the tables of a run without its checkpoint (%s): a new run would overwrite them; keep them, "
+                                "and choose another --out",
+                                dir, holds);
     return 0;
 }
 
@@ -460,6 +477,11 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     path_join(path, sizeof path, dir, AM_RUN_LOG);
     started = started || am_port_exists(path);
     path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
+    char holds[192];
+    if (!am_port_exists(path) && folder_holds(dir, holds, sizeof holds))
+        return tool_usage_error("--resume %s: no checkpoint.txt (missing, or a link to nothing), so the run cannot go on; the folder "
+                                "holds what it did: %s: keep them (--out %s refuses to overwrite them), and start again in another folder",
+                                dir, holds, dir);
     if (started && !am_port_exists(path))
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",

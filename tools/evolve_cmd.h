@@ -122,6 +122,8 @@ int append_log(const char* dir, const am_evo_stats* s);
  * when cut is 1 (cut 0 writes nothing); one row short, it is mended with `last` when not NULL.
  * 0, 2 for a damaged table, 1 when it cannot be written */
 int trim_table(const char* dir, const char* file, const char* hdr, long rows, const char* unit, int cut, const char* last);
+/* the rows after the header of dir/file (a half row counted), or -1 when it cannot be read */
+long table_rows(const char* dir, const char* file);
 /* dir's log.csv and evals.csv (those there) flushed to the storage (am_port_sync_file) */
 int sync_tables(const char* dir);
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */

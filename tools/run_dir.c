@@ -246,6 +246,21 @@ TOOL_NOINLINE int trim_table(const char* dir, const char* file, const char* hdr,
     return tool_out_close(&o, 1);
 }
 
+/* the rows after the header of dir/file (a half row counted), or -1 when it cannot be read */
+TOOL_NOINLINE long table_rows(const char* dir, const char* file)
+{
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX], *line;
+    long n, rows = -1;
+    int r;
+    path_join(path, sizeof path, dir, file);
+    if (!am_port_exists(path)) return -1;
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return -1;
+    while ((r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) rows++;
+    tool_src_close(&src);
+    return r < 0 ? -1 : rows < 0 ? 0 : rows;
+}
+
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev)
 {
     evals_out* o = (evals_out*)ctx;
