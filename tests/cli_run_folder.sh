@@ -1,8 +1,9 @@
 # tests/cli_run_folder.sh: no run lost (issue 46): a run folder without its checkpoint is told as it
 # is and never overwritten, the tables reach the disk before the checkpoint that counts their rows,
 # a resume after a torn write mends what it can or refuses in one line (tables cut short, half a
-# row, a kill between the tables and the checkpoint at a counted point), and a write failure in an
-# accepted resume is a runtime failure (exit 1). Run from the repository root.
+# row, a kill between the tables and the checkpoint at a counted point), a write failure in an
+# accepted resume is a runtime failure (exit 1), and a folder where a replaced file goes is found
+# before any evaluation. Run from the repository root.
 . tests/shlib.sh
 
 cat >"$TMPD/small.cfg" <<'CFG'
@@ -101,5 +102,23 @@ if [ $rc -eq 1 ] && grep -q "fd/evals.csv: .*File too large" "$TMPD/err" && [ "$
 else ko "a write failure in an accepted resume: exit $rc (want 1): $(cat "$TMPD/err")"; fi
 expect_ok "$AMORPH" evolve --resume "$TMPD/fd" --quiet --no-pictures
 if cmp -s "$TMPD/fd/evals.csv" "$TMPD/a/evals.csv"; then ok; else ko "the run after a failed resume differs"; fi
+
+# --- a folder where the run replaces a file: refused before the first evaluation ---
+for f in summary.txt summary.json best.genome; do
+    d="$TMPD/pl-$f"
+    cp -r "$TMPD/a" "$d" && rm "$d/$f" && mkdir "$d/$f"
+    before=$(snapall "$d")
+    expect_fail 2 "pl-$f/$f: not a regular file \(a folder, FIFO or device\): refused \(the run replaces $f: move it away\)" \
+        "$AMORPH" evolve --resume "$d" --evaluations 48 --quiet --no-pictures
+    if [ "$(snapall "$d")" = "$before" ]; then ok; else ko "planted $f: the refused resume changed the folder (evaluated?)"; fi
+done
+for f in best.png fitness.svg summary.txt; do
+    d="$TMPD/new-$f"
+    mkdir -p "$d/$f"
+    expect_fail 2 "new-$f/$f: not a regular file .*move it away" "$AMORPH" evolve --config "$TMPD/small.cfg" --quiet --out "$d"
+    if [ ! -e "$d/log.csv" ] && [ ! -e "$d/checkpoint.txt" ]; then ok; else ko "planted $f in a new run: files written"; fi
+done
+# without pictures, a folder named best.png is none of the run's business
+expect_ok $E --out "$TMPD/new-best.png"
 
 summary tests/cli_run_folder.sh

@@ -395,6 +395,27 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 }
 
 
+/* the files a run replaces (a temporary renamed over each name): a folder, FIFO or device at one
+ * of their names would fail that rename, at the end of the run for the summaries and pictures, so
+ * it is refused before the first evaluation. The first `n` names: the run's own files (6), or
+ * with its pictures (9). 0, or 2 after a message */
+int refuse_planted(const char* dir, int n)
+{
+    static const char* const names[] = {AM_RUN_CONFIG,      AM_RUN_CHECKPOINT,   AM_RUN_BEST_GENOME,
+                                        AM_RUN_BEST_LATTICE, AM_RUN_SUMMARY_TXT, AM_RUN_SUMMARY_JSON,
+                                        AM_RUN_BEST_PNG,     AM_RUN_BEST_HTML,    AM_RUN_FITNESS_SVG};
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    for (int k = 0; k < n && k < (int)(sizeof names / sizeof names[0]); k++) {
+        path_join(path, sizeof path, dir, names[k]);
+        am_port_stream st;
+        if (!am_port_exists(path)) continue;
+        if (am_port_open_read(path, &st, err, sizeof err) != AM_OK)
+            return tool_usage_error("%s (the run replaces %s: move it away)", err, names[k]);
+        am_port_close(st, 0, err, sizeof err);
+    }
+    return 0;
+}
+
 /* what a run folder without its checkpoint holds of a run: its tables' rows and a summary; 1 when
  * a table holds a row (the text then says so, for a message), else 0 */
 static int folder_holds(const char* dir, char* text, size_t cap)
@@ -407,8 +428,8 @@ static int folder_holds(const char* dir, char* text, size_t cap)
     return log_rows > 0 || eval_rows > 0;
 }
 
-/* dir holds a run already, or tables of one without their checkpoint: --out is refused (nothing
- * written) */
+/* dir holds a run already, or tables of one without their checkpoint, or a folder or device where
+ * the run writes a file: --out is refused (nothing written) */
 static int refuse_used(const char* dir)
 {
     char path[TOOL_PATH_MAX], holds[192];
@@ -418,7 +439,7 @@ static int refuse_used(const char* dir)
         return tool_usage_error("%s holds the tables of a run without its checkpoint (%s): a new run would overwrite them; keep them, "
                                 "and choose another --out",
                                 dir, holds);
-    return 0;
+    return refuse_planted(dir, 6);
 }
 
 /* A run folder is written only once the command is accepted: a folder in use by another process
@@ -488,6 +509,7 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
                                 dir, dir);
     int rc = read_checkpoint(path, e);
     if (rc) return rc;
+    if (refuse_planted(dir, 6)) return 2;
     /* what the run folder's config.txt and today's flags say */
     path_join(path, sizeof path, dir, AM_RUN_CONFIG);
     am_evo_def d;
@@ -611,6 +633,8 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
     if (o.resume) snprintf(dir, sizeof dir, "%s", o.resume);
     else if (o.out) snprintf(dir, sizeof dir, "%s", o.out);
     else if (default_out(dir, sizeof dir)) return 2;
+    /* a folder where a picture goes is found now, not after the evaluations */
+    if (TOOL_PICTURES && o.pictures && refuse_planted(dir, 9)) return 2;
     am_port_catch_interrupt();
     const double t0 = am_port_now();
     int rc = run_opened(c, o.resume ? open_resume(&c->evo, dir, &o, NULL) : open_start(&c->evo, &d, dir), dir, o.quiet, o.pictures, reuse);

@@ -126,6 +126,9 @@ int trim_table(const char* dir, const char* file, const char* hdr, long rows, co
 long table_rows(const char* dir, const char* file);
 /* dir's log.csv and evals.csv (those there) flushed to the storage (am_port_sync_file) */
 int sync_tables(const char* dir);
+/* a folder, FIFO or device where the run in dir replaces a file is refused: the first n of its
+ * files (6: config, checkpoint, best genome and lattice, summaries; 9: its pictures too) */
+int refuse_planted(const char* dir, int n);
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
 /* the header of a run's evals.csv, with its newline; its length */
