@@ -2,8 +2,9 @@
 # is and never overwritten, the tables reach the disk before the checkpoint that counts their rows,
 # a resume after a torn write mends what it can or refuses in one line (tables cut short, half a
 # row, a kill between the tables and the checkpoint at a counted point), a write failure in an
-# accepted resume is a runtime failure (exit 1), and a folder where a replaced file goes is found
-# before any evaluation. Run from the repository root.
+# accepted resume is a runtime failure (exit 1), a folder where a replaced file goes is found
+# before any evaluation, a link to nothing named runs/run-001 is passed over, a key set twice in a
+# config file and an empty config.txt are named as such. Run from the repository root.
 . tests/shlib.sh
 
 cat >"$TMPD/small.cfg" <<'CFG'
@@ -120,5 +121,24 @@ for f in best.png fitness.svg summary.txt; do
 done
 # without pictures, a folder named best.png is none of the run's business
 expect_ok $E --out "$TMPD/new-best.png"
+
+# --- the default run folder passes over a link to nothing named run-001 ---
+mkdir -p "$TMPD/dl/runs" && ln -s "$TMPD/nowhere" "$TMPD/dl/runs/run-001"
+ABS=$(cd "$(dirname "$AMORPH")" && pwd)/$(basename "$AMORPH")
+(cd "$TMPD/dl" && exec "$ABS" evolve --config "$TMPD/small.cfg" --evaluations 6 --quiet --no-pictures) >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+if [ $rc -eq 0 ] && [ -s "$TMPD/dl/runs/run-002/summary.txt" ] && [ -L "$TMPD/dl/runs/run-001" ] && [ ! -e "$TMPD/nowhere" ]; then ok
+else ko "default folder beside a dangling run-001: exit $rc, $(cat "$TMPD/err"), $(ls "$TMPD/dl/runs" | tr '\n' ' ')"; fi
+
+# --- a key set twice in a config file: an error at the second line ---
+printf 'population = 6\nseed = 3\n# again\npopulation = 8\n' >"$TMPD/dup.cfg"
+expect_fail 2 "dup.cfg:4: population set again \(first on line 1\)" "$AMORPH" evolve --config "$TMPD/dup.cfg" --print-config
+cp -r "$TMPD/a" "$TMPD/dupr" && echo "seed = 11" >>"$TMPD/dupr/config.txt"
+expect_fail 2 "dupr/config.txt:[0-9]+: seed set again \(first on line [0-9]+\)" "$AMORPH" evolve --resume "$TMPD/dupr" --quiet
+
+# --- an empty config.txt is said to be empty ---
+cp -r "$TMPD/a" "$TMPD/ec" && : >"$TMPD/ec/config.txt"
+expect_fail 2 "ec/config.txt is empty: the run's settings are not there" "$AMORPH" evolve --resume "$TMPD/ec" --quiet
+printf '# nothing\n\n' >"$TMPD/ec/config.txt"
+expect_fail 2 "ec/config.txt is empty" "$AMORPH" evolve --resume "$TMPD/ec" --quiet
 
 summary tests/cli_run_folder.sh

@@ -488,6 +488,23 @@ static const char* last_row(const am_evo* e, char* buf, int cap)
     return buf;
 }
 
+/* 1 when the configuration file at path holds no setting (nothing, blank lines or comments) */
+static int config_empty(const char* path)
+{
+    char err[AM_ERR_MAX], *line;
+    long n;
+    int r, empty = 1;
+    tool_src src;
+    if (tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, sizeof err) != AM_OK) return 0;
+    while (empty && (r = tool_src_next(&src, &line, &n, err, sizeof err)) == 1) {
+        const char* p = line;
+        while (*p == ' ' || *p == '\t' || *p == '\r') p++;
+        if (*p && *p != '#') empty = 0;
+    }
+    tool_src_close(&src);
+    return empty;
+}
+
 /* loads the run in dir into e and checks it against the settings the user gives now (flags o,
  * then `extra` keys and values), its tables included; writes nothing. 0, 1 or 2 */
 static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts* o, const char* const* extra)
@@ -510,8 +527,13 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     int rc = read_checkpoint(path, e);
     if (rc) return rc;
     if (refuse_planted(dir, 6)) return 2;
-    /* what the run folder's config.txt and today's flags say */
+    /* what the run folder's config.txt and today's flags say (an empty one says nothing: it is
+     * not a change of settings, but a file that lost them) */
     path_join(path, sizeof path, dir, AM_RUN_CONFIG);
+    if (config_empty(path))
+        return tool_usage_error("--resume %s: %s is empty: the run's settings are not there (a run continues only with its own "
+                                "settings: put the file back from a copy)",
+                                dir, path);
     am_evo_def d;
     if (build_def(o, path, extra, 1, &d, "resume")) return 2;
     if (!am_evo_same_run(&e->def, &d, what, sizeof what))

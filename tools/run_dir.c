@@ -284,15 +284,22 @@ int evals_header(const am_evo_def* d, char* buf, int cap)
     return n;
 }
 
-/* a fresh folder name under runs/ */
+/* a fresh folder name under runs/, the folder made: a name that exists (a link to nothing too,
+ * which am_port_exists does not see, but the making of the folder does) is someone else's, and
+ * the next one is tried; after 100 names in a row that cannot be made, the first failure is
+ * reported (a folder that cannot be made at all: the board's host without the folder) */
 int default_out(char* out, size_t cap)
 {
-    char err[AM_ERR_MAX];
+    char err[AM_ERR_MAX], first[AM_ERR_MAX];
     if (am_port_make_dir("runs", err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
-    for (int k = 1; k < 100000; k++) {
+    int failed = 0;
+    for (int k = 1; k < 100000 && failed < 100; k++) {
         snprintf(out, cap, "runs/run-%03d", k);
-        if (!am_port_exists(out)) return 0;
+        if (am_port_exists(out)) continue;
+        if (am_port_make_dir(out, err, sizeof err) == AM_OK) return 0;
+        if (!failed++) snprintf(first, sizeof first, "%s", err);
     }
+    if (failed) return tool_usage_error("%s", first);
     return tool_usage_error("runs/: no free run-NNN name left");
 }
 
@@ -402,18 +409,32 @@ int tool_is_run_dir(const char* path)
     return am_port_exists(p);
 }
 
+_Static_assert(AM_EVO_KEY_MAX <= 64, "config_ctx.seen holds a bit per configuration key");
 typedef struct config_ctx {
     am_evo_def* d;
     const char* fname;
     int* key_line;
+    uint64_t seen;              /* bit k: key k set by a line already (AM_EVO_KEY_MAX is 64) */
 } config_ctx;
 
+/* one line of a configuration file; a key set twice is an error at its second line (which of two
+ * values was meant is not the program's guess) */
 static am_status config_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
 {
     config_ctx* c = (config_ctx*)ctx;
+    const int key = am_evo_line_key(line, n);
+    const uint64_t bit = key >= 0 && key < AM_EVO_KEY_MAX ? (uint64_t)1 << key : 0;
+    if (c->seen & bit) {
+        if (c->key_line)
+            return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s set again (first on line %d): say it once", c->fname, lineno,
+                           am_evo_key_name(key), c->key_line[key]);
+        return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s set again: say it once", c->fname, lineno, am_evo_key_name(key));
+    }
     am_status st = am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
-    const int key = c->key_line && st == AM_OK ? am_evo_line_key(line, n) : -1;
-    if (key >= 0 && key < AM_EVO_KEY_MAX) c->key_line[key] = lineno;
+    if (st == AM_OK && bit) {
+        c->seen |= bit;
+        if (c->key_line) c->key_line[key] = lineno;
+    }
     return st;
 }
 
@@ -427,7 +448,7 @@ am_status tool_read_config_lines(const char* path, am_evo_def* d, int nul_ends, 
     tool_src src;
     am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, nul_ends, err, errsz);
     if (st == AM_OK) {
-        config_ctx c = {d, path, key_line};
+        config_ctx c = {d, path, key_line, 0};
         st = tool_src_each(&src, config_line, &c, err, errsz);
     } else if (src.binary) {
         st = tool_src_binary(&src, err, errsz);
