@@ -399,7 +399,7 @@ static int finish_pictures(tool_ctx* c, const char* dir)
  * of their names would fail that rename, at the end of the run for the summaries and pictures, so
  * it is refused before the first evaluation. The first `n` names: the run's own files (6), or
  * with its pictures (9). 0, or 2 after a message */
-int refuse_planted(const char* dir, int n)
+TOOL_NOINLINE int refuse_planted(const char* dir, int n)
 {
     static const char* const names[] = {AM_RUN_CONFIG,      AM_RUN_CHECKPOINT,   AM_RUN_BEST_GENOME,
                                         AM_RUN_BEST_LATTICE, AM_RUN_SUMMARY_TXT, AM_RUN_SUMMARY_JSON,
@@ -418,7 +418,7 @@ int refuse_planted(const char* dir, int n)
 
 /* what a run folder without its checkpoint holds of a run: its tables' rows and a summary; 1 when
  * a table holds a row (the text then says so, for a message), else 0 */
-static int folder_holds(const char* dir, char* text, size_t cap)
+static TOOL_NOINLINE int folder_holds(const char* dir, char* text, size_t cap)
 {
     char path[TOOL_PATH_MAX];
     const long log_rows = table_rows(dir, AM_RUN_LOG), eval_rows = table_rows(dir, AM_RUN_EVALS);
@@ -478,18 +478,30 @@ static int run_opened(tool_ctx* c, int rc, const char* dir, int quiet, int pictu
     return rc;
 }
 
-/* the log row of the checkpoint's last generation (the checkpoint holds its figures), without its
- * newline, into buf; NULL before the first generation */
-static const char* last_row(const am_evo* e, char* buf, int cap)
+/* dir/log.csv checked (cut 0) or cut back (cut 1) to run e's checkpoint; one row short, it is
+ * mended with the log row of the checkpoint's last generation (the checkpoint holds its figures).
+ * trim_table's status */
+static TOOL_NOINLINE int trim_log(const am_evo* e, const char* dir, int cut)
 {
-    if (e->generation < 1 || e->last.generation + 1 != e->generation || e->last.evaluations != e->evaluations) return NULL;
-    int n = am_evo_log_row(&e->last, buf, cap - 1);
-    buf[n] = 0;
-    return buf;
+    char last[256];
+    const int has_last = e->generation >= 1 && e->last.generation + 1 == e->generation && e->last.evaluations == e->evaluations;
+    if (has_last) last[am_evo_log_row(&e->last, last, (int)sizeof last - 1)] = 0;
+    return trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", cut, has_last ? last : NULL);
+}
+
+/* --resume of a folder without its checkpoint whose tables hold rows: what it holds, in one line
+ * (2); 0 when they hold none */
+static TOOL_NOINLINE int refuse_no_checkpoint(const char* dir)
+{
+    char holds[192];
+    if (!folder_holds(dir, holds, sizeof holds)) return 0;
+    return tool_usage_error("--resume %s: no checkpoint.txt (missing, or a link to nothing), so the run cannot go on; the folder "
+                            "holds what it did: %s: keep them (--out %s refuses to overwrite them), and start again in another folder",
+                            dir, holds, dir);
 }
 
 /* 1 when the configuration file at path holds no setting (nothing, blank lines or comments) */
-static int config_empty(const char* path)
+static TOOL_NOINLINE int config_empty(const char* path)
 {
     char err[AM_ERR_MAX], *line;
     long n;
@@ -515,11 +527,7 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     path_join(path, sizeof path, dir, AM_RUN_LOG);
     started = started || am_port_exists(path);
     path_join(path, sizeof path, dir, AM_RUN_CHECKPOINT);
-    char holds[192];
-    if (!am_port_exists(path) && folder_holds(dir, holds, sizeof holds))
-        return tool_usage_error("--resume %s: no checkpoint.txt (missing, or a link to nothing), so the run cannot go on; the folder "
-                                "holds what it did: %s: keep them (--out %s refuses to overwrite them), and start again in another folder",
-                                dir, holds, dir);
+    if (!am_port_exists(path) && refuse_no_checkpoint(dir)) return 2;
     if (started && !am_port_exists(path))
         return tool_usage_error("--resume %s: no checkpoint.txt: the run stopped before its first checkpoint, so no evaluation was "
                                 "done; start it again with --out %s",
@@ -543,9 +551,7 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
     e->def.checkpoint_seconds = d.checkpoint_seconds;
     if (e->def.evaluations < e->evaluations)
         return tool_usage_error("--resume %s: evaluations = %ld is below the %ld already done", dir, e->def.evaluations, e->evaluations);
-    char last[256];
-    if ((rc = trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 0, last_row(e, last, sizeof last))) != 0)
-        return rc;
+    if ((rc = trim_log(e, dir, 0)) != 0) return rc;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
     path_join(path, sizeof path, dir, AM_RUN_EVALS);
@@ -566,8 +572,8 @@ static TOOL_NOINLINE int resume_check(am_evo* e, const char* dir, const evo_opts
  * configuration written; 0, 1 or 2 */
 static TOOL_NOINLINE int resume_prepare(const am_evo* e, const char* dir)
 {
-    char path[TOOL_PATH_MAX], last[256];
-    int rc = trim_table(dir, AM_RUN_LOG, am_evo_log_header(), e->generation, "generation", 1, last_row(e, last, sizeof last));
+    char path[TOOL_PATH_MAX];
+    int rc = trim_log(e, dir, 1);
     if (rc) return rc;
     char hdr[AM_EVO_EVALS_ROW_MAX + 2];
     int n = evals_header(&e->def, hdr, (int)sizeof hdr);
