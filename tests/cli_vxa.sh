@@ -73,13 +73,13 @@ F=tests/data/voxcad_quadruped.vxa
 "$AMORPH" sim "$F" --cycles 2 --relax-max 400 >"$D/q.out" 2>"$D/q.err"; rc=$?
 if [ $rc -eq 0 ] && grep -q '^voxels = 44$' "$D/q.out" && grep -q '^diverged = 0$' "$D/q.out"; then ok
 else ko "sim $F -> exit $rc: $(head -c 300 "$D/q.out") $(head -c 300 "$D/q.err")"; fi
-for w in "$F:18: warning: unsupported tag <Features> ignored" "$F:23: warning: unsupported tag <StopCondition> ignored" \
-         "$F:86: warning: unsupported tag <IsConductive> ignored"; do
+for w in "$F:18: warning: unsupported tag <Features> ignored" "$F:86: warning: unsupported tag <IsConductive> ignored"; do
     if grep -qF "$w" "$D/q.err"; then ok; else ko "missing warning '$w' in: $(cat "$D/q.err")"; fi
 done
-# (the file's warnings; its <DtFrac> 0.9 is amorph's default step, taken without one; amorph sim adds
-# its own line when 400 relaxation steps do not settle the body)
-if [ "$(grep -c "^$F:" "$D/q.err")" -eq 3 ]; then ok; else ko "expected 3 warning lines: $(cat "$D/q.err")"; fi
+# (the file's warnings; its <DtFrac> 0.9 is amorph's default step, taken without one; its
+# <StopCondition> is read: --cycles 2 sets the length instead; amorph sim adds its own line when 400
+# relaxation steps do not settle the body)
+if [ "$(grep -c "^$F:" "$D/q.err")" -eq 2 ]; then ok; else ko "expected 2 warning lines: $(cat "$D/q.err")"; fi
 # its materials and environment arrive: names made safe, linear CTE, amplitude, damping
 expect_ok "$AMORPH" export "$F" --lattice "$D/q.lattice"
 if grep -q '^material Active__ E=1000000 density=1000 poisson=0.35 cte=0.01 phase=0 mu_s=1 mu_k=0.5 zeta_int=1 zeta_glob=0.01 zeta_col=0.8 color=#ff0000 fixed=0$' "$D/q.lattice"
@@ -296,5 +296,56 @@ sed 's|<Environment>|<Environment>\n<FluidEnvironment>1</FluidEnvironment>|' tes
 "$AMORPH" sim "$D/water.vxa" --cycles 1 --relax-max 20 >/dev/null 2>"$D/water.err"
 check "water: $(cat "$D/water.err")" grep -qxF "$D/water.vxa: warning: results will differ from the reference simulator: amorph does not simulate FluidEnvironment (warnings above)" "$D/water.err"
 check "a summary for a file whose warnings do not matter: $(cat "$D/q.err")" [ -z "$(grep 'results will differ' "$D/q.err")" ]
+
+# VoxCAD's run length (<StopCondition>) and evosoro's transient (<InitCmTime>) as the evaluation's
+# cycles and least relaxation: 0.4 s less 0.1 s is 12 periods of 0.025 s, named in one note line
+E=tests/data/evosoro_stop.vxa
+"$AMORPH" sim "$E" >"$D/stop.out" 2>"$D/stop.err"
+ps=$(sed -n 's/^period_steps = //p' "$D/stop.out")
+check "StopCondition 0.4 s less InitCmTime 0.1 s: 12 cycles of $ps steps: $(grep -E '^(move_steps|relax_steps|dt) ' "$D/stop.out" | tr '\n' ' ') $(cat "$D/stop.err")" \
+    sh -c "[ -n '$ps' ] && grep -q '^move_steps = $((12 * ${ps:-0}))$' '$D/stop.out'"
+check "the note on the run length: $(cat "$D/stop.err")" \
+    grep -q "^$E: note: the file's run length as amorph's evaluation: cycles = 12 (<StopCondition> 0.4 s less <InitCmTime> 0.1 s: 11.99[0-9]* periods of 0.025 s), relax_min_steps = [0-9]* and relax_max_steps = [0-9]* (<InitCmTime> 0.1 s: the relaxation lasts at least that long before the centre of mass is recorded)$" "$D/stop.err"
+check "the relaxation lasts InitCmTime 0.1 s or more: $(grep -E '^(relax_steps|dt) ' "$D/stop.out" | tr '\n' ' ')" \
+    awk -v r="$(sed -n 's/^relax_steps = //p' "$D/stop.out")" -v dt="$(sed -n 's/^dt = //p' "$D/stop.out")" 'BEGIN { exit !(r * dt >= 0.1) }'
+check "the file's warnings: $(cat "$D/stop.err")" [ "$(grep -c "^$E:" "$D/stop.err")" -eq 1 ]
+"$AMORPH" sim "$E" --cycles 3 >"$D/stop3.out" 2>"$D/stop3.err"
+check "--cycles 3 over the file's StopCondition: $(grep '^move_steps' "$D/stop3.out") $(cat "$D/stop3.err")" \
+    sh -c "grep -q '^move_steps = $((3 * ${ps:-0}))$' '$D/stop3.out' && ! grep -q 'cycles = 12' '$D/stop3.err'"
+# a stop amorph has no counterpart for: a warning, the summary line with the setting, amorph's cycles
+sed 's|<StopConditionType>2<|<StopConditionType>5<|' "$E" >"$D/stop5.vxa"
+"$AMORPH" sim "$D/stop5.vxa" --relax-max 300 >"$D/stop5.out" 2>"$D/stop5.err"
+check "StopConditionType 5: $(cat "$D/stop5.err")" sh -c "grep -q '^$D/stop5.vxa:20: warning: <StopConditionType> 5 (until the kinetic energy is below a threshold) is not simulated' '$D/stop5.err' && \
+    grep -qF '$D/stop5.vxa: warning: results will differ from the reference simulator: amorph does not simulate StopConditionType 5 (cycles = 10 run: --cycles N) (warnings above)' '$D/stop5.err' && \
+    grep -q '^move_steps = $((10 * ${ps:-0}))$' '$D/stop5.out'"
+# a run length past the configuration's range: refused before any step, with the file's line
+expect_fail 2 "^amorph: tests/data/hostile/stop_time_1e9.vxa:19: <StopCondition> 1e\+09 seconds less <InitCmTime> is [0-9.e+]* actuation periods of 0.025 s: cycles = '[0-9]*': expected an integer in \[0, 100000\]$" "$AMORPH" sim tests/data/hostile/stop_time_1e9.vxa
+expect_fail 2 "^amorph: tests/data/hostile/init_cm_time_1e5.vxa:19: <InitCmTime> 100000 s is .*: relax_min_steps = '[0-9]*': expected an integer in \[0, 100000000\]$" "$AMORPH" sim tests/data/hostile/init_cm_time_1e5.vxa
+# exported, the run length travels as <Amorph>'s <Evaluation>: the same run
+expect_ok "$AMORPH" export "$E" --vxa "$D/stop_exp.vxa"
+"$AMORPH" sim "$D/stop_exp.vxa" >"$D/stop_exp.out" 2>/dev/null
+check "the export of the StopCondition file runs the same: $(hash_of "$D/stop.out") vs $(hash_of "$D/stop_exp.out")" \
+    sh -c "[ -n '$(hash_of "$D/stop.out")' ] && [ '$(hash_of "$D/stop.out")' = '$(hash_of "$D/stop_exp.out")' ]"
+
+# a body starts where the file puts it (VoxCAD's placement): a beam clamped two layers above the
+# floor hangs there and droops, where amorph's own lattices are lowered onto the floor; without the
+# empty layers below it, the file runs otherwise
+H=tests/data/voxcad_hanging.vxa
+"$AMORPH" sim "$H" --cycles 1 --trajectory "$D/hang.csv" >"$D/hang.out" 2>"$D/hang.err"
+sed 's|<Z_Voxels>3</Z_Voxels>|<Z_Voxels>1</Z_Voxels>|; 0,/<Layer><!\[CDATA\[0000\]\]><\/Layer>/{//d}; 0,/<Layer><!\[CDATA\[0000\]\]><\/Layer>/{//d}' "$H" >"$D/hang_low.vxa"
+"$AMORPH" sim "$D/hang_low.vxa" --cycles 1 >"$D/hang_low.out" 2>/dev/null
+z0=$(sed -n 2p "$D/hang.csv" | cut -d, -f6); z1=$(tail -n 1 "$D/hang.csv" | cut -d, -f6)
+check "the clamped beam starts 2.5 layers up (com z $z0) and droops (to $z1), warnings: $(cat "$D/hang.err")" \
+    awk -v a="$z0" -v b="$z1" 'BEGIN { exit !(a > 0.0249 && a < 0.0251 && b < a - 1e-4 && b > 0.005) }'
+check "the raised beam and the beam on the floor simulate alike: $(hash_of "$D/hang.out")" \
+    sh -c "[ -n '$(hash_of "$D/hang_low.out")' ] && [ '$(hash_of "$D/hang.out")' != '$(hash_of "$D/hang_low.out")' ]"
+# unclamped, the same beam falls onto the floor from there
+sed '/<FRegion>/,/<\/FRegion>/d; s|<NumBCs>1</NumBCs>|<NumBCs>0</NumBCs>|' "$H" >"$D/fall.vxa"
+"$AMORPH" sim "$D/fall.vxa" --cycles 1 --trajectory "$D/fall.csv" >"$D/fall.out" 2>"$D/fall.err"
+z0=$(sed -n 2p "$D/fall.csv" | cut -d, -f6); z1=$(tail -n 1 "$D/fall.csv" | cut -d, -f6)
+check "the free beam starts 2.5 layers up (com z $z0) and falls to the floor ($z1): $(cat "$D/fall.err")" \
+    awk -v a="$z0" -v b="$z1" 'BEGIN { exit !(a > 0.0249 && a < 0.0251 && b > 0.004 && b < 0.0055) }'
+# amorph's own files keep amorph's placement (their <Amorph> element's <Lift>): a run's robot and its export alike
+check "an exported lattice keeps amorph's placement: $(grep -c '<Lift>' "$D/run.vxa")" grep -q '<Lift>0</Lift>' "$D/run.vxa"
 
 summary cli_vxa.sh

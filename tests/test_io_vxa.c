@@ -1136,6 +1136,65 @@ static void test_vxa_differ(void)
     CHECK(!strcmp(info_a.differ, "TorqueX") && info_a.warnings == 2, "differ '%s'", info_a.differ);
 }
 
+/* VoxCAD's <StopCondition> and evosoro's <InitCmTime> as the evaluation's cycles and least
+ * relaxation (am_vxa_stop_settings), each kind of stop; a flag's value kept; a stop without a
+ * counterpart warned and named; a body above empty layers starts there (env.lift) */
+static void test_vxa_stop_and_place(void)
+{
+    char note[640], err[AM_ERR_MAX] = "";
+    am_eval_def ev = am_default_eval();
+    const double dt = 5e-5; /* 500 steps a 0.025 s period */
+    /* seconds: 1 s less InitCmTime 0.25 s = 30 periods; InitCmTime 0.25 s = 5556 steps of 4.5e-5 s */
+    expect_vxa(vxa("<Simulator><StopCondition><StopConditionType>2</StopConditionType><StopConditionValue>1</StopConditionValue>"
+                   "<InitCmTime>0.25</InitCmTime></StopCondition></Simulator>\n"
+                   "<Environment><Thermal><TempEnabled>1</TempEnabled><VaryTempEnabled>1</VaryTempEnabled><TempPeriod>0.025</TempPeriod>"
+                   "</Thermal></Environment>", 0, 0, 0), AM_OK, "");
+    CHECK(info_a.stop_type == 2 && info_a.stop_value == 1 && info_a.init_cm_time == 0.25 && info_a.stop_line == 2 && !info_a.warnings,
+          "stop %d %g %g line %d, %s", info_a.stop_type, info_a.stop_value, info_a.init_cm_time, info_a.stop_line, info_a.warning);
+    CHECK(am_vxa_stop_settings(&info_a, dt, 4.5e-5, 500, 0, &ev, note, sizeof note, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(ev.cycles == 30 && ev.relax_min_steps == 5556 && ev.relax_max_steps == 40000 + 5556, "cycles %d, relax %ld..%ld", ev.cycles,
+          ev.relax_min_steps, ev.relax_max_steps);
+    CHECK(!strncmp(note, "cycles = 30 (<StopCondition> 1 s less <InitCmTime> 0.25 s: 30 periods of 0.025 s), relax_min_steps = 5556", 102),
+          "note '%s'", note);
+    /* flags keep theirs */
+    ev = am_default_eval();
+    ev.cycles = 3;
+    CHECK(am_vxa_stop_settings(&info_a, dt, 4.5e-5, 500, AM_VXA_KEEP_CYCLES | AM_VXA_KEEP_RELAX, &ev, note, sizeof note, err, sizeof err) == AM_OK &&
+          ev.cycles == 3 && ev.relax_min_steps == 200 && !note[0], "kept: cycles %d, note '%s'", ev.cycles, note);
+    /* time steps (of amorph's step): 12345 steps are 24.69 periods of 500 steps: 25 */
+    expect_vxa(vxa("<Simulator><StopCondition><StopConditionType>1</StopConditionType><StopConditionValue>12345</StopConditionValue>"
+                   "</StopCondition></Simulator>", 0, 0, 0), AM_OK, "");
+    ev = am_default_eval();
+    CHECK(am_vxa_stop_settings(&info_a, dt, 4.5e-5, 500, 0, &ev, note, sizeof note, err, sizeof err) == AM_OK && ev.cycles == 25 &&
+          ev.relax_min_steps == 200 && strstr(note, "24.69 periods of 0.025 s, amorph runs whole ones)"), "steps: %d, '%s'", ev.cycles, note);
+    /* periods of TempPeriod 0.05 s at a period of 0.025 s: 7 periods are 14 cycles; no period (a constant temperature): nothing */
+    expect_vxa(vxa("<Simulator><StopCondition><StopConditionType>3</StopConditionType><StopConditionValue>7</StopConditionValue>"
+                   "</StopCondition></Simulator>\n<Environment><Thermal><TempEnabled>1</TempEnabled><VaryTempEnabled>1</VaryTempEnabled>"
+                   "<TempPeriod>0.05</TempPeriod></Thermal></Environment>", 0, 0, 0), AM_OK, "");
+    ev = am_default_eval();
+    CHECK(am_vxa_stop_settings(&info_a, dt, 4.5e-5, 500, 0, &ev, note, sizeof note, err, sizeof err) == AM_OK && ev.cycles == 14, "periods: %d",
+          ev.cycles);
+    expect_vxa(vxa("<Simulator><StopCondition><StopConditionType>3</StopConditionType><StopConditionValue>7</StopConditionValue>"
+                   "</StopCondition></Simulator>", 0, 0, 0), AM_OK, "");
+    ev = am_default_eval();
+    CHECK(am_vxa_stop_settings(&info_a, dt, 4.5e-5, 500, 0, &ev, note, sizeof note, err, sizeof err) == AM_OK && ev.cycles == 10 && !note[0],
+          "periods of no period: %d '%s'", ev.cycles, note);
+    /* a stop without a counterpart: a warning, named in the summary with the setting; nothing mapped */
+    expect_vxa(vxa("<Simulator><StopCondition><StopConditionType>5</StopConditionType><StopConditionValue>1</StopConditionValue>"
+                   "</StopCondition></Simulator>", 0, 0, 0), AM_OK, "");
+    CHECK(info_a.stop_type == -1 && !strcmp(info_a.differ, "StopConditionType 5 (cycles = 10 run: --cycles N)") && info_a.warnings == 1 &&
+          strstr(info_a.warning, "t.vxa:2: warning: <StopConditionType> 5 (until the kinetic energy is below a threshold) is not simulated"),
+          "type 5: '%s' %s", info_a.differ, info_a.warning);
+    /* a negative time: an error with its line */
+    expect_vxa(vxa("<Simulator><StopCondition>\n<InitCmTime>-1</InitCmTime></StopCondition></Simulator>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:3: <InitCmTime> -1 must be 0 or more");
+    /* placement: a body over two empty layers starts two layers up; on the floor, at 0 */
+    expect_vxa(vxa(0, 0, SH("2", "1", "3"), "<Layer>00</Layer><Layer>00</Layer><Layer>11</Layer>"), AM_OK, "");
+    CHECK(info_a.env.lift == AM_P(0.002), "lift %g", (double)info_a.env.lift);
+    expect_vxa(vxa(0, 0, SH("2", "1", "2"), "<Layer>11</Layer><Layer>00</Layer>"), AM_OK, "");
+    CHECK(info_a.env.lift == AM_P(0), "lift %g on the floor", (double)info_a.env.lift);
+}
+
 /* voxcraft's VXD over a base VXA: replaced and added elements, warnings in order (base, then VXD),
  * messages naming the VXD file, and a VXD alone refused with what to pass instead */
 static void test_vxa_vxd(void)
@@ -1257,6 +1316,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_poisson_and_fixed);
     RUN(test_vxa_stiffness);
     RUN(test_vxa_differ);
+    RUN(test_vxa_stop_and_place);
     RUN(test_vxa_vxd);
     RUN(test_vxa_noise);
     return SUMMARY();

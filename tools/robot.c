@@ -113,10 +113,11 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
 #if TOOL_VXA
 /* VXA text (and a VXD file over it, vxd NULL when none) -> the robot r (its lattice, layers and
  * environment); the reader's warnings on stderr */
-static am_status load_vxa(const char* text, const char* fname, const char* vxd, am_robot* r, char* err, int errsz)
+static am_status load_vxa(const char* text, const char* fname, const char* vxd, am_robot* r, const am_vxa_info** out, char* err, int errsz)
 {
     static am_xml_doc doc, vxd_doc; /* the XML reader's workspaces, used during this call only */
-    static am_vxa_info info;        /* the file's environment, layers and warnings, copied out below */
+    static am_vxa_info info;        /* the file's environment, layers and warnings, copied out below;
+                                       its run length read by the caller (*out) until the next load */
     static char vxd_text[4L << 20]; /* the VXD file's text (a structure and its layers): 4 MiB, as a VXA file's */
     am_status st;
     if (vxd) {
@@ -134,6 +135,7 @@ static am_status load_vxa(const char* text, const char* fname, const char* vxd, 
     if (info.differ[0])
         fprintf(stderr, "%s: warning: results will differ from the reference simulator: amorph does not simulate %s (warnings above)\n",
                 vxd ? vxd : fname, info.differ);
+    *out = &info;
     return am_vxa_robot(r, &info, err, errsz);
 }
 #endif
@@ -206,7 +208,7 @@ static am_status lattice_line(void* ctx, int lineno, char* line, long n, char* e
 }
 
 /* a file in any format amorph reads: lattice text, genome text (expressed), VXA (desktop) */
-static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_robot* r, char* err, int errsz)
+static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_robot* r, const am_vxa_info** vxa, char* err, int errsz)
 {
     tool_src src;
     am_status st = tool_src_open(&src, name, TOOL_FILE_MAX, 0, err, errsz);
@@ -216,8 +218,9 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_ro
         st = src.binary ? tool_src_binary(&src, err, errsz) : AM_ERR_PARSE;
     } else if (kind == TOOL_TEXT_VXA) {
 #if TOOL_VXA
-        st = load_vxa(tool_src_text(&src), name, vxd, r, err, errsz);
+        st = load_vxa(tool_src_text(&src), name, vxd, r, vxa, err, errsz);
 #else
+        (void)vxa;
         st = am_fail(err, errsz, AM_ERR_ARG, "%s: a VXA file: not in this build: VXA files belong to the desktop profile", name);
 #endif
     } else if (vxd) {
@@ -235,7 +238,7 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_ro
 }
 
 /* the settings of a over r, in order; *period_set becomes 1 when one gave period_steps */
-static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* period_set, char* err, int errsz)
+static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* period_set, unsigned* keep, char* err, int errsz)
 {
     am_lattice* lat = r->lattice;
     am_evo_def d = am_default_evo();
@@ -246,6 +249,8 @@ static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* peri
         am_status st = am_evo_set_over(&d, a->key[k], a->val[k], &material, err, errsz);
         if (st != AM_OK) return st;
         if (!strcmp(a->key[k], "period_steps")) *period_set = 1;
+        if (!strcmp(a->key[k], "cycles")) *keep |= AM_VXA_KEEP_CYCLES;
+        if (!strncmp(a->key[k], "relax_m", 7)) *keep |= AM_VXA_KEEP_RELAX;
         am_evo_apply_materials(&d, material, lat); /* in order: a later --cte sees the earlier one's materials */
     }
     r->env = d.env;
@@ -395,6 +400,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #endif
     am_status st;
     int one_file = 0; /* a robot file named alone (not a scene, a run folder or a VXD over a VXA) */
+    const am_vxa_info* vxa = NULL; /* a VXA file's run length (its StopCondition), while this call runs */
 #if TOOL_VXA
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
@@ -403,22 +409,24 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #if TOOL_VXA
     else if (!a->vxd && (st = (am_status)voxcraft_dir(a->name, base, robot, err, errsz)) != 0) {
         if ((int)st < 0) return AM_ERR_ARG;
-        st = load_file(c, base, robot, r, err, errsz);
+        st = load_file(c, base, robot, r, &vxa, err, errsz);
     }
 #endif
     else {
-        st = load_file(c, a->name, a->vxd, r, err, errsz);
+        st = load_file(c, a->name, a->vxd, r, &vxa, err, errsz);
         one_file = !a->vxd;
     }
     if (st != AM_OK) return st;
     const am_env own = r->env; /* the robot's own, before the settings */
     int period_set = 0;
-    st = apply_settings(a, r, &period_set, err, errsz);
+    unsigned keep = 0;
+    st = apply_settings(a, r, &period_set, &keep, err, errsz);
     if (st != AM_OK) return st;
     r->eval.record = NULL;
     if (one_file) run_note(c, a->name, r);
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
-    if (!dt_changed && !(r->env.period_s > AM_P(0))) return AM_OK;
+    const int run_length = vxa && (vxa->stop_type >= 0 || vxa->init_cm_time > 0);
+    if (!dt_changed && !(r->env.period_s > AM_P(0)) && !run_length) return AM_OK;
     double dt;
     st = tool_robot_dt(c, r, &dt, err, errsz);
     if (st != AM_OK) return st;
@@ -443,5 +451,15 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     if (dt_changed && !(fabs(now_s - own_s) <= 0.01 * own_s))
         fprintf(stderr, "amorph: note: at this step the actuation period is %d steps = %.4g s, not the robot's own %.4g s "
                         "(--period_s %.4g holds it in seconds)\n", r->env.period_steps, now_s, own_s, own_s);
+#if TOOL_VXA
+    if (run_length && !r->eval.dt_search) {
+        /* the file's run length (VoxCAD's StopCondition, evosoro's InitCmTime) as the evaluation's
+         * cycles and least relaxation, unless a flag set them; one note line says so */
+        char note[640];
+        st = am_vxa_stop_settings(vxa, dt, AM_REF_DT_FRAC * dt_rec, r->env.period_steps, keep, &r->eval, note, (int)sizeof note, err, errsz);
+        if (st != AM_OK) return st;
+        if (note[0]) fprintf(stderr, "%s: note: the file's run length as amorph's evaluation: %s\n", vxa->stop_file, note);
+    }
+#endif
     return AM_OK;
 }

@@ -399,6 +399,15 @@ typedef struct am_vxa_info {
     am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
                                 conditions' fixed cells and forces (docs/vxa.md); build the model with
                                 am_model_build_layers */
+    /* VoxCAD's <StopCondition> and evosoro's <InitCmTime> (docs/vxa.md, Run length), for
+     * am_vxa_stop_settings once the robot's time step is known */
+    int stop_type;           /* <StopConditionType> (VoxCAD's StopCondition: 1 time steps, 2 seconds,
+                                3 actuation periods, ...); -1 when the file gives none, or when its
+                                <Amorph> element's <Evaluation> says how the robot is evaluated */
+    double stop_value;       /* <StopConditionValue> (seconds: with evosoro's <AfterlifeTime> added) */
+    double init_cm_time;     /* s: <InitCmTime>, the time before the centre of mass is recorded (0: none) */
+    const char* stop_file;   /* the file and line of <StopCondition>, for messages */
+    int stop_line;
     char differ[256];        /* the ignored items (of those warned about) that change how the robot moves
                                 in VoxCAD, Voxelyze or voxcraft-sim (FluidEnvironment, MatModel, ...),
                                 comma separated, each once; empty when none (docs/vxa.md) */
@@ -429,6 +438,20 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
  * the file's per-cell layers copied into r->layers.
  * AM_ERR_CAPACITY when the file has layers and r->layers is NULL. */
 am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
+
+/* The file's run length (info->stop_type, stop_value, init_cm_time) as the evaluation's settings, for
+ * a robot whose time step is dt and actuation period period_steps steps of it (dt_ref: the step
+ * the relaxation's counts refer to, AM_REF_DT_FRAC dt_rec; all in s): a stop in seconds, time
+ * steps or actuation periods, less InitCmTime, becomes cycles (whole periods, rounded), and
+ * InitCmTime becomes relax_min_steps (the relaxation, before the centre of mass is recorded,
+ * lasts at least that long; relax_max_steps grows by as much), each set through the configuration
+ * (am_evo_set_over: its ranges and bounds) unless keep holds its AM_VXA_KEEP_* bit (a flag gave it).
+ * note gets "cycles = 40 (<StopCondition> 1 s: 40 periods of 0.025 s), ..." (empty when nothing was
+ * set). A value out of its range: AM_ERR_RANGE, "FILE:LINE: <StopCondition> ...: cycles = ...". */
+#define AM_VXA_KEEP_CYCLES 1u
+#define AM_VXA_KEEP_RELAX 2u
+am_status am_vxa_stop_settings(const am_vxa_info* info, double dt, double dt_ref, int period_steps, unsigned keep, am_eval_def* eval,
+                               char* note, int notesz, char* err, int errsz);
 
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's

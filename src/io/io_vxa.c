@@ -794,9 +794,66 @@ static am_status read_vxc(vctx* c, int n, am_lattice* lat)
 
 /* ---- Simulator and Environment ----------------------------------------------------------- */
 
+/* VoxCAD's StopCondition types (its StopCondition enum; 7 and 8 are evosoro's) */
+static const char* const stop_kinds[] = {"none: the run goes on until stopped",
+                                         "time steps",
+                                         "seconds",
+                                         "actuation periods",
+                                         "until the total energy is constant within a threshold",
+                                         "until the kinetic energy is below a threshold",
+                                         "until no voxel moves more than a threshold per step",
+                                         "seconds, or sooner when no voxel moves (evosoro)",
+                                         "until the pointing error is small (evosoro)"};
+
+/* <StopCondition> (VoxCAD's, in <Simulator>): when the run stops, and evosoro's InitCmTime (the
+ * transient before the centre of mass is recorded and the actuation starts). What amorph's
+ * evaluation can say (a length in time steps, seconds or periods; a least relaxation) is kept in
+ * info for am_vxa_stop_settings; a stop amorph's evaluation has no counterpart for is a warning
+ * and is named in the summary line */
+static am_status read_stop(vctx* c, int n)
+{
+    static const char* const tags[] = {"StopConditionType", "StopConditionValue", "InitCmTime", "AfterlifeTime", "MidLifeFreezeTime"};
+    int at[MAX_TAGS];
+    double v[5] = {0, 0, 0, 0, 0};
+    long type = 0; /* VoxCAD's default: SC_NONE */
+    am_status st = children(c, n, tags, 5, at, NULL);
+    if (st != AM_OK) return st;
+    if (at[0] >= 0 && (st = int_of(c, at[0], 0, 1000000, &type)) != AM_OK) return st;
+    for (int i = 1; i < 5; i++)
+        if (at[i] >= 0 && (st = double_of(c, at[i], &v[i])) != AM_OK) return st;
+    for (int i = 1; i < 5; i++)
+        if (at[i] >= 0 && !(v[i] >= 0 && v[i] <= 1e30))
+            return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g must be 0 or more", tags[i], v[i]);
+    am_vxa_info* info = c->info;
+    info->stop_type = (int)type;
+    info->stop_value = v[1] + (type == 2 ? v[3] : 0); /* evosoro runs AfterlifeTime beyond a time stop */
+    info->init_cm_time = v[2];
+    info->stop_file = D(c, n)->fname;
+    info->stop_line = (int)N(c, n)->line;
+    const int at_type = at[0] >= 0 ? at[0] : n;
+    if (type == 7) {
+        /* its time bound is kept (as a stop in seconds), not its early stop */
+        warn(c, at_type, "<StopConditionType> 7 (%s): amorph runs its %.9g s, without the early stop", stop_kinds[7], v[1]);
+        differs(c, "StopConditionType 7's early stop");
+        info->stop_type = 2;
+    } else if (type == 0 || type >= 4) {
+        char what[96];
+        warn(c, at_type, "<StopConditionType> %ld (%s) is not simulated: amorph runs whole actuation cycles (%d unless --cycles N "
+                         "says how many)", type, type < 9 ? stop_kinds[type] : "unknown", info->eval.cycles);
+        snprintf(what, sizeof what, "StopConditionType %ld (cycles = %d run: --cycles N)", type, info->eval.cycles);
+        if (type != 0) differs(c, what); /* VoxCAD's default, a run without an end, has no result to differ from */
+        info->stop_type = -1;
+    }
+    if (at[4] >= 0 && v[4] != 0) {
+        warn(c, at[4], "<MidLifeFreezeTime> %.9g not supported (evosoro's development is not simulated): ignored", v[4]);
+        differs(c, "MidLifeFreezeTime");
+    }
+    return AM_OK;
+}
+
 static am_status read_simulator(vctx* c, int n, am_lattice* lat)
 {
-    static const char* const tags[] = {"Integration", "Damping", "Collisions"};
+    static const char* const tags[] = {"Integration", "Damping", "Collisions", "StopCondition"};
     static const char* const integ[] = {"Integrator", "DtFrac"};
     static const char* const damp[] = {"BondDampingZ", "ColDampingZ", "SlowDampingZ"};
     static const char* const coll[] = {"SelfColEnabled", "ColSystem", "CollisionHorizon"};
@@ -804,7 +861,8 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     am_status st;
     long v;
     am_env* env = &c->info->env;
-    if ((st = children(c, n, tags, 3, at, NULL)) != AM_OK) return st;
+    if ((st = children(c, n, tags, 4, at, NULL)) != AM_OK) return st;
+    if (at[3] >= 0 && (st = read_stop(c, at[3])) != AM_OK) return st;
     if (at[0] >= 0) {
         if ((st = children(c, at[0], integ, 2, it, NULL)) != AM_OK) return st;
         if (it[0] >= 0) {
@@ -1095,6 +1153,99 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
     return AM_OK;
 }
 
+/* ---- where the body starts and how long it runs (VoxCAD's, unless <Amorph> says) ---------- */
+
+/* after the sections: a file amorph wrote (its <Amorph> element, amorph_node >= 0, holds the
+ * evaluation and the lift) keeps amorph's rules; any other file's body starts where the file puts
+ * it, as VoxCAD and Voxelyze place it (a voxel's centre at (k + 1/2) Lattice_Dim along each axis,
+ * the floor at z = 0): its lowest filled layer kmin lies kmin layers above the floor, and a body
+ * clamped or hanging there stays or falls from there (env.lift = kmin Lattice_Dim; amorph's own
+ * lattices are lowered onto the floor) */
+static void stop_and_place(vctx* c, int amorph_node, const am_lattice* lat)
+{
+    am_vxa_info* info = c->info;
+    int own_eval = 0, own_lift = 0;
+    for (int k = amorph_node >= 0 ? first_child(c, amorph_node) : -1; k >= 0; k = next_sib(c, k)) {
+        own_eval |= is(c, k, "Evaluation");
+        own_lift |= is(c, k, "Lift");
+    }
+    if (own_eval && (info->stop_type >= 0 || info->init_cm_time > 0)) {
+        char q[AM_QUOTE_BUF];
+        warn(c, amorph_node, "<%s>'s <Evaluation> says how the robot is evaluated: <StopCondition> (line %d) not used", tag(c, amorph_node, q),
+             info->stop_line);
+        info->stop_type = -1;
+        info->init_cm_time = 0;
+    }
+    if (own_lift) return;
+    const long per = (long)lat->nx * lat->ny;
+    int kmin = 0;
+    while (kmin < lat->nz) {
+        long i = 0;
+        while (i < per && !lat->cell[per * kmin + i]) i++;
+        if (i < per) break;
+        kmin++;
+    }
+    if (kmin > 0 && kmin < lat->nz) info->env.lift = (am_param)(kmin * (double)lat->voxel_size);
+}
+
+/* how many of a period's steps (period, s) a span t (s) is: the stop's cycles, and the text that says so */
+am_status am_vxa_stop_settings(const am_vxa_info* info, double dt, double dt_ref, int period_steps, unsigned keep, am_eval_def* eval,
+                               char* note, int notesz, char* err, int errsz)
+{
+    if (note && notesz > 0) note[0] = 0;
+    if (!info || !eval || !(dt > 0) || !(dt_ref > 0) || period_steps < 1) return am_fail(err, errsz, AM_ERR_ARG, "vxa: no info, step or period");
+    am_evo_def d = am_default_evo();
+    d.eval = *eval;
+    char v[64], why[AM_ERR_MAX], part[320];
+    size_t len = 0;
+    unsigned mat = 0;
+    const double period = period_steps * dt, init = info->init_cm_time;
+    const char* f = info->stop_file ? info->stop_file : "";
+    /* (a stop in periods of a temperature that does not vary: VoxCAD runs on without end) */
+    if (info->stop_type >= 1 && info->stop_type <= 3 && !(info->stop_type == 3 && !(info->temp_period > 0)) && !(keep & AM_VXA_KEEP_CYCLES)) {
+        /* the movement: the run's length less the transient before the centre of mass is recorded */
+        const double total = info->stop_type == 1 ? info->stop_value * dt : info->stop_type == 2 ? info->stop_value : info->stop_value * info->temp_period;
+        const double x = total > init ? (total - init) / period : 0;
+        snprintf(v, sizeof v, "%.0f", x < 1e15 ? floor(x + 0.5) : x);
+        if (am_evo_set_over(&d, "cycles", v, &mat, why, sizeof why) != AM_OK)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: <StopCondition> %.9g %s%s is %.4g actuation periods of %.4g s: %s", f, info->stop_line,
+                           info->stop_value, stop_kinds[info->stop_type], init > 0 ? " less <InitCmTime>" : "", x, period, why);
+        if (info->stop_type == 1)
+            snprintf(part, sizeof part, "cycles = %d (<StopCondition> %.9g time steps of amorph's %.4g s", d.eval.cycles, info->stop_value, dt);
+        else if (info->stop_type == 2)
+            snprintf(part, sizeof part, "cycles = %d (<StopCondition> %.9g s", d.eval.cycles, info->stop_value);
+        else
+            snprintf(part, sizeof part, "cycles = %d (<StopCondition> %.9g periods of <TempPeriod> %.9g s", d.eval.cycles, info->stop_value,
+                     info->temp_period);
+        len = strlen(part);
+        if (init > 0) len += (size_t)snprintf(part + len, sizeof part - len, " less <InitCmTime> %.9g s", init);
+        len += (size_t)snprintf(part + len, sizeof part - len, ": %.6g periods of %.4g s%s)", x, period,
+                                fabs(x - d.eval.cycles) > 0.01 ? ", amorph runs whole ones" : "");
+        if (note && notesz > 0) snprintf(note, (size_t)notesz, "%s", part);
+    }
+    if (init > 0 && !(keep & AM_VXA_KEEP_RELAX)) {
+        /* the relaxation (amorph's transient) lasts at least InitCmTime, with its usual room after */
+        const double steps = ceil(init / dt_ref - 1e-9);
+        snprintf(v, sizeof v, "%.0f", steps);
+        am_status st = am_evo_set_over(&d, "relax_min_steps", v, &mat, why, sizeof why);
+        if (st == AM_OK) {
+            snprintf(v, sizeof v, "%.0f", steps + (double)d.eval.relax_max_steps);
+            st = am_evo_set_over(&d, "relax_max_steps", v, &mat, why, sizeof why);
+        }
+        if (st != AM_OK)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: <InitCmTime> %.9g s is %.4g steps of %.4g s: %s", f, info->stop_line, init,
+                           steps, dt_ref, why);
+        if (note && notesz > 0) {
+            const size_t have = strlen(note);
+            snprintf(note + have, (size_t)notesz - have, "%srelax_min_steps = %ld and relax_max_steps = %ld (<InitCmTime> %.9g s: the "
+                     "relaxation lasts at least that long before the centre of mass is recorded)", have ? ", " : "", d.eval.relax_min_steps,
+                     d.eval.relax_max_steps, init);
+        }
+    }
+    *eval = d.eval;
+    return AM_OK;
+}
+
 /* ---- reading ----------------------------------------------------------------------------- */
 
 /* the warning lines in line order (the sections are read in a fixed order, not the file's): a
@@ -1218,6 +1369,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
     info->eval = am_default_eval();
     info->env.cte_mode = AM_CTE_LINEAR; /* VXA's CTE is linear */
     info->env.temp_amplitude = AM_P(0); /* no <Thermal>: no actuation, as in VoxCAD */
+    info->stop_type = -1;               /* no <StopCondition> */
     am_status st = am_xml_parse(work, text, (long)strlen(text), fname, err, errsz);
     if (st != AM_OK) return st;
     vctx c;
@@ -1249,6 +1401,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
     if (at[1] >= 0 && (st = read_simulator(&c, at[1], lat)) != AM_OK) return st;
     if (at[2] >= 0 && (st = read_environment(&c, at[2], lat)) != AM_OK) return st;
     if (at[3] >= 0 && (st = read_amorph(&c, at[3], lat)) != AM_OK) return st;
+    stop_and_place(&c, at[3], lat);
     for (int r = 0; r < c.nrep; r++)
         if (!c.rep_used[r])
             warn(&c, c.rep_node[r], "<%s replace=\"%s\">: amorph reads no element at that path: ignored", tag(&c, c.rep_node[r], qn),
