@@ -203,6 +203,16 @@ if grep -qxF "$V/robot.vxd:31: warning: unsupported tag <RawPrint> ignored (amor
    [ "$(grep -c "^$V/robot.vxd:" "$D/vx1.err")" -eq 3 ] && [ "$(grep -c "^$V/base.vxa:" "$D/vx1.err")" -eq 2 ]; then ok
 else ko "VXD warnings: $(cat "$D/vx1.err")"; fi
 expect_fail 2 "^amorph: $V/robot.vxd:1: a VXD file \(voxcraft-sim's robot: elements that replace parts of a base VXA file\) is not read alone: give its base VXA file first, then the VXD \(amorph sim BASE.vxa ROBOT.vxd, or a folder holding base.vxa and one .vxd\)$" "$AMORPH" sim "$V/robot.vxd"
+# the robot reported is the VXD (voxcraft-sim's robot), not the base it goes over, as a pair or a folder
+check "the pair's robot: $(grep '^robot' "$D/vx1.out")" grep -qxF "robot = $V/robot.vxd" "$D/vx1.out"
+check "the folder's robot: $(grep '^robot' "$D/vx2.out")" grep -qxF "robot = $V/robot.vxd" "$D/vx2.out"
+"$AMORPH" sim "$V" --cycles 1 --relax-max 200 --json >"$D/vx2.json" 2>/dev/null
+check "the folder's robot in JSON: $(head -c 80 "$D/vx2.json")" grep -qF "\"robot\": \"$V/robot.vxd\"" "$D/vx2.json"
+# volvox's <ForceField> (a field amorph does not simulate): a warning, and named in the summary line
+sed 's|<Environment>|<Environment>\n    <ForceField><x_forcefield><mtConst>0.001</mtConst></x_forcefield></ForceField>|' "$V/base.vxa" >"$D/ff.vxa"
+"$AMORPH" sim "$D/ff.vxa" "$V/robot.vxd" --cycles 1 --relax-max 50 >/dev/null 2>"$D/ff.err"
+check "ForceField: $(cat "$D/ff.err")" sh -c "grep -q '^$D/ff.vxa:[0-9]*: warning: unsupported tag <ForceField> ignored$' '$D/ff.err' && \
+    grep -q '^$V/robot.vxd: warning: results will differ from the reference simulator: amorph does not simulate .*ForceField' '$D/ff.err'"
 mkdir -p "$D/onlybase" && cp "$V/base.vxa" "$D/onlybase/"
 expect_fail 2 "$D/onlybase: a voxcraft folder holds a base VXA and a robot's VXD; no .vxd in it" "$AMORPH" sim "$D/onlybase"
 # the folder's VXD under any name (voxcraft-sim names them freely), and its VXA under any name

@@ -149,8 +149,9 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
     am_robot rob;
-    const char* file = ra.name;
+    static char own[TOOL_PATH_MAX];
     if (tool_robot_load(c, &ra, lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
+    const char* file = tool_robot_name(&ra, own, (int)sizeof own); /* a voxcraft robot: its VXD */
     if (rob.eval.dt_search && ra.dt_s > 0) return tool_usage_error("sim: --dt and dt_search exclude each other");
     am_status st = am_robot_build(&c->work[0].model, &rob, err, sizeof err);
     if (st == AM_ERR_EMPTY && traj) return tool_usage_error("sim: %s: the robot has no voxel, no trajectory to write", file);

@@ -320,6 +320,18 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
 }
 #endif
 
+const char* tool_robot_name(const tool_robot_args* a, char* buf, int cap)
+{
+    if (a->vxd) return a->vxd;
+#if TOOL_VXA
+    char base[TOOL_PATH_MAX], err[AM_ERR_MAX];
+    if (!a->is_scene && !tool_is_run_dir(a->name) && voxcraft_dir(a->name, base, buf, err, (int)sizeof err) == 1 && cap >= TOOL_PATH_MAX)
+        return buf;
+#endif
+    (void)buf, (void)cap;
+    return a->name;
+}
+
 int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned materials, char* out, int cap)
 {
     static const char* const mat_key[4] = {"cte", "mu_static", "mu_kinetic", "voxel_size"}; /* AM_MATERIAL_* bits 0..3 */

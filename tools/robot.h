@@ -58,6 +58,11 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz);
 
+/* the name of the robot's own file, for reports: a's file, the VXD of a VXA file with a VXD over it
+ * (voxcraft-sim's robot; a voxcraft folder's .vxd, written into buf, which holds TOOL_PATH_MAX
+ * bytes), or a's name (a scene, a run folder) */
+const char* tool_robot_name(const tool_robot_args* a, char* buf, int cap);
+
 /* the environment and evaluation keys whose values in `to` differ from those in `from`, and the
  * material keys named by the AM_MATERIAL_* bits of `materials`, as "key = value" items (to's
  * values) separated by ", " into out (cut short with ", ..." when out is full); their count */

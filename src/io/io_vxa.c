@@ -141,11 +141,11 @@ static void differs(vctx* c, const char* what)
 
 /* tags amorph does not read whose non-zero value changes how the robot moves in the reference
  * simulators (evosoro's water robots, VoxCAD's features, voxcraft's materials), and per-voxel
- * layers it does not read (voxcraft's cilia) */
+ * layers and fields it does not read (voxcraft's cilia, volvox's <ForceField>: named when present) */
 static const char* const physics_value_tags[] = {"FluidEnvironment", "FluidDampEnabled", "MaxVelLimitEnabled", "BlendingEnabled",
                                                  "VolumeEffectsEnabled", "PoissonKickBackEnabled", "EnforceLatticeEnabled",
                                                  "EquilibriumModeEnabled", "FloorSlope", "Sticky", "Cilia"};
-static const char* const physics_layer_tags[] = {"BaseCiliaForce", "ShiftCiliaForce"};
+static const char* const physics_layer_tags[] = {"BaseCiliaForce", "ShiftCiliaForce", "ForceField"};
 
 /* element k is a physics tag of those tables that is on */
 static void physics_check(vctx* c, int k)
