@@ -157,6 +157,21 @@ expect_fail 2 "seed" "$AMORPH" random --repr gmx --seed -3
 expect_fail 2 "scene" "$AMORPH" sim --scene nosuch:3
 expect_fail 2 "no-such-robot" "$AMORPH" sim "$TMPD/no-such-robot.lattice"
 expect_fail 2 "unknown option" "$AMORPH" sim --scene cube:3 --bogus
+# a misspelt flag: the nearest of the command's flags (its help's, and the configuration's keys)
+expect_fail 2 "^amorph: sim: unknown option '--trajectry': did you mean --trajectory\? \(amorph sim --help\)$" "$AMORPH" sim --scene cube:3 --trajectry x
+expect_fail 2 "^amorph: sim: unknown option '--cycels': did you mean --cycles\? \(amorph sim --help\)$" "$AMORPH" sim --scene cube:3 --cycels 2
+expect_fail 2 "^amorph: evolve: unknown option '--populaton': did you mean --population\? " "$AMORPH" evolve --populaton 4
+expect_fail 2 "^amorph: render: unknown option '--colur': did you mean --colour\? " "$AMORPH" render --scene cube:2 --colur strain
+expect_fail 2 "^amorph: export: unknown option '--latice': did you mean --lattice\? " "$AMORPH" export --scene cube:2 --latice x
+expect_fail 2 "^amorph: sim: unknown option '--bogus' \(amorph sim --help\)$" "$AMORPH" sim --scene cube:3 --bogus
+# a folder that is no robot: what it is and what a robot is, not "not a regular file"
+mkdir -p "$TMPD/plain" "$TMPD/half"; : >"$TMPD/plain/notes.txt"; : >"$TMPD/half/config.txt"
+expect_fail 2 "^amorph: $TMPD/plain: a folder, neither a run folder \(config.txt, best.genome: neither\) nor a voxcraft folder .*; a robot is a lattice, genome or VXA file, a run or voxcraft folder, or --scene NAME$" "$AMORPH" sim "$TMPD/plain"
+expect_fail 2 "^amorph: render: $TMPD/half: a folder, neither a run folder \(config.txt, best.genome: no best.genome yet\)" "$AMORPH" render "$TMPD/half" --out "$TMPD/x.png"
+# the command list says what each command takes
+"$AMORPH" --help >"$TMPD/help" 2>&1
+check "amorph --help's sim, random and export lines: $(grep -E '^  (sim|random|export) ' "$TMPD/help")" sh -c \
+    "grep -q '^  sim .*VXA file, a run or voxcraft folder, or --scene' '$TMPD/help' && grep -q '^  random .*--representation dct|cppn|gmx' '$TMPD/help' && grep -q '^  export .*run folder or --scene.*STL/AMF' '$TMPD/help'"
 # --release-steps: a whole number 0..1e8, checked by the configuration table as evolve checks it
 for bad in x -1 100000001 " 5" 5x 1e3 ""; do
     expect_fail 2 "^amorph: sim: --release_steps = '.*': expected an integer in \[0, 100000000\]$" "$AMORPH" sim --scene cube:3 --release-steps "$bad"

@@ -162,7 +162,7 @@ int bench_convergence(tool_ctx* c, int argc, char** argv, int first)
         } else if (!strcmp(a, "--threads")) {
             if (!tool_parse_long(v, 1, AM_MAX_WORKERS, &n)) return tool_usage_error("bench: --threads needs a whole number from 1 to %d", AM_MAX_WORKERS);
             threads = (int)n, i++;
-        } else if (a[0] == '-') return tool_unknown_option("bench --convergence", a);
+        } else if (a[0] == '-') return tool_unknown_option("bench --convergence", a, NULL);
         else if (nrobots >= CONV_MAX_ROBOTS) return tool_usage_error("bench: at most %d robots", CONV_MAX_ROBOTS);
         else robots[nrobots++] = a;
     }

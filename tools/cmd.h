@@ -93,8 +93,11 @@ int tool_usage_error(const char* fmt, ...)
     ;
 
 /* "amorph: CMD: unknown option 'ARG' (amorph CMD --help)", ARG quoted as every reader quotes
- * input (am_quote); returns 2 */
-int tool_unknown_option(const char* cmd, const char* arg);
+ * input (am_quote); with ": did you mean --FLAG?" before the parenthesis when a flag of the
+ * command's help text (each --name it writes, and the configuration's keys when it points to
+ * --help-config; NULL: none) is within a third of ARG's name in edit distance ('-' and '_' alike);
+ * returns 2 */
+int tool_unknown_option(const char* cmd, const char* arg, const char* help);
 
 /* ---- results as key = value lines or one JSON object (tools/record.c) ---- */
 

@@ -369,7 +369,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--threads")) {
             if (!tool_parse_long(v, 1, AM_MAX_WORKERS, &n)) return tool_usage_error("bench: --threads needs a whole number from 1 to %d", AM_MAX_WORKERS);
             threads = (int)n, i++;
-        } else return tool_unknown_option("bench", a);
+        } else return tool_unknown_option("bench", a, bench_help);
     }
     if (kernels) {
 #if defined(AM_PROFILE_BOARD)

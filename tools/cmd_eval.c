@@ -243,7 +243,7 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
         const char *key, *val;
         int r = tool_setting_arg("eval", argc, argv, &i, &key, &val);
         if (r == 2) return 2;
-        if (r == 0) return tool_unknown_option("eval", a);
+        if (r == 0) return tool_unknown_option("eval", a, eval_help);
         char msg[AM_ERR_MAX];
         if (check_setting(key, val, msg, sizeof msg)) return tool_usage_error("eval: %s", msg);
         if (b->nflag == EVAL_MAX_SETTINGS) return tool_usage_error("eval: more than %d settings", EVAL_MAX_SETTINGS);

@@ -638,7 +638,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv)
         }
         int r = parse_common(argc, argv, &i, &o, "evolve");
         if (r == 2) return 2;
-        if (r == 0) return tool_unknown_option("evolve", argv[i]);
+        if (r == 0) return tool_unknown_option("evolve", argv[i], evolve_help);
     }
     if (o.resume && o.out) return tool_usage_error("evolve: --resume DIR continues in DIR; --out does not apply");
     if (o.resume && o.config) return tool_usage_error("evolve: --resume reads the run's own config.txt; --config does not apply");

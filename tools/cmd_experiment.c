@@ -218,7 +218,7 @@ int cmd_experiment(tool_ctx* c, int argc, char** argv)
         } else {
             int r = parse_common(argc, argv, &i, &o, "experiment");
             if (r == 2) return 2;
-            if (r == 0) return tool_unknown_option("experiment", a);
+            if (r == 0) return tool_unknown_option("experiment", a, experiment_help);
         }
     }
     if (o.resume) return tool_usage_error("experiment: run the same command with the same --out again to resume");

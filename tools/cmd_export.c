@@ -209,7 +209,7 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
         } else {
             int r = tool_robot_arg("export", argc, argv, &i, &ra);
             if (r == 2) return 2;
-            if (r == 0) return tool_unknown_option("export", a);
+            if (r == 0) return tool_unknown_option("export", a, export_help);
         }
     }
     if (!ra.name) return tool_usage_error("export: name a robot file or --scene NAME (amorph export --help)");

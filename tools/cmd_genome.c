@@ -34,7 +34,7 @@ int cmd_random(tool_ctx* c, int argc, char** argv)
         }
         int r = tool_setting_arg("random", argc, argv, &i, &key, &val);
         if (r == 2) return 2;
-        if (r == 0) return tool_unknown_option("random", a);
+        if (r == 0) return tool_unknown_option("random", a, random_help);
         if (am_evo_key_group(key) != AM_KEYS_GENOTYPE && strcmp(key, "seed") != 0)
             return tool_usage_error("random: --%s is not a setting of a genome (amorph random --help)", key);
         if (am_evo_set(&d, key, val, err, sizeof err) != AM_OK) return tool_usage_error("random: --%s", err);
@@ -75,7 +75,7 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
             if (!v) return tool_usage_error("express: --out needs a file name");
             out = v, i++;
         } else if (a[0] == '-' && a[1]) {
-            return tool_unknown_option("express", a);
+            return tool_unknown_option("express", a, express_help);
         } else {
             if (in) {
                 char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];

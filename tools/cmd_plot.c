@@ -530,7 +530,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
             /* the robot and its settings, as render and view take them */
             int r = tool_robot_arg("plot", argc, argv, &i, &ra);
             if (r == 2) return 2;
-            if (r == 0) return tool_unknown_option("plot", a);
+            if (r == 0) return tool_unknown_option("plot", a, plot_help);
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("plot: --out needs a file name");
             out = v, i++;
@@ -544,7 +544,7 @@ int cmd_plot(tool_ctx* c, int argc, char** argv)
             if (!tool_parse_long(v, 1, 1000000000L, &max_evals)) return tool_usage_error("plot: --max-evals needs a whole number 1..1000000000");
             i++;
         } else if (a[0] == '-' && a[1]) {
-            return tool_unknown_option("plot", a);
+            return tool_unknown_option("plot", a, plot_help);
         } else {
             if (nd >= PLOT_MAX_RUNS) return tool_usage_error("plot: more than %d folders", PLOT_MAX_RUNS);
             dirs[nd++] = argv[i];

@@ -424,7 +424,7 @@ static const char render_help[] =
     "  --boxes            each voxel as a box (turned and sized as simulated) instead of the\n"
     "                     continuous surface over the voxels (--surface, the default)\n"
     "  --colour MODE      what the colours show: material (the default), strain, stress, speed\n"
-    "                     or phase (docs/pictures.md, Colours), with a legend of the scale\n"
+    "                     or phase (docs/pictures.md, Colours), with a legend of the scale (alias --color)\n"
     TOOL_ROBOT_HELP;
 
 int cmd_render(tool_ctx* c, int argc, char** argv)
@@ -460,7 +460,7 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
         } else {
             int r = tool_robot_arg("render", argc, argv, &i, &ra);
             if (r == 2) return 2;
-            if (r == 0) return tool_unknown_option("render", a);
+            if (r == 0) return tool_unknown_option("render", a, render_help);
         }
     }
     if (!ra.name) return tool_usage_error("render: name a robot file, a run folder or --scene NAME (amorph render --help)");

@@ -357,13 +357,13 @@ int cmd_report(tool_ctx* c, int argc, char** argv)
         return argc < 2 ? 2 : 0;
     }
     const char* table = argv[1];
-    if (table[0] == '-') return tool_unknown_option("report", table);
+    if (table[0] == '-') return tool_unknown_option("report", table, report_help);
     const char* root = NULL;
     int first = 2;
     if (first + 1 < argc && !strcmp(argv[first], "--root")) root = argv[first + 1], first += 2;
     const int n = argc - first;
     for (int i = first; i < argc; i++)
-        if (argv[i][0] == '-') return tool_unknown_option("report", argv[i]);
+        if (argv[i][0] == '-') return tool_unknown_option("report", argv[i], report_help);
     if (!strcmp(table, "last")) {
         if (n != 1) return tool_usage_error("report: last takes one run folder");
         return report_last(argv[first]);

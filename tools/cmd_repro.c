@@ -38,7 +38,7 @@ int cmd_repro(tool_ctx* c, int argc, char** argv)
         int r = parse_common(argc, argv, &i, &o, "repro");
         if (r == 2) return 2;
         if (r == 0 || o.config || o.out || o.resume || o.print_config)
-            return tool_unknown_option("repro", a);
+            return tool_unknown_option("repro", a, repro_help);
     }
     am_evo_def d;
     if (build_def(&o, NULL, NULL, 0, &d, "repro")) return 2;

@@ -8,8 +8,9 @@
 static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
     "Simulates one robot (relaxation, then actuation cycles) and prints its fitness and diagnostics.\n"
-    "FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, with its environment) or a\n"
-    "run folder of amorph evolve (its best robot, in the run's environment, evaluation and materials);\n"
+    "FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, with its environment and run length),\n"
+    "a run folder of amorph evolve (its best robot, in the run's environment, evaluation and materials)\n"
+    "or a voxcraft folder (base.vxa and one .vxd; or name BASE.vxa ROBOT.vxd)" TOOL_DESKTOP_ONLY ";\n"
     "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N), in the seed's environment.\n"
     TOOL_ROBOT_HELP
     "  --json             one JSON object instead of name = value lines\n"
@@ -140,7 +141,7 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
         }
         int r = tool_robot_arg("sim", argc, argv, &i, &ra);
         if (r == 2) return 2;
-        if (r == 0) return tool_unknown_option("sim", a);
+        if (r == 0) return tool_unknown_option("sim", a, sim_help);
     }
     if (!ra.name) return tool_usage_error("sim: name a robot file or --scene NAME (amorph sim --help)");
     if (!traj && (every || format >= 0 || scalars))

@@ -605,7 +605,7 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
                 d = comma ? comma + 1 : 0;
             }
         } else if (a[0] == '-' && a[1]) {
-            return tool_unknown_option("stats", a);
+            return tool_unknown_option("stats", a, stats_help);
         } else {
             int rc = add_run(a, NULL, 0);
             if (rc) return rc;

@@ -298,7 +298,7 @@ int cmd_view(tool_ctx* c, int argc, char** argv)
         } else {
             int r = tool_robot_arg("view", argc, argv, &i, &ra);
             if (r == 2) return 2;
-            if (r == 0) return tool_unknown_option("view", a);
+            if (r == 0) return tool_unknown_option("view", a, view_help);
         }
     }
     if (!ra.name) return tool_usage_error("view: name a robot file, a run folder or --scene NAME (amorph view --help)");

@@ -12,15 +12,15 @@ static const struct {
     {"evolve", cmd_evolve, "evolve robots (the seed's experiment by default; resumable run folders)"},
     {"experiment", cmd_experiment, "run one of the seed's experiments (representations, three-materials, ...)"},
     {"repro", cmd_repro, "run the reference evolution of make repro and print its hash"},
-    {"sim", cmd_sim, "simulate one robot (lattice, genome or --scene) and print its fitness"},
+    {"sim", cmd_sim, "simulate one robot (a lattice, genome or VXA file, a run or voxcraft folder, or --scene) and print its fitness"},
     {"eval", cmd_eval, "evaluate robots given as JSON lines on stdin, one JSON result per line (pipes, docs/embedding.md)" TOOL_DESKTOP_ONLY},
     {"bench", cmd_bench, "print simulator speed figures (name=value lines)"},
-    {"random", cmd_random, "write a random genome (--repr dct|cppn|gmx)"},
+    {"random", cmd_random, "write a random genome (--representation dct|cppn|gmx, alias --repr)"},
     {"express", cmd_express, "express a genome into a lattice file"},
 #if TOOL_VXA
-    {"export", cmd_export, "write a robot as a VXA file for VoxCAD (--vxa) or a lattice file"},
+    {"export", cmd_export, "write a robot (file, run folder or --scene) as a VXA file for VoxCAD (--vxa), a lattice file or STL/AMF surfaces"},
 #else
-    {"export", cmd_export, "write a robot as a lattice file (--lattice; VXA files: not in this build)"},
+    {"export", cmd_export, "write a robot (file, run folder or --scene) as a lattice file or STL/AMF surfaces (VXA files: not in this build)"},
 #endif
     {"render", cmd_render, "draw a filmstrip PNG of a robot's motion (initial, settled, snapshots)" TOOL_DESKTOP_ONLY},
     {"plot", cmd_plot, "plot best fitness against evaluations of runs or experiments (SVG)" TOOL_DESKTOP_ONLY},

@@ -402,6 +402,27 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
                         "(amorph sim %s evaluates the run's best robot as the run did)\n", name, path, apart, path);
 }
 
+/* 1 when path is a folder (one the port can list) */
+static int is_folder(const char* path)
+{
+    static char names[16384];
+    int count = 0;
+    char e2[AM_ERR_MAX];
+    const am_status st = am_port_list_dir(path, names, (long)sizeof names, &count, e2, sizeof e2);
+    return st == AM_OK || st == AM_ERR_CAPACITY;
+}
+
+/* a folder named as the robot that is neither a run folder nor a voxcraft folder: what it is
+ * (which of a run folder's files it lacks) and what the commands take */
+static am_status not_a_robot_folder(const char* dir, char* err, int errsz)
+{
+    char p[TOOL_PATH_MAX];
+    const int config = snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, dir) < (int)sizeof p && am_port_exists(p);
+    return am_fail(err, errsz, AM_ERR_ARG, "%s: a folder, neither a run folder (config.txt, best.genome: %s) nor a voxcraft folder "
+                                           "(a .vxa, a .vxd: %s); a robot is a lattice, genome or VXA file, a run or voxcraft folder, or "
+                                           "--scene NAME", dir, config ? "no best.genome yet" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
+}
+
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz)
 {
     /* no layers unless a VXA file brings them (the board reads no VXA file and keeps no room) */
@@ -424,6 +445,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         st = load_file(c, base, robot, r, &vxa, err, errsz);
     }
 #endif
+    else if (!a->vxd && is_folder(a->name)) return not_a_robot_folder(a->name, err, errsz);
     else {
         st = load_file(c, a->name, a->vxd, r, &vxa, err, errsz);
         one_file = !a->vxd;
