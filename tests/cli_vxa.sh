@@ -358,4 +358,23 @@ check "the free beam starts 2.5 layers up (com z $z0) and falls to the floor ($z
 # amorph's own files keep amorph's placement (their <Amorph> element's <Lift>): a run's robot and its export alike
 check "an exported lattice keeps amorph's placement: $(grep -c '<Lift>' "$D/run.vxa")" grep -q '<Lift>0</Lift>' "$D/run.vxa"
 
+# prescribed displacements (VoxCAD's sample simulation: a bar clamped at x = 0, its far face clamped
+# and pulled 0.1 mm along x): the face is there from the first step, as VoxCAD puts it, and the
+# settled bar stretches evenly, voxel column i by i/5 of it
+T=tests/data/voxcad_tensile.vxa
+"$AMORPH" sim "$T" --cycles 0 --trajectory "$D/tens.csv" >"$D/tens.out" 2>"$D/tens.err"
+check "the tensile bar: no warning: $(cat "$D/tens.err")" [ ! -s "$D/tens.err" ]
+check "the far face moved 0.1 mm at the first step: $(sed -n 3p "$D/tens.csv" | cut -d, -f1-2,42-44)" \
+    awk -F, 'NR == 3 { d = $(7 + 7 * 5) - 0.055; exit !(d > 0.99e-4 && d < 1.01e-4) }' "$D/tens.csv"
+check "the settled bar stretches evenly: $(tail -n 1 "$D/tens.csv" | cut -d, -f7,14,21,28,35,42)" \
+    awk -F, 'END { for (i = 0; i < 6; i++) { d = $(7 + 7 * i) - (0.005 + 0.01 * i); if (!(d > i * 2e-5 - 1e-6 && d < i * 2e-5 + 1e-6)) exit 1 } }' "$D/tens.csv"
+# it exports with its displacement (<DisplaceX> of the far face's voxels) and runs the same
+expect_ok "$AMORPH" export "$T" --vxa "$D/tens.vxa"
+"$AMORPH" sim "$D/tens.vxa" --cycles 0 >"$D/tens2.out" 2>/dev/null
+check "the exported tensile bar: $(grep -c '<DisplaceX>0.0001</DisplaceX>' "$D/tens.vxa") displaced voxels, hash $(hash_of "$D/tens2.out")" \
+    sh -c "[ \$(grep -c '<DisplaceX>0.0001</DisplaceX>' '$D/tens.vxa') -eq 4 ] && [ -n '$(hash_of "$D/tens.out")' ] && [ '$(hash_of "$D/tens.out")' = '$(hash_of "$D/tens2.out")' ]"
+# a displacement past 50 voxel edges: refused with its line
+expect_fail 2 "^amorph: $D/tens_big.vxa:42: <DisplaceX> 0.6 m is more than 50 voxel edges \(Lattice_Dim 0.01 m\)$" \
+    sh -c "sed 's|<DisplaceX>0.0001<|<DisplaceX>0.6<|' '$T' >'$D/tens_big.vxa' && '$AMORPH' sim '$D/tens_big.vxa'"
+
 summary cli_vxa.sh

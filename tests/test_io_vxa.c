@@ -936,7 +936,7 @@ static void test_vxa_cantilever(void)
     expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><DofFixed>7</DofFixed><TorqueZ>2</TorqueZ>"), 0, 0, 0), AM_OK, "");
     CHECK(!strcmp(info_a.warning, "t.vxa:2: warning: <DofFixed> 7 fixes some degrees of freedom only: amorph clamps all six of the "
                                   "region's voxels\nt.vxa:2: warning: <TorqueZ> 2 not supported (amorph's boundary conditions are "
-                                  "clamps and forces): ignored\n"), "%s", info_a.warning);
+                                  "clamps, forces and displacements): ignored\n"), "%s", info_a.warning);
     CHECK(info_a.layers.fixed[0] && info_a.layers.fixed[1], "clamped");
     expect_vxa(vxa(REG("<X>0.6</X><dX>0.1</dX><dY>1</dY><dZ>1</dZ><ForceX>1</ForceX>"), 0, 0, 0), AM_OK, "");
     CHECK(!info_a.warning[0] && info_a.layers.force[0][1] == AM_P(1) && info_a.layers.force[0][0] == AM_P(0),
@@ -1136,6 +1136,50 @@ static void test_vxa_differ(void)
     CHECK(!strcmp(info_a.differ, "TorqueX") && info_a.warnings == 2, "differ '%s'", info_a.differ);
 }
 
+/* VoxCAD's prescribed displacements: a region that fixes a degree of freedom moves its voxels by
+ * <DisplaceX..Z> (m) there (the clamped cell's slot of am_layers.force), at once: am_state_reset puts
+ * it in the state and the clamp holds it; a force on a clamped cell is dropped, a displacement of a
+ * free degree of freedom is a warning (VoxCAD ignores it), one past AM_MAX_DISPLACE voxel edges an
+ * error */
+static void test_vxa_displace(void)
+{
+    static am_model dm;
+    static am_state ds;
+    char err[AM_ERR_MAX] = "";
+    expect_vxa(vxa(REG("<X>0.5</X><dX>0.5</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed><ForceX>3</ForceX><DisplaceX>1e-4</DisplaceX>"
+                       "<DisplaceZ>-2e-5</DisplaceZ>"), 0, 0, 0), AM_OK, "");
+    const am_layers* ly = &info_a.layers;
+    CHECK(!info_a.warning[0] && !info_a.differ[0] && !ly->fixed[0] && ly->fixed[1] && ly->force[0][1] == AM_P(1e-4) &&
+          ly->force[1][1] == AM_P(0) && ly->force[2][1] == AM_P(-2e-5) && ly->force[0][0] == AM_P(0),
+          "displaced: fixed %d %d, slot %g %g %g\n%s", ly->fixed[0], ly->fixed[1], (double)ly->force[0][1], (double)ly->force[1][1],
+          (double)ly->force[2][1], info_a.warning);
+#if !defined(AM_COMPACT)
+    CHECK(am_model_build_layers(&dm, &lat_a, &info_a.env, ly, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&dm, &ds);
+    const double x1 = am_to_si(&dm, ds.x[0][1], AM_DIM_LENGTH), z1 = am_to_si(&dm, ds.x[2][1], AM_DIM_LENGTH);
+    CHECK(fabs(x1 - 1e-4) < 1e-9 && fabs(z1 + 2e-5) < 1e-9 && ds.x[0][0] == AM_R(0) && ds.fext[0][1] == AM_R(0), "reset: x %g %g, fext %g", x1,
+          z1, am_to_si(&dm, ds.fext[0][1], AM_DIM_FORCE));
+    for (int k = 0; k < 50; k++) am_step(&dm, &ds);
+    CHECK(am_to_si(&dm, ds.x[0][1], AM_DIM_LENGTH) == x1 && am_to_si(&dm, ds.x[0][0], AM_DIM_LENGTH) > 1e-7,
+          "after 50 steps: the clamp %g, the free voxel pulled %g", am_to_si(&dm, ds.x[0][1], AM_DIM_LENGTH), am_to_si(&dm, ds.x[0][0], AM_DIM_LENGTH));
+#endif
+    /* only the fixed degrees of freedom move (DofFixed 1: x); y is free: VoxCAD ignores its displacement */
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><DofFixed>1</DofFixed><DisplaceX>1e-4</DisplaceX><DisplaceY>5e-5</DisplaceY>"), 0, 0, 0),
+               AM_OK, "");
+    CHECK(ly->force[0][0] == AM_P(1e-4) && ly->force[1][0] == AM_P(0) &&
+          strstr(info_a.warning, "t.vxa:2: warning: <DisplaceY> 5e-05 of a free degree of freedom (DofFixed 1): ignored, as VoxCAD ignores it"),
+          "free y: %g\n%s", (double)ly->force[1][0], info_a.warning);
+    /* a force, then a clamp over it: the clamp's displacement (0) */
+    expect_vxa(vxa("<Environment><Boundary_Conditions><NumBCs>2</NumBCs><FRegion><dX>1</dX><dY>1</dY><dZ>1</dZ><ForceX>2</ForceX></FRegion>"
+                   "<FRegion><dX>0.5</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed></FRegion></Boundary_Conditions></Environment>", 0, 0, 0),
+               AM_OK, "");
+    CHECK(ly->fixed[0] && ly->force[0][0] == AM_P(0) && !ly->fixed[1] && ly->force[0][1] == AM_P(1), "force then clamp: %g %g",
+          (double)ly->force[0][0], (double)ly->force[0][1]);
+    /* more than AM_MAX_DISPLACE voxel edges (Lattice_Dim 0.001 m by default) */
+    expect_vxa(vxa(REG("<dX>1</dX><dY>1</dY><dZ>1</dZ><DofFixed>63</DofFixed>\n<DisplaceZ>0.06</DisplaceZ>"), 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:3: <DisplaceZ> 0.06 m is more than 50 voxel edges (Lattice_Dim 0.001 m)");
+}
+
 /* VoxCAD's <StopCondition> and evosoro's <InitCmTime> as the evaluation's cycles and least
  * relaxation (am_vxa_stop_settings), each kind of stop; a flag's value kept; a stop without a
  * counterpart warned and named; a body above empty layers starts there (env.lift) */
@@ -1317,6 +1361,7 @@ int main(int argc, char** argv)
     RUN(test_vxa_stiffness);
     RUN(test_vxa_differ);
     RUN(test_vxa_stop_and_place);
+    RUN(test_vxa_displace);
     RUN(test_vxa_vxd);
     RUN(test_vxa_noise);
     return SUMMARY();

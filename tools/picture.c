@@ -144,7 +144,8 @@ int tool_record_motion(tool_ctx* c, const am_robot* r, int want, tool_motion* mo
         mo->nfixed += pic_fixed[i];
         double f2 = 0;
         for (int k = 0; k < 3; k++) {
-            double fk = m->any_force ? am_to_si(m, m->force[k][i], AM_DIM_FORCE) : 0;
+            /* (a clamped voxel's entry is its prescribed displacement, not a force) */
+            double fk = m->any_force && !m->fixed[i] ? am_to_si(m, m->force[k][i], AM_DIM_FORCE) : 0;
             pic_force[3 * i + k] = (float)fk;
             f2 += fk * fk;
         }

@@ -121,6 +121,8 @@ am_env am_default_env(void);
  * conditions (VXA's fixed and forced regions). Cell c is the lattice's cell c; entries of empty
  * cells are not read. am_model_build_layers takes it; am_model_build is that call with none. Large
  * (about 170 KB on the desktop): declare it static. */
+/* the largest prescribed displacement of a clamped cell, in voxel edges (within the fixed-point range) */
+#define AM_MAX_DISPLACE 50
 typedef struct am_layers {
     int has_phase;                    /* 1: phase[] holds every cell's phase */
     int has_bc;                       /* 1: fixed[] and force[] hold boundary conditions */
@@ -130,7 +132,10 @@ typedef struct am_layers {
     am_param stiffness[AM_MAX_CELLS]; /* Pa: the voxel's elastic modulus in place of its material's E
                                        * (every constant that follows from E: links, floor, damping) */
     uint8_t fixed[AM_MAX_CELLS];      /* 1: the cell's voxel is clamped (all six degrees of freedom) */
-    am_param force[3][AM_MAX_CELLS];  /* N: a constant external force on the cell's voxel */
+    am_param force[3][AM_MAX_CELLS];  /* N: a constant external force on the cell's voxel; on a clamped
+                                       * cell (fixed[c]) m: its prescribed displacement from its lattice
+                                       * place instead (VoxCAD's one slot per degree of freedom: a force
+                                       * where it is free, a displacement where it is fixed) */
 } am_layers;
 
 /* no phases, no stiffnesses, no boundary conditions (the arrays are left as they are: only the
@@ -214,11 +219,15 @@ typedef struct am_model {
      * them finds its pair of materials' at lpair[l]). voxel_phase is 0 for every other robot,
      * which keeps the per-material actuation */
     int voxel_phase;
-    int any_force;                 /* 1: some voxel has a constant external force (force) */
+    int any_force;                 /* 1: some voxel has a constant external force or a prescribed
+                                      displacement (force) */
 #if !defined(AM_COMPACT)
     am_real vphase[AM_MAX_VOXELS];    /* radians */
     am_pair lself[AM_MAX_LINKS];      /* l */
-    am_real force[3][AM_MAX_VOXELS];  /* the boundary conditions' forces, model units; am_state_reset puts them in fext */
+    am_real force[3][AM_MAX_VOXELS];  /* the boundary conditions, model units: a free voxel's force
+                                       * (am_state_reset puts it in fext), a clamped voxel's prescribed
+                                       * displacement (am_state_reset puts it in x, where it stays: the
+                                       * region moves there at the first step, as in VoxCAD) */
 #endif
     am_real dt_rec;                /* analytic time step, s */
     am_real max_speed;             /* divergence bound on any voxel speed, m/s */

@@ -905,6 +905,24 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
     return AM_OK;
 }
 
+/* one cell that a region touches (VoxCAD's rule, as Voxelyze applies its boundary conditions):
+ * a region that fixes degrees of freedom clamps the cell and prescribes its displacement along
+ * each fixed one (m, from its lattice place: the last such region's), a clamped cell takes no
+ * force; a region that fixes none adds its force shared among its count voxels. The cell's one
+ * slot (am_layers.force) holds the displacement of a clamped cell, the force of a free one */
+static void region_cell(am_layers* ly, int cell, int dof, const double force[3], const double disp[3], long count)
+{
+    if (dof) {
+        if (!ly->fixed[cell])
+            for (int k = 0; k < 3; k++) ly->force[k][cell] = AM_P(0); /* a force before the clamp: gone */
+        ly->fixed[cell] = 1;
+        for (int k = 0; k < 3; k++)
+            if (dof >> k & 1) ly->force[k][cell] = (am_param)disp[k];
+    } else if (!ly->fixed[cell]) {
+        for (int k = 0; k < 3; k++) ly->force[k][cell] += (am_param)(force[k] / (double)count);
+    }
+}
+
 /* how far (relative to the workspace) a cell must reach into a region's box to touch it: faces that
  * only meet, up to rounding, do not count */
 #define REGION_TOL 1e-9
@@ -956,11 +974,22 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
         warn(c, at[12], "<DofFixed> %d fixes some degrees of freedom only: amorph clamps all six of the region's voxels", dof);
         differs(c, "DofFixed");
     }
-    for (int i = 17; i < NT; i++)
-        if (at[i] >= 0 && v[i] != 0) {
-            warn(c, at[i], "<%s> %.9g not supported (amorph's boundary conditions are clamps and forces): ignored", tags[i], v[i]);
-            differs(c, tags[i]);
+    for (int i = 17; i < NT; i++) {
+        if (at[i] < 0 || v[i] == 0) continue;
+        if (i >= 20 && i <= 22 && (dof >> (i - 20) & 1)) { /* a prescribed displacement of a fixed degree of freedom */
+            if (!(fabs(v[i]) <= AM_MAX_DISPLACE * (double)lat->voxel_size))
+                return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g m is more than %d voxel edges (Lattice_Dim %g m)", tags[i], v[i],
+                            AM_MAX_DISPLACE, (double)lat->voxel_size);
+            continue;
         }
+        if (i >= 20 && i <= 22) { /* VoxCAD moves only the degrees of freedom a region fixes */
+            warn(c, at[i], "<%s> %.9g of a free degree of freedom (DofFixed %d): ignored, as VoxCAD ignores it", tags[i], v[i], dof);
+            continue;
+        }
+        warn(c, at[i], "<%s> %.9g not supported (amorph's boundary conditions are clamps, forces and displacements): ignored", tags[i],
+             v[i]);
+        differs(c, tags[i]);
+    }
     for (int i = 14; i < 17; i++)
         if (!(fabs(v[i]) < 1e30)) return verr(c, at[i], AM_ERR_RANGE, "<%s> %.9g is not a finite force", tags[i], v[i]);
     /* the box, corners in either order */
@@ -987,8 +1016,7 @@ static am_status read_region(vctx* c, int n, const am_lattice* lat, int fixed_li
                 count++;
                 continue;
             }
-            if (dof) ly->fixed[cell] = 1;
-            for (int k = 0; k < 3; k++) ly->force[k][cell] += (am_param)(v[14 + k] / (double)count);
+            region_cell(ly, cell, dof, v + 14, v + 20, count);
         }
     if (count == 0) warn(c, n, "<FRegion> holds no voxel (no filled cell touches its box): no effect");
     ly->has_bc = 1;
@@ -1530,7 +1558,10 @@ static am_status put_regions(wbuf* w, const am_lattice* lat, const am_layers* ly
             put(w, "        <%s>%s</%s>\n        <d%s>%s</d%s>\n", ax[k], num(a, (idx[k] + 0.25) / n[k], 0), ax[k], ax[k],
                 num(b, 0.5 / n[k], 0), ax[k]);
         put(w, "        <DofFixed>%d</DofFixed>\n", ly->fixed[c] ? 63 : 0);
-        for (int k = 0; k < 3; k++) put(w, "        <Force%s>%s</Force%s>\n", ax[k], num(a, (double)ly->force[k][c], 1), ax[k]);
+        /* a clamped cell's slot is its prescribed displacement, a free one's its force */
+        const int fixed = ly->fixed[c] != 0, moved = fixed && (ly->force[0][c] != AM_P(0) || ly->force[1][c] != AM_P(0) || ly->force[2][c] != AM_P(0));
+        for (int k = 0; k < 3; k++) put(w, "        <Force%s>%s</Force%s>\n", ax[k], num(a, fixed ? 0.0 : (double)ly->force[k][c], 1), ax[k]);
+        for (int k = 0; moved && k < 3; k++) put(w, "        <Displace%s>%s</Displace%s>\n", ax[k], num(a, (double)ly->force[k][c], 1), ax[k]);
         put(w, "      </FRegion>\n");
     }
     put(w, "    </Boundary_Conditions>\n");

@@ -162,13 +162,17 @@ static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* a
         for (int k = 0; k < 3; k++) {
             if (!am_param_finite(ly->force[k][c]))
                 return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its external force must be finite", c);
+            const double d = (double)ly->force[k][c], most = AM_MAX_DISPLACE * (double)lat->voxel_size;
+            if (ly->fixed[c] && !(d <= most && d >= -most))
+                return am_fail(err, errsz, AM_ERR_RANGE, "cell %d: its prescribed displacement %g m is more than %d voxel edges", c,
+                               (double)ly->force[k][c], AM_MAX_DISPLACE);
             *any_force |= ly->force[k][c] != AM_P(0);
         }
     }
 #if defined(AM_COMPACT)
     if (ly->has_phase || ly->has_stiffness || *any_force)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "%s: the board profile has no room for them (desktop profile only)",
-                       ly->has_phase ? "a phase per voxel" : ly->has_stiffness ? "a stiffness per voxel" : "external forces per voxel");
+                       ly->has_phase ? "a phase per voxel" : ly->has_stiffness ? "a stiffness per voxel" : "external forces or displacements per voxel");
 #endif
     return AM_OK;
 }
@@ -375,9 +379,13 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     for (int i = 0; i < nv; i++) {
         m->vphase[i] = AM_R(0);
         if (m->voxel_phase) m->vphase[i] = AM_PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
+        /* a clamped voxel takes no force: its slot holds the displacement a region prescribes (a
+         * voxel clamped by its material alone: none) */
+        const int bc_fixed = any_force && layers->fixed[m->cell[i]];
         for (int k = 0; k < 3; k++) {
             m->force[k][i] = AM_R(0);
-            if (any_force) m->force[k][i] = AM_PV(layers->force[k][m->cell[i]], am_unit(m, AM_DIM_FORCE));
+            if (any_force && !m->fixed[i]) m->force[k][i] = AM_PV(layers->force[k][m->cell[i]], am_unit(m, AM_DIM_FORCE));
+            if (bc_fixed) m->force[k][i] = AM_PV(layers->force[k][m->cell[i]], m->unit_len);
         }
     }
     for (int l = 0; l < nl; l++) m->lself[l] = (am_pair)l;
@@ -481,7 +489,9 @@ void am_state_reset(const am_model* m, am_state* s)
 #endif
             s->fext[c][i] = s->mext[c][i] = s->fc[c][i] = AM_R(0);
 #if !defined(AM_COMPACT)
-            if (m->any_force) s->fext[c][i] = m->force[c][i]; /* the boundary conditions' forces */
+            /* the boundary conditions: a free voxel's force, a clamped one's prescribed displacement */
+            if (m->any_force && !m->fixed[i]) s->fext[c][i] = m->force[c][i];
+            if (m->any_force && m->fixed[i]) s->x[c][i] = m->force[c][i];
 #endif
             s->xref[c][i] = AM_R(0);
         }
