@@ -55,7 +55,10 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * apply to (cte only the actuated ones, those of non-zero CTE) and the voxel size; relax_max_steps
  * below relax_min_steps lowers that too. Then seconds become steps: --dt sets env.dt_frac, and a VXA
  * file's period in seconds (unless the file or a setting gave period_steps) becomes period_steps of
- * the resulting step. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
+ * the resulting step, and a VXA file's run length (VoxCAD's StopCondition, evosoro's InitCmTime)
+ * becomes cycles and relax_min_steps unless a setting gave them (am_vxa_stop_settings; one note line
+ * on stderr says what it set). A folder that is neither a run folder nor a voxcraft folder is
+ * refused with what it lacks. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz);
 
 /* the name of the robot's own file, for reports: a's file, the VXD of a VXA file with a VXD over it
