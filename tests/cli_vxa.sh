@@ -355,6 +355,10 @@ sed '/<FRegion>/,/<\/FRegion>/d; s|<NumBCs>1</NumBCs>|<NumBCs>0</NumBCs>|' "$H" 
 z0=$(sed -n 2p "$D/fall.csv" | cut -d, -f6); z1=$(tail -n 1 "$D/fall.csv" | cut -d, -f6)
 check "the free beam starts 2.5 layers up (com z $z0) and falls to the floor ($z1): $(cat "$D/fall.err")" \
     awk -v a="$z0" -v b="$z1" 'BEGIN { exit !(a > 0.0249 && a < 0.0251 && b > 0.004 && b < 0.0055) }'
+# the lattice format has no place for the height: export --lattice says so
+"$AMORPH" export "$H" --lattice "$D/hang.lattice" 2>"$D/hangl.err"
+check "export --lattice of the raised beam: $(cat "$D/hangl.err")" \
+    grep -qxF "$H: warning: the lattice format holds no starting height: --lattice $D/hang.lattice lowers the body onto the floor, not 0.02 m above it (--vxa keeps it)" "$D/hangl.err"
 # amorph's own files keep amorph's placement (their <Amorph> element's <Lift>): a run's robot and its export alike
 check "an exported lattice keeps amorph's placement: $(grep -c '<Lift>' "$D/run.vxa")" grep -q '<Lift>0</Lift>' "$D/run.vxa"
 

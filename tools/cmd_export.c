@@ -258,6 +258,10 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
                             "(--vxa keeps them)\n", ra.name, what, lattice);
         }
 #endif
+        /* nor for where the body starts (a VXA file's, VoxCAD's placement): a lattice is lowered onto the floor */
+        if (rob.env.lift > AM_P(0))
+            fprintf(stderr, "%s: warning: the lattice format holds no starting height: --lattice %s lowers the body onto the floor, "
+                            "not %.4g m above it%s\n", ra.name, lattice, (double)rob.env.lift, TOOL_VXA ? " (--vxa keeps it)" : "");
         /* nor for the environment and the evaluation: the settings away from the defaults, said */
         char apart[512];
         am_evo_def dr = am_default_evo();
