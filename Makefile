@@ -1,15 +1,16 @@
 # amorph: one Makefile, several side-by-side builds.
 #   make                      build/libamorph.a and build/amorph
-#   make test                 every test (the README's test command; also builds the -O0, fixed-point
-#                             and board-profile variants the shell tests compare against)
+#   make test                 every test (the README's test command and CI's; also builds the -O0,
+#                             fixed-point and board-profile variants the shell tests compare against)
 #   make bench                benchmarks that print figures (bench-board: a board's cost under QEMU;
 #                             bench-mpi: MPI ranks against threads; convergence: the default step
 #                             against a ten times smaller one on every kind of body)
 #   make PORT=mpi             build/mpi/amorph, the MPI build (mpirun -np N build/mpi/amorph ...)
 #   make sim-only TARGET=cortex-m4   build/cortex-m4/board_sim: the simulator alone on a board (no port)
 #   make check-fixed          the fixed-point step has no floating-point call (Cortex-M3 cross build)
-#   make shared               build/libamorph.so, the library for other languages (docs/embedding.md)
-#   make install PREFIX=/usr/local   headers, libamorph.a, libamorph.so, amorph, amorph.pc (DESTDIR honoured)
+#   make shared               build/libamorph.so (.MAJOR, .MAJOR.MINOR.PATCH), the library for other
+#                             languages, exporting the API alone (make check-exports; docs/embedding.md)
+#   make install PREFIX=/usr/local   headers, libamorph.a, libamorph.so*, amorph, amorph.pc (DESTDIR honoured)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)  GATHER=auto|on|off
 #          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
@@ -112,7 +113,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all shared install sim-only test unit check-test-links check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all shared install sim-only test unit check-exports check-test-links check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -155,15 +156,29 @@ $(BUILD)/amorph: $(BUILD)/amorph$(EXE)
 endif
 
 # the shared library (docs/embedding.md): the library's sources only, compiled again as
-# position-independent code into $(BUILD)/pic/, with the same flags
+# position-independent code into $(BUILD)/pic/, with the same flags and hidden visibility, so that
+# only the functions the public headers mark AM_API are exported (make check-exports). The file is
+# libamorph.so.MAJOR.MINOR.PATCH with the SONAME libamorph.so.MAJOR (AM_VERSION_* of
+# include/amorph/base.h), and the links libamorph.so.MAJOR and libamorph.so to it
+am_version = $(shell awk 'index($$1, "define") && $$2 == "AM_VERSION_$(1)" {print $$3}' include/amorph/base.h)
+SO_MAJOR := $(call am_version,MAJOR)
+SO_NAME  := libamorph.so.$(SO_MAJOR)
+SO_FILE  := $(SO_NAME).$(call am_version,MINOR).$(call am_version,PATCH)
 PIC_OBJ := $(LIB_SRC:%.c=$(BUILD)/pic/%.o)
 $(BUILD)/pic/%.o: %.c Makefile $(BUILD)/flags.txt
 	@mkdir -p $(dir $@)
-	$(CC) $(ALLCFLAGS) -fPIC -MMD -MP -c $< -o $@
+	$(CC) $(ALLCFLAGS) -fPIC -fvisibility=hidden -MMD -MP -c $< -o $@
 
-$(BUILD)/libamorph.so: $(PIC_OBJ)
-	$(CC) $(ALLCFLAGS) -shared -o $@ $^ -lm
+$(BUILD)/$(SO_FILE): $(PIC_OBJ)
+	$(CC) $(ALLCFLAGS) -shared -Wl,-soname,$(SO_NAME) -o $@ $^ -lm
+$(BUILD)/libamorph.so: $(BUILD)/$(SO_FILE)
+	ln -sf $(SO_FILE) $(BUILD)/$(SO_NAME) && ln -sf $(SO_NAME) $@
 shared: $(BUILD)/libamorph.so
+
+# the shared library exports every function the public headers declare and nothing else: the
+# compiler lists the declarations (-aux-info), nm -D the exports (tools/check_exports.sh)
+check-exports: $(BUILD)/libamorph.so
+	@NM=$(NM) sh tools/check_exports.sh '$(CC)' '-std=c11 $(DEFS) $(TARGET_CFLAGS)' $(BUILD)/libamorph.so
 
 # make install: headers, both libraries, the program and a pkg-config file under PREFIX
 # (tools/install.sh; the .pc file carries the build's number type and profile)
@@ -257,7 +272,7 @@ check-tests:
 unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so check-test-links
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
-test: all check-alloc check-fma check-tests check-layers
+test: all check-alloc check-fma check-tests check-layers check-exports
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
@@ -270,7 +285,7 @@ test: all check-alloc check-fma check-tests check-layers
 	    MPI_BUILD=$(BUILD)/mpi $(if $(filter native,$(ARCH)),GATHER_BUILD=$(BUILD)/gather-$(GATHER_OTHER))
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory fuzz-smoke
-	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed unit check-exports
 
 # the fixed-point hot path is integer-only: the step's sources (sim_step.c, sim_collide.c,
 # base_math.c with the actuation's sin and cbrt, and am_sim_scale and am_sim_scale_rate of

@@ -121,6 +121,9 @@ if command -v pkg-config >/dev/null 2>&1 && [ -f "$BUILD/libamorph.so" ] && ! gr
     for f in include/amorph.h include/amorph/api.h lib/libamorph.a lib/libamorph.so bin/amorph lib/pkgconfig/amorph.pc; do
         check "installed $f" test -f "$W/inst/$f"
     done
+    # libamorph.so -> libamorph.so.MAJOR -> libamorph.so.MAJOR.MINOR.PATCH, as in the build folder
+    so1=$(readlink "$W/inst/lib/libamorph.so") so2=$(readlink "$W/inst/lib/$so1")
+    check "installed the shared library's links: libamorph.so -> $so1 -> $so2" test -L "$W/inst/lib/$so1" -a -f "$W/inst/lib/$so2" -a ! -L "$W/inst/lib/$so2"
     cat >"$W/probe.c" <<'C'
 #include <stdio.h>
 #include "amorph.h"
@@ -134,7 +137,7 @@ int main(int argc, char** argv)
     if (!f) return 2;
     text[fread(text, 1, sizeof text - 1, f)] = 0;
     fclose(f);
-    if (am_api_init(&work, am_api_work_size(), err, sizeof err) != AM_OK || am_api_set(&work, "cycles", "2", err, sizeof err) != AM_OK ||
+    if (AM_LAYOUT_CHECK(err, sizeof err) != AM_OK || am_api_init(&work, sizeof work, err, sizeof err) != AM_OK || am_api_set(&work, "cycles", "2", err, sizeof err) != AM_OK ||
         am_api_eval_lattice(&work, text, &r, err, sizeof err) != AM_OK) {
         fprintf(stderr, "%s\n", err);
         return 1;

@@ -121,7 +121,10 @@ static void test_refusals(void)
     static am_api_work fresh;
     CHECK(am_api_init(NULL, am_api_work_size(), err, sizeof err) == AM_ERR_ARG, "NULL accepted");
     CHECK(am_api_init(&fresh, am_api_work_size() - 1, err, sizeof err) == AM_ERR_ARG, "a short buffer accepted");
-    CHECK(strstr(err, "needs") && printable_line(err), "message '%s'", err);
+    CHECK(strstr(err, "sizeof *w") && printable_line(err), "message '%s'", err);
+    /* a longer buffer is refused too: a C caller passes sizeof *w, which differs from the library's
+     * only when it was compiled with another REAL or PROFILE */
+    CHECK(am_api_init(&fresh, am_api_work_size() + 8, err, sizeof err) == AM_ERR_ARG, "a workspace of another layout accepted");
     CHECK(am_api_init((am_api_work*)((char*)&fresh + 1), am_api_work_size(), err, sizeof err) == AM_ERR_ARG, "misaligned accepted");
     CHECK(am_api_eval_genome(&fresh, "x", &res, err, sizeof err) == AM_ERR_ARG, "an unprepared workspace accepted");
     prepare(&g_w[0]);
@@ -135,6 +138,25 @@ static void test_refusals(void)
     CHECK(printable_line(err) && !strncmp(err, "lattice:", 8), "message '%s'", err);
 }
 
+/* AM_LAYOUT_CHECK passes in a program compiled as the library was; another version or size is one line */
+static void test_layout(void)
+{
+    char err[AM_ERR_MAX];
+    CHECK(AM_LAYOUT_CHECK(err, sizeof err) == AM_OK, "the library refuses its own layout: %s", err);
+    long v = AM_LAYOUT_VERSION, m = (long)sizeof(am_model);
+    CHECK(am_layout_check(v, "x", (long)sizeof(am_lattice), m + 4, (long)sizeof(am_state), (long)sizeof(am_genome), (long)sizeof(am_evo),
+                          (long)sizeof(am_api_work), err, sizeof err) == AM_ERR_ARG, "another am_model size accepted");
+    CHECK(printable_line(err) && strstr(err, "am_model") && strstr(err, "compiled for x"), "message '%s'", err);
+    CHECK(am_layout_check(v + 10000, AM_LAYOUT_CONFIG, (long)sizeof(am_lattice), m, (long)sizeof(am_state), (long)sizeof(am_genome),
+                          (long)sizeof(am_evo), (long)sizeof(am_api_work), err, sizeof err) == AM_ERR_ARG, "another major version accepted");
+    CHECK(printable_line(err) && strstr(err, "headers"), "message '%s'", err);
+    CHECK(am_layout_check(v + 100, AM_LAYOUT_CONFIG, (long)sizeof(am_lattice), m, (long)sizeof(am_state), (long)sizeof(am_genome),
+                          (long)sizeof(am_evo), (long)sizeof(am_api_work), err, sizeof err) == AM_ERR_ARG, "a newer minor version accepted");
+    CHECK(AM_VERSION_MINOR == 0 || am_layout_check(v - 100, AM_LAYOUT_CONFIG, (long)sizeof(am_lattice), m, (long)sizeof(am_state),
+                                                   (long)sizeof(am_genome), (long)sizeof(am_evo), (long)sizeof(am_api_work), err, sizeof err) == AM_OK,
+          "an older minor version refused: %s", err);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -144,5 +166,6 @@ int main(int argc, char** argv)
     RUN(test_lattice_as_sim);
     RUN(test_empty_body);
     RUN(test_refusals);
+    RUN(test_layout);
     return SUMMARY();
 }

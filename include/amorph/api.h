@@ -36,30 +36,50 @@ typedef struct am_api_work {
     am_evo_work work;         /* expression, lattice, model, state */
 } am_api_work;
 
+/* ==== the caller's layout. Every struct of the headers is the caller's to allocate, and its layout
+ * depends on the build's number type (REAL) and profile or capacities (PROFILE, AMORPH_CONFIG_H):
+ * a program compiled with other defines than the library's would hand it structs of another size
+ * and have them written past their end. A C program calls AM_LAYOUT_CHECK before anything else:
+ *     if (AM_LAYOUT_CHECK(err, sizeof err) != AM_OK) { fprintf(stderr, "%s\n", err); exit(1); }
+ * It passes the header version and the sizes of the caller-owned structs as the program sees them;
+ * the library compares them with its own and refuses (AM_ERR_ARG, one line naming both
+ * configurations) a program of another major version, of a newer minor version, or of another
+ * layout. am_api_init checks its workspace's size the same way. */
+#define AM_LAYOUT_VERSION (AM_VERSION_MAJOR * 10000L + AM_VERSION_MINOR * 100L + AM_VERSION_PATCH)
+#define AM_LAYOUT_CONFIG AM_REAL_NAME " " AM_PROFILE_NAME
+#define AM_LAYOUT_CHECK(err, errsz) am_layout_check(AM_LAYOUT_VERSION, AM_LAYOUT_CONFIG, (long)sizeof(am_lattice), (long)sizeof(am_model), \
+    (long)sizeof(am_state), (long)sizeof(am_genome), (long)sizeof(am_evo), (long)sizeof(am_api_work), (err), (errsz))
+/* the check behind AM_LAYOUT_CHECK: version and config as the caller's headers give them, then
+ * the caller's sizeof of am_lattice, am_model, am_state, am_genome, am_evo and am_api_work */
+AM_API am_status am_layout_check(long version, const char* config, long lattice, long model, long state, long genome, long evo,
+                                 long api_work, char* err, int errsz);
+
 /* AM_API_VERSION of the library (a program loaded against another build can compare) */
-int am_api_version(void);
+AM_API int am_api_version(void);
 /* bytes of the workspace, sizeof(am_api_work): what a ctypes caller allocates */
-long am_api_work_size(void);
+AM_API long am_api_work_size(void);
 /* bytes of am_result, for a caller that mirrors it field by field (sim.h) */
-long am_api_result_size(void);
-/* prepares w (size bytes at w, at least am_api_work_size(), aligned for a double) with the
- * default settings, am_default_evo(): AM_ERR_ARG when w is NULL, too small or misaligned */
-am_status am_api_init(am_api_work* w, long size, char* err, int errsz);
+AM_API long am_api_result_size(void);
+/* prepares w (size bytes at w, exactly am_api_work_size(), aligned for a double) with the
+ * default settings, am_default_evo(): AM_ERR_ARG when w is NULL, of another size or misaligned.
+ * A C caller passes sizeof *w, so that a program compiled with another REAL or PROFILE than the
+ * library's is refused here rather than written past its workspace's end */
+AM_API am_status am_api_init(am_api_work* w, long size, char* err, int errsz);
 /* sets one key of amorph evolve's configuration ("cycles", "4"; docs/evolve.md lists them) over
  * w's settings, as `amorph sim --KEY VALUE` does: period_steps holds the period in steps
  * (period_s 0), relax_max_steps below relax_min_steps lowers that too. AM_ERR_ARG for an unknown
  * key, AM_ERR_RANGE for a bad value (the settings unchanged) */
-am_status am_api_set(am_api_work* w, const char* key, const char* value, char* err, int errsz);
+AM_API am_status am_api_set(am_api_work* w, const char* key, const char* value, char* err, int errsz);
 /* evaluates the genome in text (the genome text format, docs/formats.md) as a run with w's
  * settings evaluates it: expressed with the run's palette and voxel size, simulated in its
  * environment and evaluation. *out gets the result (am_result, sim.h); an empty body is AM_OK
  * with a zero result (fitness 0, voxels 0). AM_ERR_PARSE for a malformed genome ("genome:LINE: ...") */
-am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
+AM_API am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
 /* evaluates the lattice in text (the lattice text format, docs/formats.md) in w's environment and
  * evaluation, its materials changed by the material keys that am_api_set set (cte: the actuated
  * ones; mu_static, mu_kinetic: all; voxel_size: the lattice's), as `amorph sim FILE --KEY VALUE`
  * does. Empty body and failures as am_api_eval_genome ("lattice:LINE: ...") */
-am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
+AM_API am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
 
 #ifdef __cplusplus
 }

@@ -14,6 +14,34 @@
 extern "C" {
 #endif
 
+/* ==== the library's version and its exported API.
+ *
+ * AM_VERSION_MAJOR names the binary interface: the shared library is libamorph.so.MAJOR (its
+ * SONAME), in the file libamorph.so.MAJOR.MINOR.PATCH (the Makefile reads the three from here).
+ * MAJOR goes up when a function's signature or a public struct's layout changes, MINOR when a
+ * function is added, PATCH for anything else.
+ *
+ * AM_API marks each function of the public headers. The shared library is compiled with hidden
+ * visibility (make shared), so it exports these functions and nothing else (make check-exports);
+ * in the static library it changes nothing. On Windows it is empty unless a DLL is built
+ * (AM_BUILD_DLL: dllexport) or used (AM_USE_DLL: dllimport); the Makefile builds none there. */
+#define AM_VERSION_MAJOR 1
+#define AM_VERSION_MINOR 0
+#define AM_VERSION_PATCH 0
+#if defined(_WIN32) || defined(__CYGWIN__)
+#if defined(AM_BUILD_DLL)
+#define AM_API __declspec(dllexport)
+#elif defined(AM_USE_DLL)
+#define AM_API __declspec(dllimport)
+#else
+#define AM_API
+#endif
+#elif defined(__GNUC__)
+#define AM_API __attribute__((visibility("default")))
+#else
+#define AM_API
+#endif
+
 /* ==== every capacity of the library, in one place.
  *
  * Nothing in amorph allocates. Each array is sized here at compile time, and a capacity that
@@ -173,12 +201,12 @@ static inline am_real am_fx_div(am_real a, am_real b)
     int64_t q = (n >= 0 ? n + h : n - h) / d;
     return q > INT32_MAX ? INT32_MAX : (q < -INT32_MAX ? -INT32_MAX : (am_real)q);
 }
-am_real am_fx_sqrt(am_real x); /* base_math.c: the root rounded to nearest, 0 for x <= 0 */
+AM_API am_real am_fx_sqrt(am_real x); /* base_math.c: the root rounded to nearest, 0 for x <= 0 */
 /* a product kept whole (Q14.48 in int64_t), for squared norms of small vectors (friction forces
  * and speeds, whose squares would fall below the Q24 resolution) and exact sign tests */
 typedef int64_t am_wide;
 #define AM_MULW(a, b) ((int64_t)(a) * (b))
-am_real am_fx_sqrt_wide(am_wide w); /* the root of a wide value, as am_real, rounded to nearest */
+AM_API am_real am_fx_sqrt_wide(am_wide w); /* the root of a wide value, as am_real, rounded to nearest */
 #define AM_WIDE_SQRT(w) am_fx_sqrt_wide(w)
 
 #define AM_MUL(a, b) am_fx_mul((a), (b))
@@ -270,10 +298,10 @@ typedef enum am_status {
 
 /* the code's name ("ok", "parse", "range", "capacity", "io", "empty", "arg", "cancelled";
  * "unknown" for any other value) */
-const char* am_status_name(am_status code);
+AM_API const char* am_status_name(am_status code);
 
 /* writes "fmt" into err (size errsz, may be 0) like snprintf and returns code */
-am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
+AM_API am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
 #endif
@@ -281,12 +309,12 @@ am_status am_fail(char* err, int errsz, am_status code, const char* fmt, ...)
 
 /* "fname:line: " followed by fmt into err, like am_fail: the one form of every file message.
  * The va_list form serves the parsers' own variadic wrappers. */
-am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap)
+AM_API am_status am_vfail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, va_list ap)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 0)))
 #endif
     ;
-am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, ...)
+AM_API am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, int line, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
 #endif
@@ -308,7 +336,7 @@ am_status am_fail_at(char* err, int errsz, am_status code, const char* fname, in
  * printf argument. */
 #define AM_QUOTE_MAX 40
 #define AM_QUOTE_BUF (4 * AM_QUOTE_MAX + 4) /* 40 escapes of 4 characters, "...", the NUL */
-const char* am_quote(char* out, int cap, const char* s, long n);
+AM_API const char* am_quote(char* out, int cap, const char* s, long n);
 
 /* ==== the bounded text buffer every writer formats into (genome, lattice, configuration,
  * checkpoint, VXA, SVG, HTML).
@@ -333,46 +361,46 @@ typedef struct am_text {
 } am_text;
 
 /* appends printf-style text */
-void am_text_put(am_text* t, const char* fmt, ...)
+AM_API void am_text_put(am_text* t, const char* fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
 /* the va_list form, for the writers' own variadic helpers */
-void am_text_vput(am_text* t, const char* fmt, va_list ap)
+AM_API void am_text_vput(am_text* t, const char* fmt, va_list ap)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 0)))
 #endif
     ;
 /* appends n bytes of data (no NUL inside) */
-void am_text_write(am_text* t, const char* data, long n);
+AM_API void am_text_write(am_text* t, const char* data, long n);
 /* a flush function that drops the text: a stream through it only counts (done + len is the length) */
-am_status am_text_drop(void* ctx, const char* data, long n);
+AM_API am_status am_text_drop(void* ctx, const char* data, long n);
 /* a writer of a whole text: formats ctx into out (the genome, configuration and checkpoint
  * writers behind one of these) */
 typedef am_status (*am_text_writer)(const void* ctx, am_text* out, char* err, int errsz);
 /* writes ctx into buf (capacity cap, NUL-terminated) as one whole text; *len (may be NULL) gets
  * its length. When it does not fit, writes it again through a counting stream and fails with
  * "WHAT needs N bytes, the buffer holds CAP" (AM_ERR_CAPACITY), *len then the length needed. */
-am_status am_text_format(am_text_writer write, const void* ctx, const char* what, char* buf, long cap, long* len,
+AM_API am_status am_text_format(am_text_writer write, const void* ctx, const char* what, char* buf, long cap, long* len,
                          char* err, int errsz);
 /* hands the buffered bytes to flush (a whole-text buffer keeps them). AM_OK while nothing was
  * dropped, else AM_ERR_CAPACITY (full 1) or AM_ERR_IO (full 2: the flush function's message) */
-am_status am_text_flush(am_text* t);
+AM_API am_status am_text_flush(am_text* t);
 
 /* Strict numbers, as every reader and command-line flag takes them: the whole token is the number
  * (no blank, no '+', nothing after it); 1 with *out set, else 0 (NULL counts as no number).
  * am_parse_long: decimal digits after an optional '-', within long. am_parse_u64: decimal digits
  * only, within 64 bits. am_parse_double: strtod's syntax, finite, and within +-1e300. */
-int am_parse_long(const char* s, long* out);
-int am_parse_u64(const char* s, uint64_t* out);
-int am_parse_double(const char* s, double* out);
+AM_API int am_parse_long(const char* s, long* out);
+AM_API int am_parse_u64(const char* s, uint64_t* out);
+AM_API int am_parse_double(const char* s, double* out);
 
 /* the process id in an atomic write's temporary file name, NAME.tmp.PID.NONCE as the POSIX and
  * Windows ports name them (NAME not empty, PID decimal digits, NONCE 1 to 16 lowercase hex digits)
  * or NAME.tmp.PID as builds before them did; -1 for any other name. A PID of 2 * 10^9 or more
  * reads as 2 * 10^9. The ports' am_port_remove_stale removes the files so named. */
-long am_temp_name_pid(const char* name);
+AM_API long am_temp_name_pid(const char* name);
 
 /* ==== deterministic elementary functions (am_ prefix: pure utilities).
  *
@@ -383,14 +411,14 @@ long am_temp_name_pid(const char* name);
  * material per step at most).
  */
 
-am_real am_sin(am_real x);            /* any finite x (radians) */
-am_real am_cos(am_real x);            /* any finite x (radians) */
-am_real am_exp(am_real x);            /* x in [-80, 80]; clamps outside */
-am_real am_log(am_real x);            /* x > 0; returns -AM_REAL_MAX for x <= 0 */
-am_real am_cbrt(am_real x);           /* any finite x */
-am_real am_pow(am_real x, am_real y); /* x > 0 */
-am_real am_atan2(am_real y, am_real x); /* radians in (-pi, pi] */
-am_real am_acos(am_real x);           /* x clamped to [-1, 1] */
+AM_API am_real am_sin(am_real x);            /* any finite x (radians) */
+AM_API am_real am_cos(am_real x);            /* any finite x (radians) */
+AM_API am_real am_exp(am_real x);            /* x in [-80, 80]; clamps outside */
+AM_API am_real am_log(am_real x);            /* x > 0; returns -AM_REAL_MAX for x <= 0 */
+AM_API am_real am_cbrt(am_real x);           /* any finite x */
+AM_API am_real am_pow(am_real x, am_real y); /* x > 0 */
+AM_API am_real am_atan2(am_real y, am_real x); /* radians in (-pi, pi] */
+AM_API am_real am_acos(am_real x);           /* x clamped to [-1, 1] */
 
 /* ==== the seeded pseudo-random stream (xoshiro256** algorithm, splitmix64 seeding).
  *
@@ -402,19 +430,19 @@ typedef struct am_rng {
     uint64_t s[4];   /* generator state; never all zero */
 } am_rng;
 
-void am_rng_seed(am_rng* r, uint64_t seed);          /* any seed, 0 included */
-uint64_t am_rng_u64(am_rng* r);                      /* uniform 64-bit integer */
-uint32_t am_rng_below(am_rng* r, uint32_t n);        /* uniform in [0, n), n >= 1, unbiased */
-am_real am_rng_unit(am_rng* r);                      /* uniform in [0, 1) */
-am_real am_rng_range(am_rng* r, am_real lo, am_real hi); /* uniform in [lo, hi) */
-am_real am_rng_normal(am_rng* r);                    /* standard normal (Box-Muller on am_log/am_cos) */
-int am_rng_chance(am_rng* r, am_real p);             /* 1 with probability p */
+AM_API void am_rng_seed(am_rng* r, uint64_t seed);          /* any seed, 0 included */
+AM_API uint64_t am_rng_u64(am_rng* r);                      /* uniform 64-bit integer */
+AM_API uint32_t am_rng_below(am_rng* r, uint32_t n);        /* uniform in [0, n), n >= 1, unbiased */
+AM_API am_real am_rng_unit(am_rng* r);                      /* uniform in [0, 1) */
+AM_API am_real am_rng_range(am_rng* r, am_real lo, am_real hi); /* uniform in [lo, hi) */
+AM_API am_real am_rng_normal(am_rng* r);                    /* standard normal (Box-Muller on am_log/am_cos) */
+AM_API int am_rng_chance(am_rng* r, am_real p);             /* 1 with probability p */
 
 /* 64-bit FNV-1a style hashing used for golden hashes of runs and states */
 #define AM_HASH_INIT UINT64_C(0xcbf29ce484222325)
-uint64_t am_hash_bytes(uint64_t h, const void* data, unsigned long n);
-uint64_t am_hash_u64(uint64_t h, uint64_t v);
-uint64_t am_hash_real(uint64_t h, am_real v);        /* hashes the bit pattern (-0 folded to 0) */
+AM_API uint64_t am_hash_bytes(uint64_t h, const void* data, unsigned long n);
+AM_API uint64_t am_hash_u64(uint64_t h, uint64_t v);
+AM_API uint64_t am_hash_real(uint64_t h, am_real v);        /* hashes the bit pattern (-0 folded to 0) */
 
 /* ==== the hand-written, separable 3-D discrete cosine transform.
  *
@@ -449,11 +477,11 @@ typedef struct am_dct_scratch {
 
 /* prepares w for k[a] coefficients on n[a] cells per axis (1 <= k[a] <= n[a] <= AM_MAX_DIM);
  * recomputes the tables only when (k, n) changed. AM_ERR_CAPACITY / AM_ERR_RANGE otherwise. */
-am_status am_dct_plan(am_dct_work* w, const int k[3], const int n[3], char* err, int errsz);
+AM_API am_status am_dct_plan(am_dct_work* w, const int k[3], const int n[3], char* err, int errsz);
 /* inverse (DCT-III): coef (k0 x k1 x k2, zero-padded) -> out (n0 x n1 x n2); needs am_dct_plan */
-void am_dct_inverse(const am_dct_work* w, am_dct_scratch* s, const am_real* coef, am_real* out);
+AM_API void am_dct_inverse(const am_dct_work* w, am_dct_scratch* s, const am_real* coef, am_real* out);
 /* forward (DCT-II): in (n0 x n1 x n2) -> the k0 x k1 x k2 lowest coefficients; needs am_dct_plan */
-void am_dct_forward(const am_dct_work* w, am_dct_scratch* s, const am_real* in, am_real* coef);
+AM_API void am_dct_forward(const am_dct_work* w, am_dct_scratch* s, const am_real* in, am_real* coef);
 
 #ifdef __cplusplus
 }

@@ -48,72 +48,72 @@ typedef struct am_evo_def {
 } am_evo_def;
 
 /* the seed's two-material GMX experiment on the profile's workspace (20^3 desktop), 200 evaluations */
-am_evo_def am_default_evo(void);
+AM_API am_evo_def am_default_evo(void);
 /* the defaults under a stored configuration (a run folder's config.txt, a checkpoint): those of
  * am_default_evo, except that a key added after run folders were first written takes the value
  * that reproduces the runs made before it, so that such a folder resumes and replays exactly:
  * relax_dt_frac 0 (settling at the run's step). A new run writes every key, these included. */
-am_evo_def am_stored_evo(void);
+AM_API am_evo_def am_stored_evo(void);
 
 /* sets one key from its text value ("population", "20"); the message names the problem only
  * (the caller adds "file:line: " or "--flag: "). AM_ERR_ARG for an unknown key, AM_ERR_RANGE for
  * a value out of range or malformed */
-am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
+AM_API am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
 /* A setting over one robot's own values, as `amorph sim ROBOT --KEY VALUE` and the embedding API
  * apply it: am_evo_set, then period_steps holds the period in steps (period_s 0) and a
  * relax_max_steps below relax_min_steps lowers that too. *material gets the key's AM_MATERIAL_* bit
  * (0 for a key that is not a material's): what am_evo_apply_materials writes into a lattice. */
 enum { AM_MATERIAL_CTE = 1, AM_MATERIAL_MU_STATIC = 2, AM_MATERIAL_MU_KINETIC = 4, AM_MATERIAL_VOXEL_SIZE = 8 };
-am_status am_evo_set_over(am_evo_def* d, const char* key, const char* value, unsigned* material, char* err, int errsz);
+AM_API am_status am_evo_set_over(am_evo_def* d, const char* key, const char* value, unsigned* material, char* err, int errsz);
 /* d's values of the material keys in mask (AM_MATERIAL_* bits) written over lat: cte over the
  * actuated materials (cte not 0), mu_static and mu_kinetic over every material, voxel_size over the
  * lattice's */
-void am_evo_apply_materials(const am_evo_def* d, unsigned mask, am_lattice* lat);
+AM_API void am_evo_apply_materials(const am_evo_def* d, unsigned mask, am_lattice* lat);
 /* checks the whole definition (relations between keys); messages name the key */
-am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
+AM_API am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
 /* am_evo_check, with the index (am_evo_key_name) of the key its message names in *key (-1 when
  * the definition is whole), so that a caller can say where that key was set ("file:line: ") */
-am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz);
+AM_API am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz);
 /* the index of the key a configuration line sets (n characters), or -1 (a comment, a blank or a
  * malformed line, an unknown key) */
-int am_evo_line_key(const char* text, long n);
+AM_API int am_evo_line_key(const char* text, long n);
 /* more than the configuration keys there are: a table of one entry per key */
 #define AM_EVO_KEY_MAX 64
 /* am_evo_check, and that the definition can evolve: a relaxation long enough for a body to settle
  * (relax_max_steps at least release_steps + 50), as a run needs and a configuration to print does
  * not (am_evo_init checks it) */
-am_status am_evo_check_run(const am_evo_def* d, char* err, int errsz);
+AM_API am_status am_evo_check_run(const am_evo_def* d, char* err, int errsz);
 /* 1 when key is a configuration key */
-int am_evo_is_key(const char* key);
+AM_API int am_evo_is_key(const char* key);
 /* what a key sets: the robot's environment (gravity, period_steps, ...), its evaluation (cycles,
  * relax_max_steps, ...), the materials of the run's palette (cte, mu_static, mu_kinetic,
  * voxel_size), the genotype (representation, workspace, ...), or the run itself (population,
  * evaluations, seed, threads, checkpoint_seconds); -1 for an unknown key */
 typedef enum am_key_group { AM_KEYS_RUN, AM_KEYS_GENOTYPE, AM_KEYS_MATERIALS, AM_KEYS_ENV, AM_KEYS_EVAL } am_key_group;
-int am_evo_key_group(const char* key);
+AM_API int am_evo_key_group(const char* key);
 /* the keys in their documented order: count, name and one-line help of key i (NULL past the end) */
-int am_evo_key_count(void);
-const char* am_evo_key_name(int i);
-const char* am_evo_key_help(int i);
+AM_API int am_evo_key_count(void);
+AM_API const char* am_evo_key_name(int i);
+AM_API const char* am_evo_key_help(int i);
 /* the value of key i in d as the configuration text writes it ("" past the end) */
-void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
+AM_API void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap);
 /* the effective configuration as `key = value` lines that am_evo_parse reads back exactly;
  * with_runtime 0 leaves out the keys that never change results (threads, checkpoint_seconds) */
-am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
+AM_API am_status am_evo_format(const am_evo_def* d, int with_runtime, char* buf, long cap, long* len, char* err, int errsz);
 /* the same text written to out, a whole-text buffer or a stream (amorph/base.h) */
-am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
+AM_API am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz);
 /* reads `key = value` lines (# comments, blank lines) over d; messages "fname:line: problem" */
-am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
+AM_API am_status am_evo_parse(am_evo_def* d, const char* text, const char* fname, char* err, int errsz);
 /* one line of that text (n characters without the newline; line number lineno for messages), for
  * text that is not held whole; am_evo_parse is this over every line */
-am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz);
+AM_API am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, const char* fname, int lineno, char* err, int errsz);
 /* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
  * else 0 and the first differing key's name in key (capacity keysz) */
-int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
+AM_API int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
 /* the palette and expression settings a run's genomes are expressed and simulated with */
-am_palette am_evo_palette(const am_evo_def* d);
+AM_API am_palette am_evo_palette(const am_evo_def* d);
 /* the same palette written into *out */
-void am_evo_palette_into(const am_evo_def* d, am_palette* out);
+AM_API void am_evo_palette_into(const am_evo_def* d, am_palette* out);
 
 /* ---- state ---- */
 
@@ -168,7 +168,7 @@ typedef struct am_evo_memo {
 } am_evo_memo;
 
 /* the key of a body of n cells packed as am_evo_memo.cells: a hash of them, never 0 */
-uint64_t am_evo_body_key(const uint8_t* packed, int n);
+AM_API uint64_t am_evo_body_key(const uint8_t* packed, int n);
 
 /* what a caller of am_evo_generation may watch; every member may be NULL */
 typedef struct am_evo_hooks {
@@ -267,9 +267,9 @@ typedef struct am_executor {
 
 /* a new run from d: checks it, seeds the stream and draws the random initial population (not yet
  * evaluated: the first am_evo_generation evaluates it) */
-am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
+AM_API am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz);
 /* 1 when the run has done its evaluations */
-int am_evo_done(const am_evo* e);
+AM_API int am_evo_done(const am_evo* e);
 /* one generation: generation 0 evaluates the initial population; later ones make offspring,
  * evaluate them on ex's workers (workspaces w[0..ex->workers-1]; ex may be NULL: one at a time) and
  * apply crowding. hooks may be NULL. When hooks->cancel returns non-zero during the evaluations of
@@ -277,7 +277,7 @@ int am_evo_done(const am_evo* e);
  * desktop), no further evaluation starts, the generation is abandoned and e is left as it was
  * before the call (AM_ERR_CANCELLED, "interrupted"); once a batch has been placed the generation
  * runs to its end. hooks->evaluated sees each evaluation as its batch is placed. Fills e->last. */
-am_status am_evo_generation(am_evo* e, am_evo_work* w, const am_executor* ex, const am_evo_hooks* hooks, char* err, int errsz);
+AM_API am_status am_evo_generation(am_evo* e, am_evo_work* w, const am_executor* ex, const am_evo_hooks* hooks, char* err, int errsz);
 /* A generation in steps, for a caller that evaluates the offspring of several runs in one parallel
  * map (amorph experiment): am_evo_generation is these steps over one run.
  *   am_evo_gen_begin(e, now);
@@ -290,22 +290,22 @@ am_status am_evo_generation(am_evo* e, am_evo_work* w, const am_executor* ex, co
  * item's whole result is its am_evo_result. */
 /* starts a generation (the random pairing of parents, generation > 0); now: the caller's clock
  * in seconds (any origin; 0 without one) */
-void am_evo_gen_begin(am_evo* e, double now);
+AM_API void am_evo_gen_begin(am_evo* e, double now);
 /* makes the next batch's offspring (e->child) and their evaluation order (e->order, the largest
  * body first) with the workspace w; *m gets its size, 0 when every batch of the generation is
  * placed. On a failure e is as before am_evo_gen_begin. */
-am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m, char* err, int errsz);
+AM_API am_status am_evo_batch_begin(am_evo* e, am_geno_work* w, int* m, char* err, int errsz);
 /* evaluates item i of the batch (child[order[i]]) on the workspace w into *r (skipped = 0) */
-void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r);
+AM_API void am_evo_batch_eval(const am_evo* e, int i, am_evo_work* w, am_evo_result* r);
 /* 1 while the batch under way may be cancelled: the generation's first, before it is placed */
-int am_evo_batch_cancellable(const am_evo* e);
+AM_API int am_evo_batch_cancellable(const am_evo* e);
 /* places the batch (res[i]: item i's result): history, best, crowding, hooks->evaluated (hooks may be
  * NULL). When a result is skipped, nothing is placed and e is left as before am_evo_gen_begin:
  * AM_ERR_CANCELLED ("interrupted") in the first batch, AM_ERR_ARG in a later one */
-am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w, const am_evo_hooks* hooks, char* err, int errsz);
+AM_API am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w, const am_evo_hooks* hooks, char* err, int errsz);
 /* ends the generation: e->last (wall_s: now minus am_evo_gen_begin's now), e->last_steps,
  * e->last_voxel_steps, e->generation + 1 */
-void am_evo_gen_end(am_evo* e, double now);
+AM_API void am_evo_gen_end(am_evo* e, double now);
 
 /* Several runs in lockstep (amorph experiment): one generation of each unfinished run of
  * runs[0..n), n <= AM_EVO_WAVE_MAX, the offspring of all of them evaluated in one parallel map,
@@ -319,23 +319,23 @@ typedef struct am_evo_wave {
     int run[AM_EVO_WAVE_MAX * AM_EVO_BATCH], idx[AM_EVO_WAVE_MAX * AM_EVO_BATCH]; /* map item j: item idx[j] of run run[j] */
     am_evo_result res[AM_EVO_WAVE_MAX * AM_EVO_BATCH];                            /* map item j's result */
 } am_evo_wave;
-am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, const am_executor* ex,
+AM_API am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, const am_executor* ex,
                              const am_evo_hooks* hooks, char* err, int errsz);
 
 /* evaluates one genome as the run does (expression, lattice, model, am_evaluate); rec and detail
  * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
-void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
+AM_API void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
                      am_record* rec, am_evo_ind* out, am_evo_eval* detail);
 /* the model of w->lattice in d's environment evaluated by d's evaluation into *out (rec may be
  * NULL): what am_evo_evaluate does after the expression. AM_ERR_EMPTY (out untouched) for a body
  * with no voxel, a failure of am_model_build with its message */
-am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz);
+AM_API am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz);
 /* expresses g into lat with the run's palette and voxel size */
-am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
+AM_API am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
                          am_lattice* lat, char* err, int errsz);
 /* the 64-bit hash of the run so far: every genome and fitness evaluated, in order, and the
  * final population (what `make repro` compares across platforms) */
-uint64_t am_evo_hash(const am_evo* e);
+AM_API uint64_t am_evo_hash(const am_evo* e);
 
 
 #ifdef __cplusplus

@@ -134,7 +134,7 @@ typedef struct am_geno_def {
 } am_geno_def;
 
 /* the seed's settings: DCT, 2 materials, AM_MAX_DIM^3, rates as documented field by field */
-am_geno_def am_default_geno(void);
+AM_API am_geno_def am_default_geno(void);
 
 /* how a genome becomes a body; am_default_express() gives the seed's */
 typedef struct am_express_def {
@@ -144,7 +144,7 @@ typedef struct am_express_def {
 } am_express_def;
 
 /* default palette, 0.01 m voxels, threshold 0 */
-am_express_def am_default_express(void);
+AM_API am_express_def am_default_express(void);
 
 /* ---- workspace ---- */
 
@@ -183,41 +183,41 @@ typedef struct am_geno_work {
 
 /* a random genome: every value uniform in its range (docs/genotypes.md). AM_ERR_RANGE or
  * AM_ERR_CAPACITY (with a message) for a def outside the limits */
-am_status am_genome_init(am_genome* g, const am_geno_def* def, am_rng* r, char* err, int errsz);
+AM_API am_status am_genome_init(am_genome* g, const am_geno_def* def, am_rng* r, char* err, int errsz);
 /* mutates g in place (rates in def, which must not be NULL; its shape fields are not used) */
-void am_genome_mutate(am_genome* g, const am_geno_def* def, am_rng* r);
+AM_API void am_genome_mutate(am_genome* g, const am_geno_def* def, am_rng* r);
 /* two children of parents a and b (same representation and shape); c1 takes a's part where c2
  * takes b's (complementary). c2 may be NULL; the children must not alias the parents. AM_ERR_ARG
  * (c1 = a, c2 = b) when the shapes differ */
-am_status am_genome_crossover(const am_genome* a, const am_genome* b, am_genome* c1, am_genome* c2,
+AM_API am_status am_genome_crossover(const am_genome* a, const am_genome* b, am_genome* c1, am_genome* c2,
                               const am_geno_def* def, am_rng* r, char* err, int errsz);
 /* checks every field against its range and capacity; AM_ERR_RANGE / AM_ERR_CAPACITY with a message */
-am_status am_genome_check(const am_genome* g, char* err, int errsz);
+AM_API am_status am_genome_check(const am_genome* g, char* err, int errsz);
 /* evolvable values of g (DCT: amplitudes; CPPN: 4 per node, 2 per connection; GMX: 6 per point) */
-int am_genome_values(const am_genome* g);
+AM_API int am_genome_values(const am_genome* g);
 /* 64-bit hash of every value of g (golden hashes in tests) */
-uint64_t am_genome_hash(const am_genome* g);
+AM_API uint64_t am_genome_hash(const am_genome* g);
 /* 1 when a and b hold the same values, bit for bit */
-int am_genome_equal(const am_genome* a, const am_genome* b);
+AM_API int am_genome_equal(const am_genome* a, const am_genome* b);
 /* name of a representation ("dct", "cppn", "gmx"), or "?" */
-const char* am_repr_name(int repr);
+AM_API const char* am_repr_name(int repr);
 /* representation of a name, or AM_REPR_NONE */
-int am_repr_from_name(const char* name);
+AM_API int am_repr_from_name(const char* name);
 
 /* densities into w->dens, then the level set into w->cell and w->voxels (def NULL: defaults).
  * ratio (NULL or materials x cells) receives the blend ratios of am_levelset. */
-am_status am_genome_express(const am_genome* g, const am_express_def* def, am_geno_work* w, am_real* ratio,
+AM_API am_status am_genome_express(const am_genome* g, const am_express_def* def, am_geno_work* w, am_real* ratio,
                             char* err, int errsz);
 /* expresses g into lat: nx x ny x nz cells, palette = the genome's materials (found by name in
  * def->palette) in genome order, cell value 1 + material index. AM_ERR_RANGE for an unknown name */
-am_status am_genome_to_lattice(const am_genome* g, const am_express_def* def, am_geno_work* w, am_lattice* lat,
+AM_API am_status am_genome_to_lattice(const am_genome* g, const am_express_def* def, am_geno_work* w, am_lattice* lat,
                                char* err, int errsz);
 /* the crowding distance: fraction of workspace cells (in [0, 1]) whose material differs between the
  * two expressed bodies; expresses both (w->cell ends as b's body). AM_ERR_ARG for different workspaces */
-am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_work* w, am_real* out,
+AM_API am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_work* w, am_real* out,
                              char* err, int errsz);
 /* the same distance between two bodies already expressed: fraction of the n cells that differ */
-am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n);
+AM_API am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n);
 
 /* ---- level set ---- */
 
@@ -227,23 +227,23 @@ am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n);
  * voxel count. ratio (NULL or materials x cells, index m * cells + c) receives the blend ratios of
  * the seed's alternative: max(d_m, 0) / sum_i max(d_i, 0) in kept cells, 0 elsewhere.
  * materials 1..AM_MAX_GENO_MATERIALS and nx ny nz <= AM_MAX_CELLS, else nothing is done and 0 returned. */
-int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real threshold, am_real* ratio);
+AM_API int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real threshold, am_real* ratio);
 /* keeps only the largest face-connected piece of non-zero cells (fixed queue, no recursion);
  * mark and queue have nx ny nz entries (each >= 1). Returns the cells kept. */
-int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, int32_t* queue);
+AM_API int am_keep_largest_piece(uint8_t* cell, int nx, int ny, int nz, uint8_t* mark, int32_t* queue);
 
 /* ---- text format (docs/formats.md) ---- */
 
 /* 1 when text is a genome (its first word is "amorph-genome") */
-int am_genome_sniff(const char* text);
+AM_API int am_genome_sniff(const char* text);
 /* writes g as text to out, a whole-text buffer or a stream (amorph/base.h); AM_ERR_CAPACITY or
  * AM_ERR_IO (with a message) when out dropped text */
-am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz);
+AM_API am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz);
 /* writes g as text into buf (capacity cap, NUL-terminated); *len gets the length. AM_ERR_CAPACITY
  * if it does not fit (AM_GENOME_TEXT_MAX always does) */
-am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz);
+AM_API am_status am_genome_format(const am_genome* g, char* buf, long cap, long* len, char* err, int errsz);
 /* parses a NUL-terminated genome text; messages are "fname:line: problem" */
-am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz);
+AM_API am_status am_genome_parse(am_genome* g, const char* text, const char* fname, char* err, int errsz);
 
 /* ---- reading a genome line by line ---- */
 
@@ -272,11 +272,11 @@ typedef struct am_genome_reader {
     am_geno_parse ps;
     const struct am_geno_ops* ops; /* the representation's, once its line was read */
 } am_genome_reader;
-void am_genome_read_begin(am_genome_reader* r, am_genome* g, const char* fname);
+AM_API void am_genome_read_begin(am_genome_reader* r, am_genome* g, const char* fname);
 /* one line of n characters without its newline (text[n] is '\n' or NUL); messages "fname:line: problem" */
-am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, char* err, int errsz);
+AM_API am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, char* err, int errsz);
 /* after the last line: AM_OK when the genome ended with its 'end' line */
-am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz);
+AM_API am_status am_genome_read_end(am_genome_reader* r, char* err, int errsz);
 
 #ifdef __cplusplus
 }

@@ -61,18 +61,18 @@ typedef struct am_xml_doc {
 
 /* parses text[0, len) (text[len] need not be NUL; a NUL byte inside is an error). fname is used
  * only in messages. AM_ERR_PARSE for malformed XML, AM_ERR_CAPACITY past a limit. */
-am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* fname, char* err, int errsz);
+AM_API am_status am_xml_parse(am_xml_doc* doc, const char* text, long len, const char* fname, char* err, int errsz);
 
 /* 1 when element n is named name */
-int am_xml_is(const am_xml_doc* doc, int n, const char* name);
+AM_API int am_xml_is(const am_xml_doc* doc, int n, const char* name);
 /* index of the attribute of element n named name, or -1 */
-int am_xml_attr_find(const am_xml_doc* doc, int n, const char* name);
+AM_API int am_xml_attr_find(const am_xml_doc* doc, int n, const char* name);
 /* the character data of element n (text and CDATA, entities decoded, comments and child elements
  * left out) into out (capacity cap, NUL-terminated); *len gets its length (may be NULL).
  * AM_ERR_CAPACITY (out holds "") when it does not fit. */
-am_status am_xml_text(const am_xml_doc* doc, int n, char* out, long cap, long* len);
+AM_API am_status am_xml_text(const am_xml_doc* doc, int n, char* out, long cap, long* len);
 /* the decoded value of attribute a (tabs and newlines read as spaces), as am_xml_text */
-am_status am_xml_attr_text(const am_xml_doc* doc, int a, char* out, long cap, long* len);
+AM_API am_status am_xml_attr_text(const am_xml_doc* doc, int a, char* out, long cap, long* len);
 
 /* ==== a zlib inflater (RFC 1950 streams of RFC 1951 deflate data), hand-written,
  * in fixed memory.
@@ -103,20 +103,20 @@ typedef struct am_inflate_work {
  * *used the input bytes consumed (through the last block's last byte). AM_ERR_PARSE for malformed
  * or truncated data, AM_ERR_CAPACITY when the output needs more than cap bytes. The message names
  * the input byte where decoding stopped. */
-am_status am_inflate_raw(const uint8_t* in, long n, uint8_t* out, long cap, long* len, long* used, am_inflate_work* w,
+AM_API am_status am_inflate_raw(const uint8_t* in, long n, uint8_t* out, long cap, long* len, long* used, am_inflate_work* w,
                          char* err, int errsz);
 
 /* inflates one zlib stream (2-byte header, deflate data, big-endian Adler-32 of the output) that
  * fills in[0..n) exactly into out (capacity cap); *len gets the bytes written. AM_ERR_PARSE for a
  * bad header or checksum, malformed or truncated data, or bytes after the checksum;
  * AM_ERR_CAPACITY as am_inflate_raw. */
-am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
+AM_API am_status am_zlib_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
                           int errsz);
 /* inflates one gzip member (RFC 1952: a header with its optional fields, deflate data, the CRC-32
  * and the size of the output, little-endian) that fills in[0..n) exactly, as `gzip -9n` writes a
  * run's evals.csv.gz; the same statuses as am_zlib_inflate (a bad magic, method, CRC-32 or size,
  * or bytes after the member: AM_ERR_PARSE) */
-am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
+AM_API am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, long* len, am_inflate_work* w, char* err,
                           int errsz);
 
 /* ==== pictures without a library: checksums, a PNG encoder and a small software
@@ -134,10 +134,10 @@ am_status am_gzip_inflate(const uint8_t* in, long n, uint8_t* out, long cap, lon
 
 /* CRC-32 (ISO 3309, as PNG and zlib): crc is the running value, 0 to start;
  * am_crc32(0, "123456789", 9) == 0xCBF43926 */
-uint32_t am_crc32(uint32_t crc, const void* data, long n);
+AM_API uint32_t am_crc32(uint32_t crc, const void* data, long n);
 /* Adler-32 (RFC 1950): adler is the running value, 1 to start;
  * am_adler32(1, "Wikipedia", 9) == 0x11E60398 */
-uint32_t am_adler32(uint32_t adler, const void* data, long n);
+AM_API uint32_t am_adler32(uint32_t adler, const void* data, long n);
 
 /* ---- PNG ---- */
 
@@ -145,11 +145,11 @@ enum { AM_PNG_STORED = 0, AM_PNG_FIXED = 1 }; /* deflate without compression / f
 #define AM_PNG_MAX_SIDE 8192                   /* pixels along either side of an image */
 
 /* the largest PNG file am_png_encode can write for this image, bytes (0 for a bad size) */
-long am_png_max_size(int w, int h, int channels);
+AM_API long am_png_max_size(int w, int h, int channels);
 /* encodes w x h pixels (channels 3: RGB, 4: RGBA; rows top to bottom, 8 bits per sample) as a
  * PNG file in out (capacity cap); *len gets its length. AM_ERR_ARG for a bad size or mode,
  * AM_ERR_CAPACITY when cap is too small (am_png_max_size always suffices). */
-am_status am_png_encode(const uint8_t* pixels, int w, int h, int channels, int mode, uint8_t* out, long cap,
+AM_API am_status am_png_encode(const uint8_t* pixels, int w, int h, int channels, int mode, uint8_t* out, long cap,
                         long* len, char* err, int errsz);
 
 /* ---- rasteriser ---- */
@@ -162,7 +162,7 @@ typedef struct am_canvas {
 } am_canvas;
 
 /* fills the picture with one colour and resets the depth buffer to far */
-void am_canvas_clear(am_canvas* c, const uint8_t rgb[3]);
+AM_API void am_canvas_clear(am_canvas* c, const uint8_t rgb[3]);
 
 /* an orthographic camera looking at `target` from azimuth/elevation, shown in a rectangle of the
  * canvas; set with am_camera_look */
@@ -175,33 +175,33 @@ typedef struct am_camera {
 
 /* camera at azimuth az (radians, 0 looks along +y, pi/2 along -x) and elevation el (radians above
  * the horizon, looking down), showing view_h metres over the viewport's height; z is up */
-void am_camera_look(am_camera* cam, const double target[3], double az, double el, double view_h, int vx, int vy,
+AM_API void am_camera_look(am_camera* cam, const double target[3], double az, double el, double view_h, int vx, int vy,
                     int vw, int vh);
 /* world point -> canvas pixel (out[0], out[1]) and depth out[2] */
-void am_camera_project(const am_camera* cam, const double p[3], double out[3]);
+AM_API void am_camera_project(const am_camera* cam, const double p[3], double out[3]);
 /* v rotated by the unit quaternion q = (w, x, y, z) (the pictures' and the mesh's placement) */
-void am_quat_rotate(const double q[4], const double v[3], double out[3]);
+AM_API void am_quat_rotate(const double q[4], const double v[3], double out[3]);
 
 /* a triangle given in canvas pixels with depths (v = x0, y0, depth0, x1, y1, depth1, x2, y2,
  * depth2), clipped to the viewport, depth-tested and written in one colour; depth_test 0 draws
  * over everything and leaves the depth buffer alone (overlays) */
-void am_raster_triangle(am_canvas* c, const am_camera* cam, const double v[9], const uint8_t rgb[3], int depth_test);
+AM_API void am_raster_triangle(am_canvas* c, const am_camera* cam, const double v[9], const uint8_t rgb[3], int depth_test);
 /* a world-space line of the given width in pixels, depth-tested against what is drawn
  * (bias metres towards the viewer so lines on a surface stay visible) */
-void am_raster_line3(am_canvas* c, const am_camera* cam, const double a[3], const double b[3], double width,
+AM_API void am_raster_line3(am_canvas* c, const am_camera* cam, const double a[3], const double b[3], double width,
                      double bias, const uint8_t rgb[3]);
 /* a canvas-space line (x0, y0)-(x1, y1) of the given width, over everything, clipped to the viewport */
-void am_raster_line2(am_canvas* c, const am_camera* cam, double x0, double y0, double x1, double y1, double width,
+AM_API void am_raster_line2(am_canvas* c, const am_camera* cam, double x0, double y0, double x1, double y1, double width,
                      const uint8_t rgb[3]);
 /* a box centred at centre with half-extents half[3] along its own axes, turned by the unit
  * quaternion q = (w, x, y, z), flat-shaded: each visible face gets
  * rgb * (ambient + (1 - ambient) * max(0, n . light)), light a unit vector towards the light */
-void am_raster_box(am_canvas* c, const am_camera* cam, const double centre[3], const double q[4],
+AM_API void am_raster_box(am_canvas* c, const am_camera* cam, const double centre[3], const double q[4],
                    const double half[3], const uint8_t rgb[3], const double light[3], double ambient);
 /* text in a 5 x 7 pixel font (ASCII 32..126), each font pixel drawn as scale x scale canvas
  * pixels, top-left corner at (x, y), over everything and clipped to the viewport; returns the
  * width drawn in pixels */
-int am_raster_text(am_canvas* c, const am_camera* cam, int x, int y, int scale, const char* text,
+AM_API int am_raster_text(am_canvas* c, const am_camera* cam, int x, int y, int scale, const char* text,
                    const uint8_t rgb[3]);
 
 /* ==== the surface of a voxel body as a triangle mesh whose vertices follow the voxels
@@ -276,35 +276,35 @@ typedef struct am_mesh {
 
 /* the surface of lat (mode AM_MESH_BODY or AM_MESH_MATERIALS) into *mesh. AM_ERR_EMPTY for a
  * lattice without voxels, AM_ERR_ARG for a bad mode, AM_ERR_CAPACITY if a capacity would be passed. */
-am_status am_mesh_build(am_mesh* mesh, const am_lattice* lat, int mode, char* err, int errsz);
+AM_API am_status am_mesh_build(am_mesh* mesh, const am_lattice* lat, int mode, char* err, int errsz);
 
 /* the rest shape: vertex positions (nvert x 3, m) with the corner (x, y, z) at (x L, y L, z L),
  * L the lattice's voxel size, so the body sits in the box [0, nx L] x [0, ny L] x [0, nz L] */
-void am_mesh_rest(const am_mesh* mesh, double* pos);
+AM_API void am_mesh_rest(const am_mesh* mesh, double* pos);
 
 /* half-extents of voxel i along its own axes in a pose (pose: nv x 7 floats, x, y, z in m then the
  * unit quaternion qw, qx, qy, qz, as am_record writes them): half the mean distance to its lattice
  * neighbours on each axis, so thermal expansion shows; an axis without neighbours takes the mean of
  * the others, a lone voxel half the voxel size; never more than the voxel size */
-void am_mesh_half(const am_mesh* mesh, const float* pose, int i, double half[3]);
+AM_API void am_mesh_half(const am_mesh* mesh, const float* pose, int i, double half[3]);
 
 /* vertex positions (nvert x 3, m) for a pose of the body (as am_mesh_half): each corner vertex is
  * the mean of p + R (+-hx, +-hy, +-hz) over the voxels it follows, the others the means they are */
-void am_mesh_place(const am_mesh* mesh, const float* pose, double* pos);
+AM_API void am_mesh_place(const am_mesh* mesh, const float* pose, double* pos);
 
 /* moves the vertices where a surface pinches (vpull) AM_MESH_PINCH_PULL of the way towards the
  * centre of the voxels they pull to (pose as am_mesh_half, or NULL for the rest shape), and places
  * the vertices that are means of others again. After am_mesh_rest or am_mesh_place: the two sides
  * of a pinch no longer meet, so the surface is manifold by position as well as by vertex number
  * (each surface stays closed; its volume shrinks by a sliver at each pinch). */
-void am_mesh_open_pinches(const am_mesh* mesh, const float* pose, double* pos);
+AM_API void am_mesh_open_pinches(const am_mesh* mesh, const float* pose, double* pos);
 
 /* signed volume enclosed by the triangles of material mat (-1: all), m^3 (positive when every
  * triangle turns counter-clockwise seen from outside) */
-double am_mesh_volume(const am_mesh* mesh, const double* pos, int mat);
+AM_API double am_mesh_volume(const am_mesh* mesh, const double* pos, int mat);
 
 /* 1 when the mesh holds a triangle of material mat (palette index) */
-int am_mesh_holds(const am_mesh* mesh, int mat);
+AM_API int am_mesh_holds(const am_mesh* mesh, int mat);
 
 /* Self-intersection: pairs of triangles (of material mat, -1: all) that share no vertex and cross,
  * each pair once. A crossing is an overlap of positive length (coplanar triangles: of positive
@@ -326,7 +326,7 @@ typedef struct am_mesh_crossing {
 } am_mesh_crossing;
 /* the crossings of the surface in pos, with grid (the caller's scratch, a large struct) and at
  * most max_visits candidate pairs looked at */
-void am_mesh_crossings(const am_mesh* mesh, const double* pos, int mat, am_mesh_grid* grid, long max_visits,
+AM_API void am_mesh_crossings(const am_mesh* mesh, const double* pos, int mat, am_mesh_grid* grid, long max_visits,
                        am_mesh_crossing* out);
 
 /* The printable files (docs/formats.md), in millimetres (positions in m times 1000):
@@ -339,14 +339,14 @@ void am_mesh_crossings(const am_mesh* mesh, const double* pos, int mat, am_mesh_
  * palette order.
  * title (may be NULL): the AMF's <metadata type="name">. AM_ERR_CAPACITY or AM_ERR_IO when out
  * dropped text. */
-am_status am_mesh_write_stl(const am_mesh* mesh, const double* pos, const am_palette* pal, int mat, am_text* out,
+AM_API am_status am_mesh_write_stl(const am_mesh* mesh, const double* pos, const am_palette* pal, int mat, am_text* out,
                             char* err, int errsz);
-am_status am_mesh_write_amf(const am_mesh* mesh, const double* pos, const am_palette* pal, const char* title,
+AM_API am_status am_mesh_write_amf(const am_mesh* mesh, const double* pos, const am_palette* pal, const char* title,
                             am_text* out, char* err, int errsz);
 
 /* the lattice text format (docs/formats.md). Parse from a NUL-terminated buffer; fname is used
  * only in messages ("fname:line: problem"). */
-am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname, char* err, int errsz);
+AM_API am_status am_lattice_parse(am_lattice* lat, const char* text, const char* fname, char* err, int errsz);
 /* a lattice read line by line, for text that is not held whole (a file streamed through a small
  * buffer): begin, one call per line, end. am_lattice_parse is these calls over a whole text and
  * gives the same lattice and messages. */
@@ -358,17 +358,17 @@ typedef struct am_lattice_reader {
     int z, y;                   /* the layer being read (-1 before the first) and its rows so far */
     am_status st;               /* the first failure: every later call returns it */
 } am_lattice_reader;
-void am_lattice_read_begin(am_lattice_reader* r, am_lattice* lat, const char* fname);
+AM_API void am_lattice_read_begin(am_lattice_reader* r, am_lattice* lat, const char* fname);
 /* one line of n characters without its newline (text[n] is '\n' or NUL) */
-am_status am_lattice_read_line(am_lattice_reader* r, const char* text, long n, char* err, int errsz);
+AM_API am_status am_lattice_read_line(am_lattice_reader* r, const char* text, long n, char* err, int errsz);
 /* after the last line: AM_OK when the lattice is complete */
-am_status am_lattice_read_end(am_lattice_reader* r, char* err, int errsz);
+AM_API am_status am_lattice_read_end(am_lattice_reader* r, char* err, int errsz);
 /* write lat in the lattice text format into buf (capacity cap, NUL-terminated); *len gets the
  * length. AM_ERR_CAPACITY if it does not fit. */
-am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz);
+AM_API am_status am_lattice_format(const am_lattice* lat, char* buf, long cap, long* len, char* err, int errsz);
 /* the same text written to out, a whole-text buffer or a stream (amorph/base.h); AM_ERR_CAPACITY
  * or AM_ERR_IO when out dropped text */
-am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz);
+AM_API am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err, int errsz);
 /* the largest text am_lattice_format can produce for any lattice of this profile */
 #define AM_LATTICE_TEXT_MAX (AM_MAX_MATERIALS * 400L + AM_MAX_CELLS * 3L + 8192L)
 
@@ -416,12 +416,12 @@ typedef struct am_vxa_info {
 } am_vxa_info;
 
 /* 1 when text looks like XML (after an optional byte order mark and blanks it starts with '<') */
-int am_vxa_sniff(const char* text);
+AM_API int am_vxa_sniff(const char* text);
 
 /* reads the NUL-terminated VXA text into lat and info, using work as the XML workspace (large:
  * declare it static). fname is used only in messages. AM_ERR_PARSE for malformed XML or VXA,
  * AM_ERR_RANGE for a value outside its range, AM_ERR_CAPACITY past a capacity of the build. */
-am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
+AM_API am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname, char* err,
                        int errsz);
 
 /* reads a base VXA file with a VXD file over it (voxcraft-sim's convention): every element of the
@@ -429,7 +429,7 @@ am_status am_vxa_parse(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, con
  * or is added there when the base lacks it; the result is read as one VXA file. vxd_work is a
  * second XML workspace; messages name the file of the element at fault. A VXD text given alone to
  * am_vxa_parse is an error that says so. vxd_text NULL: am_vxa_parse. */
-am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
+AM_API am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work, const char* text, const char* fname,
                            am_xml_doc* vxd_work, const char* vxd_text, const char* vxd_fname, char* err, int errsz);
 
 /* the robot a VXA file read into r->lattice (am_vxa_parse or am_vxa_parse_vxd with lat = r->lattice)
@@ -437,7 +437,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
  * period_steps, the file's evaluation (the default one unless <Amorph> holds an <Evaluation>), and
  * the file's per-cell layers copied into r->layers.
  * AM_ERR_CAPACITY when the file has layers and r->layers is NULL. */
-am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
+AM_API am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, int errsz);
 
 /* The file's run length (info->stop_type, stop_value, init_cm_time) as the evaluation's settings, for
  * a robot whose time step is dt and actuation period period_steps steps of it (dt_ref: the step
@@ -457,26 +457,26 @@ am_status am_vxa_stop_settings(const am_vxa_info* info, double dt, double dt_ref
  * dt (s, > 0) is the time step the simulator uses for this robot (env.dt_frac times the model's
  * dt_rec): <TempPeriod> is env.period_steps * dt seconds. AM_ERR_ARG for a lattice or environment
  * that cannot be written, AM_ERR_CAPACITY when buf is short (AM_VXA_TEXT_MAX always suffices). */
-am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
+AM_API am_status am_vxa_format(const am_lattice* lat, const am_env* env, double dt, char* buf, long cap, long* len, char* err,
                         int errsz);
 /* the same with per-cell layers (NULL: none): phases as evosoro's <PhaseOffset> layers (in
  * periods, each value in the shortest form that reads back to the same bits), stiffnesses as its
  * <Stiffness> layers (Pa, likewise), and each voxel with a boundary condition (clamped, or a force)
  * as one box <FRegion> inside its own cell in <Boundary_Conditions>, at most AM_VXA_MAX_BC_VOXELS
  * of them (AM_ERR_CAPACITY past that) */
-am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
+AM_API am_status am_vxa_format_layers(const am_lattice* lat, const am_layers* layers, const am_env* env, double dt, char* buf, long cap,
                                long* len, char* err, int errsz);
 /* the whole robot: its lattice and layers as am_vxa_format_layers writes them, its environment, and
  * its evaluation (cycles, the relaxation's settings, fitness and score) as an <Evaluation> element in
  * <Amorph>, one element per evaluation key of the configuration, so that am_vxa_robot gives back
  * the robot whole and amorph sim evaluates it as the run did (amorph export --vxa) */
-am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, long cap, long* len, char* err, int errsz);
+AM_API am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, long cap, long* len, char* err, int errsz);
 #define AM_VXA_MAX_BC_VOXELS 256
 #define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 36L + AM_MAX_DIM * 128L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
  * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
-int am_vxa_period_steps(double period_s, double dt);
+AM_API int am_vxa_period_steps(double period_s, double dt);
 
 /* ==== the run folder of amorph evolve and the experiment folder of amorph experiment
  * (docs/evolve.md): the names of their files, and below the texts they hold (the checkpoint, the
@@ -501,14 +501,14 @@ int am_vxa_period_steps(double period_s, double dt);
 /* ---- checkpoints ---- */
 
 /* the run as text (config, stream, counters, population, best), ending with a checksum line */
-am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_format(const am_evo* e, char* buf, long cap, long* len, char* err, int errsz);
 /* the same text written to out, a whole-text buffer or a stream (amorph/base.h): the checksum is
  * computed on the way, so a stream needs no copy of the whole text */
-am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_write(const am_evo* e, am_text* out, char* err, int errsz);
 /* reads a checkpoint (checksum first: a damaged file is refused); messages "fname:line: problem".
  * text is used as scratch (its spaces and newlines may be overwritten). It is the two passes
  * below over a whole text. */
-am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_parse(am_evo* e, char* text, const char* fname, char* err, int errsz);
 
 /* A checkpoint that is not held whole (a file streamed through a small buffer) is read in two
  * passes: the scan takes its bytes in pieces of any size and checks the checksum; the reader then
@@ -526,10 +526,10 @@ typedef struct am_evo_ckpt_scan {
     int checksum_line;          /* set by am_evo_checkpoint_scan_end: the last line, the checksum */
     int cr;                     /* 1: the last byte seen was a CR (left out when a LF follows) */
 } am_evo_ckpt_scan;
-void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc);
-void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
+AM_API void am_evo_checkpoint_scan_begin(am_evo_ckpt_scan* sc);
+AM_API void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long n);
 /* after the last byte: AM_OK when the last line is a checksum that matches the text before it */
-am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
 
 /* a remembered body's result in a checkpoint: 28 numbers of 8 bytes */
 #define AM_EVO_MEMO_RESULT_BYTES 224
@@ -557,11 +557,11 @@ typedef struct am_evo_ckpt_reader {
     long memo_have, memo_need;  /* its bytes read, and all of them */
     uint8_t memo_res[AM_EVO_MEMO_RESULT_BYTES]; /* its result's numbers as read */
 } am_evo_ckpt_reader;
-void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
+AM_API void am_evo_checkpoint_read_begin(am_evo_ckpt_reader* r, am_evo* e, const am_evo_ckpt_scan* sc, const char* fname);
 /* one line of n characters, NUL-terminated at n (used as scratch: its spaces may be overwritten);
  * lines from the checksum line on are ignored */
-am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz);
-am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_read_line(am_evo_ckpt_reader* r, char* text, long n, char* err, int errsz);
+AM_API am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz);
 /* the largest checkpoint text of a population of n */
 #define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L) + AM_EVO_MEMO * AM_EVO_MEMO_TEXT_MAX)
 /* the text of one remembered body: its memo line, then base64 lines of 48 bytes (64 characters) */
@@ -570,8 +570,8 @@ am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, int errsz
 /* ---- statistics ---- */
 
 /* the log.csv header line (no newline) and one row for s; returns the characters written */
-const char* am_evo_log_header(void);
-int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
+AM_API const char* am_evo_log_header(void);
+AM_API int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
 
 /* log.csv read back line by line (a file streamed through a small buffer, or held whole): begin,
  * one call per line, end. The header is the first line that is not blank; the reader finds its
@@ -594,27 +594,27 @@ typedef struct am_evo_log_reader {
     long rows;                        /* rows read */
     am_status st;                     /* the first failure: every later call returns it */
 } am_evo_log_reader;
-void am_evo_log_read_begin(am_evo_log_reader* r, const char* fname);
+AM_API void am_evo_log_read_begin(am_evo_log_reader* r, const char* fname);
 /* one line of n characters without its newline (nothing past them is read): a row is parsed into
  * *row and *is_row set to 1; the header and blank lines set *is_row to 0 and leave *row alone
  * (is_row may be NULL: r->rows counts the rows) */
-am_status am_evo_log_read_line(am_evo_log_reader* r, const char* text, long n, am_evo_stats* row, int* is_row, char* err,
+AM_API am_status am_evo_log_read_line(am_evo_log_reader* r, const char* text, long n, am_evo_stats* row, int* is_row, char* err,
                                int errsz);
 /* after the last line: AM_OK when the header was read (a log may have no rows yet) */
-am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
+AM_API am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
 /* the evals.csv header line of a run with `materials` materials (no newline), and one row for an
  * evaluation; both return the characters written (cut to cap - 1). docs/evolve.md gives the
  * columns. AM_EVO_EVALS_ROW_MAX: a capacity every header and row fits. */
 #define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
-int am_evo_evals_header(int materials, char* buf, int cap);
-int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
+AM_API int am_evo_evals_header(int materials, char* buf, int cap);
+AM_API int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
 /* an experiment's results.csv: its header line (no newline), and one row (no newline) for a variant
  * at an evaluation count: the mean and the standard error of its runs' best fitness there; returns
  * the characters written (cut to cap - 1). AM_EXP_RESULTS_ROW_MAX: a capacity every row fits with
  * a variant name of up to 160 characters. */
 #define AM_EXP_RESULTS_ROW_MAX 256
-const char* am_exp_results_header(void);
-int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
+AM_API const char* am_exp_results_header(void);
+AM_API int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
 
 #ifdef __cplusplus
 }

@@ -53,22 +53,22 @@ typedef struct am_lattice {
 } am_lattice;
 
 /* the default material (E 1 MPa, 1000 kg/m^3, passive, mu_s 1.0 / mu_k 0.3, zeta 1.0/0.01/0.8) */
-am_material am_default_material(void);
+AM_API am_material am_default_material(void);
 /* the built-in palette of 9 materials: passive, active, active90 (90 degrees behind), stiff,
  * soft, heavy, light, active180, fixed. Active CTE is 0.01 (volumetric, as the seed). */
-am_palette am_default_palette(void);
+AM_API am_palette am_default_palette(void);
 /* the same palette written into *out (no copy of the large struct on the stack) */
-void am_default_palette_into(am_palette* out);
+AM_API void am_default_palette_into(am_palette* out);
 /* index (0-based) of the material named name in p, or -1 */
-int am_palette_find(const am_palette* p, const char* name);
+AM_API int am_palette_find(const am_palette* p, const char* name);
 
 /* an empty lattice of the given size with the default palette; AM_ERR_CAPACITY past AM_MAX_DIM */
-am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxel_size, char* err, int errsz);
+AM_API am_status am_lattice_init(am_lattice* lat, int nx, int ny, int nz, am_param voxel_size, char* err, int errsz);
 static inline int am_lattice_index(const am_lattice* lat, int x, int y, int z) { return x + lat->nx * (y + lat->ny * z); }
-int am_lattice_count(const am_lattice* lat);         /* filled cells */
+AM_API int am_lattice_count(const am_lattice* lat);         /* filled cells */
 /* 1 when a and b are the same robot: shape, voxel size and every material value bit for bit,
  * names up to their NUL, and the cells of the nx x ny x nz box */
-int am_lattice_equal(const am_lattice* a, const am_lattice* b);
+AM_API int am_lattice_equal(const am_lattice* a, const am_lattice* b);
 
 /* built-in scenes shared by tests, benchmarks and the command:
  *   cube:N        a solid N^3 cube of passive material
@@ -77,7 +77,7 @@ int am_lattice_equal(const am_lattice* a, const am_lattice* b);
  *   cantilever:N  an N x 1 x 1 beam of passive material whose x = 0 cell is "fixed", lifted
  *                 clear of the floor (the lattice is N x 1 x 3 with the beam in the top layer)
  *   chain:N       an N x 1 x 1 row of passive voxels */
-am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz);
+AM_API am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz);
 
 
 /* ==== the voxel soft-body simulator (docs/physics.md is the model).
@@ -114,7 +114,7 @@ typedef struct am_env {
     am_param zeta_global_scale;   /* multiplies every material's global damping (1) */
 } am_env;
 
-am_env am_default_env(void);
+AM_API am_env am_default_env(void);
 
 /* What a robot may carry per lattice cell beyond its material: VXA's per-voxel actuation phase
  * (evosoro's PhaseOffset layer), per-voxel stiffness (evosoro's Stiffness layer) and boundary
@@ -140,7 +140,7 @@ typedef struct am_layers {
 
 /* no phases, no stiffnesses, no boundary conditions (the arrays are left as they are: only the
  * flags are read before them) */
-void am_layers_clear(am_layers* l);
+AM_API void am_layers_clear(am_layers* l);
 
 /* Index and constant layout. The desktop profile keeps every constant per voxel and per link and
  * 32-bit indices, so that the step's loops read them contiguously and vectorise. The board profile
@@ -261,13 +261,13 @@ enum {
     AM_DIM_PRESSURE, AM_DIM_DAMPING
 };
 /* the SI value of one model unit of the dimension (1 in the float and double builds) */
-double am_unit(const am_model* m, int dim);
+AM_API double am_unit(const am_model* m, int dim);
 /* a model value in SI (exactly (double)v in the float and double builds); never in a step */
-double am_to_si(const am_model* m, am_real v, int dim);
+AM_API double am_to_si(const am_model* m, am_real v, int dim);
 /* an SI value in model units (exactly (am_real)v in the float and double builds) */
-am_real am_from_si(const am_model* m, double v, int dim);
+AM_API am_real am_from_si(const am_model* m, double v, int dim);
 /* the time step dt_frac * dt_rec, s (rounded to am_real first in the float and double builds) */
-double am_dt_si(const am_model* m, am_param dt_frac);
+AM_API double am_dt_si(const am_model* m, am_param dt_frac);
 
 /* recording of voxel poses every `every` steps into a caller's fixed buffer, or handed to a sink */
 struct am_state;
@@ -396,38 +396,38 @@ typedef struct am_state {
 
 /* builds the model; AM_ERR_EMPTY for no voxel, AM_ERR_CAPACITY past a capacity, AM_ERR_RANGE for a
  * bad material or environment value */
-am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
+AM_API am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz);
 /* the same with per-cell layers (NULL: none): phases make the model's voxel_phase, a stiffness per
  * cell replaces the material's E of its voxel (a link joins its two voxels' moduli as it joins two
  * materials'; dt_rec follows the stiffest), fixed cells are clamped as a fixed material's are, forces
  * act on their voxels at every step. The board profile has no room for phases, stiffnesses and
  * forces per voxel: AM_ERR_CAPACITY (fixed cells are taken there). */
-am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
+AM_API am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
                                 int errsz);
 /* puts the state at rest at the initial pose, dt = env.dt_frac * dt_rec, actuation off */
-void am_state_reset(const am_model* m, am_state* s);
+AM_API void am_state_reset(const am_model* m, am_state* s);
 /* one time step */
-void am_step(const am_model* m, am_state* s);
+AM_API void am_step(const am_model* m, am_state* s);
 /* n time steps, stopping early on divergence; returns steps taken */
-long am_steps(const am_model* m, am_state* s, long n);
+AM_API long am_steps(const am_model* m, am_state* s, long n);
 
 /* 1 / (2 pi sqrt(max over links a1 / min(m_neg, m_pos))), s */
-am_real am_dt_analytic(const am_model* m);
+AM_API am_real am_dt_analytic(const am_model* m);
 /* the seed's empirical search: from 10 dt_rec down by factors of 10 until 100 steps of a thermal
  * step load show no significant strain energy growth, then a finer pass between the last unstable
  * and first stable value; returns 0.95 of the largest stable dt found. scratch is overwritten. */
-am_real am_dt_search(const am_model* m, am_state* scratch);
+AM_API am_real am_dt_search(const am_model* m, am_state* scratch);
 
 /* energies (diagnostics and tests), J */
-double am_kinetic_energy(const am_model* m, const am_state* s);
-double am_strain_energy(const am_model* m, const am_state* s);
-double am_potential_energy(const am_model* m, const am_state* s); /* gravity + floor springs */
+AM_API double am_kinetic_energy(const am_model* m, const am_state* s);
+AM_API double am_strain_energy(const am_model* m, const am_state* s);
+AM_API double am_potential_energy(const am_model* m, const am_state* s); /* gravity + floor springs */
 /* centre of mass, m */
-void am_com(const am_model* m, const am_state* s, double out[3]);
+AM_API void am_com(const am_model* m, const am_state* s, double out[3]);
 /* total linear and angular (about the origin) momentum */
-void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang[3]);
+AM_API void am_momentum(const am_model* m, const am_state* s, double lin[3], double ang[3]);
 /* 64-bit hash of the dynamic state (positions, orientations, momenta, contact flags) */
-uint64_t am_state_hash(const am_model* m, const am_state* s);
+AM_API uint64_t am_state_hash(const am_model* m, const am_state* s);
 
 /* the seed's evaluation: relaxation, then `cycles` actuation cycles */
 typedef struct am_eval_def {
@@ -452,7 +452,7 @@ typedef struct am_eval_def {
     struct am_gait* gait;    /* optional gait diagnostics of the movement segment (may be NULL) */
 } am_eval_def;
 
-am_eval_def am_default_eval(void);
+AM_API am_eval_def am_default_eval(void);
 
 /* A robot as one unit: its body, what it carries per cell, the environment it moves in and how it
  * is evaluated. A lattice file's robot is am_robot_init's; amorph/io.h fills one from a VXA file
@@ -467,9 +467,9 @@ typedef struct am_robot {
 
 /* a robot of lat with no layers yet (layers, when not NULL, cleared), am_default_env() and
  * am_default_eval() */
-void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers);
+AM_API void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers);
 /* am_model_build_layers of the robot's lattice, environment and layers */
-am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz);
+AM_API am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz);
 
 /* what an evaluation scores (am_eval_def.score; docs/evolve.md, Fitness) */
 #define AM_SCORE_TRAVEL 0    /* the seed's: the centre of mass's travel over the whole movement */
@@ -479,10 +479,10 @@ am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz);
 #define AM_REF_DT_FRAC 0.9
 /* n steps of the default step as steps of s's step: round(n AM_REF_DT_FRAC dt_rec / dt), at least 1
  * when n > 0 (n itself at the default step) */
-long am_steps_at(const am_model* m, const am_state* s, long n);
+AM_API long am_steps_at(const am_model* m, const am_state* s, long n);
 /* the actuation period in steps of a step dt (model units) for env's period: period_steps, or
  * period_s / dt rounded, 1 to 10^7 */
-int am_period_steps(const am_model* m, const am_env* env, am_real dt);
+AM_API int am_period_steps(const am_model* m, const am_env* env, am_real dt);
 
 /* The score of a body that has none: it diverged, or it did not come to rest before the movement.
  * It is the one meaning of "fitness when diverged" everywhere: am_result.fitness, the evolver's
@@ -521,10 +521,10 @@ typedef struct am_result {
 } am_result;
 
 /* s's simulated time, s: its steps at dt, those of the relaxation's settling at settle_dt */
-double am_sim_time(const am_model* m, const am_state* s);
+AM_API double am_sim_time(const am_model* m, const am_state* s);
 
 /* the whole evaluation of one model; s is overwritten */
-void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
+AM_API void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
 
 /* ---- gait diagnostics (docs/results.md, Gaits) ----
  * What the movement segment looked like, cycle by cycle: the centre of mass sampled at the same
@@ -583,15 +583,15 @@ typedef struct am_gait_summary {
 /* the travel of cycle k (0-based): the distance between the centres of mass at its start and end,
  * measured as the fitness is (AM_FIT_HORIZONTAL: in the floor's plane; AM_FIT_PLUS_X: along +x;
  * AM_FIT_3D: in space) */
-double am_gait_travel(const am_gait* g, int fitness, int k);
+AM_API double am_gait_travel(const am_gait* g, int fitness, int k);
 /* the summary of g; voxel_size (m) scales the "still" threshold */
-void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out);
+AM_API void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out);
 /* "still", "flop", "scoot", "bounce" */
-const char* am_gait_mode_name(am_gait_mode mode);
+AM_API const char* am_gait_mode_name(am_gait_mode mode);
 
 /* recording helper used by am_evaluate: stores a frame (or hands it to rec->sink) if s->step is a
  * multiple of rec->every */
-void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
+AM_API void am_record_frame(const am_model* m, const am_state* s, am_record* rec);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,26 @@
 #include <stdint.h>
 #include <string.h>
 
+am_status am_layout_check(long version, const char* config, long lattice, long model, long state, long genome, long evo,
+                          long api_work, char* err, int errsz)
+{
+    const long mine[] = {(long)sizeof(am_lattice), (long)sizeof(am_model), (long)sizeof(am_state), (long)sizeof(am_genome),
+                         (long)sizeof(am_evo), (long)sizeof(am_api_work)};
+    const long theirs[] = {lattice, model, state, genome, evo, api_work};
+    const char* names[] = {"am_lattice", "am_model", "am_state", "am_genome", "am_evo", "am_api_work"};
+    if (!config) config = "?";
+    if (version / 10000 != AM_LAYOUT_VERSION / 10000 || version / 100 > AM_LAYOUT_VERSION / 100)
+        return am_fail(err, errsz, AM_ERR_ARG, "the program was compiled with amorph %ld.%ld.%ld headers, the library is %d.%d.%d: rebuild it against this library",
+                       version / 10000, version / 100 % 100, version % 100, AM_VERSION_MAJOR, AM_VERSION_MINOR, AM_VERSION_PATCH);
+    for (int k = 0; k < (int)(sizeof mine / sizeof mine[0]); k++)
+        if (theirs[k] != mine[k])
+            return am_fail(err, errsz, AM_ERR_ARG,
+                           "the program was compiled for %.40s (%s %ld bytes), the library for " AM_LAYOUT_CONFIG " (%ld bytes): "
+                           "build it with the library's defines (pkg-config --cflags amorph)",
+                           config, names[k], theirs[k], mine[k]);
+    return AM_OK;
+}
+
 int am_api_version(void)
 {
     return AM_API_VERSION;
@@ -32,8 +52,11 @@ static am_status ready(const am_api_work* w, char* err, int errsz)
 am_status am_api_init(am_api_work* w, long size, char* err, int errsz)
 {
     if (!w) return am_fail(err, errsz, AM_ERR_ARG, "no workspace (NULL)");
-    if (size < (long)sizeof *w)
-        return am_fail(err, errsz, AM_ERR_ARG, "the workspace has %ld bytes; it needs %ld (am_api_work_size)", size, (long)sizeof *w);
+    if (size != (long)sizeof *w)
+        return am_fail(err, errsz, AM_ERR_ARG,
+                       "the workspace has %ld bytes; the library's (" AM_LAYOUT_CONFIG ") has %ld (am_api_work_size): a program compiled "
+                       "with the library's REAL and PROFILE passes sizeof *w",
+                       size, (long)sizeof *w);
     if ((uintptr_t)w % _Alignof(am_api_work) != 0)
         return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not aligned to %d bytes", (int)_Alignof(am_api_work));
     w->def = am_default_evo();
