@@ -1,5 +1,7 @@
 # amorph: one Makefile, several side-by-side builds.
 #   make                      build/libamorph.a and build/amorph
+#   make check                the fast tier, under a minute: the default build's unit tests and a few
+#                             command tests (CHECK_SH), for after each change
 #   make test                 every test (the README's test command and CI's; also builds the -O0,
 #                             fixed-point and board-profile variants the shell tests compare against)
 #   make bench                benchmarks that print figures (bench-board: a board's cost under QEMU;
@@ -113,7 +115,7 @@ PORT_OBJ := $(PORT_SRC:%.c=$(BUILD)/%.o)
 TOOL_OBJ := $(TOOL_SRC:%.c=$(BUILD)/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all shared install sim-only test unit check-exports check-test-links check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
+.PHONY: all shared install sim-only check test unit check-exports check-test-links check-layers bench bench-arch gather-why convergence asan valgrind valgrind-run clean check-alloc check-fma check-tests repro stack check-fixed bench-board bench-mpi fuzz fuzz-build fuzz-corpus fuzz-smoke
 all: $(BUILD)/libamorph.a $(BUILD)/amorph$(EXE)
 
 # Each object depends on the headers it includes (-MMD -MP: the compiler lists them in a .d file
@@ -271,6 +273,13 @@ check-tests:
 
 unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so check-test-links
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
+
+# make check: the fast tier, for after each change (under a minute on two cores, docs/architecture.md):
+# the default build, its static checks, every unit test (AM_TEST_QUICK=1: the heavy ones shrink)
+# and the command tests of CHECK_SH. make test stays the whole suite and CI's command.
+CHECK_SH ?= tests/cli_lib.sh tests/cli_build.sh tests/cli_determinism.sh tests/cli_genome.sh tests/cli_lattice.sh
+check: all check-alloc check-tests check-layers check-exports $(TEST_BIN) check-test-links
+	@AM_TEST_QUICK=1 BUILD=$(BUILD) CLI_TESTS='$(CHECK_SH)' sh tests/run_all.sh $(TEST_BIN)
 
 test: all check-alloc check-fma check-tests check-layers check-exports
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Runs every test program given as arguments, then every tests/cli_*.sh, and prints one closing
-# line "N passed, N failed" summed over all of them. VALGRIND=1 runs the programs under memcheck.
+# Runs every test program given as arguments, then every tests/cli_*.sh (or the shell tests that
+# CLI_TESTS lists: make check), and prints one closing line "N passed, N failed" summed over all of
+# them. VALGRIND=1 runs the programs under memcheck.
 BUILD=${BUILD:-build}
 export BUILD
 pass=0; fail=0; bad=""
@@ -28,7 +29,7 @@ for t in "$@"; do
     fi
 done
 if [ "${VALGRIND:-0}" != 1 ]; then
-    for s in tests/cli_*.sh; do
+    for s in ${CLI_TESTS:-tests/cli_*.sh}; do
         [ -f "$s" ] && run "$(basename "$s")" sh "$s"
     done
 fi
