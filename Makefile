@@ -15,7 +15,7 @@
 #   make install PREFIX=/usr/local   headers, libamorph.a, libamorph.so*, amorph, amorph.pc (DESTDIR honoured)
 #   make asan | valgrind      sanitizer / memcheck runs of the test suite
 # Options: ARCH= (-march, default native)  BUILD= (output folder)  GATHER=auto|on|off
-#          REAL=float|double|fixed  PROFILE=desktop|board  OPT= (default -O3)  CC=
+#          REAL=float|double|fixed  PROFILE=desktop|board  CONFIG= (capacities' header)  OPT= (default -O3)  CC=
 ARCH    ?= native
 GATHER  ?= auto
 BUILD   ?= build
@@ -86,6 +86,17 @@ ifeq ($(filter $(PROFILE),desktop board),)
 $(error PROFILE must be desktop or board, not '$(PROFILE)')
 endif
 
+# CONFIG=file.h: a project's configuration header of the capacities, over the defaults of
+# include/amorph/base.h (docs/porting.md, Capacities); passed as AMORPH_CONFIG_H with its absolute path
+CONFIG  ?=
+CONFIG_DEF :=
+ifneq ($(CONFIG),)
+ifeq ($(wildcard $(CONFIG)),)
+$(error CONFIG=$(CONFIG): no such file)
+endif
+CONFIG_DEF := -DAMORPH_CONFIG_H=\"$(abspath $(CONFIG))\"
+endif
+
 MARCH   := $(if $(ARCH),-march=$(ARCH))
 # Vector gathers under -march=native (docs/benchmarks.md, Build flags): GATHER=auto leaves them out
 # where the CPU's microcode makes them slow (tools/gather_flags.sh; make gather-why says what it
@@ -104,7 +115,7 @@ CFLAGS  ?=
 # fixed point (docs/fixed.md): sums of am_real wrap around instead of being undefined
 FIXFLAGS := $(if $(filter fixed,$(REAL)),-fwrapv)
 ALLCFLAGS := -std=c11 -pedantic-errors $(WARN) $(OPT) $(MARCH) -ffp-contract=off -fno-fast-math \
-           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
+           -fno-math-errno -fno-trapping-math -g $(FIXFLAGS) $(DEFS) $(CONFIG_DEF) -Iinclude $(TARGET_CFLAGS) $(CFLAGS)
 
 LIB_SRC  := $(sort $(wildcard src/*/*.c))
 PORT_SRC := $(sort $(foreach d,$(PORT_DIRS),$(wildcard $(d)/*.c)) $(PORT_FILES))
@@ -274,7 +285,7 @@ check-tests:
 unit: $(TEST_BIN) $(BUILD)/amorph $(BUILD)/libamorph.so check-test-links
 	@BUILD=$(BUILD) sh tests/run_all.sh $(TEST_BIN)
 
-# make check: the fast tier, for after each change (under a minute on two cores, docs/architecture.md):
+# make check: the fast tier, for after each change (under a minute on two cores; README, Layout):
 # the default build, its static checks, every unit test (AM_TEST_QUICK=1: the heavy ones shrink)
 # and the command tests of CHECK_SH. make test stays the whole suite and CI's command.
 CHECK_SH ?= tests/cli_lib.sh tests/cli_build.sh tests/cli_determinism.sh tests/cli_genome.sh tests/cli_lattice.sh
@@ -285,12 +296,13 @@ test: all check-alloc check-fma check-tests check-layers check-exports
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/small CONFIG=docs/examples/config_small.h $(BUILD)/small/amorph
 	@if command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 && command -v wine >/dev/null 2>&1; then \
 	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all check-alloc; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
 	@if command -v mpicc >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then \
 	    $(MAKE) --no-print-directory PORT=mpi BUILD=$(BUILD)/mpi all check-alloc; else echo "test: no mpicc or mpirun: MPI build skipped"; fi
 	@$(if $(filter native,$(ARCH)),$(MAKE) --no-print-directory BUILD=$(BUILD)/gather-$(GATHER_OTHER) GATHER=$(GATHER_OTHER) all)
-	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board WIN_BUILD=$(BUILD)/windows \
+	@$(MAKE) --no-print-directory unit OTHER_BUILD=$(BUILD)/o0 FIXED_BUILD=$(BUILD)/fixed BOARD_BUILD=$(BUILD)/board SMALL_BUILD=$(BUILD)/small WIN_BUILD=$(BUILD)/windows \
 	    MPI_BUILD=$(BUILD)/mpi $(if $(filter native,$(ARCH)),GATHER_BUILD=$(BUILD)/gather-$(GATHER_OTHER))
 	@$(MAKE) --no-print-directory check-fixed
 	@$(MAKE) --no-print-directory fuzz-smoke

@@ -3,7 +3,8 @@
 # as `amorph sim` moves the same robot; a program compiled with another number type than the
 # library's stops at AM_LAYOUT_CHECK (and at am_api_init) with one line, against the static and
 # the shared library, instead of writing past its structs; the shared library has its SONAME and
-# its versioned file. Run from the repository root: BUILD=build sh tests/cli_lib.sh
+# its versioned file; a build with a project's own capacities (SMALL_BUILD, make test) keeps within
+# them. Run from the repository root: BUILD=build sh tests/cli_lib.sh
 . tests/shlib.sh
 CC=${CC:-cc}
 W=$TMPD
@@ -82,5 +83,20 @@ if [ -f "$BUILD/libamorph.so" ] && [ -z "$san" ]; then
     expect_fail 1 "^first: the program was compiled for $other .*, the library for " env LD_LIBRARY_PATH="$BUILD" "$W/first_so"
 else
     echo "cli_lib: no $BUILD/libamorph.so (or a sanitizer build): the shared library's checks skipped"
+fi
+# a project's own capacities (docs/examples/config_small.h, AMORPH_CONFIG_H): $SMALL_BUILD, built by
+# make test with CONFIG=, runs a scene within them and refuses a body over them in one line
+if [ -n "${SMALL_BUILD:-}" ] && [ -x "$SMALL_BUILD/amorph" ]; then
+    "$SMALL_BUILD/amorph" --help >"$W/small_help.txt" 2>&1
+    check "the small build names its capacities: $(grep -m 1 'build:' "$W/small_help.txt")" grep -q 'profile=small (workspace up to 6^3)' "$W/small_help.txt"
+    expect_ok "$SMALL_BUILD/amorph" sim --scene sphere:6 --cycles 2 --json
+    small=$(sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p' "$TMPD/out")
+    default=$("$AMORPH" sim --scene sphere:6 --cycles 2 --json 2>/dev/null | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
+    check "sphere:6 in the small build ($small) is the default build's ($default)" test -n "$small" -a "$small" = "$default"
+    expect_fail 2 "lattice size 7 x 7 x 7 exceeds the small profile's 6 per side" "$SMALL_BUILD/amorph" sim --scene cube:7
+    printf 'amorph-lattice 1\nsize 7 1 1\nlayer 0\n1111111\n' >"$W/big.lattice"
+    expect_fail 2 "big.lattice:2: size 7 1 1 exceeds the small profile's 6 cells per side" "$SMALL_BUILD/amorph" sim "$W/big.lattice"
+else
+    echo "cli_lib: no SMALL_BUILD (make test builds one with CONFIG=docs/examples/config_small.h): the small configuration's checks skipped"
 fi
 summary cli_lib

@@ -5,12 +5,14 @@
 # and of the layers before it, and src/L/'s own private headers (L_internal.h); nothing else of
 # amorph (no amorph.h, no port.h: the porting layer is the program's, port/port.h; no path into
 # another folder). The ports (port/) may include port.h and, of the library, amorph/base.h only;
-# include/amorph/ holds no port.h. Prints one line per breach and exits 1 when there is one.
+# include/amorph/ holds no port.h. The profiles' configuration headers (include/amorph/config_*.h)
+# belong to the base layer and include nothing. Prints one line per breach and exits 1 when there is one.
 LAYERS="base sim geno evo io api"
+CONFIGS=$(cd include && ls amorph/config_*.h | tr '\n' ' ')
 bad=0 n=0
 # the public headers a file of layer $1 may include
 allowed() {
-    a=""
+    a="$CONFIGS"
     for l in $LAYERS; do a="$a amorph/$l.h"; [ "$l" = "$1" ] && break; done
     echo "$a"
 }
@@ -31,6 +33,7 @@ for l in $LAYERS; do
     done
     check_file "include/amorph/$l.h" $(allowed "$l" | sed "s| amorph/$l.h||")
 done
+for f in include/amorph/config_*.h; do check_file "$f"; done
 for f in src/*; do
     case " $LAYERS " in *" $(basename "$f") "*) ;; *) echo "check-layers: $f is not a layer's folder"; bad=1 ;; esac
 done

@@ -45,9 +45,14 @@ extern "C" {
 /* ==== every capacity of the library, in one place.
  *
  * Nothing in amorph allocates. Each array is sized here at compile time, and a capacity that
- * would be exceeded is reported as a status with a message, never written past. Two profiles:
- *   desktop (default): a 20 x 20 x 20 workspace, as in the seed paper;
- *   board (make PROFILE=board): 8 x 8 x 8, for microcontrollers.
+ * would be exceeded is reported as a status with a message, never written past. The capacities
+ * come from one configuration header, as lwIP's lwipopts.h and FreeRTOS's FreeRTOSConfig.h: a
+ * project's own, named by AMORPH_CONFIG_H (-DAMORPH_CONFIG_H='"myconfig.h"', or make
+ * CONFIG=myconfig.h), or else the profile's, amorph/config_desktop.h (the default) or
+ * amorph/config_board.h (make PROFILE=board). Each capacity the header leaves out takes the
+ * default below, the desktop profile's value. docs/examples/config_small.h is a third one.
+ * PROFILE also chooses how the model keeps its constants (amorph/sim.h) and which commands the
+ * program has; the header only sizes.
  */
 
 /* one profile per build (make PROFILE=desktop|board) */
@@ -55,46 +60,63 @@ extern "C" {
 #error "amorph: two profiles defined: build with one of AM_PROFILE_DESKTOP, AM_PROFILE_BOARD (make PROFILE=desktop|board)"
 #endif
 
-#if defined(AM_PROFILE_BOARD)
-#define AM_PROFILE_NAME "board"
-#define AM_MAX_DIM 8            /* cells along each lattice axis */
+#if defined(AMORPH_CONFIG_H)
+#include AMORPH_CONFIG_H
+#elif defined(AM_PROFILE_BOARD)
+#include "amorph/config_board.h"
 #else
-#define AM_PROFILE_NAME "desktop"
-#define AM_MAX_DIM 20
+#include "amorph/config_desktop.h"
 #endif
 
+/* the name messages give the capacities ("exceeds the desktop profile's 20 cells per side") */
+#ifndef AM_PROFILE_NAME
+#define AM_PROFILE_NAME "custom"
+#endif
+
+/* ---- the lattice and the simulator (include/amorph/sim.h) ---- */
+#ifndef AM_MAX_DIM
+#define AM_MAX_DIM 20           /* cells along each lattice axis (board: 8) */
+#endif
 #define AM_MAX_CELLS (AM_MAX_DIM * AM_MAX_DIM * AM_MAX_DIM)   /* lattice cells */
 #define AM_MAX_VOXELS AM_MAX_CELLS                            /* filled cells */
 /* link entries: nv + 1 x lanes (sim.h), and the y and z face pairs of a full box */
 #define AM_MAX_LINKS (AM_MAX_VOXELS + 1 + 2 * AM_MAX_DIM * AM_MAX_DIM * (AM_MAX_DIM - 1))
 #define AM_MAX_MATERIALS 16     /* palette entries; cell value 0 is empty, 1..16 a material */
-#if defined(AM_PROFILE_BOARD)
-#define AM_MAX_PAIRS (6 * AM_MAX_VOXELS)   /* self-collision candidate pairs */
-#define AM_COLL_BUCKETS 256     /* spatial hash buckets of the collision broad phase (power of 2) */
-#else
-#define AM_MAX_PAIRS (12 * AM_MAX_VOXELS)
-#define AM_COLL_BUCKETS 4096
-#define AM_COLL_GAP_BINS 32     /* the candidate pairs binned by their distance at the rebuild */
+#ifndef AM_MAX_PAIRS
+#define AM_MAX_PAIRS (12 * AM_MAX_VOXELS) /* self-collision candidate pairs (board: 6 per voxel) */
+#endif
+#ifndef AM_COLL_BUCKETS
+#define AM_COLL_BUCKETS 4096    /* spatial hash buckets of the collision broad phase, a power of 2 (board: 256) */
+#endif
+#ifndef AM_COLL_GAP_BINS
+#define AM_COLL_GAP_BINS 32     /* the candidate pairs binned by their distance at the rebuild (desktop profile) */
+#endif
+#ifndef AM_GAIT_MAX_CYCLES
+#define AM_GAIT_MAX_CYCLES 256  /* actuation cycles a gait records (board: 32) */
 #endif
 #define AM_NAME_MAX 24          /* material name, including the terminating NUL */
 #define AM_ERR_MAX 256          /* recommended size of an error message buffer */
 
 /* ---- genotypes (include/amorph/geno.h, docs/genotypes.md) ---- */
 #define AM_MAX_GENO_MATERIALS 3 /* density fields per genome: passive, active, active90 */
-#if defined(AM_PROFILE_BOARD)
-#define AM_MAX_DCT_K 4          /* DCT amplitudes per axis (k x k x k per material) */
-#define AM_MAX_CPPN_LAYERS 3    /* CPPN layers m (>= 2) */
-#define AM_MAX_CPPN_NODES 4     /* CPPN nodes per layer n */
-#define AM_MAX_GMX_POINTS 24    /* Gaussian points per GMX genome */
-#define AM_GENO_TABLE 256       /* intervals of the activation / falloff lookup tables */
-#define AM_CPPN_CHUNK 64        /* cells a CPPN sweep evaluates at once */
-#else
-#define AM_MAX_DCT_K 8
-#define AM_MAX_CPPN_LAYERS 5
-#define AM_MAX_CPPN_NODES 8
-#define AM_MAX_GMX_POINTS 64
-#define AM_GENO_TABLE 4096
-#define AM_CPPN_CHUNK 256
+#ifndef AM_MAX_DCT_K
+#define AM_MAX_DCT_K 8          /* DCT amplitudes per axis, k x k x k per material (board: 4) */
+#endif
+#ifndef AM_MAX_CPPN_LAYERS
+#define AM_MAX_CPPN_LAYERS 5    /* CPPN layers m, >= 2 (board: 3) */
+#endif
+#ifndef AM_MAX_CPPN_NODES
+#define AM_MAX_CPPN_NODES 8     /* CPPN nodes per layer n (board: 4) */
+#endif
+#ifndef AM_MAX_GMX_POINTS
+#define AM_MAX_GMX_POINTS 64    /* Gaussian points per GMX genome (board: 24) */
+#endif
+#ifndef AM_GENO_TABLE
+#define AM_GENO_TABLE 4096      /* intervals of the activation / falloff lookup tables (board: 256;
+                                 * another value expresses genomes differently) */
+#endif
+#ifndef AM_CPPN_CHUNK
+#define AM_CPPN_CHUNK 256       /* cells a CPPN sweep evaluates at once (board: 64) */
 #endif
 /* the largest genome text am_genome_format can produce (every value takes at most 26 chars) */
 #define AM_GENOME_TEXT_MAX (4096L + 30L * (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K * (AM_MAX_DCT_K + 4) \
@@ -103,35 +125,54 @@ extern "C" {
 /* ---- end of genotypes ---- */
 
 /* ---- evolver (include/amorph/evo.h) ---- */
-#if defined(AM_PROFILE_BOARD)
-#define AM_MAX_POPULATION 20    /* individuals of a run */
-#define AM_MAX_WORKERS 1        /* evaluation workspaces (one per thread) */
-#define AM_EVO_BATCH 2          /* offspring made, evaluated and placed at a time (even, >= 2) */
-#define AM_EVO_WAVE_MAX 1       /* runs evolved in lockstep by am_evo_generations */
-#define AM_EVO_MEMO 2           /* bodies whose results a run remembers (am_evo.memo) */
-#else
-#define AM_MAX_POPULATION 256
-#define AM_MAX_WORKERS 16
-#define AM_EVO_BATCH AM_MAX_POPULATION /* a whole generation: one parallel map */
-#define AM_EVO_WAVE_MAX 16
-#define AM_EVO_MEMO 256
+#ifndef AM_MAX_POPULATION
+#define AM_MAX_POPULATION 256   /* individuals of a run (board: 20) */
+#endif
+#ifndef AM_MAX_WORKERS
+#define AM_MAX_WORKERS 16       /* evaluation workspaces, one per thread (board: 1) */
+#endif
+#ifndef AM_EVO_BATCH
+#define AM_EVO_BATCH AM_MAX_POPULATION /* offspring made, evaluated and placed at a time, even, >= 2
+                                        * (desktop: a whole generation, one parallel map; board: 2) */
+#endif
+#ifndef AM_EVO_WAVE_MAX
+#define AM_EVO_WAVE_MAX 16      /* runs evolved in lockstep by am_evo_generations (board: 1) */
+#endif
+#ifndef AM_EVO_MEMO
+#define AM_EVO_MEMO 256         /* bodies whose results a run remembers, am_evo.memo (board: 2) */
 #endif
 
-/* ---- XML and VXA files (include/amorph/io.h, include/amorph/io.h, docs/vxa.md) ---- */
-#if defined(AM_PROFILE_BOARD)
-#define AM_XML_MAX_NODES 768    /* elements of one XML document */
-#define AM_XML_MAX_ATTRS 128    /* attributes of one XML document */
-#define AM_XML_MAX_DEPTH 16     /* element nesting */
-#define AM_XML_MAX_BYTES (256L << 10) /* longest XML text read, bytes */
-#define AM_VXA_WARN_TEXT 1024   /* bytes of warning lines kept by the VXA reader */
-#else
-#define AM_XML_MAX_NODES 8192
-#define AM_XML_MAX_ATTRS 1024
-#define AM_XML_MAX_DEPTH 32
-#define AM_XML_MAX_BYTES (4L << 20)
-#define AM_VXA_WARN_TEXT 4096
+/* ---- XML and VXA files (include/amorph/io.h, docs/vxa.md) ---- */
+#ifndef AM_XML_MAX_NODES
+#define AM_XML_MAX_NODES 8192   /* elements of one XML document (board: 768) */
+#endif
+#ifndef AM_XML_MAX_ATTRS
+#define AM_XML_MAX_ATTRS 1024   /* attributes of one XML document (board: 128) */
+#endif
+#ifndef AM_XML_MAX_DEPTH
+#define AM_XML_MAX_DEPTH 32     /* element nesting (board: 16) */
+#endif
+#ifndef AM_XML_MAX_BYTES
+#define AM_XML_MAX_BYTES (4L << 20) /* longest XML text read, bytes (board: 256 KiB) */
+#endif
+#ifndef AM_VXA_WARN_TEXT
+#define AM_VXA_WARN_TEXT 4096   /* bytes of warning lines kept by the VXA reader (board: 1024) */
 #endif
 /* ---- end of XML and VXA ---- */
+
+/* what a configuration header must respect */
+#if AM_MAX_DIM < 2 || AM_MAX_DIM > 64
+#error "amorph: AM_MAX_DIM must be 2..64"
+#endif
+#if AM_COLL_BUCKETS < 1 || (AM_COLL_BUCKETS & (AM_COLL_BUCKETS - 1)) != 0
+#error "amorph: AM_COLL_BUCKETS must be a power of 2"
+#endif
+#if AM_EVO_BATCH < 2 || AM_EVO_BATCH % 2 != 0 || AM_EVO_BATCH > AM_MAX_POPULATION
+#error "amorph: AM_EVO_BATCH must be even, at least 2 and at most AM_MAX_POPULATION"
+#endif
+#if AM_MAX_CPPN_LAYERS < 2 || AM_MAX_WORKERS < 1 || AM_EVO_WAVE_MAX < 1 || AM_EVO_MEMO < 1 || AM_GAIT_MAX_CYCLES < 1
+#error "amorph: AM_MAX_CPPN_LAYERS must be at least 2; AM_MAX_WORKERS, AM_EVO_WAVE_MAX, AM_EVO_MEMO and AM_GAIT_MAX_CYCLES at least 1"
+#endif
 
 /* ==== the number type of every simulation quantity.
  *

@@ -530,11 +530,7 @@ AM_API void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, 
  * What the movement segment looked like, cycle by cycle: the centre of mass sampled at the same
  * phase of every actuation cycle (so vibration within a cycle cancels), how much of each cycle
  * the body spent with no voxel on the floor, and how far its centre of mass rose and fell. */
-#if defined(AM_PROFILE_BOARD)
-#define AM_GAIT_MAX_CYCLES 32
-#else
-#define AM_GAIT_MAX_CYCLES 256
-#endif
+/* AM_GAIT_MAX_CYCLES: a capacity of amorph/base.h */
 typedef struct am_gait {
     int cycles;                                /* cycles recorded: the first AM_GAIT_MAX_CYCLES */
     double com[AM_GAIT_MAX_CYCLES + 1][3];     /* m: at the start of the movement, then at the end of each cycle */
