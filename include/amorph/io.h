@@ -450,7 +450,7 @@ AM_API am_status am_vxa_robot(am_robot* r, const am_vxa_info* info, char* err, i
  * set). A value out of its range: AM_ERR_RANGE, "FILE:LINE: <StopCondition> ...: cycles = ...". */
 #define AM_VXA_KEEP_CYCLES 1u
 #define AM_VXA_KEEP_RELAX 2u
-am_status am_vxa_stop_settings(const am_vxa_info* info, double dt, double dt_ref, int period_steps, unsigned keep, am_eval_def* eval,
+AM_API am_status am_vxa_stop_settings(const am_vxa_info* info, double dt, double dt_ref, int period_steps, unsigned keep, am_eval_def* eval,
                                char* note, int notesz, char* err, int errsz);
 
 /* writes lat and env as a VXA file into buf (capacity cap, NUL-terminated); *len gets its length.
