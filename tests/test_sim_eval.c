@@ -374,6 +374,66 @@ static void test_sustained_score(void)
     NEAR(r2.sustained, dx / 3, 1e-15);
 }
 
+/* the budget of one evaluation (issue 46): the seed's and a convergence study's evaluations are
+ * well inside it; a request over it takes no step, whatever makes it long */
+static void test_budget(void)
+{
+    am_env env = am_default_env();
+    am_eval_def def = am_default_eval();
+    am_eval_cost c;
+    char err[AM_ERR_MAX];
+    /* the seed's: two relaxations of 40,000 and 10 cycles of 500 */
+    NEAR(am_eval_max_steps(&env, &def, 500, &c), 85000, 0.5);
+    CHECK(c.relaxations == 2 && c.move == 5000, "relaxations %d move %g", c.relaxations, c.move);
+    CHECK(am_eval_check(&env, &def, 500, err, sizeof err) == AM_OK, "%s", err);
+    /* 30 cycles at 0.05 dt_rec with the period held (9,000 steps), settling at the run's step */
+    env.dt_frac = AM_P(0.05);
+    def.cycles = 30;
+    def.relax_dt_frac = AM_P(0);
+    const double fine = am_eval_max_steps(&env, &def, 9000, &c);
+    CHECK(c.relaxations == 1 && fine < 1e6 && am_eval_check(&env, &def, 9000, err, sizeof err) == AM_OK, "%g: %s", fine, err);
+    /* the search at its smallest step with the seed's relaxation: inside */
+    env = am_default_env();
+    def = am_default_eval();
+    def.dt_search = 1;
+    const double searched = am_eval_max_steps(&env, &def, 500, &c);
+    CHECK(searched > 7e8 && searched < (double)AM_EVAL_MAX_STEPS, "the search's worst case %g", searched);
+    /* over it: the issue's cases */
+    def = am_default_eval();
+    def.cycles = 100000;
+    CHECK(am_eval_check(&env, &def, 1e7, err, sizeof err) == AM_ERR_RANGE && strstr(err, "over the budget of 1e+09"), "%s", err);
+    def = am_default_eval();
+    env.dt_frac = AM_P(1e-6);
+    def.relax_max_steps = 100000000;
+    def.settle_speed = AM_P(0);
+    CHECK(am_eval_check(&env, &def, 500, err, sizeof err) == AM_ERR_RANGE, "dt_frac 1e-6 and relax_max_steps 1e8 accepted");
+    /* am_evaluate takes no step over it (this would run for ever) */
+    build("cube:2");
+    g_m.env.period_steps = 10000000;
+    def = am_default_eval();
+    def.cycles = 100000;
+    am_result r;
+    am_evaluate(&g_m, &g_s, &def, &r);
+    CHECK(r.steps == 0 && r.diverged && r.fitness == AM_NO_SCORE, "steps %ld diverged %d fitness %g", r.steps, r.diverged, r.fitness);
+}
+
+/* a period in seconds is 2 to 10^7 steps, as the key period_steps (issue 46: 1e-9 s gave 1) */
+static void test_period_range(void)
+{
+    char err[AM_ERR_MAX];
+    am_env env = am_default_env();
+    CHECK(am_scene_build(&g_lat, "cube:2", err, sizeof err) == AM_OK, "%s", err);
+    env.period_s = AM_P(1e-9);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE && strstr(err, "2 to 10^7 steps"), "%s", err);
+    env.period_s = AM_P(0);
+    env.period_steps = 1;
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_ERR_RANGE, "period_steps 1 accepted");
+    env.period_steps = 500;
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    env.period_s = AM_P(1e-9);
+    CHECK(am_period_steps(&g_m, &env, g_m.dt_rec) == 2, "a searched step's period %d", am_period_steps(&g_m, &env, g_m.dt_rec));
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -387,5 +447,7 @@ int main(int argc, char** argv)
     RUN(test_gait_modes);
     RUN(test_gait_on_the_floor);
     RUN(test_sustained_score);
+    RUN(test_budget);
+    RUN(test_period_range);
     return SUMMARY();
 }

@@ -69,11 +69,19 @@ AM_API am_status am_evo_set_over(am_evo_def* d, const char* key, const char* val
  * actuated materials (cte not 0), mu_static and mu_kinetic over every material, voxel_size over the
  * lattice's */
 AM_API void am_evo_apply_materials(const am_evo_def* d, unsigned mask, am_lattice* lat);
-/* checks the whole definition (relations between keys); messages name the key */
+/* checks the whole definition (relations between keys, the evaluation's budget: am_evo_check_budget);
+ * messages name the key */
 AM_API am_status am_evo_check(const am_evo_def* d, char* err, int errsz);
 /* am_evo_check, with the index (am_evo_key_name) of the key its message names in *key (-1 when
  * the definition is whole), so that a caller can say where that key was set ("file:line: ") */
 AM_API am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz);
+/* the evaluation's budget (am_eval_check, amorph/sim.h) for d's environment and evaluation with a
+ * period of period_steps steps of d's step: AM_OK, or AM_ERR_RANGE with the message "KEY = VALUE:
+ * up to ... steps an evaluation ..." and in *key the index of the setting that multiplies the seed's
+ * evaluation most in the larger of its parts (relax_max_steps, dt_frac or dt_search for the
+ * relaxation; cycles, period_steps or period_s for the movement). am_evo_check_key checks it with
+ * the period in seconds at its most steps, 10^7 (no body is built yet) */
+AM_API am_status am_evo_check_budget(const am_evo_def* d, double period_steps, int* key, char* err, int errsz);
 /* the index of the key a configuration line sets (n characters), or -1 (a comment, a blank or a
  * malformed line, an unknown key) */
 AM_API int am_evo_line_key(const char* text, long n);
@@ -328,7 +336,8 @@ AM_API void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am
                      am_record* rec, am_evo_ind* out, am_evo_eval* detail);
 /* the model of w->lattice in d's environment evaluated by d's evaluation into *out (rec may be
  * NULL): what am_evo_evaluate does after the expression. AM_ERR_EMPTY (out untouched) for a body
- * with no voxel, a failure of am_model_build with its message */
+ * with no voxel, a failure of am_model_build with its message, AM_ERR_RANGE (no step taken) for an
+ * evaluation over the budget at this body's period (am_evo_check_budget) */
 AM_API am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz);
 /* expresses g into lat with the run's palette and voxel size */
 AM_API am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,

@@ -104,7 +104,7 @@ typedef struct am_env {
     int cte_mode;             /* AM_CTE_VOLUMETRIC (seed: s = cbrt(1 + cte T)) or AM_CTE_LINEAR (s = 1 + cte T) */
     am_param temp_base;        /* temperature offset at rest, degrees (0) */
     am_param temp_amplitude;   /* actuation amplitude A, degrees (30) */
-    int period_steps;         /* actuation period P in time steps (500); > 0 */
+    int period_steps;         /* actuation period P in time steps (500); 2 to 10^7 */
     am_param period_s;         /* s: when > 0, the period in seconds instead: am_model_build makes it
                                * period_steps of the model's step (and am_evaluate of a searched step);
                                * 0 (the default): period_steps as given */
@@ -481,7 +481,8 @@ AM_API am_status am_robot_build(am_model* m, const am_robot* r, char* err, int e
  * when n > 0 (n itself at the default step) */
 AM_API long am_steps_at(const am_model* m, const am_state* s, long n);
 /* the actuation period in steps of a step dt (model units) for env's period: period_steps, or
- * period_s / dt rounded, 1 to 10^7 */
+ * period_s / dt rounded, 2 to 10^7 (the range of the key period_steps; am_model_build refuses a
+ * period_s outside it at the model's step) */
 AM_API int am_period_steps(const am_model* m, const am_env* env, am_real dt);
 
 /* The score of a body that has none: it diverged, or it did not come to rest before the movement.
@@ -523,8 +524,39 @@ typedef struct am_result {
 /* s's simulated time, s: its steps at dt, those of the relaxation's settling at settle_dt */
 AM_API double am_sim_time(const am_model* m, const am_state* s);
 
-/* the whole evaluation of one model; s is overwritten */
+/* the whole evaluation of one model; s is overwritten. An evaluation whose bound
+ * (am_eval_max_steps of m->env and def) passes the budget AM_EVAL_MAX_STEPS takes no step: *out is
+ * a result with no score (diverged 1, fitness AM_NO_SCORE, steps 0); am_eval_check says why, and
+ * the callers that take settings from files and flags ask it first */
 AM_API void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
+
+/* The budget of one evaluation (docs/physics.md, Evaluation): at most 10^9 time steps, whatever
+ * the settings. The seed's evaluation takes at most 85,000 (two relaxations of 40,000 and 10
+ * cycles of 500); a convergence study at 0.05 dt_rec 1.5 million; the time step search's worst
+ * case (nothing stable down to AM_DT_SEARCH_MIN) with the seed's relaxation 7.6 x 10^8. */
+#define AM_EVAL_MAX_STEPS 1000000000L
+/* the smallest step am_dt_search can return, a fraction of dt_rec: 0.95 of its smallest candidate */
+#define AM_DT_SEARCH_MIN 9.5e-5
+/* what an evaluation can cost at most, in time steps (am_eval_max_steps' parts) */
+typedef struct am_eval_cost {
+    double search;           /* the time step search (def->dt_search): 15 candidates of 100 steps */
+    double step;             /* the step the counts are scaled to, a fraction of dt_rec (with the
+                              * search, its smallest: AM_DT_SEARCH_MIN) */
+    int relaxations;         /* 2 when a settling pseudo-step may fail and be done again, else 1 */
+    double relax;            /* steps of one relaxation: relax_max_steps scaled to the step */
+    double period;           /* steps of one actuation period at the step */
+    double move;             /* cycles x period */
+    double total;            /* search + relaxations x relax + move */
+} am_eval_cost;
+/* the most time steps am_evaluate can take with env and def, before any step: period_steps is
+ * the period in steps of env's step (env->dt_frac dt_rec), as am_model_build makes env->period_s
+ * (pass 10^7, the most, while no model is built and env->period_s > 0); with def->dt_search the
+ * searched step is taken at its smallest. Fills *cost when not NULL. */
+double am_eval_max_steps(const am_env* env, const am_eval_def* def, double period_steps, am_eval_cost* cost);
+/* AM_OK when am_eval_max_steps is within AM_EVAL_MAX_STEPS; else AM_ERR_RANGE and a message that
+ * gives the figures ("up to ... steps an evaluation (...), over the budget of 1e+09"); the caller
+ * adds where the settings came from */
+am_status am_eval_check(const am_env* env, const am_eval_def* def, double period_steps, char* err, int errsz);
 
 /* ---- gait diagnostics (docs/results.md, Gaits) ----
  * What the movement segment looked like, cycle by cycle: the centre of mass sampled at the same

@@ -294,7 +294,32 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
                        d->eval.cycles, d->eval.sustained_from);
     if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
         return *key = key_index("threads"), am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
-    return AM_OK;
+    /* the evaluation's budget, with the period in seconds at its most steps (no body is built) */
+    return am_evo_check_budget(d, d->env.period_s > AM_P(0) ? 1e7 : (double)d->env.period_steps, key, err, errsz);
+}
+
+am_status am_evo_check_budget(const am_evo_def* d, double period_steps, int* key, char* err, int errsz)
+{
+    am_eval_cost c;
+    char why[AM_ERR_MAX], v[64];
+    *key = -1;
+    if (am_eval_check(&d->env, &d->eval, period_steps, why, sizeof why) == AM_OK) return AM_OK;
+    am_eval_max_steps(&d->env, &d->eval, period_steps, &c);
+    /* the setting that multiplies the seed's evaluation most in the larger part: the relaxation
+     * (its count, its step) or the movement (cycles, the period) */
+    const am_eval_def e0 = am_default_eval();
+    const double r_count = (double)d->eval.relax_max_steps / (double)e0.relax_max_steps, r_step = AM_REF_DT_FRAC / c.step;
+    const double m_cycles = (double)d->eval.cycles / (double)e0.cycles, m_period = c.period / 500.0;
+    const char* name;
+    if (c.relaxations * c.relax >= c.move)
+        name = r_count >= r_step ? "relax_max_steps" : d->eval.dt_search ? "dt_search" : "dt_frac";
+    else if (d->env.period_s > AM_P(0) && period_steps >= 1e7) /* a period in seconds at its most: the cycles are what was asked */
+        name = d->eval.cycles > e0.cycles ? "cycles" : "period_s";
+    else
+        name = m_cycles >= m_period ? "cycles" : d->env.period_s > AM_P(0) ? "period_s" : "period_steps";
+    *key = key_index(name);
+    am_evo_key_value(d, *key, v, sizeof v);
+    return am_fail(err, errsz, AM_ERR_RANGE, "%s = %s: %s", name, v, why);
 }
 
 am_status am_evo_check(const am_evo_def* d, char* err, int errsz)

@@ -27,6 +27,9 @@ am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, a
 {
     am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, errsz);
     if (st != AM_OK) return st;
+    /* the budget at this body's period (am_evo_check_key took a period in seconds at its most) */
+    int key;
+    if ((st = am_evo_check_budget(d, (double)w->model.env.period_steps, &key, err, errsz)) != AM_OK) return st;
     am_eval_def ev = d->eval;
     ev.record = rec;
     am_evaluate(&w->model, &w->state, &ev, out);

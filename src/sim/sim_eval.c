@@ -486,11 +486,55 @@ static am_real settle_step(const am_model* m, const am_eval_def* def, am_real dt
     return d > dt ? d : dt;
 }
 
+double am_eval_max_steps(const am_env* env, const am_eval_def* def, double period_steps, am_eval_cost* cost)
+{
+    am_eval_cost c;
+    /* am_dt_search: at most 6 coarse and 9 fine candidates of 100 steps each */
+    c.search = def->dt_search ? 1500.0 : 0.0;
+    c.step = def->dt_search ? AM_DT_SEARCH_MIN : AM_PARAM_TO_DOUBLE(env->dt_frac);
+    if (!(c.step > 0)) c.step = 1e-300; /* check_env refuses it; the bound stays defined */
+    /* settle_step: a pseudo-step above the run's step may fail and the relaxation be done again
+     * (a recorded evaluation's first, unrecorded try is the recorded one: it fails or not alike) */
+    const double settle = AM_PARAM_TO_DOUBLE(def->relax_dt_frac);
+    c.relaxations = settle > 0 && (def->dt_search || settle >= c.step) ? 2 : 1;
+    /* am_steps_at: counts of the default step scaled to the step, rounded (up here) */
+    const double n = (double)def->relax_max_steps;
+    const int at_ref = !def->dt_search && env->dt_frac == AM_P(AM_REF_DT_FRAC); /* the counts as given */
+    c.relax = n > 0 ? at_ref ? n : fmax(1.0, ceil(n * AM_REF_DT_FRAC / c.step)) : 0.0;
+    /* a period in seconds is period_steps of env's step, more of a smaller searched step */
+    c.period = period_steps;
+    if (def->dt_search && env->period_s > AM_P(0))
+        c.period = fmin(1e7, ceil(period_steps * AM_PARAM_TO_DOUBLE(env->dt_frac) / c.step));
+    c.move = (double)(def->cycles > 0 ? def->cycles : 0) * c.period;
+    c.total = c.search + c.relaxations * c.relax + c.move;
+    if (cost) *cost = c;
+    return c.total;
+}
+
+am_status am_eval_check(const am_env* env, const am_eval_def* def, double period_steps, char* err, int errsz)
+{
+    am_eval_cost c;
+    if (am_eval_max_steps(env, def, period_steps, &c) <= (double)AM_EVAL_MAX_STEPS) return AM_OK;
+    return am_fail(err, errsz, AM_ERR_RANGE,
+                   "up to %.3g steps an evaluation (%s%d relaxation%s of %.3g: relax_max_steps %ld at %s%.3g dt_rec; %d cycles of "
+                   "%.3g), over the budget of %.0e (docs/physics.md)",
+                   c.total, c.search > 0 ? "the search, " : "", c.relaxations, c.relaxations > 1 ? "s" : "", c.relax,
+                   def->relax_max_steps, def->dt_search ? "a searched step down to " : "", c.step, def->cycles, c.period,
+                   (double)AM_EVAL_MAX_STEPS);
+}
+
 void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
 {
     memset(out, 0, sizeof *out);
     out->voxels = m->nv;
     out->links = m->links;
+    if (am_eval_max_steps(&m->env, def, (double)m->env.period_steps, NULL) > (double)AM_EVAL_MAX_STEPS) {
+        /* over the budget: not run (am_eval_check says why) */
+        out->diverged = 1;
+        out->fitness = AM_NO_SCORE;
+        out->period_steps = m->env.period_steps;
+        return;
+    }
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
     if (def->dt_search) {

@@ -86,7 +86,7 @@ static am_status check_env(const am_env* e, char* err, int errsz)
 {
     if (!(e->gravity >= AM_P(0)) || !am_param_finite(e->gravity))
         return am_fail(err, errsz, AM_ERR_RANGE, "gravity must be >= 0 m/s^2");
-    if (e->period_steps < 1) return am_fail(err, errsz, AM_ERR_RANGE, "period_steps must be >= 1");
+    if (e->period_steps < 2) return am_fail(err, errsz, AM_ERR_RANGE, "period_steps must be >= 2");
     if (!(e->period_s >= AM_P(0)) || !am_param_finite(e->period_s)) return am_fail(err, errsz, AM_ERR_RANGE, "period_s must be >= 0 s");
     if (!(e->dt_frac > AM_P(0)) || !am_param_finite(e->dt_frac))
         return am_fail(err, errsz, AM_ERR_RANGE, "dt_frac must be positive");
@@ -412,8 +412,9 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     if (env->period_s > AM_P(0)) {
         /* the period in seconds as steps of the model's step */
         const double dt = am_dt_si(m, env->dt_frac), k = (double)env->period_s / dt;
-        if (!(k <= 1e7))
-            return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (at most 10^7)", (double)env->period_s, k, dt);
+        if (!(k >= 1.5 && k <= 1e7)) /* rounded: period_steps' range, 2 to 10^7 */
+            return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (a period takes 2 to 10^7 steps)",
+                           (double)env->period_s, k, dt);
         m->env.period_steps = am_period_steps(m, env, AM_MUL(AM_PV(env->dt_frac, 1.0), m->dt_rec));
     }
     return AM_OK;
@@ -423,7 +424,7 @@ int am_period_steps(const am_model* m, const am_env* env, am_real dt)
 {
     if (!(env->period_s > AM_P(0))) return env->period_steps;
     const double k = (double)env->period_s / am_to_si(m, dt, AM_DIM_TIME);
-    return !(k >= 1.5) ? 1 : k >= 1e7 ? 10000000 : (int)floor(k + 0.5);
+    return !(k >= 1.5) ? 2 : k >= 1e7 ? 10000000 : (int)floor(k + 0.5);
 }
 
 long am_steps_at(const am_model* m, const am_state* s, long n)
