@@ -315,8 +315,8 @@ static void test_vxa_voxcad_conventions(void)
     CHECK(e->gravity == AM_P(9.81) && e->floor == 1 && e->collisions == 0 && e->cte_mode == AM_CTE_LINEAR, "gravity, floor, cte");
     CHECK(e->temp_amplitude == AM_P(14) && e->temp_base == AM_P(0) && e->dt_frac == AM_P(0.2), "amplitude %g", (double)e->temp_amplitude);
     CHECK(info_a.temp_period == 0.025 && !info_a.period_steps_given, "period %g", info_a.temp_period);
-    CHECK(am_vxa_period_steps(info_a.temp_period, 5e-5) == 500 && am_vxa_period_steps(1e-9, 1e-3) == 1 &&
-              am_vxa_period_steps(1, 0) == 1 && am_vxa_period_steps(1e12, 1e-3) == 10000000,
+    CHECK(am_vxa_period_steps(info_a.temp_period, 5e-5) == 500 && am_vxa_period_steps(1e-9, 1e-3) == 2 &&
+              am_vxa_period_steps(1, 0) == 2 && am_vxa_period_steps(1e12, 1e-3) == 10000000,
           "period in steps");
     /* BASE64 layers: bytes 1 2 3, then 0 1 0 */
     CHECK(lat_a.nx == 3 && lat_a.ny == 1 && lat_a.nz == 2 && lat_a.voxel_size == AM_P(0.001), "size");
@@ -488,7 +488,28 @@ static void test_vxa_errors(void)
     expect_vxa(vxa(0, mats, 0, 0), AM_ERR_CAPACITY, want);
     /* simulator and environment */
     expect_vxa(vxa("<Simulator><Integration><DtFrac>0</DtFrac></Integration></Simulator>", 0, 0, 0), AM_ERR_RANGE,
-               "t.vxa:2: <DtFrac> 0 must be in (0, 100]");
+               "t.vxa:2: <DtFrac> 0 must be in [1e-06, 10] (the key dt_frac's range)");
+    /* the key dt_frac's range, in <Simulator> and in <Amorph> alike (issue 46: 1e-20 ran for ever) */
+    expect_vxa(vxa("<Simulator><Integration><DtFrac>1e-20</DtFrac></Integration></Simulator>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DtFrac> 9.99999968e-21 must be in [1e-06, 10] (the key dt_frac's range)");
+    expect_vxa(vxa("<Simulator><Integration><DtFrac>50</DtFrac></Integration></Simulator>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DtFrac> 50 must be in [1e-06, 10] (the key dt_frac's range)");
+    expect_vxa(vxa("<Amorph Version=\"1\"><DtFrac>1e-7</DtFrac></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <DtFrac> 1.00000001e-07 must be in [1e-06, 10] (the key dt_frac's range)");
+    /* the lines of the elements that set a key's value, for messages about the setting */
+    expect_vxa(vxa("<Simulator><Integration><DtFrac>1e-6</DtFrac></Integration></Simulator>\n<Environment><Thermal>"
+                   "<TempEnabled>1</TempEnabled><VaryTempEnabled>1</VaryTempEnabled>\n<TempPeriod>0.5</TempPeriod></Thermal>"
+                   "</Environment>\n<Amorph Version=\"1\"><Evaluation><cycles>7</cycles></Evaluation></Amorph>",
+                   0, 0, 0),
+               AM_OK, "");
+    int lines[3] = {-1, -1, -1};
+    for (int i = 0; i < am_evo_key_count(); i++) {
+        if (!strcmp(am_evo_key_name(i), "dt_frac")) lines[0] = info_a.key_line[i];
+        if (!strcmp(am_evo_key_name(i), "period_s")) lines[1] = info_a.key_line[i];
+        if (!strcmp(am_evo_key_name(i), "cycles")) lines[2] = info_a.key_line[i];
+    }
+    CHECK(lines[0] == 2 && lines[1] == 4 && lines[2] == 5 && info_a.env.dt_frac == AM_P(1e-6) && info_a.eval.cycles == 7,
+          "key lines dt_frac %d period_s %d cycles %d (want 2, 4, 5)", lines[0], lines[1], lines[2]);
     expect_vxa(vxa("<Simulator><Damping><BondDampingZ>-1</BondDampingZ></Damping></Simulator>", 0, 0, 0), AM_ERR_RANGE,
                "t.vxa:2: <BondDampingZ> -1 must be 0 or more");
     expect_vxa(vxa("<Simulator><Collisions><SelfColEnabled>yes</SelfColEnabled></Collisions></Simulator>", 0, 0, 0), AM_ERR_PARSE,

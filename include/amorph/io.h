@@ -396,6 +396,11 @@ typedef struct am_vxa_info {
     int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
                                 converts temp_period with am_vxa_period_steps once dt is known */
     am_eval_def eval;        /* how the robot is evaluated: <Amorph>'s <Evaluation>, else am_default_eval() */
+    int key_line[AM_EVO_KEY_MAX]; /* the line of the element that set each configuration key's value (by
+                                     the key's index, am_evo_key_name: <DtFrac> dt_frac, <TempPeriod>
+                                     period_s, <PeriodSteps> period_steps, <Evaluation>'s elements theirs);
+                                     0 where the file set none */
+    unsigned char key_vxd[AM_EVO_KEY_MAX]; /* 1 where that line is the VXD file's, not the base's */
     am_layers layers;        /* per-cell layers beyond materials: evosoro's <PhaseOffset>, the boundary
                                 conditions' fixed cells and forces (docs/vxa.md); build the model with
                                 am_model_build_layers */
@@ -475,7 +480,7 @@ AM_API am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, lo
 #define AM_VXA_TEXT_MAX (AM_MAX_MATERIALS * 2048L + AM_MAX_CELLS * 36L + AM_MAX_DIM * 128L + AM_VXA_MAX_BC_VOXELS * 640L + 8192L)
 
 /* the actuation period in steps for a period in seconds and a time step: the nearest whole
- * number, at least 1, at most 10^7 (the configuration's largest period_steps) */
+ * number, at least 2, at most 10^7 (the range of the configuration's period_steps) */
 AM_API int am_vxa_period_steps(double period_s, double dt);
 
 /* ==== the run folder of amorph evolve and the experiment folder of amorph experiment

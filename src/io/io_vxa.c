@@ -94,6 +94,16 @@ static am_status verr(const vctx* c, int n, am_status code, const char* fmt, ...
     return code;
 }
 
+/* element n set the configuration key's value: its line, for messages about the setting */
+static void note_key(const vctx* c, int n, const char* key)
+{
+    for (int i = 0; i < am_evo_key_count() && i < AM_EVO_KEY_MAX; i++)
+        if (!strcmp(am_evo_key_name(i), key)) {
+            c->info->key_line[i] = (int)N(c, n)->line;
+            c->info->key_vxd[i] = (unsigned char)(n >= VXD_BIAS);
+        }
+}
+
 /* appends "fname:line: warning: message\n" to the info's warning text while it has room */
 static void warn(vctx* c, int n, const char* fmt, ...)
 {
@@ -874,7 +884,8 @@ static am_status read_simulator(vctx* c, int n, am_lattice* lat)
              * of two below where the seed's sphere diverges (docs/physics.md), so a larger fraction
              * keeps the default */
             am_param f = AM_P(0);
-            if ((st = real_in(c, it[1], &f, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
+            if ((st = real_in(c, it[1], &f, (double)(am_param)1e-6, 0, 10, "must be in [1e-06, 10] (the key dt_frac's range)")) != AM_OK) return st;
+            note_key(c, it[1], "dt_frac");
             if (f > env->dt_frac)
                 warn(c, it[1], "<DtFrac> %g is above amorph's default step, kept with a margin below its stability limit: %g "
                                "used (amorph sim --dt-frac overrides)", (double)f, (double)env->dt_frac);
@@ -1086,6 +1097,7 @@ static am_status read_environment(vctx* c, int n, const am_lattice* lat)
                 return verr(c, it[5] >= 0 ? it[5] : at[4], AM_ERR_RANGE, "<TempPeriod> %.9g is too large (at most 10000 s)", period);
             env->temp_amplitude = (am_param)amp;
             c->info->temp_period = period;
+            note_key(c, it[5] >= 0 ? it[5] : at[4], "period_s");
         } else if (enabled) {
             env->temp_base = (am_param)amp; /* a constant temperature TempBase + TempAmplitude */
         }
@@ -1114,6 +1126,7 @@ static am_status read_evaluation(vctx* c, int n)
         if ((st = text_of(c, at[i], v, sizeof v, NULL)) != AM_OK) return st;
         if (am_evo_set_over(&d, tags[i], v, &mat, why, sizeof why) != AM_OK)
             return verr(c, at[i], AM_ERR_RANGE, "<%s> in <Evaluation>: %s", tags[i], why);
+        note_key(c, at[i], tags[i]);
     }
     c->info->eval = d.eval;
     return AM_OK;
@@ -1149,12 +1162,15 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
         if ((st = int_of(c, at[1], 2, 10000000L, &v)) != AM_OK) return st;
         env->period_steps = (int)v;
         c->info->period_steps_given = 1;
+        note_key(c, at[1], "period_steps");
     }
     if (at[2] >= 0 && (st = real_of(c, at[2], &env->temp_base)) != AM_OK) return st;
     if (at[3] >= 0 && (st = real_in(c, at[3], &env->lift, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
     if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
-    if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, 0, 1, 100, "must be in (0, 100]")) != AM_OK) return st;
+    if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, (double)(am_param)1e-6, 0, 10, "must be in [1e-06, 10] (the key dt_frac's range)")) != AM_OK)
+        return st;
+    if (at[6] >= 0) note_key(c, at[6], "dt_frac");
     for (int k = first_child(c, n); k >= 0; k = next_sib(c, k)) {
         if (!is(c, k, "Material")) continue;
         char idv[VXA_VALUE_MAX] = "";
@@ -1442,7 +1458,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
 int am_vxa_period_steps(double period_s, double dt)
 {
     double k = dt > 0 ? period_s / dt : 0;
-    if (!(k >= 1)) return 1;
+    if (!(k >= 1.5)) return 2; /* the configuration's smallest period_steps */
     if (k >= 1e7) return 10000000; /* the configuration's largest period_steps */
     return (int)floor(k + 0.5);
 }
