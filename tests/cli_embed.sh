@@ -109,6 +109,22 @@ PY
     printf '{"id": 1, "lattice": "a\\q"}\n' >"$W/bad8.jsonl"
     expect_fail 2 "stdin:1: column [0-9]+: an unknown escape" "$AMORPH" eval <"$W/bad8.jsonl"
     expect_fail 2 "eval: unknown option '--bogus'" "$AMORPH" eval --bogus </dev/null
+    # issue 46: one bound on every evaluation (10^9 steps): a line over it is refused when it is read,
+    # before any robot of its batch runs, naming its line and the setting (timeout: the builds before
+    # ran it for ever)
+    printf '{"id": 1, "genome": %s}\n{"id": 2, "genome": %s, "settings": {"cycles": "100000", "period_steps": "10000000"}}\n' "$g" "$g" >"$W/long1.jsonl"
+    expect_fail 2 '^amorph: eval: stdin:2: settings: period_steps = 10000000: up to 1e\+12 steps an evaluation .*over the budget of 1e\+09' \
+        timeout -k 5 60 "$AMORPH" eval <"$W/long1.jsonl"
+    check "no robot of the refused line's batch was evaluated" test ! -s "$TMPD/out"
+    printf '{"id": 1, "genome": %s, "settings": {"relax_max_steps": "100000000"}}\n' "$g" >"$W/long2.jsonl"
+    expect_fail 2 '^amorph: eval: stdin:1: --dt_frac = 1e-06: up to .* over the budget' \
+        timeout -k 5 60 "$AMORPH" eval --dt_frac 1e-6 --settle_speed 0 <"$W/long2.jsonl"
+    # a period in seconds, at the body's own step: 2 to 10^7 steps, and within the budget
+    printf '{"id": 1, "genome": %s, "settings": {"period_s": "1e-9"}}\n' "$g" >"$W/long3.jsonl"
+    expect_fail 2 '^amorph: eval: stdin:1: period_s = 1e-09 s is .* steps .*\(a period takes 2 to 10\^7 steps\)$' \
+        timeout -k 5 60 "$AMORPH" eval <"$W/long3.jsonl"
+    printf '{"id": 1, "genome": %s, "settings": {"period_s": "20", "cycles": "10000"}}\n' "$g" >"$W/long4.jsonl"
+    expect_fail 2 '^amorph: eval: stdin:1: cycles = 10000: up to .* over the budget' timeout -k 5 60 "$AMORPH" eval <"$W/long4.jsonl"
 else
     echo "cli_embed: no python3: the eval, ctypes and pipe checks skipped"
 fi

@@ -445,4 +445,17 @@ best_row=$(awk -F, 'NR > 1 && $10 > b { b = $10 } END { printf "%.9g", b }' "$TM
 check "sustained run: evals.csv's best fitness ($best_row) is the best's sustained travel ($sus)" \
     awk -v a="$best_row" -v b="$sus" 'BEGIN { d = a - b; exit !(d < 1e-12 && d > -1e-12) }'
 
+# issue 46: one bound on every evaluation (10^9 steps, docs/physics.md): a configuration over it is
+# refused before the run starts, naming the file and line or the flag (timeout: the builds before
+# started the run, whose first evaluation took 10^12 steps)
+expect_fail 2 "^amorph: tests/data/hostile/cycles_period.cfg:3: period_steps = 10000000: up to 1e\+12 steps an evaluation .*over the budget of 1e\+09" \
+    timeout -k 5 60 "$AMORPH" evolve --config tests/data/hostile/cycles_period.cfg --population 2 --evaluations 2 --out "$TMPD/overbudget" --quiet
+check "a run over the budget makes no folder" [ ! -e "$TMPD/overbudget" ]
+expect_fail 2 "^amorph: evolve: dt_frac = 1e-06: up to 7.2e\+10 steps an evaluation" \
+    timeout -k 5 60 "$AMORPH" evolve --dt_frac 1e-6 --population 2 --evaluations 2 --out "$TMPD/overbudget" --quiet
+expect_fail 2 "^amorph: evolve: cycles = 100000: up to .* over the budget" \
+    timeout -k 5 60 "$AMORPH" evolve --cycles 100000 --period_s 0.02 --population 2 --evaluations 2 --out "$TMPD/overbudget" --quiet
+# the largest realistic settings stay inside: 30-cycle sustained scoring, the dynamic experiment's period
+expect_ok "$AMORPH" evolve --print-config --score sustained --cycles 30 --period_steps 250
+
 summary tests/cli_evolve.sh

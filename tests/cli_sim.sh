@@ -103,17 +103,17 @@ expect_ok "$AMORPH" sim --scene cube:3 --cycles 1 --dt 2e-5 --json
 check "--dt 2e-5 not used: $(head -c 300 "$TMPD/out")" awk -v d="$(field dt "$TMPD/out")" 'BEGIN { exit !(d > 1.99e-5 && d < 2.01e-5) }'
 
 # divergence is reported, not a crash: exit 0, diverged 1, fitness -1
-expect_ok "$AMORPH" sim --scene cube:4 --dt 1 --json
-check "--dt 1 should print \"diverged\": 1, got: $(head -c 300 "$TMPD/out")" grep -qE '"diverged": *1[,}]' "$TMPD/out"
-check "--dt 1 should give fitness -1, got $(field fitness "$TMPD/out")" awk -v f="$(field fitness "$TMPD/out")" 'BEGIN { exit !(f == -1) }'
-check "--dt 1 diverged: settled should be 0: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
-check "--dt 1: JSON with nan or inf: $(head -c 600 "$TMPD/out")" sh -c "! grep -qiE 'nan|inf' '$TMPD/out'"
-check "--dt 1: gait should be diverged: $(head -c 600 "$TMPD/out")" grep -qE '"gait": "diverged"' "$TMPD/out"
+expect_ok "$AMORPH" sim --scene cube:4 --dt 5e-4 --json
+check "--dt 5e-4 should print \"diverged\": 1, got: $(head -c 300 "$TMPD/out")" grep -qE '"diverged": *1[,}]' "$TMPD/out"
+check "--dt 5e-4 should give fitness -1, got $(field fitness "$TMPD/out")" awk -v f="$(field fitness "$TMPD/out")" 'BEGIN { exit !(f == -1) }'
+check "--dt 5e-4 diverged: settled should be 0: $(head -c 300 "$TMPD/out")" [ "$(field settled "$TMPD/out")" = 0 ]
+check "--dt 5e-4: JSON with nan or inf: $(head -c 600 "$TMPD/out")" sh -c "! grep -qiE 'nan|inf' '$TMPD/out'"
+check "--dt 5e-4: gait should be diverged: $(head -c 600 "$TMPD/out")" grep -qE '"gait": "diverged"' "$TMPD/out"
 # and said once on stderr (diverged, not also "did not settle"), beside the note that a step this
-# long makes the 500-step period 500 s
-check "--dt 1: want one warning, got $(grep -c warning "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(grep -c warning "$TMPD/err")" -eq 1 ]
-check "--dt 1: warning: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: sim: warning: cube:4 diverged at step [0-9]+, in the relaxation \(fitness -1\)$' "$TMPD/err"
-check "--dt 1: note: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: note: at this step the actuation period is 500 steps = 500 s, ' "$TMPD/err"
+# long (9.9 dt_rec, near the top of dt_frac's range) makes the 500-step period 0.25 s
+check "--dt 5e-4: want one warning, got $(grep -c warning "$TMPD/err"): $(head -c 300 "$TMPD/err")" [ "$(grep -c warning "$TMPD/err")" -eq 1 ]
+check "--dt 5e-4: warning: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: sim: warning: cube:4 diverged at step [0-9]+, in the relaxation \(fitness -1\)$' "$TMPD/err"
+check "--dt 5e-4: note: $(head -c 300 "$TMPD/err")" grep -qE '^amorph: note: at this step the actuation period is 500 steps = 0.25 s, ' "$TMPD/err"
 
 # the period in seconds (docs/evolve.md): --dt_frac alone keeps 500 steps and says that the period
 # changed; --period_s holds it, and the relaxation's step counts scale with the step by themselves
@@ -137,7 +137,31 @@ check "--period_s: travel $(field travel "$TMPD/out") at 0.3, $(field travel "$T
 "$AMORPH" sim --scene halfbar:6 --cycles 1 --period_s 0.02265 --period_steps 300 --json >"$TMPD/out" 2>/dev/null
 check "--period_steps after --period_s: $(field period_steps "$TMPD/out")" [ "$(field period_steps "$TMPD/out")" = 300 ]
 expect_fail 2 "^amorph: sim: --period_s = '-1': expected a number in \[0, 10000\]$" "$AMORPH" sim --scene cube:3 --period_s -1
-expect_fail 2 "period_s = 10000 s is .* steps of .* s \(at most 10\^7\)" "$AMORPH" sim --scene cube:3 --period_s 10000
+expect_fail 2 "^amorph: --period_s = 10000 s is .* steps of .* s \(a period takes 2 to 10\^7 steps\)$" "$AMORPH" sim --scene cube:3 --period_s 10000
+# issue 46: a period of 2 to 10^7 steps however it is given, and one bound on every evaluation
+# (10^9 steps, docs/physics.md), refused before any step in one line that names the flag (timeout:
+# the builds before ran these for ever)
+expect_fail 2 "^amorph: --period_s = 1e-09 s is .* steps of .* s \(a period takes 2 to 10\^7 steps\)$" \
+    timeout -k 5 60 "$AMORPH" sim --scene cube:3 --period_s 1e-9
+expect_fail 2 "^amorph: --period_steps = 10000000: up to 1e\+12 steps an evaluation \(2 relaxations of 4e\+04: relax_max_steps 40000 at 0.9 dt_rec; 100000 cycles of 1e\+07\), over the budget of 1e\+09 \(docs/physics.md\)$" \
+    timeout -k 5 60 "$AMORPH" sim --scene cube:2 --cycles 100000 --period_steps 10000000
+expect_fail 2 "^amorph: --dt_frac = 1e-06: up to 1.8e\+14 steps an evaluation .*relax_max_steps 100000000 at 1e-06 dt_rec" \
+    timeout -k 5 60 "$AMORPH" sim --scene cube:2 --dt_frac 1e-6 --relax_max_steps 100000000 --settle_speed 0
+expect_fail 2 "^amorph: --dt 1e-12: is .* of this robot's dt_rec \(.* s\), outside dt_frac's range \[1e-06, 10\]$" \
+    timeout -k 5 60 "$AMORPH" sim --scene cube:2 --dt 1e-12
+expect_fail 2 "^amorph: --dt_search = on: up to .* steps an evaluation \(the search, 2 relaxations .* a searched step down to 9.5e-05 dt_rec" \
+    timeout -k 5 60 "$AMORPH" sim --scene cube:2 --dt-search --relax_max_steps 1000000
+expect_fail 2 "^amorph: render: --period_steps = 10000000: up to 1e\+12 steps an evaluation" \
+    timeout -k 5 60 "$AMORPH" render --scene cube:2 --cycles 100000 --period_steps 10000000 --out "$TMPD/long.png"
+check "a refused render writes no picture" [ ! -e "$TMPD/long.png" ]
+expect_fail 2 "bench: --dt-frac needs a number in \[1e-6, 10\] \(the key dt_frac's range\)" "$AMORPH" bench --dt-frac 50
+# a run folder's config.txt over the budget: its line named
+if [ -d results/representations/gmx-1 ]; then
+    cp -r results/representations/gmx-1 "$TMPD/longrun"
+    sed -i 's/^cycles = 10$/cycles = 100000/; s/^period_steps = 500$/period_steps = 10000000/' "$TMPD/longrun/config.txt"
+    expect_fail 2 "^amorph: $TMPD/longrun/config.txt:10: period_steps = 10000000: up to 1e\+12 steps an evaluation \(1 relaxation of" \
+        timeout -k 5 60 "$AMORPH" sim "$TMPD/longrun"
+fi
 # an evolution whose relaxation cannot hold the release window would score nothing: refused
 expect_fail 2 "^amorph: evolve: relax_max_steps = 300 leaves no room to settle: the release window \(release_steps = 500\) and 50 calm steps need 550" \
     "$AMORPH" evolve --workspace 4 --population 2 --evaluations 2 --relax-max-steps 300 --out "$TMPD/nosettle" --quiet

@@ -244,14 +244,14 @@ else ko "a 2 MiB VXD: $(head -c 300 "$D/vx5.err")"; fi
 # are refused with the file and line, never simulated (timeout: an old build ran such a period for days)
 expect_ok "$AMORPH" export --scene cube:2 --vxa "$D/c.vxa"
 sed 's#<PeriodSteps>[^<]*</PeriodSteps>#<PeriodSteps>1000000000</PeriodSteps>#' "$D/c.vxa" >"$D/p9.vxa"
-expect_fail 2 "^amorph: $D/p9.vxa:[0-9]+: <PeriodSteps> 1000000000 is outside 2..10000000$" timeout 60 "$AMORPH" sim "$D/p9.vxa" --cycles 1
+expect_fail 2 "^amorph: $D/p9.vxa:[0-9]+: <PeriodSteps> 1000000000 is outside 2..10000000$" timeout -k 5 60 "$AMORPH" sim "$D/p9.vxa" --cycles 1
 sed 's#<TempPeriod>[^<]*</TempPeriod>#<TempPeriod>1e30</TempPeriod>#' tests/data/evosoro_phase.vxa >"$D/t30.vxa"
-expect_fail 2 "^amorph: $D/t30.vxa:43: <TempPeriod> 1e\+30 is too large \(at most 10000 s\)$" timeout 60 "$AMORPH" sim "$D/t30.vxa" --cycles 1
+expect_fail 2 "^amorph: $D/t30.vxa:43: <TempPeriod> 1e\+30 is too large \(at most 10000 s\)$" timeout -k 5 60 "$AMORPH" sim "$D/t30.vxa" --cycles 1
 sed 's#<Lattice_Dim>[^<]*</Lattice_Dim>#<Lattice_Dim>1e-45</Lattice_Dim>#' "$D/c.vxa" >"$D/sub.vxa"
-expect_fail 2 "^amorph: $D/sub.vxa:[0-9]+: <Lattice_Dim> .* is too small \(at least 1e-05 m\)$" timeout 60 "$AMORPH" sim "$D/sub.vxa" --cycles 1
+expect_fail 2 "^amorph: $D/sub.vxa:[0-9]+: <Lattice_Dim> .* is too small \(at least 1e-05 m\)$" timeout -k 5 60 "$AMORPH" sim "$D/sub.vxa" --cycles 1
 expect_ok "$AMORPH" export --scene cube:2 --lattice "$D/c.lattice"
 sed 's/^voxel_size .*/voxel_size 1e-45/' "$D/c.lattice" >"$D/sub.lattice"
-expect_fail 2 "^amorph: $D/sub.lattice:[0-9]+: voxel_size 1e-45 m is outside 1e-05..10$" timeout 60 "$AMORPH" sim "$D/sub.lattice" --cycles 1
+expect_fail 2 "^amorph: $D/sub.lattice:[0-9]+: voxel_size 1e-45 m is outside 1e-05..10$" timeout -k 5 60 "$AMORPH" sim "$D/sub.lattice" --cycles 1
 sed 's#CDATA\[0, 0.25, #CDATA[0, 0.25000000000000000000000000000000000000000000000000000000000001, #' tests/data/evosoro_phase.vxa >"$D/long.vxa"
 if grep -q '0.25000000000000000000000000000000000000000000000000000000000001' "$D/long.vxa"; then ok; else ko "the long phase was not planted"; fi
 expect_fail 2 "^amorph: $D/long.vxa:80: <PhaseOffset> layer 0: value 1 is longer than 63 characters$" "$AMORPH" sim "$D/long.vxa" --cycles 1
@@ -380,5 +380,37 @@ check "the exported tensile bar: $(grep -c '<DisplaceX>0.0001</DisplaceX>' "$D/t
 # a displacement past 50 voxel edges: refused with its line
 expect_fail 2 "^amorph: tests/data/hostile/displace_60_edges.vxa:39: <DisplaceX> 0.6 m is more than 50 voxel edges \(Lattice_Dim 0.01 m\)$" \
     "$AMORPH" sim tests/data/hostile/displace_60_edges.vxa
+# issue 46: a VXA file alone cannot make an evaluation unbounded. <DtFrac> takes the key dt_frac's
+# range, a period is 2 to 10^7 steps, and an evaluation is at most 10^9 steps (docs/physics.md),
+# each refused before any step in one line naming the file and the line of the element to blame
+# (the file's warnings aside; timeout: the builds before ran the first and the last for ever)
+expect_refused() {
+    code=$1; pat=$2; shift 2
+    "$@" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+    grep -v ': warning: ' "$TMPD/err" >"$TMPD/err1"
+    if [ $rc -eq "$code" ] && [ "$(wc -l <"$TMPD/err1")" -eq 1 ] && grep -qE -- "$pat" "$TMPD/err1"; then ok
+    else ko "$* -> exit $rc (want $code), stderr: $(head -c 300 "$TMPD/err1") (want /$pat/, one line)"; fi
+}
+H=tests/data/hostile
+expect_refused 2 "^amorph: $H/dt_frac_1e-20.vxa:6: <DtFrac> 9.99999968e-21 must be in \[1e-06, 10\] \(the key dt_frac's range\)$" \
+    timeout -k 5 60 "$AMORPH" sim "$H/dt_frac_1e-20.vxa"
+expect_refused 2 "^amorph: $H/dt_frac_1e-6.vxa:6: period_s = 0.025 s is 4.97e\+08 steps of .* s \(a period takes 2 to 10\^7 steps\)$" \
+    timeout -k 5 60 "$AMORPH" sim "$H/dt_frac_1e-6.vxa"
+expect_refused 2 "^amorph: $H/temp_period_1e-9.vxa:42: period_s = 1e-09 s is 2.21e-05 steps of .* s \(a period takes 2 to 10\^7 steps\)$" \
+    timeout -k 5 60 "$AMORPH" sim "$H/temp_period_1e-9.vxa"
+expect_refused 2 "^amorph: $H/dt_frac_1e-5_budget.vxa:6: dt_frac = 1e-05: up to 7.2e\+09 steps an evaluation \(2 relaxations of 3.6e\+09: relax_max_steps 40000 at 1e-05 dt_rec; 10 cycles of 500\), over the budget of 1e\+09" \
+    timeout -k 5 60 "$AMORPH" sim "$H/dt_frac_1e-5_budget.vxa"
+expect_refused 2 "^amorph: $H/cycles_period_budget.vxa:152: period_steps = 10000000: up to 1e\+12 steps an evaluation" \
+    timeout -k 5 60 "$AMORPH" sim "$H/cycles_period_budget.vxa"
+# a flag that puts it back in bounds is taken; one that pushes it over is named
+"$AMORPH" sim "$H/cycles_period_budget.vxa" --period_steps 100 --cycles 1 --relax-max 300 >"$TMPD/out" 2>/dev/null
+check "the file with --period_steps 100: $(head -c 200 "$TMPD/out")" grep -q '^fitness = ' "$TMPD/out"
+expect_refused 2 "^amorph: --relax_max_steps = 100000000: up to .* over the budget" \
+    timeout -k 5 60 "$AMORPH" sim tests/data/voxcad_quadruped_zlib.vxa --dt_frac 0.05 --relax_max_steps 100000000
+# every command that loads a robot: render, export, bench --convergence
+expect_refused 2 "^amorph: render: $H/dt_frac_1e-5_budget.vxa:6: dt_frac = 1e-05: up to" \
+    timeout -k 5 60 "$AMORPH" render "$H/dt_frac_1e-5_budget.vxa" --out "$TMPD/long.png"
+expect_refused 2 "^amorph: bench: $H/dt_frac_1e-5_budget.vxa:6: dt_frac = 1e-05: up to" \
+    timeout -k 5 60 "$AMORPH" bench --convergence --random 0 "$H/dt_frac_1e-5_budget.vxa"
 
 summary cli_vxa.sh

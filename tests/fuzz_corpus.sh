@@ -10,7 +10,10 @@ add() { # add KIND FILE
 }
 # tests/data/hostile: the hostile cases of issue 31 (a period of 10^9 steps, a subnormal cell
 # edge, a 64-character phase, an odd population, the all-zero rng of a resealed checkpoint, a
-# VXD replace path past its buffer), each refused with one line
+# VXD replace path past its buffer), each refused with one line; and those of issue 46, each
+# refused before any step: <DtFrac> 1e-20 with <TempPeriod> 1e-18 (ran for ever), <DtFrac> 1e-6 (a
+# period of 5e8 steps), <TempPeriod> 1e-9 (a period under 2 steps), <DtFrac> 1e-5 and 100,000
+# cycles of 10^7 steps (VXA and config.txt: over the budget of 10^9 steps an evaluation)
 for f in tests/data/*.lattice tests/data/*/*.lattice; do [ -f "$f" ] && add 0 "$f"; done
 for f in tests/data/*.genome; do [ -f "$f" ] && add 1 "$f"; done
 for f in tests/data/*.cfg tests/data/*.conf tests/data/*/*.cfg; do [ -f "$f" ] && add 2 "$f"; done

@@ -355,7 +355,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
             if (!tool_parse_long(v, 1, 64, &n)) return tool_usage_error("bench: --repeat needs a whole number from 1 to 64");
             repeat = (int)n, i++;
         } else if (!strcmp(a, "--dt-frac")) {
-            if (!tool_parse_real(v, 1e-6, 100, &dt_frac)) return tool_usage_error("bench: --dt-frac needs a number in [1e-6, 100]");
+            if (!tool_parse_real(v, 1e-6, 10, &dt_frac)) return tool_usage_error("bench: --dt-frac needs a number in [1e-6, 10] (the key dt_frac's range)");
             i++;
         } else if (!strcmp(a, "--convergence")) {
             return bench_convergence(c, argc, argv, i + 1);

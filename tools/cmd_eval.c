@@ -126,6 +126,25 @@ static int read_settings(tool_json* j, eval_batch* b, eval_item* it)
     return tool_json_expect(j, '}', "to close \"settings\"");
 }
 
+/* the evaluation's budget for the item's settings (the command line's, then its own), before any
+ * robot of the batch is evaluated; a period in seconds is taken at its fewest steps here, and at the
+ * body's own in the evaluation (am_evo_simulate refuses it there, before its first step). NULL or a
+ * message naming the setting's place: "settings: KEY = ..." or "--KEY = ..." */
+static const char* check_budget(const eval_batch* b, const eval_item* it, char* err, int errsz)
+{
+    am_evo_def d = am_default_evo();
+    char why[AM_ERR_MAX];
+    unsigned mat = 0;
+    int key, in_line = 0;
+    for (int s = 0; s < b->nflag; s++) am_evo_set_over(&d, b->flag_key[s], b->flag_val[s], &mat, why, sizeof why);
+    for (int s = 0; s < it->nset; s++) am_evo_set_over(&d, it->key[s], it->val[s], &mat, why, sizeof why);
+    if (am_evo_check_budget(&d, d.env.period_s > AM_P(0) ? 2.0 : (double)d.env.period_steps, &key, why, sizeof why) == AM_OK)
+        return NULL;
+    for (int s = 0; s < it->nset; s++) in_line |= !strcmp(it->key[s], am_evo_key_name(key));
+    snprintf(err, (size_t)errsz, "%s%.200s", in_line ? "settings: " : "--", why);
+    return err;
+}
+
 /* one robot line into the batch's next item */
 static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
 {
@@ -280,6 +299,8 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
         tool_json j;
         tool_json_begin(&j, g_line);
         if (!read_robot(&j, b, it, lineno)) return tool_usage_error("eval: stdin:%d: %s", lineno, j.err);
+        char msg[AM_ERR_MAX];
+        if (check_budget(b, it, msg, sizeof msg)) return tool_usage_error("eval: stdin:%d: %s", lineno, msg);
         it->line = lineno;
         b->n++;
     }

@@ -5,6 +5,60 @@
 #include <stdio.h>
 #include <string.h>
 
+/* where the settings an evaluation's length depends on came from, for messages: a line of the
+ * robot's file (a VXA file's element, a run folder's config.txt), or a flag; nothing for a default.
+ * Those keys only (a board has a few hundred bytes of RAM to spare) */
+static const char* const origin_keys[] = {"dt_frac", "dt_search", "period_s", "period_steps", "cycles", "relax_max_steps"};
+#define ORIGIN_KEYS ((int)(sizeof origin_keys / sizeof origin_keys[0]))
+typedef struct origins {
+    int line[ORIGIN_KEYS];              /* the file's line that set the key (0: none) */
+    unsigned char in_vxd[ORIGIN_KEYS];  /* 1: that line is the VXD file's */
+    unsigned char flag[ORIGIN_KEYS];    /* 1: a flag set it last */
+    const char* file;                   /* the VXA file of those lines, or the run folder */
+    const char* vxd;                    /* the VXD file over it, or NULL */
+    int run;                            /* 1: the lines are the run folder's config.txt's */
+} origins;
+static origins g_origin;
+
+static int key_index(const char* key)
+{
+    for (int i = 0; i < am_evo_key_count() && i < AM_EVO_KEY_MAX; i++)
+        if (!strcmp(am_evo_key_name(i), key)) return i;
+    return -1;
+}
+
+/* the slot of configuration key i in g_origin, or -1 */
+static int origin_slot(int i)
+{
+    const char* name = am_evo_key_name(i);
+    for (int k = 0; name && k < ORIGIN_KEYS; k++)
+        if (!strcmp(origin_keys[k], name)) return k;
+    return -1;
+}
+
+/* the lines of the keys in lines (by key index, AM_EVO_KEY_MAX of them) into g_origin */
+static void origin_lines(const int* lines, const unsigned char* in_vxd)
+{
+    for (int k = 0; k < ORIGIN_KEYS; k++) {
+        const int i = key_index(origin_keys[k]);
+        g_origin.line[k] = i >= 0 ? lines[i] : 0;
+        g_origin.in_vxd[k] = (unsigned char)(i >= 0 && in_vxd ? in_vxd[i] : 0);
+    }
+}
+
+/* "FILE:LINE" or "--KEY" for where key i's value came from, or "" */
+static const char* origin_of(int i, char* buf, int cap)
+{
+    const int k = i >= 0 ? origin_slot(i) : -1;
+    buf[0] = 0;
+    if (k < 0) return buf;
+    if (g_origin.flag[k]) snprintf(buf, (size_t)cap, "--%s", origin_keys[k]);
+    else if (g_origin.line[k] > 0 && g_origin.run) snprintf(buf, (size_t)cap, "%s/" AM_RUN_CONFIG ":%d", g_origin.file, g_origin.line[k]);
+    else if (g_origin.line[k] > 0)
+        snprintf(buf, (size_t)cap, "%s:%d", g_origin.in_vxd[k] && g_origin.vxd ? g_origin.vxd : g_origin.file, g_origin.line[k]);
+    return buf;
+}
+
 /* ---- the option vocabulary ---- */
 
 /* older spellings kept as aliases of the table's keys (after '-' became '_') */
@@ -136,6 +190,9 @@ static am_status load_vxa(const char* text, const char* fname, const char* vxd, 
         fprintf(stderr, "%s: warning: results will differ from the reference simulator: amorph does not simulate %s (warnings above)\n",
                 vxd ? vxd : fname, info.differ);
     *out = &info;
+    g_origin.file = fname;
+    g_origin.vxd = vxd;
+    origin_lines(info.key_line, info.key_vxd);
     return am_vxa_robot(r, &info, err, errsz);
 }
 #endif
@@ -183,9 +240,13 @@ static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, 
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
     am_evo_def d = am_stored_evo(); /* a key config.txt does not name: as the run had it */
     /* a NUL byte ends these texts, as it ended them when they were parsed whole */
+    int lines[AM_EVO_KEY_MAX] = {0};
     snprintf(path, sizeof path, "%s/" AM_RUN_CONFIG, dir);
-    am_status st = tool_read_config(path, &d, 1, err, errsz);
+    am_status st = tool_read_config_lines(path, &d, 1, lines, err, errsz);
     if (st != AM_OK) return st;
+    origin_lines(lines, NULL);
+    g_origin.file = dir;
+    g_origin.run = 1;
     snprintf(path, sizeof path, "%s/" AM_RUN_BEST_GENOME, dir);
     tool_src src;
     st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
@@ -251,6 +312,11 @@ static am_status apply_settings(const tool_robot_args* a, am_robot* r, int* peri
         if (!strcmp(a->key[k], "period_steps")) *period_set = 1;
         if (!strcmp(a->key[k], "cycles")) *keep |= AM_VXA_KEEP_CYCLES;
         if (!strncmp(a->key[k], "relax_m", 7)) *keep |= AM_VXA_KEEP_RELAX;
+        const int slot = origin_slot(key_index(a->key[k]));
+        if (slot >= 0) g_origin.flag[slot] = 1;
+        /* a period in steps replaces one in seconds */
+        const int other = origin_slot(key_index("period_s"));
+        if (!strcmp(a->key[k], "period_steps") && other >= 0) g_origin.flag[other] = 0, g_origin.line[other] = 0;
         am_evo_apply_materials(&d, material, lat); /* in order: a later --cte sees the earlier one's materials */
     }
     r->env = d.env;
@@ -423,6 +489,21 @@ static am_status not_a_robot_folder(const char* dir, char* err, int errsz)
                                            "--scene NAME", dir, config ? "no best.genome yet" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
 }
 
+/* the evaluation's budget (am_evo_check_budget) with the robot's settings as they stand, the period
+ * in steps of its step; the message names where the setting it blames was given */
+static am_status check_budget(const am_robot* r, char* err, int errsz)
+{
+    am_evo_def d = am_default_evo();
+    d.env = r->env;
+    d.eval = r->eval;
+    char why[AM_ERR_MAX], at[TOOL_PATH_MAX + 32];
+    int key;
+    if (am_evo_check_budget(&d, (double)r->env.period_steps, &key, why, sizeof why) == AM_OK) return AM_OK;
+    origin_of(key, at, (int)sizeof at);
+    if (at[0] == '-') return am_fail(err, errsz, AM_ERR_RANGE, "--%s", why); /* "--KEY = VALUE: ..." */
+    return am_fail(err, errsz, AM_ERR_RANGE, "%s%s%s", at, at[0] ? ": " : "", why);
+}
+
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz)
 {
     /* no layers unless a VXA file brings them (the board reads no VXA file and keeps no room) */
@@ -437,6 +518,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #if TOOL_VXA
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
+    memset(&g_origin, 0, sizeof g_origin);
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
     else if (tool_is_run_dir(a->name)) st = load_run(c, a->name, r, err, errsz);
 #if TOOL_VXA
@@ -460,23 +542,45 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     if (one_file) run_note(c, a->name, r);
     const int dt_changed = a->dt_s > 0 || r->env.dt_frac != own.dt_frac;
     const int run_length = vxa && (vxa->stop_type >= 0 || vxa->init_cm_time > 0);
-    if (!dt_changed && !(r->env.period_s > AM_P(0)) && !run_length) return AM_OK;
+    if (!dt_changed && !(r->env.period_s > AM_P(0)) && !run_length) return check_budget(r, err, errsz);
     double dt;
-    st = tool_robot_dt(c, r, &dt, err, errsz);
+    /* the step alone (a period in seconds is checked below, where it can be named) */
+    am_robot stepped = *r;
+    stepped.env.period_s = AM_P(0);
+    st = tool_robot_dt(c, &stepped, &dt, err, errsz);
     if (st != AM_OK) return st;
     /* dt_rec, of the model just built, does not depend on dt_frac */
     const am_model* m = &c->work[0].model;
     const double dt_rec = am_to_si(m, m->dt_rec, AM_DIM_TIME);
     if (a->dt_s > 0) {
-        r->env.dt_frac = AM_PARAM_FROM_DOUBLE(a->dt_s / dt_rec);
+        /* dt_frac's range, however the step is given */
+        const double f = a->dt_s / dt_rec;
+        if (!(f >= 1e-6 && f <= 10))
+            return am_fail(err, errsz, AM_ERR_RANGE, "--dt %g: is %.3g of this robot's dt_rec (%.4g s), outside dt_frac's range [1e-06, 10]",
+                           a->dt_s, f, dt_rec);
+        r->env.dt_frac = AM_PARAM_FROM_DOUBLE(f);
         dt = am_dt_si(m, r->env.dt_frac);
     }
     /* a period in seconds becomes steps of this step (as am_model_build makes it), so that what the
      * commands count in steps (frames, trajectory rows) follows it */
     if (r->env.period_s > AM_P(0)) {
-        if (!((double)r->env.period_s / dt <= 1e7))
-            return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (at most 10^7)", (double)r->env.period_s,
-                           (double)r->env.period_s / dt, dt);
+        const double k = (double)r->env.period_s / dt;
+        if (!(k >= 1.5 && k <= 1e7)) {
+            /* named where the period was given, or the step where the period is in range at the
+             * default step (the step made it too many or too few steps) */
+            char at[TOOL_PATH_MAX + 32];
+            const double k_ref = (double)r->env.period_s / (dt_rec * AM_REF_DT_FRAC);
+            if (k_ref >= 1.5 && k_ref <= 1e7) {
+                if (a->dt_s > 0) snprintf(at, sizeof at, "--dt");
+                else origin_of(key_index("dt_frac"), at, (int)sizeof at);
+            } else {
+                origin_of(key_index("period_s"), at, (int)sizeof at);
+            }
+            /* "--period_s = ...", "--dt: period_s = ...", "FILE:LINE: period_s = ..." */
+            const int flag = !strcmp(at, "--period_s");
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s%speriod_s = %g s is %.3g steps of %.4g s (a period takes 2 to 10^7 steps)",
+                           flag ? "--" : at, flag ? "" : at[0] ? ": " : "", (double)r->env.period_s, k, dt);
+        }
         r->env.period_steps = am_period_steps(m, &r->env, am_from_si(m, dt, AM_DIM_TIME));
     }
     /* a step of another length with the period held in steps changes the experiment: say so */
@@ -495,5 +599,6 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         if (note[0]) fprintf(stderr, "%s: note: the file's run length as amorph's evaluation: %s\n", vxa->stop_file, note);
     }
 #endif
-    return AM_OK;
+    /* last, with the run length as it now is */
+    return check_budget(r, err, errsz);
 }

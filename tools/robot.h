@@ -53,12 +53,15 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
  * settings of a in order: environment and evaluation keys replace the values, materials keys
  * (cte, mu_static, mu_kinetic, voxel_size) change every material of the robot's palette that they
  * apply to (cte only the actuated ones, those of non-zero CTE) and the voxel size; relax_max_steps
- * below relax_min_steps lowers that too. Then seconds become steps: --dt sets env.dt_frac, and a VXA
- * file's period in seconds (unless the file or a setting gave period_steps) becomes period_steps of
- * the resulting step, and a VXA file's run length (VoxCAD's StopCondition, evosoro's InitCmTime)
- * becomes cycles and relax_min_steps unless a setting gave them (am_vxa_stop_settings; one note line
- * on stderr says what it set). A folder that is neither a run folder nor a voxcraft folder is
- * refused with what it lacks. Messages are "file:line: problem" or "KEY = 'VALUE': problem". */
+ * below relax_min_steps lowers that too. Then seconds become steps: --dt sets env.dt_frac (in the key
+ * dt_frac's range), a period in seconds (a VXA file's, unless the file or a setting gave
+ * period_steps) becomes period_steps of the resulting step, 2 to 10^7, and a VXA file's run length
+ * (VoxCAD's StopCondition, evosoro's InitCmTime) becomes cycles and relax_min_steps unless a setting
+ * gave them (am_vxa_stop_settings; one note line on stderr says what it set). Last, the evaluation's
+ * budget (am_evo_check_budget, 10^9 steps). A folder that is neither a run folder nor a voxcraft
+ * folder is refused with what it lacks. Messages are "file:line: problem" or "KEY = 'VALUE':
+ * problem"; those of the period and the budget name where the setting to blame was given
+ * ("FILE:LINE: ..." for a VXA file's element or a run's config.txt line, "--KEY = ..." for a flag). */
 am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat, am_robot* r, char* err, int errsz);
 
 /* the name of the robot's own file, for reports: a's file, the VXD of a VXA file with a VXD over it
@@ -83,7 +86,7 @@ am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, i
     "--floor on|off, --cte_mode volumetric|linear, --fitness horizontal|x|3d, --dt_frac F,\n"            \
     "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
-    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot)\n"                        \
+    "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot, in dt_frac's [1e-6, 10])\n"  \
     "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
     "holding base.vxa and one .vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
