@@ -467,8 +467,22 @@ static void test_vxa_errors(void)
     expect_vxa(vxa(0, MAT("<Density>-1</Density>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <Density> -1 must be greater than 0");
     expect_vxa(vxa(0, MAT("<Poissons_Ratio>0.75</Poissons_Ratio>"), 0, 0), AM_ERR_RANGE,
                "t.vxa:5: <Poissons_Ratio> 0.75 must be in [0, 0.5]");
-    expect_vxa(vxa(0, MAT("<uStatic>-0.5</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> -0.5 must be 0 or more");
-    expect_vxa(vxa(0, MAT("<uStatic>1267650600228229401496703205376</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> 1.2676506e+30 is too large (at most 1e+30)");
+    expect_vxa(vxa(0, MAT("<uStatic>-0.5</uStatic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uStatic> -0.5 must be in [0, 100] (the key mu_static's range)");
+    expect_vxa(vxa(0, MAT("<uStatic>1267650600228229401496703205376</uStatic>"), 0, 0), AM_ERR_RANGE,
+               "t.vxa:5: <uStatic> 1.2676506e+30 must be in [0, 100] (the key mu_static's range)");
+    /* issue 46: one range per quantity, the configuration key's, wherever it is given */
+    expect_vxa(vxa(0, MAT("<uDynamic>101</uDynamic>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <uDynamic> 101 must be in [0, 100] (the key mu_kinetic's range)");
+    expect_vxa(vxa(0, MAT("<CTE>2</CTE>"), 0, 0), AM_ERR_RANGE, "t.vxa:5: <CTE> 2 must be in [-1, 1] (the key cte's range)");
+    expect_vxa(vxa("<Amorph Version=\"1\"><ZetaInternalScale>1001</ZetaInternalScale></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <ZetaInternalScale> 1001 must be in [0, 1000] (the key damping_internal's range)");
+    expect_vxa(vxa("<Amorph Version=\"1\"><ZetaGlobalScale>1e6</ZetaGlobalScale></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <ZetaGlobalScale> 1000000 must be in [0, 1000] (the key damping_global's range)");
+    expect_vxa(vxa("<Amorph Version=\"1\"><TempOffset>-2e4</TempOffset></Amorph>", 0, 0, 0), AM_ERR_RANGE,
+               "t.vxa:2: <TempOffset> -20000 must be in [-10000, 10000] (the key temp_base's range)");
+    expect_vxa(vxa("<Environment><Gravity><GravEnabled>1</GravEnabled><GravAcc>-2000</GravAcc></Gravity></Environment>", 0, 0, 0),
+               AM_ERR_RANGE, "t.vxa:2: <GravAcc> -2000: gravity is at most 1000 m/s^2 (the key gravity's range)");
+    expect_vxa(vxa("<Environment><Thermal><TempEnabled>1</TempEnabled><TempAmplitude>2e4</TempAmplitude></Thermal></Environment>", 0, 0, 0),
+               AM_ERR_RANGE, "t.vxa:2: <Thermal>: the temperature amplitude 20000 is too large (at most 10000, the key amplitude's)");
     /* the cell edge: the configuration's voxel_size range (a subnormal one made NaN scales); 2^-140,
      * a float subnormal, reads and prints alike in every build */
     expect_vxa(vxa(0, 0, "<Lattice><Lattice_Dim>7.1746481373430634031294734590792e-43</Lattice_Dim></Lattice>" SH("2", "1", "1"), 0), AM_ERR_RANGE,

@@ -501,10 +501,12 @@ static am_status read_material(vctx* c, int n, am_material* m, int id)
         warn(c, mt[8], "<Poissons_Ratio> 0.5 (incompressible) is beyond amorph's model: the largest ratio below 0.5 used for "
                        "material %d", id);
     }
-    if (mt[9] >= 0 && (st = real_of(c, mt[9], &m->cte)) != AM_OK) return st;
+    if (mt[9] >= 0 && (st = real_in(c, mt[9], &m->cte, -1, 0, 1, "must be in [-1, 1] (the key cte's range)")) != AM_OK) return st;
     if (mt[10] >= 0 && (st = real_of(c, mt[10], &m->phase)) != AM_OK) return st;
-    if (mt[11] >= 0 && (st = real_in(c, mt[11], &m->mu_static, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
-    if (mt[12] >= 0 && (st = real_in(c, mt[12], &m->mu_kinetic, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (mt[11] >= 0 && (st = real_in(c, mt[11], &m->mu_static, 0, 0, 100, "must be in [0, 100] (the key mu_static's range)")) != AM_OK)
+        return st;
+    if (mt[12] >= 0 && (st = real_in(c, mt[12], &m->mu_kinetic, 0, 0, 100, "must be in [0, 100] (the key mu_kinetic's range)")) != AM_OK)
+        return st;
     if (mt[13] >= 0 && (st = bool_of(c, mt[13], &m->fixed)) != AM_OK) return st; /* voxcraft-sim's fixed material */
     return AM_OK;
 }
@@ -1071,6 +1073,8 @@ static am_status read_environment(vctx* c, int n, const am_lattice* lat)
         if (it[2] >= 0 && (st = bool_of(c, it[2], &env->floor)) != AM_OK) return st;
         if (on && acc > 0)
             return verr(c, it[1], AM_ERR_RANGE, "<GravAcc> %.9g points up: amorph's gravity pulls along -z (GravAcc <= 0)", acc);
+        if (on && !(acc >= -1000))
+            return verr(c, it[1], AM_ERR_RANGE, "<GravAcc> %.9g: gravity is at most 1000 m/s^2 (the key gravity's range)", acc);
         env->gravity = on ? (am_param)-acc : AM_P(0);
     }
     if (at[4] >= 0) {
@@ -1086,7 +1090,9 @@ static am_status read_environment(vctx* c, int n, const am_lattice* lat)
         if (it[4] >= 0 && (st = bool_of(c, it[4], &vary)) != AM_OK) return st;
         if (it[5] >= 0 && (st = double_of(c, it[5], &period)) != AM_OK) return st;
         if (it[1] < 0 && it[2] >= 0) amp = amp_old - base;
-        if (!(fabs(amp) <= 1e30)) return verr(c, at[4], AM_ERR_RANGE, "<Thermal>: the temperature amplitude is too large");
+        /* the key amplitude's bound (a negative amplitude is VoxCAD's, half a period later) */
+        if (!(fabs(amp) <= 1e4))
+            return verr(c, at[4], AM_ERR_RANGE, "<Thermal>: the temperature amplitude %.9g is too large (at most 10000, the key amplitude's)", amp);
         env->temp_base = AM_P(0);
         env->temp_amplitude = AM_P(0);
         if (enabled && vary) {
@@ -1164,10 +1170,13 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
         c->info->period_steps_given = 1;
         note_key(c, at[1], "period_steps");
     }
-    if (at[2] >= 0 && (st = real_of(c, at[2], &env->temp_base)) != AM_OK) return st;
+    if (at[2] >= 0 && (st = real_in(c, at[2], &env->temp_base, -1e4, 0, 1e4, "must be in [-10000, 10000] (the key temp_base's range)")) != AM_OK)
+        return st;
     if (at[3] >= 0 && (st = real_in(c, at[3], &env->lift, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
-    if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
-    if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
+    if (at[4] >= 0 && (st = real_in(c, at[4], &env->zeta_internal_scale, 0, 0, 1000, "must be in [0, 1000] (the key damping_internal's range)")) != AM_OK)
+        return st;
+    if (at[5] >= 0 && (st = real_in(c, at[5], &env->zeta_global_scale, 0, 0, 1000, "must be in [0, 1000] (the key damping_global's range)")) != AM_OK)
+        return st;
     if (at[6] >= 0 && (st = real_in(c, at[6], &env->dt_frac, (double)(am_param)1e-6, 0, 10, "must be in [1e-06, 10] (the key dt_frac's range)")) != AM_OK)
         return st;
     if (at[6] >= 0) note_key(c, at[6], "dt_frac");
@@ -1183,7 +1192,7 @@ static am_status read_amorph(vctx* c, int n, am_lattice* lat)
                         val(idv, qv), lat->palette.count);
         am_material* m = &lat->palette.mat[id - 1];
         if ((st = children(c, k, mtags, 5, mt, NULL)) != AM_OK) return st;
-        if (mt[0] >= 0 && (st = real_of(c, mt[0], &m->cte)) != AM_OK) return st;
+        if (mt[0] >= 0 && (st = real_in(c, mt[0], &m->cte, -1, 0, 1, "must be in [-1, 1] (the key cte's range)")) != AM_OK) return st;
         cte_given[id - 1] |= mt[0] >= 0;
         if (mt[1] >= 0 && (st = real_in(c, mt[1], &m->zeta_internal, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
         if (mt[2] >= 0 && (st = real_in(c, mt[2], &m->zeta_global, 0, 0, 1e30, "must be 0 or more")) != AM_OK) return st;
