@@ -552,11 +552,11 @@ typedef struct am_eval_cost {
  * the period in steps of env's step (env->dt_frac dt_rec), as am_model_build makes env->period_s
  * (pass 10^7, the most, while no model is built and env->period_s > 0); with def->dt_search the
  * searched step is taken at its smallest. Fills *cost when not NULL. */
-double am_eval_max_steps(const am_env* env, const am_eval_def* def, double period_steps, am_eval_cost* cost);
+AM_API double am_eval_max_steps(const am_env* env, const am_eval_def* def, double period_steps, am_eval_cost* cost);
 /* AM_OK when am_eval_max_steps is within AM_EVAL_MAX_STEPS; else AM_ERR_RANGE and a message that
  * gives the figures ("up to ... steps an evaluation (...), over the budget of 1e+09"); the caller
  * adds where the settings came from */
-am_status am_eval_check(const am_env* env, const am_eval_def* def, double period_steps, char* err, int errsz);
+AM_API am_status am_eval_check(const am_env* env, const am_eval_def* def, double period_steps, char* err, int errsz);
 
 /* ---- gait diagnostics (docs/results.md, Gaits) ----
  * What the movement segment looked like, cycle by cycle: the centre of mass sampled at the same
