@@ -583,22 +583,25 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         }
         r->env.period_steps = am_period_steps(m, &r->env, am_from_si(m, dt, AM_DIM_TIME));
     }
+    char note[640] = "";
+#if TOOL_VXA
+    if (run_length && !r->eval.dt_search) {
+        /* the file's run length (VoxCAD's StopCondition, evosoro's InitCmTime) as the evaluation's
+         * cycles and least relaxation, unless a flag set them; one note line says so */
+        st = am_vxa_stop_settings(vxa, dt, AM_REF_DT_FRAC * dt_rec, r->env.period_steps, keep, &r->eval, note, (int)sizeof note, err, errsz);
+        if (st != AM_OK) return st;
+    }
+#endif
+    /* the budget with the run length as it now is, before any note: a refusal is one line */
+    if ((st = check_budget(r, err, errsz)) != AM_OK) return st;
+#if TOOL_VXA
+    if (note[0]) fprintf(stderr, "%s: note: the file's run length as amorph's evaluation: %s\n", vxa->stop_file, note);
+#endif
     /* a step of another length with the period held in steps changes the experiment: say so */
     const double own_s = own.period_s > AM_P(0) ? (double)own.period_s : own.period_steps * (double)own.dt_frac * dt_rec;
     const double now_s = r->env.period_steps * dt;
     if (dt_changed && !(fabs(now_s - own_s) <= 0.01 * own_s))
         fprintf(stderr, "amorph: note: at this step the actuation period is %d steps = %.4g s, not the robot's own %.4g s "
                         "(--period_s %.4g holds it in seconds)\n", r->env.period_steps, now_s, own_s, own_s);
-#if TOOL_VXA
-    if (run_length && !r->eval.dt_search) {
-        /* the file's run length (VoxCAD's StopCondition, evosoro's InitCmTime) as the evaluation's
-         * cycles and least relaxation, unless a flag set them; one note line says so */
-        char note[640];
-        st = am_vxa_stop_settings(vxa, dt, AM_REF_DT_FRAC * dt_rec, r->env.period_steps, keep, &r->eval, note, (int)sizeof note, err, errsz);
-        if (st != AM_OK) return st;
-        if (note[0]) fprintf(stderr, "%s: note: the file's run length as amorph's evaluation: %s\n", vxa->stop_file, note);
-    }
-#endif
-    /* last, with the run length as it now is */
-    return check_budget(r, err, errsz);
+    return AM_OK;
 }
