@@ -56,7 +56,13 @@ expect_fail 2 'nothere\.genome' "$AMORPH" express "$TMPD/nothere.genome"
 
 # flags
 expect_fail 2 "random: --representation = 'fourier': expected dct, cppn or gmx" "$AMORPH" random --repr fourier
-expect_fail 2 "random: --materials = '4': expected an integer in \[1, 3\]" "$AMORPH" random --repr dct --materials 4
+expect_fail 2 "random: --materials = '99': expected an integer in \[1, [0-9]+\]" "$AMORPH" random --repr dct --materials 99
+expect_fail 2 "random: materials = 4: the palette has 3 \(seed\)" "$AMORPH" random --repr dct --materials 4
+# the follow-up's palette names the genome's four fields; a palette of keys names its own
+expect_ok "$AMORPH" random --repr cppn --palette unshackled --out "$TMPD/u.genome"
+if grep -qx 'materials passive_soft passive_hard active_plus active_minus' "$TMPD/u.genome"; then ok; else ko "random --palette unshackled: $(grep '^materials' "$TMPD/u.genome")"; fi
+expect_ok "$AMORPH" random --repr dct --palette unshackled --material5 "gel modulus=1e5 density=1000 cte=0 phase=0" --out "$TMPD/u5.genome"
+if grep -qx 'materials passive_soft passive_hard active_plus active_minus gel' "$TMPD/u5.genome"; then ok; else ko "random --material5: $(grep '^materials' "$TMPD/u5.genome")"; fi
 expect_fail 2 "random: --seed = '-3': expected an integer" "$AMORPH" random --repr dct --seed -3
 expect_fail 2 "random: --workspace = '999': each side must be in \[1, " "$AMORPH" random --repr dct --size 999
 expect_fail 2 "random: --population is not a setting of a genome" "$AMORPH" random --population 4

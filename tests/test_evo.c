@@ -166,6 +166,86 @@ static void expect_config_message(const char* text, const char* want)
 }
 
 /* a bad key, value or line shows cut and escaped (am_quote) */
+/* palettes (docs/evolve.md, Palettes): the seed's is the built-in one as before, the follow-up's
+ * holds evosoro's values, materialK keys extend and replace, and the text reads back exactly */
+static void test_config_palettes(void)
+{
+    char err[AM_ERR_MAX] = "";
+    static am_palette p, q;
+    /* the seed's palette: the built-in one with the run's cte and friction, whatever materials says */
+    am_evo_def d = am_default_evo();
+    d.cte = AM_P(0.02);
+    am_evo_palette_into(&d, &p);
+    am_default_palette_into(&q);
+    CHECK(p.count == q.count && p.count == 9, "seed palette of %d materials", p.count);
+    for (int i = 0; i < q.count; i++)
+        CHECK(p.mat[i].E == q.mat[i].E && (q.mat[i].cte == AM_P(0) ? p.mat[i].cte == AM_P(0) : p.mat[i].cte == AM_P(0.02)) &&
+                  !strcmp(p.mat[i].name, q.mat[i].name) && p.mat[i].mu_kinetic == AM_P(0.3),
+              "seed palette: %s", q.mat[i].name);
+    CHECK(am_evo_palette_size(&d) == 3, "seed palette size %d", am_evo_palette_size(&d));
+    /* the follow-up's four: materials 4, evosoro's moduli and density, active_minus half a period behind */
+    CHECK(am_evo_set(&d, "palette", "unshackled", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(d.geno.materials == 4 && !strcmp(d.geno.mat[3], "active_minus"), "unshackled: %d materials, '%s'", d.geno.materials,
+          d.geno.mat[3]);
+    am_evo_palette_into(&d, &p);
+    CHECK(p.count == 4 && p.mat[0].E == AM_P(5e6) && p.mat[1].E == AM_P(5e8) && p.mat[2].E == AM_P(5e6) &&
+              p.mat[0].density == AM_P(1e6) && p.mat[1].poisson == AM_P(0.35) && p.mat[0].cte == AM_P(0) &&
+              p.mat[2].cte == AM_P(0.02) && p.mat[3].cte == AM_P(0.02) && p.mat[2].phase == AM_P(0) &&
+              p.mat[3].phase == AM_P(3.14159265358979323846),
+          "unshackled palette values");
+    /* materialK: in place of a preset's entry and past its end, raising materials */
+    CHECK(am_evo_set(&d, "material6", "muscle90 modulus=5e6 density=1e6 cte=0.01 phase=-90 mu_kinetic=0.5 color=ff8800", err,
+                     sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_check(&d, err, sizeof err) == AM_ERR_RANGE && strstr(err, "material6: the palette has no material5"), "gap: %s", err);
+    CHECK(am_evo_set(&d, "material5", "gel modulus=2e5 density=1e6 cte=0 phase=0 poisson=0.35", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_set(&d, "material1", "soft modulus=1e5 density=1000 cte=0 phase=0", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_check(&d, err, sizeof err) == AM_OK, "six materials: %s", err);
+    CHECK(d.geno.materials == 6 && am_evo_palette_size(&d) == 6, "materials %d", d.geno.materials);
+    am_evo_palette_into(&d, &p);
+    CHECK(p.count == 6 && !strcmp(p.mat[0].name, "soft") && p.mat[0].E == AM_P(1e5) && !strcmp(p.mat[1].name, "passive_hard") &&
+              p.mat[4].poisson == AM_P(0.35) && p.mat[4].mu_kinetic == AM_P(0.3) && p.mat[5].mu_kinetic == AM_P(0.5) &&
+              p.mat[5].cte == AM_P(0.01) && p.mat[5].color[0] == 0xff && p.mat[5].color[1] == 0x88 &&
+              p.mat[5].phase == AM_PARAM_FROM_DOUBLE(-90.0 * (3.14159265358979323846 / 180.0)),
+          "six-material palette values");
+    /* the text reads back to the same run and the same text */
+    static char t1[8192], t2[8192];
+    long n1 = 0, n2 = 0;
+    CHECK(am_evo_format(&d, 1, t1, sizeof t1, &n1, err, sizeof err) == AM_OK, "%s", err);
+    am_evo_def e = am_default_evo();
+    CHECK(am_evo_parse(&e, t1, "c.txt", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_format(&e, 1, t2, sizeof t2, &n2, err, sizeof err) == AM_OK && !strcmp(t1, t2), "text differs:\n%s\n%s", t1, t2);
+    char key[128] = "";
+    CHECK(am_evo_same_run(&d, &e, key, sizeof key), "not the same run: %s", key);
+    am_evo_palette_into(&e, &q);
+    CHECK(p.count == q.count && !memcmp(&p.mat[5], &q.mat[5], sizeof p.mat[5]), "palette read back differs");
+    /* a changed material is another run */
+    CHECK(am_evo_set(&e, "material5", "gel modulus=3e5 density=1e6 cte=0 phase=0 poisson=0.35", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(!am_evo_same_run(&d, &e, key, sizeof key) && !strncmp(key, "material5", 9), "changed material5: '%s'", key);
+    /* the seed's palette set explicitly writes no palette line: the default text */
+    d = am_default_evo();
+    e = am_default_evo();
+    CHECK(am_evo_set(&e, "palette", "seed", err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_evo_format(&d, 1, t1, sizeof t1, &n1, err, sizeof err) == AM_OK && am_evo_format(&e, 1, t2, sizeof t2, &n2, err, sizeof err) == AM_OK &&
+              !strcmp(t1, t2) && !strstr(t1, "palette") && !strstr(t1, "material1"),
+          "palette = seed changed the text");
+    /* refusals: the message names the problem */
+    CHECK(am_evo_set(&d, "material1", "x modulus=0 density=1 cte=0 phase=0", err, sizeof err) == AM_ERR_RANGE && strstr(err, "modulus=0"),
+          "modulus 0: %s", err);
+    CHECK(am_evo_set(&d, "material1", "x modulus=1e6 density=1 cte=0 phase=0 poisson=0.5", err, sizeof err) == AM_ERR_RANGE,
+          "poisson 0.5: %s", err);
+    CHECK(am_evo_set(&d, "material1", "x modulus=1e6 density=1 cte=0", err, sizeof err) == AM_ERR_RANGE && strstr(err, "missing phase="),
+          "missing phase: %s", err);
+    CHECK(am_evo_set(&d, "material1", "x modulus=1e6 density=1 cte=0 phase=0 color=12345", err, sizeof err) == AM_ERR_RANGE,
+          "short colour: %s", err);
+    CHECK(am_evo_set(&d, "material1", "x modulus=1e6 modulus=2e6 density=1 cte=0 phase=0", err, sizeof err) == AM_ERR_RANGE &&
+              strstr(err, "modulus given twice"), "twice: %s", err);
+    char over[32];
+    snprintf(over, sizeof over, "material%d", AM_MAX_GENO_MATERIALS + 1);
+    CHECK(am_evo_set(&d, over, "x modulus=1e6 density=1 cte=0 phase=0", err, sizeof err) == AM_ERR_RANGE && strstr(err, "at most"),
+          "over capacity: %s", err);
+    CHECK(am_evo_set(&d, "material0", "x", err, sizeof err) == AM_ERR_ARG, "material0: %s", err);
+}
+
 static void test_config_bad_tokens_quoted(void)
 {
     char t[512], want[AM_ERR_MAX], tok[301], err[AM_ERR_MAX];
@@ -901,6 +981,7 @@ int main(int argc, char** argv)
     RUN(test_config_defaults_are_the_seed);
     RUN(test_config_set_and_errors);
     RUN(test_config_text_round_trip);
+    RUN(test_config_palettes);
     RUN(test_config_bad_tokens_quoted);
     RUN(test_log_row);
     RUN(test_unsettled_generation);

@@ -659,10 +659,12 @@ static void test_text_round_trip_is_exact(void)
 {
     char err[AM_ERR_MAX] = "";
     for (int repr = 1; repr <= 3; repr++)
-        for (int mats = 2; mats <= 3; mats++) {
+        for (int mats = 1; mats <= AM_MAX_GENO_MATERIALS; mats++) {
             am_geno_def d = am_default_geno();
             d.repr = repr;
             d.materials = mats;
+            /* past the seed's three the names are the palette's (here made up) */
+            for (int m = 3; m < mats; m++) snprintf(d.mat[m], AM_NAME_MAX, "extra_%d", m + 1);
             am_rng r;
             am_rng_seed(&r, (uint64_t)(100 + repr * 10 + mats));
             init_or_fail(&ga, &d, &r);
@@ -747,7 +749,13 @@ static void test_parse_errors(void)
     expect_parse_error("lattice 1\n", AM_ERR_PARSE, "f.genome:1: not a genome");
     expect_parse_error("amorph-genome 2\n", AM_ERR_PARSE, "f.genome:1: genome format version 2");
     expect_parse_error("amorph-genome 1\n# c\n\nrepr blob\n", AM_ERR_PARSE, "f.genome:4: unknown representation");
-    expect_parse_error("amorph-genome 1\nrepr dct\nmaterials a b c d\n", AM_ERR_CAPACITY, "f.genome:3:");
+    /* one material past the profile's capacity */
+    {
+        char many[256] = "amorph-genome 1\nrepr dct\nmaterials";
+        for (int m = 0; m <= AM_MAX_GENO_MATERIALS; m++) snprintf(many + strlen(many), sizeof many - strlen(many), " m%d", m);
+        strcat(many, "\n");
+        expect_parse_error(many, AM_ERR_CAPACITY, "f.genome:3:");
+    }
     expect_parse_error("amorph-genome 1\nrepr dct\nmaterials a a\n", AM_ERR_PARSE, "f.genome:3: material 'a' given twice");
     expect_parse_error("amorph-genome 1\nrepr dct\nmaterials a b\nworkspace 8 99 8\n", AM_ERR_CAPACITY, "f.genome:4:");
     expect_parse_error("amorph-genome 1\nrepr dct\nmaterials a b\nworkspace 8 0 8\n", AM_ERR_PARSE, "f.genome:4:");
@@ -833,6 +841,7 @@ static void test_capacity_is_a_status(void)
         d = am_default_geno();
         d.repr = reprs[i];
         d.materials = AM_MAX_GENO_MATERIALS;
+        for (int m = 0; m < AM_MAX_GENO_MATERIALS; m++) snprintf(d.mat[m], AM_NAME_MAX, "material_%d", m + 1);
         d.dct_k = AM_MAX_DCT_K;
         d.cppn_layers = AM_MAX_CPPN_LAYERS;
         d.cppn_nodes = AM_MAX_CPPN_NODES;
@@ -849,6 +858,43 @@ static void test_capacity_is_a_status(void)
     init_or_fail(&gb, &d2, &r);
     CHECK(am_genome_crossover(&ga, &gb, &gc, &gd, &d1, &r, err, sizeof err) == AM_ERR_ARG, "shapes differ");
     CHECK(am_genome_equal(&gc, &ga) && am_genome_equal(&gd, &gb), "children are the parents");
+}
+
+/* every representation expresses a palette of the profile's capacity: fields named as the def
+ * names them, and each material in some body (one density field each, argmax) */
+static void test_every_material_expressed(void)
+{
+    char err[AM_ERR_MAX] = "";
+    static am_geno_work w;
+    for (int repr = 1; repr <= 3; repr++) {
+        am_geno_def d = small_def(repr, AM_MAX_GENO_MATERIALS);
+        for (int m = 0; m < AM_MAX_GENO_MATERIALS; m++) snprintf(d.mat[m], AM_NAME_MAX, "mat_%d", m + 1);
+        am_rng r;
+        am_rng_seed(&r, (uint64_t)(700 + repr));
+        long count[AM_MAX_GENO_MATERIALS + 1] = {0};
+        int beyond = 0;
+        for (int k = 0; k < 20; k++) {
+            init_or_fail(&ga, &d, &r);
+            CHECK(ga.materials == AM_MAX_GENO_MATERIALS && !strcmp(ga.mat[AM_MAX_GENO_MATERIALS - 1], d.mat[AM_MAX_GENO_MATERIALS - 1]),
+                  "%s: genome of %d materials, last '%s'", am_repr_name(repr), ga.materials, ga.mat[AM_MAX_GENO_MATERIALS - 1]);
+            CHECK(am_genome_express(&ga, NULL, &w, NULL, err, sizeof err) == AM_OK, "%s: %s", am_repr_name(repr), err);
+            for (int c = 0; c < 8 * 8 * 8; c++) {
+                if (w.cell[c] > AM_MAX_GENO_MATERIALS) beyond = 1;
+                else count[w.cell[c]]++;
+            }
+        }
+        CHECK(!beyond, "%s: a cell past the palette", am_repr_name(repr));
+        for (int m = 1; m <= AM_MAX_GENO_MATERIALS; m++)
+            CHECK(count[m] > 0, "%s: no body of 20 holds material %d of %d", am_repr_name(repr), m, AM_MAX_GENO_MATERIALS);
+    }
+    /* a def naming no material past the seed's three cannot make a genome of more */
+    if (AM_MAX_GENO_MATERIALS > 3) {
+        am_geno_def d = small_def(AM_REPR_GMX, 4);
+        am_rng r;
+        am_rng_seed(&r, 9);
+        CHECK(am_genome_init(&ga, &d, &r, err, sizeof err) == AM_ERR_RANGE && strstr(err, "material 3 has no valid name"),
+              "four unnamed materials: %s", err);
+    }
 }
 
 static void test_memory_budget(void)
@@ -884,6 +930,7 @@ int main(int argc, char** argv)
     RUN(test_parse_errors);
     RUN(test_parse_bad_tokens_quoted);
     RUN(test_capacity_is_a_status);
+    RUN(test_every_material_expressed);
     RUN(test_memory_budget);
     return SUMMARY();
 }

@@ -10,7 +10,9 @@ static const char random_help[] =
     "the genotype's keys of amorph evolve's configuration (amorph evolve --help-config; '-' may\n"
     "stand for '_'), with the same defaults:\n"
     "  --representation R  dct, cppn or gmx (gmx; alias --repr R)\n"
-    "  --materials M       2 (passive, active) or 3 (passive, active, active90) (2)\n"
+    "  --palette P         seed (passive, active, active90) or unshackled (4 materials); --material1 ...\n"
+    "                      as in a configuration (docs/evolve.md, Palettes) (seed)\n"
+    "  --materials M       the palette's first M (2: passive, active; 3: + active90) (2)\n"
     "  --workspace N       N x N x N cells, or NxMxK (20; alias --size N)\n"
     "  --seed S            seed of the random stream, 0..2^64-1 (1)\n"
     "  --dct_k, --cppn_layers, --cppn_nodes, --cppn_active, --gmx_points ...  as in a configuration\n"
@@ -39,6 +41,9 @@ int cmd_random(tool_ctx* c, int argc, char** argv)
             return tool_usage_error("random: --%s is not a setting of a genome (amorph random --help)", key);
         if (am_evo_set(&d, key, val, err, sizeof err) != AM_OK) return tool_usage_error("random: --%s", err);
     }
+    /* the palette's relations (materials within it, names once each) */
+    int bad_key;
+    if (am_evo_check_key(&d, &bad_key, err, sizeof err) != AM_OK) return tool_usage_error("random: %s", err);
     am_geno_def def = d.geno;
     if (def.dct_k > def.nx) def.dct_k = def.nx;
     am_rng rng;

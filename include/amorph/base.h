@@ -98,7 +98,9 @@ extern "C" {
 #define AM_ERR_MAX 256          /* recommended size of an error message buffer */
 
 /* ---- genotypes (include/amorph/geno.h, docs/genotypes.md) ---- */
-#define AM_MAX_GENO_MATERIALS 3 /* density fields per genome: passive, active, active90 */
+#ifndef AM_MAX_GENO_MATERIALS
+#define AM_MAX_GENO_MATERIALS 6 /* density fields per genome: materials of a run's palette, <= 15 (board: 3) */
+#endif
 #ifndef AM_MAX_DCT_K
 #define AM_MAX_DCT_K 8          /* DCT amplitudes per axis, k x k x k per material (board: 4) */
 #endif

@@ -8,6 +8,7 @@
 #define AM_MAX_DIM 8
 #define AM_MAX_PAIRS (6 * AM_MAX_VOXELS)
 #define AM_COLL_BUCKETS 256
+#define AM_MAX_GENO_MATERIALS 3
 #define AM_MAX_DCT_K 4
 #define AM_MAX_CPPN_LAYERS 3
 #define AM_MAX_CPPN_NODES 4

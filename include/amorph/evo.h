@@ -31,9 +31,33 @@ extern "C" {
 
 /* ---- configuration ---- */
 
+/* a run's palette (docs/evolve.md, Palettes): a preset, the seed's (passive, active, active90: the
+ * default, with materials 2) or the follow-up's (Cheney et al. 2013, as evosoro's examples have it:
+ * passive_soft, passive_hard, active_plus, active_minus), and over it the materialK keys, each the
+ * palette's entry K in place of the preset's or past its end. The genomes' fields are the palette's
+ * first geno.materials entries, in order. */
+enum { AM_PALETTE_SEED = 0, AM_PALETTE_UNSHACKLED = 1 };
+/* one materialK key as given: NAME modulus= density= cte= phase= [poisson= mu_static= mu_kinetic= color=] */
+typedef struct am_evo_material {
+    char name[AM_NAME_MAX];   /* "": the key is not set (the preset's entry K, if it has one) */
+    am_param E;                /* Pa, > 0 */
+    am_param density;          /* kg/m^3, > 0 */
+    am_param cte;              /* per degree (the cte key does not apply to it) */
+    am_param phase;            /* degrees, added to the temperature's phase (-90: the seed's active90) */
+    am_param poisson;          /* [0, 0.5) (0 unless given) */
+    am_param mu_static;        /* floor friction (the run's mu_static unless given) */
+    am_param mu_kinetic;       /* (the run's mu_kinetic unless given) */
+    uint8_t color[3];          /* display colour, RGB (a colour of the material's index unless given) */
+    uint8_t given;             /* AM_EVO_MAT_* bits of the optional fields given */
+} am_evo_material;
+enum { AM_EVO_MAT_POISSON = 1, AM_EVO_MAT_MU_STATIC = 2, AM_EVO_MAT_MU_KINETIC = 4, AM_EVO_MAT_COLOR = 8 };
+
 /* everything that defines a run; am_default_evo() is the seed's two-material experiment */
 typedef struct am_evo_def {
-    am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3) */
+    am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3);
+                               * geno.mat: the palette's names (am_evo_set keeps them) */
+    int palette;              /* AM_PALETTE_SEED (default) or AM_PALETTE_UNSHACKLED */
+    am_evo_material material[AM_MAX_GENO_MATERIALS]; /* the materialK keys: material[K - 1] */
     am_env env;               /* environment: gravity, floor, actuation, time step (am_default_env) */
     am_eval_def eval;         /* evaluation: cycles, fitness measure, relaxation (record is ignored) */
     am_param cte;              /* CTE of the actuated materials, per degree (0.01, volumetric) */
@@ -86,7 +110,7 @@ AM_API am_status am_evo_check_budget(const am_evo_def* d, double period_steps, i
  * malformed line, an unknown key) */
 AM_API int am_evo_line_key(const char* text, long n);
 /* more than the configuration keys there are: a table of one entry per key */
-#define AM_EVO_KEY_MAX 64
+#define AM_EVO_KEY_MAX 80
 /* am_evo_check, and that the definition can evolve: a relaxation long enough for a body to settle
  * (relax_max_steps at least release_steps + 50), as a run needs and a configuration to print does
  * not (am_evo_init checks it) */
@@ -118,7 +142,13 @@ AM_API am_status am_evo_parse_line(am_evo_def* d, const char* text, long n, cons
 /* 1 when a and b give the same run (every key but threads, checkpoint_seconds and evaluations);
  * else 0 and the first differing key's name in key (capacity keysz) */
 AM_API int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz);
-/* the palette and expression settings a run's genomes are expressed and simulated with */
+/* materials in d's palette: its preset's and the materialK keys' (at most AM_MAX_GENO_MATERIALS;
+ * am_evo_check rejects a materialK past the end without the keys before it) */
+AM_API int am_evo_palette_size(const am_evo_def* d);
+/* the palette and expression settings a run's genomes are expressed and simulated with: the seed's
+ * palette is the built-in one (am_default_palette) with the run's cte, mu_static and mu_kinetic;
+ * any other holds am_evo_palette_size(d) materials, the preset's with those keys' values and the
+ * materialK keys' as given */
 AM_API am_palette am_evo_palette(const am_evo_def* d);
 /* the same palette written into *out */
 AM_API void am_evo_palette_into(const am_evo_def* d, am_palette* out);
@@ -166,17 +196,29 @@ typedef struct am_evo_result {
  * offspring whose body equals a remembered one, cell for cell, takes the remembered result instead
  * of a simulation: the same bytes a simulation would give, so nothing of the run changes but its
  * speed (docs/evolve.md, Same body, same result). */
-#define AM_EVO_MEMO_BYTES ((AM_MAX_CELLS + 3) / 4) /* a body, 2 bits a cell (materials 0..3) */
+/* a body packed: 2 bits a cell (4 cells a byte) in a run of up to three materials, 4 bits a cell
+ * (2 a byte) in a run of more; the first cell in the low bits */
+static inline int am_evo_cell_bits(int materials) { return materials <= 3 ? 2 : 4; }
+/* bytes of a body of n cells so packed */
+static inline int am_evo_packed_bytes(int n, int materials) { return materials <= 3 ? (n + 3) / 4 : (n + 1) / 2; }
+/* cell c of a packed body */
+static inline int am_evo_packed_cell(const uint8_t* packed, int c, int materials)
+{
+    return materials <= 3 ? packed[c >> 2] >> 2 * (c & 3) & 3 : packed[c >> 1] >> 4 * (c & 1) & 15;
+}
+#define AM_EVO_MEMO_BYTES (AM_MAX_GENO_MATERIALS <= 3 ? (AM_MAX_CELLS + 3) / 4 : (AM_MAX_CELLS + 1) / 2)
+_Static_assert(AM_MAX_GENO_MATERIALS <= 15, "a packed cell holds materials 1..15");
 typedef struct am_evo_memo {
     long used;                /* the id of the last evaluation that stored or took it (a full table
                                * gives the slot used longest ago to the next new body) */
     uint64_t key;             /* am_evo_body_key of the body; 0: a free slot */
-    uint8_t cells[AM_EVO_MEMO_BYTES]; /* the body, 4 cells a byte, the first in the low bits */
+    uint8_t cells[AM_EVO_MEMO_BYTES]; /* the body, packed (am_evo_cell_bits) */
     am_evo_result res;        /* its result as the evaluation gave it */
 } am_evo_memo;
 
-/* the key of a body of n cells packed as am_evo_memo.cells: a hash of them, never 0 */
-AM_API uint64_t am_evo_body_key(const uint8_t* packed, int n);
+/* the key of a body of n cells of a run of `materials` materials packed as am_evo_memo.cells: a
+ * hash of them, never 0 */
+AM_API uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials);
 
 /* what a caller of am_evo_generation may watch; every member may be NULL */
 typedef struct am_evo_hooks {

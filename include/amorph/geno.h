@@ -116,7 +116,9 @@ typedef struct am_genome {
 /* how random genomes are made and varied; am_default_geno() gives the seed's settings */
 typedef struct am_geno_def {
     int repr;                 /* am_repr (AM_REPR_DCT) */
-    int materials;            /* 2: passive, active; 3: passive, active, active90 (2) */
+    int materials;            /* density fields, 1..AM_MAX_GENO_MATERIALS (2: passive, active) */
+    char mat[AM_MAX_GENO_MATERIALS][AM_NAME_MAX]; /* palette name of each field; "" (the default):
+                                                   * the seed's passive, active, active90 */
     int nx, ny, nz;           /* workspace, cells (AM_MAX_DIM: 20 desktop, 8 board) */
     int dct_k;                /* DCT amplitudes per axis (4) */
     int cppn_layers;          /* CPPN layers m (3) */
@@ -133,7 +135,7 @@ typedef struct am_geno_def {
     am_real gmx_remove;       /* GMX: probability that a mutation removes a point (0.10) */
 } am_geno_def;
 
-/* the seed's settings: DCT, 2 materials, AM_MAX_DIM^3, rates as documented field by field */
+/* the seed's settings: DCT, 2 materials (names ""), AM_MAX_DIM^3, rates as documented field by field */
 AM_API am_geno_def am_default_geno(void);
 
 /* how a genome becomes a body; am_default_express() gives the seed's */

@@ -536,8 +536,9 @@ AM_API void am_evo_checkpoint_scan(am_evo_ckpt_scan* sc, const char* data, long 
 /* after the last byte: AM_OK when the last line is a checksum that matches the text before it */
 AM_API am_status am_evo_checkpoint_scan_end(am_evo_ckpt_scan* sc, const char* fname, char* err, int errsz);
 
-/* a remembered body's result in a checkpoint: 28 numbers of 8 bytes */
-#define AM_EVO_MEMO_RESULT_BYTES 224
+/* a remembered body's result in a checkpoint: 28 numbers of 8 bytes, and one more per material
+ * past the third (at most) */
+#define AM_EVO_MEMO_RESULT_BYTES (8 * (25 + AM_MAX_GENO_MATERIALS))
 
 /* pass 2, after a successful scan: begin (clears e), every line in order, end */
 typedef struct am_evo_ckpt_reader {

@@ -44,20 +44,226 @@ am_palette am_evo_palette(const am_evo_def* d)
     return p;
 }
 
+/* ---- palettes ---- */
+
+static const char* const palette_names[] = {"seed", "unshackled", NULL};
+static const int preset_size[] = {3, 4};   /* materials of each preset */
+static const int preset_fields[] = {2, 4}; /* the materials key each preset sets */
+#define PI_D 3.14159265358979323846
+
+/* entry i of a preset, with the run's cte over its actuated materials and its friction */
+static am_material preset_material(const am_evo_def* d, int i)
+{
+    am_material m = am_default_material();
+    memset(m.name, 0, sizeof m.name);
+    if (d->palette == AM_PALETTE_SEED) {
+        /* the built-in palette's first three (am_default_palette): passive, active, active90 */
+        static const char* const name[3] = {"passive", "active", "active90"};
+        static const uint8_t rgb[3][3] = {{40, 90, 220}, {240, 200, 30}, {220, 40, 40}};
+        snprintf(m.name, sizeof m.name, "%s", name[i]);
+        m.cte = i > 0 ? AM_P(0.01) : AM_P(0);
+        m.phase = i == 2 ? -(AM_P(PI_D) / AM_P(2)) : AM_P(0);
+        for (int c = 0; c < 3; c++) m.color[c] = rgb[i][c];
+    } else {
+        /* Cheney et al. 2013 as evosoro writes them (evosoro/tools/read_write_voxelyze.py, with
+         * evosoro/base.py's Env defaults): 5 MPa soft tissue and muscle, 500 MPa hard tissue,
+         * density 1e6, Poisson's ratio 0.35, muscles of CTE +-0.01; active_minus here has the CTE of
+         * active_plus half a period later, the same expansion about temp_base 0 */
+        static const char* const name[4] = {"passive_soft", "passive_hard", "active_plus", "active_minus"};
+        static const uint8_t rgb[4][3] = {{0, 255, 255}, {0, 0, 255}, {255, 0, 0}, {0, 255, 0}};
+        snprintf(m.name, sizeof m.name, "%s", name[i]);
+        m.E = i == 1 ? AM_P(5e8) : AM_P(5e6);
+        m.density = AM_P(1e6);
+        m.poisson = AM_P(0.35);
+        m.cte = i >= 2 ? AM_P(0.01) : AM_P(0);
+        m.phase = i == 3 ? AM_P(PI_D) : AM_P(0);
+        for (int c = 0; c < 3; c++) m.color[c] = rgb[i][c];
+    }
+    if (m.cte != AM_P(0)) m.cte = d->cte;
+    m.mu_static = d->mu_static;
+    m.mu_kinetic = d->mu_kinetic;
+    return m;
+}
+
+/* a materialK key's material as the palette holds it */
+static am_material given_material(const am_evo_def* d, int k)
+{
+    static const uint8_t rgb[8][3] = { /* by index: the built-in palette's colours, then more */{40, 90, 220},  {240, 200, 30}, {220, 40, 40},  {140, 140, 150},
+                                      {60, 190, 90},  {110, 70, 40},  {200, 120, 230}, {240, 130, 20}};
+    const am_evo_material* g = &d->material[k];
+    am_material m = am_default_material();
+    memset(m.name, 0, sizeof m.name);
+    snprintf(m.name, sizeof m.name, "%s", g->name);
+    m.E = g->E;
+    m.density = g->density;
+    m.cte = g->cte;
+    m.phase = AM_PARAM_FROM_DOUBLE(AM_PARAM_TO_DOUBLE(g->phase) * (PI_D / 180.0));
+    m.poisson = g->given & AM_EVO_MAT_POISSON ? g->poisson : AM_P(0);
+    m.mu_static = g->given & AM_EVO_MAT_MU_STATIC ? g->mu_static : d->mu_static;
+    m.mu_kinetic = g->given & AM_EVO_MAT_MU_KINETIC ? g->mu_kinetic : d->mu_kinetic;
+    for (int c = 0; c < 3; c++) m.color[c] = g->given & AM_EVO_MAT_COLOR ? g->color[c] : rgb[k % 8][c];
+    return m;
+}
+
+int am_evo_palette_size(const am_evo_def* d)
+{
+    int n = d->palette == AM_PALETTE_UNSHACKLED ? preset_size[1] : preset_size[0];
+    for (int k = 0; k < AM_MAX_GENO_MATERIALS; k++)
+        if (d->material[k].name[0] && k + 1 > n) n = k + 1;
+    return n;
+}
+
+static int any_given(const am_evo_def* d)
+{
+    for (int k = 0; k < AM_MAX_GENO_MATERIALS; k++)
+        if (d->material[k].name[0]) return 1;
+    return 0;
+}
+
 void am_evo_palette_into(const am_evo_def* d, am_palette* p)
 {
-    am_default_palette_into(p);
-    for (int i = 0; i < p->count; i++) {
-        /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
-        if (p->mat[i].cte != AM_P(0)) p->mat[i].cte = d->cte;
-        p->mat[i].mu_static = d->mu_static;
-        p->mat[i].mu_kinetic = d->mu_kinetic;
+    if (d->palette == AM_PALETTE_SEED && !any_given(d)) {
+        /* the seed's runs: the built-in palette, as every run before palettes had it */
+        am_default_palette_into(p);
+        for (int i = 0; i < p->count; i++) {
+            /* the actuated materials (non-zero CTE in the default palette) share the run's CTE */
+            if (p->mat[i].cte != AM_P(0)) p->mat[i].cte = d->cte;
+            p->mat[i].mu_static = d->mu_static;
+            p->mat[i].mu_kinetic = d->mu_kinetic;
+        }
+        return;
     }
+    memset(p, 0, sizeof *p);
+    const int preset = d->palette == AM_PALETTE_UNSHACKLED ? preset_size[1] : preset_size[0];
+    const int n = am_evo_palette_size(d);
+    p->count = n;
+    for (int k = 0; k < n; k++)
+        p->mat[k] = d->material[k].name[0] ? given_material(d, k) : k < preset ? preset_material(d, k) : am_default_material();
+}
+
+/* the genotype's names: the palette's (am_genome_init names the genomes' fields with them) */
+static void palette_names_sync(am_evo_def* d)
+{
+    const int preset = d->palette == AM_PALETTE_UNSHACKLED ? preset_size[1] : preset_size[0];
+    memset(d->geno.mat, 0, sizeof d->geno.mat);
+    for (int k = 0; k < AM_MAX_GENO_MATERIALS; k++) {
+        if (d->material[k].name[0]) snprintf(d->geno.mat[k], AM_NAME_MAX, "%s", d->material[k].name);
+        else if (k < preset) snprintf(d->geno.mat[k], AM_NAME_MAX, "%s", preset_material(d, k).name);
+    }
+}
+
+/* a name as the genome format takes it: letters, digits, '_' and '-' */
+static int material_name_ok(const char* s, size_t n)
+{
+    if (n == 0 || n >= AM_NAME_MAX) return 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = s[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-')) return 0;
+    }
+    return 1;
+}
+
+/* a materialK value: NAME field=value ...; the message without the key */
+static am_status parse_material(const char* value, am_evo_material* out, char* err, int errsz)
+{
+    static const struct {
+        const char* name;
+        double lo, hi;
+        int open_lo; /* 1: lo itself is out of range */
+        int need;    /* 1: required */
+        uint8_t bit; /* AM_EVO_MAT_* of an optional field */
+    } field[] = {
+        {"modulus", 0, 1e12, 1, 1, 0},   {"density", 0, 1e9, 1, 1, 0},       {"cte", -1, 1, 0, 1, 0},
+        {"phase", -360, 360, 0, 1, 0},   {"poisson", 0, 0.4999, 0, 0, AM_EVO_MAT_POISSON},
+        {"mu_static", 0, 100, 0, 0, AM_EVO_MAT_MU_STATIC}, {"mu_kinetic", 0, 100, 0, 0, AM_EVO_MAT_MU_KINETIC},
+        {"color", 0, 0, 0, 0, AM_EVO_MAT_COLOR},
+    };
+    enum { NF = (int)(sizeof field / sizeof field[0]) };
+    char qb[AM_QUOTE_BUF];
+    am_evo_material m;
+    memset(&m, 0, sizeof m);
+    int have[NF] = {0};
+    const char* s = value;
+    while (*s == ' ' || *s == '\t') s++;
+    size_t n = strcspn(s, " \t");
+    if (!material_name_ok(s, n))
+        return am_fail(err, errsz, AM_ERR_RANGE, "expected a material name first (1 to %d letters, digits, '_' or '-'), "
+                       "then modulus= density= cte= phase=", AM_NAME_MAX - 1);
+    memcpy(m.name, s, n);
+    s += n;
+    for (;;) {
+        while (*s == ' ' || *s == '\t') s++;
+        if (!*s) break;
+        n = strcspn(s, " \t");
+        const char* eq = memchr(s, '=', n);
+        char word[64];
+        if (!eq || n >= sizeof word)
+            return am_fail(err, errsz, AM_ERR_RANGE, "'%s': expected field=value", am_quote(qb, sizeof qb, s, (long)n));
+        int f = -1;
+        for (int i = 0; i < NF; i++)
+            if (strlen(field[i].name) == (size_t)(eq - s) && !strncmp(field[i].name, s, (size_t)(eq - s))) f = i;
+        if (f < 0)
+            return am_fail(err, errsz, AM_ERR_RANGE, "unknown field '%s' (modulus, density, cte, phase, poisson, mu_static, "
+                           "mu_kinetic, color)", am_quote(qb, sizeof qb, s, eq - s));
+        if (have[f]) return am_fail(err, errsz, AM_ERR_RANGE, "%s given twice", field[f].name);
+        have[f] = 1;
+        memcpy(word, eq + 1, n - (size_t)(eq - s) - 1);
+        word[n - (size_t)(eq - s) - 1] = 0;
+        s += n;
+        if (field[f].bit == AM_EVO_MAT_COLOR) {
+            char* end = NULL;
+            unsigned long c = strlen(word) == 6 ? strtoul(word, &end, 16) : 0;
+            if (!end || *end) return am_fail(err, errsz, AM_ERR_RANGE, "color=%s: expected RRGGBB (hexadecimal)", am_quote(qb, sizeof qb, word, -1));
+            for (int i = 0; i < 3; i++) m.color[i] = (uint8_t)(c >> (16 - 8 * i));
+        } else {
+            double v;
+            if (!am_parse_double(word, &v) || v < field[f].lo || v > field[f].hi || (field[f].open_lo && v <= field[f].lo))
+                return am_fail(err, errsz, AM_ERR_RANGE, "%s=%s: expected a number in %s%g, %g]", field[f].name,
+                               am_quote(qb, sizeof qb, word, -1), field[f].open_lo ? "(" : "[", field[f].lo, field[f].hi);
+            am_param* dst[] = {&m.E, &m.density, &m.cte, &m.phase, &m.poisson, &m.mu_static, &m.mu_kinetic};
+            *dst[f] = AM_PARAM_FROM_DOUBLE(v);
+        }
+        m.given |= field[f].bit;
+    }
+    for (int i = 0; i < NF; i++)
+        if (field[i].need && !have[i])
+            return am_fail(err, errsz, AM_ERR_RANGE, "missing %s= (a material needs modulus, density, cte and phase)", field[i].name);
+    *out = m;
+    return AM_OK;
+}
+
+/* the shortest text of v that reads back to the same am_param */
+static void param_text(am_param v, char* out, int cap)
+{
+    for (int prec = 6; prec <= 17; prec++) {
+        snprintf(out, (size_t)cap, "%.*g", prec, AM_PARAM_TO_DOUBLE(v));
+        if (AM_PARAM_FROM_DOUBLE(strtod(out, NULL)) == v) break;
+    }
+}
+
+static void material_text(const am_evo_material* m, char* out, int cap)
+{
+    if (!m->name[0]) {
+        if (cap > 0) out[0] = 0;
+        return;
+    }
+    const am_param v[] = {m->E, m->density, m->cte, m->phase, m->poisson, m->mu_static, m->mu_kinetic};
+    static const char* const name[] = {"modulus", "density", "cte", "phase", "poisson", "mu_static", "mu_kinetic"};
+    static const uint8_t bit[] = {0, 0, 0, 0, AM_EVO_MAT_POISSON, AM_EVO_MAT_MU_STATIC, AM_EVO_MAT_MU_KINETIC};
+    int n = snprintf(out, (size_t)cap, "%s", m->name);
+    for (int i = 0; i < 7 && n >= 0 && n < cap; i++) {
+        if (bit[i] && !(m->given & bit[i])) continue;
+        char num[32];
+        param_text(v[i], num, sizeof num);
+        n += snprintf(out + n, (size_t)(cap - n), " %s=%s", name[i], num);
+    }
+    if ((m->given & AM_EVO_MAT_COLOR) && n >= 0 && n < cap)
+        snprintf(out + n, (size_t)(cap - n), " color=%02x%02x%02x", m->color[0], m->color[1], m->color[2]);
 }
 
 /* ---- the key table ---- */
 
-typedef enum key_kind { K_INT, K_LONG, K_REAL, K_PARAM, K_U64, K_ENUM, K_ONOFF, K_WORKSPACE } key_kind;
+typedef enum key_kind { K_INT, K_LONG, K_REAL, K_PARAM, K_U64, K_ENUM, K_ONOFF, K_WORKSPACE, K_PALETTE, K_MATERIAL } key_kind;
 
 typedef struct key_def {
     const char* name;
@@ -75,10 +281,34 @@ static const char* const cte_names[] = {"volumetric", "linear", NULL};
 static const char* const score_names[] = {"travel", "sustained", NULL};
 
 #define OFF(f) offsetof(am_evo_def, f)
+#define MATERIAL_KEY(k, help) {"material" #k, K_MATERIAL, OFF(material[k - 1]), k, k, NULL, 0, help}
+_Static_assert(AM_MAX_GENO_MATERIALS >= 3 && AM_MAX_GENO_MATERIALS <= 8, "one materialK key per palette entry: the table below");
 static const key_def keys[] = {
     {"representation", K_ENUM, OFF(geno.repr), 1, 3, repr_names, 0, "genotype: dct, cppn or gmx"},
+    {"palette", K_PALETTE, OFF(palette), 0, 1, palette_names, 0,
+     "materials to build with: seed (passive, active, active90) or unshackled (passive_soft, passive_hard, active_plus, "
+     "active_minus); sets materials (seed 2, unshackled 4)"},
+    MATERIAL_KEY(1, "palette material 1 in place of the preset's: NAME modulus=Pa density=kg/m^3 cte=1/degree phase=degrees "
+                    "[poisson= mu_static= mu_kinetic= color=RRGGBB]; raises materials to 1"),
+    MATERIAL_KEY(2, "palette material 2 (as material1)"),
+    MATERIAL_KEY(3, "palette material 3 (as material1)"),
+#if AM_MAX_GENO_MATERIALS >= 4
+    MATERIAL_KEY(4, "palette material 4 (as material1)"),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 5
+    MATERIAL_KEY(5, "palette material 5 (as material1)"),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 6
+    MATERIAL_KEY(6, "palette material 6 (as material1)"),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 7
+    MATERIAL_KEY(7, "palette material 7 (as material1)"),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 8
+    MATERIAL_KEY(8, "palette material 8 (as material1)"),
+#endif
     {"materials", K_INT, OFF(geno.materials), 1, AM_MAX_GENO_MATERIALS, NULL, 0,
-     "materials of the genomes: 1 passive, 2 + active, 3 + active90 (90 degrees out of phase)"},
+     "materials of the genomes: the palette's first N (seed: 1 passive, 2 + active, 3 + active90)"},
     {"workspace", K_WORKSPACE, OFF(geno.nx), 1, AM_MAX_DIM, NULL, 0, "workspace cells: N or NxMxK"},
     {"population", K_INT, OFF(population), 2, AM_MAX_POPULATION, NULL, 0, "individuals (even)"},
     {"evaluations", K_LONG, OFF(evaluations), 2, 1e9, NULL, 0, "the run stops after this many evaluations"},
@@ -132,6 +362,7 @@ static const key_def keys[] = {
 };
 
 #define KEY_COUNT ((int)(sizeof keys / sizeof keys[0]))
+#define AM_EVO_VALUE_MAX 256 /* a value's text: a materialK's is the longest */
 _Static_assert(sizeof keys / sizeof keys[0] <= AM_EVO_KEY_MAX, "AM_EVO_KEY_MAX: fewer entries than keys");
 
 static const key_def* find_key(const char* name)
@@ -151,6 +382,7 @@ int am_evo_key_group(const char* key)
     const key_def* k = find_key(key);
     if (!k) return -1;
     const size_t off = k->off;
+    if (k->kind == K_PALETTE || k->kind == K_MATERIAL) return AM_KEYS_GENOTYPE; /* what genomes are made of */
     /* unsigned: an offset below the member wraps past its end */
     if (off - OFF(env) < sizeof(am_env)) return AM_KEYS_ENV;
     if (off - OFF(eval) < sizeof(am_eval_def)) return AM_KEYS_EVAL;
@@ -178,9 +410,14 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
 {
     const key_def* k = find_key(key);
     char qv[AM_QUOTE_BUF]; /* the key, then the value, as messages show them */
-    if (!k)
+    if (!k) {
+        long n;
+        if (!strncmp(key, "material", 8) && key[8] != '-' && key[8] != '+' && am_parse_long(key + 8, &n) && n > AM_MAX_GENO_MATERIALS)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s: a palette holds at most %d materials (the %s profile)",
+                           am_quote(qv, sizeof qv, key, -1), AM_MAX_GENO_MATERIALS, AM_PROFILE_NAME);
         return am_fail(err, errsz, AM_ERR_ARG, "unknown key '%s' (amorph evolve --help-config lists them)",
                        am_quote(qv, sizeof qv, key, -1));
+    }
     am_quote(qv, sizeof qv, value, -1);
     char* base = (char*)d + k->off;
     switch (k->kind) {
@@ -259,6 +496,27 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
         d->geno.nz = (int)v[2];
         return AM_OK;
     }
+    case K_PALETTE:
+        for (int i = 0; k->names[i]; i++)
+            if (strcmp(value, k->names[i]) == 0) {
+                if (preset_size[i] > AM_MAX_GENO_MATERIALS)
+                    return am_fail(err, errsz, AM_ERR_RANGE, "%s = %s: %d materials; the %s profile's palette holds at most %d", key,
+                                   qv, preset_size[i], AM_PROFILE_NAME, AM_MAX_GENO_MATERIALS);
+                d->palette = i;
+                d->geno.materials = preset_fields[i];
+                palette_names_sync(d);
+                return AM_OK;
+            }
+        return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': expected seed or unshackled (or materialK keys over one)", key, qv);
+    case K_MATERIAL: {
+        char msg[AM_ERR_MAX];
+        const int idx = (int)k->lo - 1;
+        if (parse_material(value, &d->material[idx], msg, sizeof msg) != AM_OK)
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s = '%s': %s", key, qv, msg);
+        if (d->geno.materials < idx + 1) d->geno.materials = idx + 1;
+        palette_names_sync(d);
+        return AM_OK;
+    }
     }
     return am_fail(err, errsz, AM_ERR_ARG, "key '%s': internal error", key);
 }
@@ -292,6 +550,37 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
         return *key = key_index("score"),
                am_fail(err, errsz, AM_ERR_RANGE, "score = sustained needs cycles above sustained_from (cycles = %d, sustained_from = %d): say cycles = 30",
                        d->eval.cycles, d->eval.sustained_from);
+    /* the palette: materialK keys without a gap after the preset, names once each, enough materials */
+    {
+        const int preset = preset_size[d->palette == AM_PALETTE_UNSHACKLED];
+        int size = preset;
+        for (int k = preset; k < AM_MAX_GENO_MATERIALS; k++) {
+            if (!d->material[k].name[0]) continue;
+            if (k > size) {
+                char name[32];
+                snprintf(name, sizeof name, "material%d", k + 1);
+                return *key = key_index(name),
+                       am_fail(err, errsz, AM_ERR_RANGE, "material%d: the palette has no material%d (%s has %d materials): give "
+                               "them in order", k + 1, size + 1, palette_names[d->palette == AM_PALETTE_UNSHACKLED], preset);
+            }
+            size = k + 1;
+        }
+        char name_of[AM_MAX_GENO_MATERIALS][AM_NAME_MAX];
+        for (int k = 0; k < size; k++)
+            snprintf(name_of[k], AM_NAME_MAX, "%s", d->material[k].name[0] ? d->material[k].name : preset_material(d, k).name);
+        for (int k = 1; k < size; k++)
+            for (int j = 0; j < k; j++)
+                if (!strncmp(name_of[j], name_of[k], AM_NAME_MAX)) {
+                    char name[32];
+                    snprintf(name, sizeof name, "material%d", d->material[k].name[0] ? k + 1 : j + 1);
+                    return *key = key_index(name), am_fail(err, errsz, AM_ERR_RANGE, "material%d and material%d are both named '%s'",
+                                                              j + 1, k + 1, name_of[k]);
+                }
+        if (d->geno.materials > size)
+            return *key = key_index("materials"),
+                   am_fail(err, errsz, AM_ERR_RANGE, "materials = %d: the palette has %d (%s%s)", d->geno.materials, size,
+                           palette_names[d->palette == AM_PALETTE_UNSHACKLED], size > preset ? " and materialK keys" : "");
+    }
     if (d->threads < 0 || d->threads > AM_MAX_WORKERS)
         return *key = key_index("threads"), am_fail(err, errsz, AM_ERR_RANGE, "threads = %d: must be in [0, %d]", d->threads, AM_MAX_WORKERS);
     /* the evaluation's budget, with the period in seconds at its most steps (no body is built) */
@@ -367,15 +656,26 @@ static void value_text(const am_evo_def* d, const key_def* k, char* out, int cap
         if (d->geno.nx == d->geno.ny && d->geno.ny == d->geno.nz) snprintf(out, (size_t)cap, "%d", d->geno.nx);
         else snprintf(out, (size_t)cap, "%dx%dx%d", d->geno.nx, d->geno.ny, d->geno.nz);
         break;
+    case K_PALETTE: snprintf(out, (size_t)cap, "%s", d->palette == AM_PALETTE_UNSHACKLED ? k->names[1] : k->names[0]); break;
+    case K_MATERIAL: material_text(&d->material[(int)k->lo - 1], out, cap); break;
     }
+}
+
+/* 1 when the key is written: a palette key only when it says something (the seed's palette, a
+ * materialK not set), so that a run of the seed's palette writes the text it always wrote */
+static int written(const am_evo_def* d, const key_def* k)
+{
+    if (k->kind == K_PALETTE) return d->palette != AM_PALETTE_SEED;
+    if (k->kind == K_MATERIAL) return d->material[(int)k->lo - 1].name[0] != 0;
+    return 1;
 }
 
 am_status am_evo_write(const am_evo_def* d, int with_runtime, am_text* out, char* err, int errsz)
 {
-    char v[64];
+    char v[AM_EVO_VALUE_MAX];
     am_text_put(out, "# amorph evolve configuration (key = value; docs/evolve.md)\n");
     for (int i = 0; i < KEY_COUNT; i++) {
-        if (keys[i].runtime && !with_runtime) continue;
+        if ((keys[i].runtime && !with_runtime) || !written(d, &keys[i])) continue;
         value_text(d, &keys[i], v, sizeof v);
         am_text_put(out, "%s = %s\n", keys[i].name, v);
     }
@@ -410,7 +710,7 @@ void am_evo_key_value(const am_evo_def* d, int i, char* out, int cap)
 
 int am_evo_same_run(const am_evo_def* a, const am_evo_def* b, char* key, int keysz)
 {
-    char va[64], vb[64];
+    char va[AM_EVO_VALUE_MAX], vb[AM_EVO_VALUE_MAX];
     for (int i = 0; i < KEY_COUNT; i++) {
         if (keys[i].runtime || strcmp(keys[i].name, "evaluations") == 0) continue;
         value_text(a, &keys[i], va, sizeof va);

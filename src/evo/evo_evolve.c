@@ -248,7 +248,6 @@ void am_evo_gen_begin(am_evo* e, double now)
 
 /* ---- same body, same result ---- */
 
-_Static_assert(AM_MAX_GENO_MATERIALS <= 3, "a remembered body holds 2 bits a cell");
 _Static_assert(AM_MAX_CELLS >= 2 * AM_EVO_MEMO_BYTES, "e->body holds two packed bodies");
 
 /* scratch for packed bodies: e->body, free outside crowding, holds the body looked up (its first
@@ -256,22 +255,27 @@ _Static_assert(AM_MAX_CELLS >= 2 * AM_EVO_MEMO_BYTES, "e->body holds two packed 
 #define PACKED(e) ((e)->body)
 #define PACKED_OTHER(e) ((e)->body + AM_EVO_MEMO_BYTES)
 
-uint64_t am_evo_body_key(const uint8_t* packed, int n)
+uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials)
 {
-    uint64_t h = am_hash_bytes(am_hash_u64(AM_HASH_INIT, (uint64_t)n), packed, (unsigned long)(n + 3) / 4);
+    uint64_t h = am_hash_bytes(am_hash_u64(AM_HASH_INIT, (uint64_t)n), packed, (unsigned long)am_evo_packed_bytes(n, materials));
     return h ? h : 1;
 }
 
-/* the body of n cells in layers of `layer` cells, packed 4 a byte into out, lowered to the first
- * layer: the simulator sets a body down on the floor from its lowest voxel (sim_model.c), so two
- * bodies that differ only in their height in the workspace are one body to it */
-static void pack_body(const uint8_t* cell, int layer, int n, uint8_t* out)
+/* the body of n cells in layers of `layer` cells of a run of `materials` materials, packed into out
+ * (am_evo_cell_bits), lowered to the first layer: the simulator sets a body down on the floor from
+ * its lowest voxel (sim_model.c), so two bodies that differ only in their height in the workspace
+ * are one body to it */
+static void pack_body(const uint8_t* cell, int layer, int n, int materials, uint8_t* out)
 {
+    if (n < 1) return;
     int from = 0;
     while (from < n && !cell[from]) from++;
     from -= from % layer;
-    memset(out, 0, (size_t)(n + 3) / 4);
-    for (int c = from; c < n; c++) out[(c - from) >> 2] |= (uint8_t)((cell[c] & 3) << 2 * ((c - from) & 3));
+    memset(out, 0, (size_t)am_evo_packed_bytes(n, materials));
+    if (materials <= 3)
+        for (int c = from; c < n; c++) out[(c - from) >> 2] |= (uint8_t)((cell[c] & 3) << 2 * ((c - from) & 3));
+    else
+        for (int c = from; c < n; c++) out[(c - from) >> 1] |= (uint8_t)((cell[c] & 15) << 4 * ((c - from) & 1));
 }
 
 /* the slots the table may use now */
@@ -284,7 +288,7 @@ static int memo_slots(const am_evo* e)
 static int memo_find(const am_evo* e, uint64_t key, int n)
 {
     for (int k = 0; k < AM_EVO_MEMO; k++)
-        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, PACKED(e), (size_t)(n + 3) / 4)) return k;
+        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, PACKED(e), (size_t)am_evo_packed_bytes(n, e->def.geno.materials))) return k;
     return -1;
 }
 
@@ -304,8 +308,9 @@ static void memo_store(am_evo* e, uint64_t key, int n, long id, const am_evo_res
     am_evo_memo* m = &e->memo[k];
     m->key = key;
     m->used = id;
-    memcpy(m->cells, PACKED(e), (size_t)(n + 3) / 4);
-    memset(m->cells + (n + 3) / 4, 0, sizeof m->cells - (size_t)(n + 3) / 4);
+    const int bytes = am_evo_packed_bytes(n, e->def.geno.materials);
+    memcpy(m->cells, PACKED(e), (size_t)bytes);
+    memset(m->cells + bytes, 0, sizeof m->cells - (size_t)bytes);
     m->res = *r;
     m->res.skipped = 0;
 }
@@ -322,8 +327,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
     e->reuse[j] = -1;
     e->child_key[j] = 0;
     if (!expressed || w->voxels == 0 || memo_slots(e) == 0) return;
-    pack_body(w->cell, g->nx * g->ny, n, PACKED(e));
-    const uint64_t key = am_evo_body_key(PACKED(e), n);
+    pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED(e));
+    const uint64_t key = am_evo_body_key(PACKED(e), n, e->def.geno.materials);
     e->child_key[j] = key;
     int k = memo_find(e, key, n);
     if (k >= 0) {
@@ -334,8 +339,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
         if (e->child_key[i] != key || e->reuse[i] != -1) continue;
         /* a key in common: the bodies compared cell for cell */
         if (am_genome_express(&e->child[i].genome, ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        pack_body(w->cell, g->nx * g->ny, n, PACKED_OTHER(e));
-        if (!memcmp(PACKED_OTHER(e), PACKED(e), (size_t)(n + 3) / 4)) {
+        pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED_OTHER(e));
+        if (!memcmp(PACKED_OTHER(e), PACKED(e), (size_t)am_evo_packed_bytes(n, e->def.geno.materials))) {
             e->reuse[j] = -2 - i;
             return;
         }
@@ -465,7 +470,7 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         const am_genome* g = &e->child[j].genome;
         const int n = g->nx * g->ny * g->nz;
         if (e->reuse[j] != -1 || e->child_key[j] == 0 || am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        pack_body(w->cell, g->nx * g->ny, n, PACKED(e));
+        pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED(e));
         memo_store(e, e->child_key[j], n, e->child[j].id, &res[item[j]]);
     }
     if (e->generation == 0) {

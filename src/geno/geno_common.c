@@ -21,12 +21,8 @@
 
 #include "amorph/base.h"
 
-static const char* const material_names[AM_MAX_GENO_MATERIALS] = {
-    "passive", "active",
-#if AM_MAX_GENO_MATERIALS > 2
-    "active90",
-#endif
-};
+/* the names of a def that names no material: the seed's three (a def of more names them all) */
+static const char* const seed_names[3] = {"passive", "active", "active90"};
 
 am_geno_def am_default_geno(void)
 {
@@ -107,6 +103,9 @@ static am_status check_header(const am_genome* g, char* err, int errsz)
     for (int m = 0; m < g->materials; m++) {
         size_t n = name_len(g->mat[m]);
         if (n == 0 || n >= AM_NAME_MAX) return am_fail(err, errsz, AM_ERR_RANGE, "material %d has no valid name", m);
+        for (int k = 0; k < m; k++)
+            if (strncmp(g->mat[k], g->mat[m], AM_NAME_MAX) == 0)
+                return am_fail(err, errsz, AM_ERR_RANGE, "material '%.*s' given twice", (int)n, g->mat[m]);
     }
     return AM_OK;
 }
@@ -127,7 +126,7 @@ am_status am_genome_init(am_genome* g, const am_geno_def* def, am_rng* r, char* 
     g->ny = def->ny;
     g->nz = def->nz;
     for (int m = 0; m < def->materials && m < AM_MAX_GENO_MATERIALS; m++)
-        snprintf(g->mat[m], AM_NAME_MAX, "%s", material_names[m]);
+        snprintf(g->mat[m], AM_NAME_MAX, "%s", def->mat[m][0] ? def->mat[m] : m < 3 ? seed_names[m] : "");
     am_status st = check_header(g, err, errsz);
     if (st != AM_OK) return st;
     return am_geno_ops_of(g->repr)->init(g, def, r, err, errsz);

@@ -98,9 +98,12 @@ static void put_ind(am_text* s, const char* kind, int index, const am_evo_ind* i
 
 /* ---- remembered bodies: a result as 28 numbers of 8 bytes, little-endian ---- */
 
-#define MEMO_NUMBERS 28
-#define MEMO_RESULT_BYTES AM_EVO_MEMO_RESULT_BYTES
-_Static_assert(MEMO_RESULT_BYTES == 8 * MEMO_NUMBERS, "a remembered result is 28 numbers of 8 bytes");
+/* a remembered result is 28 numbers of 8 bytes, and in a run of more than three materials one
+ * more for each material past the third (its voxels) */
+#define MEMO_NUMBERS (25 + AM_MAX_GENO_MATERIALS)
+_Static_assert(AM_EVO_MEMO_RESULT_BYTES == 8 * MEMO_NUMBERS, "a remembered result's numbers");
+static int memo_count(int materials) { return 28 + (materials > 3 ? materials - 3 : 0); }
+static long memo_result_bytes(int materials) { return 8L * memo_count(materials); }
 #define MEMO_LINE_BYTES 48 /* bytes of one base64 line: 64 characters */
 
 static const char b64[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -127,14 +130,29 @@ static const memo_field memo_fields[MEMO_NUMBERS] = {
     F_INT(detail.sim.diverged, 0, 1), F_INT(detail.sim.settled, 0, 1), F_REAL(detail.sim.residual_speed),
     F_LONG(detail.sim.kinetic_resets), F_REAL(detail.sim.sim_seconds), F_LONG(detail.sim.rebuilds),
     F_INT(detail.sim.max_pairs, 0, 2000000000L), {offsetof(am_evo_result, detail.sim.hash), NUM_U64, 0, 0},
+#if AM_MAX_GENO_MATERIALS >= 4
+    F_INT(detail.material_voxels[3], 0, AM_MAX_CELLS),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 5
+    F_INT(detail.material_voxels[4], 0, AM_MAX_CELLS),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 6
+    F_INT(detail.material_voxels[5], 0, AM_MAX_CELLS),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 7
+    F_INT(detail.material_voxels[6], 0, AM_MAX_CELLS),
+#endif
+#if AM_MAX_GENO_MATERIALS >= 8
+    F_INT(detail.material_voxels[7], 0, AM_MAX_CELLS),
+#endif
 };
-_Static_assert(AM_MAX_GENO_MATERIALS == 3, "a remembered result holds 3 material counts");
+_Static_assert(AM_MAX_GENO_MATERIALS >= 3 && AM_MAX_GENO_MATERIALS <= 8, "a remembered result holds every material's count");
 
 /* the result's numbers: integers as two's complement, doubles as bit patterns */
-static void memo_numbers(const am_evo_result* r, uint64_t v[MEMO_NUMBERS])
+static void memo_numbers(const am_evo_result* r, int count, uint64_t v[MEMO_NUMBERS])
 {
     const char* base = (const char*)r;
-    for (int k = 0; k < MEMO_NUMBERS; k++) {
+    for (int k = 0; k < count; k++) {
         const memo_field* f = &memo_fields[k];
         int i;
         long l;
@@ -150,12 +168,12 @@ static void memo_numbers(const am_evo_result* r, uint64_t v[MEMO_NUMBERS])
 
 /* the numbers back into *r (the rest of it cleared, parents unknown); 0 when an integer is out
  * of its range (a damaged checkpoint) */
-static int memo_result(const uint64_t v[MEMO_NUMBERS], am_evo_result* r)
+static int memo_result(const uint64_t v[MEMO_NUMBERS], int count, am_evo_result* r)
 {
     char* base = (char*)r;
     memset(r, 0, sizeof *r);
     r->detail.parent[0] = r->detail.parent[1] = -1;
-    for (int k = 0; k < MEMO_NUMBERS; k++) {
+    for (int k = 0; k < count; k++) {
         const memo_field* f = &memo_fields[k];
         const int64_t x = (int64_t)v[k];
         if ((f->type == NUM_INT || f->type == NUM_LONG) && (x < f->lo || x > f->hi)) return 0;
@@ -174,20 +192,21 @@ static int memo_result(const uint64_t v[MEMO_NUMBERS], am_evo_result* r)
 }
 
 /* byte i of slot k's text: its result's numbers, then its packed cells */
-static uint8_t memo_byte(const uint64_t v[MEMO_NUMBERS], const am_evo_memo* m, long i)
+static uint8_t memo_byte(const uint64_t v[MEMO_NUMBERS], long result_bytes, const am_evo_memo* m, long i)
 {
-    return i < MEMO_RESULT_BYTES ? (uint8_t)(v[i / 8] >> 8 * (i % 8)) : m->cells[i - MEMO_RESULT_BYTES];
+    return i < result_bytes ? (uint8_t)(v[i / 8] >> 8 * (i % 8)) : m->cells[i - result_bytes];
 }
 
-/* the bytes of a remembered body of a run of n cells */
-static long memo_bytes(int n) { return MEMO_RESULT_BYTES + (n + 3) / 4; }
+/* the bytes of a remembered body of a run of n cells and `materials` materials */
+static long memo_bytes(int n, int materials) { return memo_result_bytes(materials) + am_evo_packed_bytes(n, materials); }
 
 static void put_memo(am_text* s, const am_evo* e, int k)
 {
     const am_evo_memo* m = &e->memo[k];
-    const long bytes = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz);
+    const long bytes = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials);
+    const long rb = memo_result_bytes(e->def.geno.materials);
     uint64_t v[MEMO_NUMBERS];
-    memo_numbers(&m->res, v);
+    memo_numbers(&m->res, memo_count(e->def.geno.materials), v);
     am_text_put(s, "memo %d %ld %016llx %ld\n", k, m->used, (unsigned long long)m->key, bytes);
     for (long at = 0; at < bytes; at += MEMO_LINE_BYTES) {
         char line[2 + 4 * MEMO_LINE_BYTES / 3 + 2];
@@ -195,8 +214,8 @@ static void put_memo(am_text* s, const am_evo* e, int k)
         const long end = at + MEMO_LINE_BYTES < bytes ? at + MEMO_LINE_BYTES : bytes;
         for (long i = at; i < end; i += 3) {
             const long left = end - i;
-            const unsigned t = (unsigned)memo_byte(v, m, i) << 16 | (left > 1 ? (unsigned)memo_byte(v, m, i + 1) << 8 : 0u) |
-                               (left > 2 ? (unsigned)memo_byte(v, m, i + 2) : 0u);
+            const unsigned t = (unsigned)memo_byte(v, rb, m, i) << 16 | (left > 1 ? (unsigned)memo_byte(v, rb, m, i + 1) << 8 : 0u) |
+                               (left > 2 ? (unsigned)memo_byte(v, rb, m, i + 2) : 0u);
             line[len++] = b64[t >> 18 & 63];
             line[len++] = b64[t >> 12 & 63];
             line[len++] = left > 1 ? b64[t >> 6 & 63] : '=';
@@ -453,18 +472,20 @@ static am_status memo_done(am_evo_ckpt_reader* r, char* err, int errsz)
     am_evo* e = r->e;
     am_evo_memo* m = &e->memo[r->memo_slot];
     const int n = e->def.geno.nx * e->def.geno.ny * e->def.geno.nz;
+    const int count = memo_count(e->def.geno.materials);
     uint64_t v[MEMO_NUMBERS];
-    for (int i = 0; i < MEMO_NUMBERS; i++) {
+    for (int i = 0; i < count; i++) {
         v[i] = 0;
         for (int b = 7; b >= 0; b--) v[i] = v[i] << 8 | r->memo_res[8 * i + b];
     }
-    if (!memo_result(v, &m->res)) BAD("%s:%d: remembered body %d: a number of its result out of range", r->fname, r->memo_line, r->memo_slot);
+    if (!memo_result(v, count, &m->res)) BAD("%s:%d: remembered body %d: a number of its result out of range", r->fname, r->memo_line, r->memo_slot);
+    const int mats = e->def.geno.materials;
     for (int c = 0; c < n; c++)
-        if ((m->cells[c >> 2] >> 2 * (c & 3) & 3) > e->def.geno.materials)
-            BAD("%s:%d: remembered body %d: a cell beyond the run's %d materials", r->fname, r->memo_line, r->memo_slot, e->def.geno.materials);
-    for (int c = n; c < 4 * ((n + 3) / 4); c++)
-        if (m->cells[c >> 2] >> 2 * (c & 3) & 3) BAD("%s:%d: remembered body %d: bits past its last cell", r->fname, r->memo_line, r->memo_slot);
-    if (am_evo_body_key(m->cells, n) != m->key) BAD("%s:%d: remembered body %d: its key is not its cells'", r->fname, r->memo_line, r->memo_slot);
+        if (am_evo_packed_cell(m->cells, c, mats) > mats)
+            BAD("%s:%d: remembered body %d: a cell beyond the run's %d materials", r->fname, r->memo_line, r->memo_slot, mats);
+    for (int c = n; c < 8 / am_evo_cell_bits(mats) * am_evo_packed_bytes(n, mats); c++)
+        if (am_evo_packed_cell(m->cells, c, mats)) BAD("%s:%d: remembered body %d: bits past its last cell", r->fname, r->memo_line, r->memo_slot);
+    if (am_evo_body_key(m->cells, n, mats) != m->key) BAD("%s:%d: remembered body %d: its key is not its cells'", r->fname, r->memo_line, r->memo_slot);
     r->memo_slot = -1;
     return AM_OK;
 }
@@ -484,7 +505,7 @@ static am_status read_memo(am_evo_ckpt_reader* r, char** tok, int ntok, char* er
     if (strcmp(tok[0], "memo") == 0) {
         long slot, used, bytes;
         uint64_t key;
-        const long want = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz);
+        const long want = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials);
         if (r->memo_slot >= 0) BAD("%s:%d: remembered body %d ends early", fname, r->line, r->memo_slot);
         if (ntok != 5 || !to_long(tok[1], 0, AM_EVO_MEMO - 1, &slot) || !to_long(tok[2], -1, LONG_MAX, &used) || !hex64(tok[3], &key) ||
             key == 0 || !to_long(tok[4], 0, LONG_MAX, &bytes))
@@ -516,8 +537,9 @@ static am_status read_memo(am_evo_ckpt_reader* r, char** tok, int ntok, char* er
         for (int q = 0; q < 3 - pad; q++) {
             if (r->memo_have >= r->memo_need) BAD("%s:%d: remembered body %d longer than its %ld bytes", fname, r->line, r->memo_slot, r->memo_need);
             const uint8_t byte = (uint8_t)(v >> (16 - 8 * q));
-            if (r->memo_have < MEMO_RESULT_BYTES) r->memo_res[r->memo_have] = byte;
-            else m->cells[r->memo_have - MEMO_RESULT_BYTES] = byte;
+            const long rb = memo_result_bytes(e->def.geno.materials);
+            if (r->memo_have < rb) r->memo_res[r->memo_have] = byte;
+            else m->cells[r->memo_have - rb] = byte;
             r->memo_have++;
         }
     }
