@@ -28,6 +28,11 @@ expect_fail 2 "view: not in this build" "$B" view --scene cube:2 --out "$TMPD/x.
 expect_fail 2 "export --vxa: not in this build" "$B" export --scene cube:2 --vxa "$TMPD/x.vxa"
 expect_fail 2 "voxcad_quadruped.vxa: a VXA file: not in this build" "$B" sim tests/data/voxcad_quadruped.vxa
 expect_fail 2 "bench --kernels: not in this build" "$B" bench --kernels
+# the board's palette holds three materials (its RAM, docs/porting.md): the follow-up's four and a
+# fourth materialK are refused in one line, the seed's three evolve
+expect_fail 2 "palette = unshackled: 4 materials; the board profile's palette holds at most 3" "$B" evolve --palette unshackled --out "$TMPD/p4"
+printf 'material4 = x modulus=1e6 density=1000 cte=0 phase=0\n' >"$TMPD/p4.cfg"
+expect_fail 2 "p4.cfg:1: material4: a palette holds at most 3 materials \(the board profile\)" "$B" evolve --config "$TMPD/p4.cfg" --out "$TMPD/p4"
 expect_fail 2 "sim --scalars: not in this build" "$B" sim --scene cube:2 --trajectory "$TMPD/t.csv" --scalars
 check "sim --scalars on the board left a file" [ ! -e "$TMPD/t.csv" ]
 expect_fail 2 "eval: not in this build" "$B" eval </dev/null

@@ -88,8 +88,9 @@ static am_material preset_material(const am_evo_def* d, int i)
 /* a materialK key's material as the palette holds it */
 static am_material given_material(const am_evo_def* d, int k)
 {
-    static const uint8_t rgb[8][3] = { /* by index: the built-in palette's colours, then more */{40, 90, 220},  {240, 200, 30}, {220, 40, 40},  {140, 140, 150},
-                                      {60, 190, 90},  {110, 70, 40},  {200, 120, 230}, {240, 130, 20}};
+    /* by index: the built-in palette's colours, then more */
+    static const uint8_t rgb[8][3] = {{40, 90, 220}, {240, 200, 30}, {220, 40, 40},   {140, 140, 150},
+                                      {60, 190, 90}, {110, 70, 40},  {200, 120, 230}, {240, 130, 20}};
     const am_evo_material* g = &d->material[k];
     am_material m = am_default_material();
     memset(m.name, 0, sizeof m.name);
@@ -553,6 +554,9 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
     /* the palette: materialK keys without a gap after the preset, names once each, enough materials */
     {
         const int preset = preset_size[d->palette == AM_PALETTE_UNSHACKLED];
+        if (preset > AM_MAX_GENO_MATERIALS)
+            return *key = key_index("palette"), am_fail(err, errsz, AM_ERR_RANGE, "palette = %s: %d materials; the %s profile's palette holds at most %d",
+                                                        palette_names[1], preset, AM_PROFILE_NAME, AM_MAX_GENO_MATERIALS);
         int size = preset;
         for (int k = preset; k < AM_MAX_GENO_MATERIALS; k++) {
             if (!d->material[k].name[0]) continue;
@@ -570,7 +574,7 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
             snprintf(name_of[k], AM_NAME_MAX, "%s", d->material[k].name[0] ? d->material[k].name : preset_material(d, k).name);
         for (int k = 1; k < size; k++)
             for (int j = 0; j < k; j++)
-                if (!strncmp(name_of[j], name_of[k], AM_NAME_MAX)) {
+                if (!strcmp(name_of[j], name_of[k])) {
                     char name[32];
                     snprintf(name, sizeof name, "material%d", d->material[k].name[0] ? k + 1 : j + 1);
                     return *key = key_index(name), am_fail(err, errsz, AM_ERR_RANGE, "material%d and material%d are both named '%s'",
