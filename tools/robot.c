@@ -583,8 +583,8 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         }
         r->env.period_steps = am_period_steps(m, &r->env, am_from_si(m, dt, AM_DIM_TIME));
     }
-    char note[640] = "";
 #if TOOL_VXA
+    char note[640] = "";
     if (run_length && !r->eval.dt_search) {
         /* the file's run length (VoxCAD's StopCondition, evosoro's InitCmTime) as the evaluation's
          * cycles and least relaxation, unless a flag set them; one note line says so */

@@ -409,12 +409,11 @@ int tool_is_run_dir(const char* path)
     return am_port_exists(p);
 }
 
-_Static_assert(AM_EVO_KEY_MAX <= 64, "config_ctx.seen holds a bit per configuration key");
 typedef struct config_ctx {
     am_evo_def* d;
     const char* fname;
     int* key_line;
-    uint64_t seen;              /* bit k: key k set by a line already (AM_EVO_KEY_MAX is 64) */
+    uint8_t seen[AM_EVO_KEY_MAX]; /* 1: key k set by a line already */
 } config_ctx;
 
 /* one line of a configuration file; a key set twice is an error at its second line (which of two
@@ -423,16 +422,16 @@ static am_status config_line(void* ctx, int lineno, char* line, long n, char* er
 {
     config_ctx* c = (config_ctx*)ctx;
     const int key = am_evo_line_key(line, n);
-    const uint64_t bit = key >= 0 && key < AM_EVO_KEY_MAX ? (uint64_t)1 << key : 0;
-    if (c->seen & bit) {
+    const int known = key >= 0 && key < AM_EVO_KEY_MAX;
+    if (known && c->seen[key]) {
         if (c->key_line)
             return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s set again (first on line %d): say it once", c->fname, lineno,
                            am_evo_key_name(key), c->key_line[key]);
         return am_fail(err, errsz, AM_ERR_PARSE, "%s:%d: %s set again: say it once", c->fname, lineno, am_evo_key_name(key));
     }
     am_status st = am_evo_parse_line(c->d, line, n, c->fname, lineno, err, errsz);
-    if (st == AM_OK && bit) {
-        c->seen |= bit;
+    if (st == AM_OK && known) {
+        c->seen[key] = 1;
         if (c->key_line) c->key_line[key] = lineno;
     }
     return st;
@@ -448,7 +447,7 @@ am_status tool_read_config_lines(const char* path, am_evo_def* d, int nul_ends, 
     tool_src src;
     am_status st = tool_src_open(&src, path, TOOL_FILE_MAX, nul_ends, err, errsz);
     if (st == AM_OK) {
-        config_ctx c = {d, path, key_line, 0};
+        config_ctx c = {d, path, key_line, {0}};
         st = tool_src_each(&src, config_line, &c, err, errsz);
     } else if (src.binary) {
         st = tool_src_binary(&src, err, errsz);
