@@ -468,10 +468,11 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
                         "(amorph sim %s evaluates the run's best robot as the run did)\n", name, path, apart, path);
 }
 
-/* 1 when path is a folder (one the port can list) */
+/* 1 when path is a folder (one the port can list: a listing longer than the few bytes given is a
+ * folder too, so no room for a whole listing is kept; the board's RAM has none to spare) */
 static int is_folder(const char* path)
 {
-    static char names[16384];
+    char names[64];
     int count = 0;
     char e2[AM_ERR_MAX];
     const am_status st = am_port_list_dir(path, names, (long)sizeof names, &count, e2, sizeof e2);
