@@ -123,9 +123,9 @@ static int write_printable(const char* path, const am_palette* pal, const char* 
 /* --checkpoint: the run folder dir's checkpoint again, without its same-body table (am_evo.memo, a
  * cache of results: a run resumed from the copy simulates those bodies again, to the same results,
  * rows and best robot; only its count of reused evaluations is lower). 0, 1 or 2 */
-static int export_checkpoint(tool_ctx* c, const char* dir, const char* out)
+static TOOL_NOINLINE int export_checkpoint(tool_ctx* c, const char* dir, const char* out)
 {
-    char path[4096], err[AM_ERR_MAX];
+    char path[TOOL_PATH_MAX], err[AM_ERR_MAX];
     if (!tool_is_run_dir(dir)) return tool_usage_error("export: --checkpoint takes a run folder of amorph evolve; %s is not one", dir);
     if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, AM_RUN_CHECKPOINT) >= sizeof path)
         return tool_usage_error("export: %s: the path is too long", dir);
