@@ -6,18 +6,7 @@
 # Run from the repository root.
 . tests/shlib.sh
 
-cat >"$TMPD/small.cfg" <<'CFG'
-workspace = 8
-population = 6
-evaluations = 36
-cycles = 2
-period_steps = 100
-relax_max_steps = 400
-relax_min_steps = 50
-release_steps = 100
-gmx_points = 24
-seed = 11
-CFG
+small_cfg "$TMPD/small.cfg"
 E="$AMORPH evolve --quiet --no-pictures --threads 1"
 
 # --- the seed's palette: no palette line, as before palettes (config.txt and checkpoints unchanged) ---

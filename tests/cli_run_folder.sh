@@ -7,18 +7,7 @@
 # config file and an empty config.txt are named as such. Run from the repository root.
 . tests/shlib.sh
 
-cat >"$TMPD/small.cfg" <<'CFG'
-workspace = 8
-population = 6
-evaluations = 36
-cycles = 2
-period_steps = 100
-relax_max_steps = 400
-relax_min_steps = 50
-release_steps = 100
-gmx_points = 24
-seed = 11
-CFG
+small_cfg "$TMPD/small.cfg"
 E="$AMORPH evolve --config $TMPD/small.cfg --quiet --no-pictures"
 # snapall DIR: every entry of DIR, a link as its target, a file by its checksum
 snapall() { (cd "$1" && for f in $(ls -A | sort); do if [ -L "$f" ]; then echo "$f -> $(readlink "$f")"; elif [ -d "$f" ]; then echo "$f/"; else echo "$f $(cksum <"$f")"; fi; done); }

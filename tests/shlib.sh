@@ -25,3 +25,8 @@ summary() { echo "$1: $T_PASS passed, $T_FAIL failed"; [ "$T_FAIL" -eq 0 ]; }
 nowall() { cut -d, -f1-7 "$1"; }
 # sumval DIR KEY: the value of KEY in run folder DIR's summary.txt
 sumval() { sed -n "s/^$2 = //p" "$1/summary.txt"; }
+# small_cfg FILE: a small evolution's configuration (a run of 36 evaluations at 8^3 takes a second or two)
+small_cfg() {
+    printf '%s\n' "workspace = 8" "population = 6" "evaluations = 36" "cycles = 2" "period_steps = 100" "relax_max_steps = 400" \
+        "relax_min_steps = 50" "release_steps = 100" "gmx_points = 24" "seed = 11" >"$1"
+}
