@@ -175,7 +175,7 @@ same "$d" "$TMPD/lin" "a Windows checkpoint resumed on Linux"
 
 # --- input files are regular files: a folder and a device are refused at once ---
 mkdir "$TMPD/folder.lattice"
-expect_fail 2 "folder.lattice: not a regular file" W sim "$TMPD/folder.lattice"
+expect_fail 2 "folder.lattice: a folder, neither a run folder" W sim "$TMPD/folder.lattice"
 expect_fail 2 "NUL: not a regular file" W sim NUL
 expect_fail 2 "exists and is not a directory" W evolve $S --out "$TMPD/lin/config.txt"
 summary cli_win

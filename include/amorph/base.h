@@ -101,6 +101,9 @@ extern "C" {
 #ifndef AM_MAX_GENO_MATERIALS
 #define AM_MAX_GENO_MATERIALS 6 /* density fields per genome: materials of a run's palette, <= 15 (board: 3) */
 #endif
+#if AM_MAX_GENO_MATERIALS < 3 || AM_MAX_GENO_MATERIALS > 8
+#error "AM_MAX_GENO_MATERIALS: 3 to 8 (the seed's three materials; a remembered body's counts and packed cells hold 8)"
+#endif
 #ifndef AM_MAX_DCT_K
 #define AM_MAX_DCT_K 8          /* DCT amplitudes per axis, k x k x k per material (board: 4) */
 #endif

@@ -207,7 +207,6 @@ static inline int am_evo_packed_cell(const uint8_t* packed, int c, int materials
     return materials <= 3 ? packed[c >> 2] >> 2 * (c & 3) & 3 : packed[c >> 1] >> 4 * (c & 1) & 15;
 }
 #define AM_EVO_MEMO_BYTES (AM_MAX_GENO_MATERIALS <= 3 ? (AM_MAX_CELLS + 3) / 4 : (AM_MAX_CELLS + 1) / 2)
-_Static_assert(AM_MAX_GENO_MATERIALS <= 15, "a packed cell holds materials 1..15");
 typedef struct am_evo_memo {
     long used;                /* the id of the last evaluation that stored or took it (a full table
                                * gives the slot used longest ago to the next new body) */
