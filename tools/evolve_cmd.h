@@ -1,5 +1,5 @@
 /* tools/evolve_cmd.h: what amorph evolve, experiment and repro share: the options, the run loop,
- * and the run folder (tools/run_dir.c). Each function returns an exit status (0, 1 at run time, 2
+ * and the run folder (tools/run_open.c, tools/run_dir.c). Each function returns an exit status (0, 1 at run time, 2
  * for bad input, 130 interrupted) after a one-line message, unless its comment says otherwise. */
 #ifndef AMORPH_TOOLS_EVOLVE_CMD_H
 #define AMORPH_TOOLS_EVOLVE_CMD_H
@@ -62,7 +62,7 @@ typedef struct run_slot {
     double last_ckpt;
     int dirty;
 } run_slot;
-/* a new run in dir: the folder made and locked, its first files written, e initialised; 0, 1 or 2 */
+/* starting and resuming (tools/run_open.c): a new run in dir: the folder made and locked, its first files written, e initialised; 0, 1 or 2 */
 int open_start(am_evo* e, const am_evo_def* d, const char* dir);
 /* the run in dir locked and loaded into e, checked against the flags o and `extra` keys and
  * values, its tables cut back to its checkpoint; 0, 1 or 2 */
@@ -127,7 +127,8 @@ long table_rows(const char* dir, const char* file);
 /* dir's log.csv and evals.csv (those there) flushed to the storage (am_port_sync_file) */
 int sync_tables(const char* dir);
 /* a folder, FIFO or device where the run in dir replaces a file is refused: the first n of its
- * files (6: config, checkpoint, best genome and lattice, summaries; 9: its pictures too) */
+ * files (6: config, checkpoint, best genome and lattice, summaries; 9: its pictures too;
+ * tools/run_open.c) */
 int refuse_planted(const char* dir, int n);
 /* the am_evo_hooks.evaluated callback: one row of evals.csv (ctx: an evals_out) */
 void evals_append(void* ctx, const am_evo_ind* ind, const am_evo_eval* ev);
