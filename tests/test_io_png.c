@@ -1,6 +1,6 @@
 /* Tests of the picture layer: CRC-32 and Adler-32 against known vectors and bitwise references,
  * the PNG encoder (decoded here by tests/png_read.h with the library inflater) (src/io/io_png.c),
- * and a whole filmstrip from the render command's writer (tools/picture.c); the rasteriser is
+ * and a whole filmstrip from the filmstrip writer (tools/film.c); the rasteriser is
  * tests/test_io_raster.c.
  *
  * The program doubles as the PNG inspector of the shell tests (tests/cli_render.sh,

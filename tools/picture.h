@@ -75,4 +75,35 @@ int tool_load_subject(tool_ctx* c, const tool_robot_args* a, am_robot* r, const 
 /* --out FILE present and not a folder name; 0 or 2 after a message */
 int tool_check_output(const char* path, const char* cmd, const char* ext);
 
+/* the plots (tools/plot.c; amorph plot, and the end of evolve and experiment by tool_write_plot):
+ * the best fitness against evaluations of up to PLOT_MAX_RUNS folders (the runs of a folder of runs
+ * that have logged fewer than min_evals evaluations left out; each run's rows beyond max_evals left
+ * out, 0: none), or one robot's travel against time; title its heading, written atomically at path.
+ * 0 or an exit status after a message */
+#define PLOT_MAX_RUNS 128
+int tool_plot_runs(int ndirs, char** dirs, long min_evals, long max_evals, const char* title, const char* path);
+int tool_plot_travel(tool_ctx* c, const tool_robot_args* ra, const char* title, const char* path);
+
+/* the filmstrip (tools/film.c; amorph render, and a run's end by tool_write_filmstrip) */
+#define FILM_MAX_W 4096
+#define FILM_MAX_H 4096
+#define FILM_MAX_PIXELS (4096L * 1024L)
+#define FILM_MAX_PANELS 16
+typedef struct film_opts {
+    int panels;         /* pictures side by side, >= 3 */
+    int width, height;  /* pixels of the whole strip */
+    int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body either way) */
+    int colour;         /* TOOL_COL_*: what a voxel's colour shows */
+} film_opts;
+/* 6 panels, 1600 x 400, the continuous surface, coloured by material */
+film_opts film_defaults(void);
+/* records r, draws and writes the filmstrip at path (what names the robot in messages); 0, or an
+ * exit status after one line on stderr */
+int film_write(tool_ctx* c, const am_robot* r, const film_opts* o, const char* what, const char* path);
+
+/* the viewer page (tools/viewer.c; amorph view, and a run's end by tool_write_viewer): r recorded
+ * over `frames` frames, the page titled title written at path (what names the robot in messages);
+ * 0, or an exit status after one line on stderr */
+int view_write(tool_ctx* c, const am_robot* r, int frames, const char* title, const char* what, const char* path);
+
 #endif
