@@ -3,71 +3,29 @@
  * pair of groups Welch's t-test, the Mann-Whitney test, Cohen's d and Hedges' g and the runs
  * needed for 80% power; or the same on the sustained score of each run's best robot
  * (gait30.json). Markdown tables or one JSON object. docs/results.md, Statistics. */
-#include "cmd.h"
+#include "stats_cmd.h"
 #if !defined(AM_PROFILE_BOARD)
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "stats.h"
-
-#define STATS_MAX_RUNS TOOL_STATS_MAX_N /* run folders in all */
-#define STATS_MAX_GROUPS 16
-#define STATS_MAX_COUNTS 500            /* checkpoints (every N evaluations) of one run */
-#define STATS_NAME_MAX 64
-#define STATS_GAIT_FILE "gait30.json"
-/* the sustained score: gait30.json's sustained_travel, the travel per cycle over cycles 11-30 (the
- * centre of mass's displacement from the end of cycle 10 to the end of cycle 30, over 20: docs/evolve.md,
- * score); its cycle_travel must hold the 30 cycles */
-#define STATS_SUSTAINED_TO 30
-
-#define GAITS 5
-static const char* const gait_names[GAITS] = {"still", "flop", "scoot", "bounce", "roll"};
-
-typedef struct stats_run {
-    const char* dir;
-    int group;
-    long last;                       /* evaluations of its last log.csv row */
-    int counts;                      /* checkpoints reached: val[0 .. counts-1] */
-    double val[STATS_MAX_COUNTS];    /* best fitness so far at (k + 1) * every evaluations, m */
-    double sustained;                /* --score sustained: its best robot's, m per cycle */
-    int gait;                        /* index into gait_names */
-} stats_run;
-
-typedef struct stats_group {
-    char name[STATS_NAME_MAX];
-    int runs[STATS_MAX_RUNS];
-    int n;
-    int counts;                      /* checkpoints every run of the group reached */
-    int gaits[GAITS];
-} stats_group;
-
-/* the command's state: large, so static (one command runs at a time) */
-static struct {
-    stats_run runs[STATS_MAX_RUNS];
-    int nruns;
-    stats_group groups[STATS_MAX_GROUPS];
-    int ngroups;
-    long every;
-    int sustained;                   /* --score sustained */
-    tool_stats_work work;
-    double a[STATS_MAX_RUNS], b[STATS_MAX_RUNS];
-} S;
+const char* const stats_gait_names[GAITS] = {"still", "flop", "scoot", "bounce", "roll"};
+stats_set stats_S;
 
 /* ---- reading the runs ---- */
 
 /* the group named name, made when new; -1 past capacity */
 static int group_of(const char* name, long len)
 {
-    for (int g = 0; g < S.ngroups; g++)
-        if ((long)strlen(S.groups[g].name) == len && !strncmp(S.groups[g].name, name, (size_t)len)) return g;
-    if (S.ngroups >= STATS_MAX_GROUPS) return -1;
-    stats_group* G = &S.groups[S.ngroups];
+    for (int g = 0; g < stats_S.ngroups; g++)
+        if ((long)strlen(stats_S.groups[g].name) == len && !strncmp(stats_S.groups[g].name, name, (size_t)len)) return g;
+    if (stats_S.ngroups >= STATS_MAX_GROUPS) return -1;
+    stats_group* G = &stats_S.groups[stats_S.ngroups];
     memset(G, 0, sizeof *G);
     memcpy(G->name, name, (size_t)len);
     G->name[len] = 0;
-    return S.ngroups++;
+    return stats_S.ngroups++;
 }
 
 /* 1 when the name can head a table cell and a JSON string as it is */
@@ -92,9 +50,9 @@ static size_t path_len(const char* p)
 static int add_run(const char* dir, const char* name, long len)
 {
     char q[AM_QUOTE_BUF];
-    if (S.nruns >= STATS_MAX_RUNS) return tool_usage_error("stats: more than %d runs", STATS_MAX_RUNS);
-    for (int r = 0; r < S.nruns; r++)
-        if (path_len(S.runs[r].dir) == path_len(dir) && !strncmp(S.runs[r].dir, dir, path_len(dir)))
+    if (stats_S.nruns >= STATS_MAX_RUNS) return tool_usage_error("stats: more than %d runs", STATS_MAX_RUNS);
+    for (int r = 0; r < stats_S.nruns; r++)
+        if (path_len(stats_S.runs[r].dir) == path_len(dir) && !strncmp(stats_S.runs[r].dir, dir, path_len(dir)))
             return tool_usage_error("stats: %s: the same run named twice", am_quote(q, sizeof q, dir, -1));
     if (!name) {
         long end = (long)strlen(dir);
@@ -111,11 +69,11 @@ static int add_run(const char* dir, const char* name, long len)
                                 am_quote(q, sizeof q, name, len), STATS_NAME_MAX - 1);
     int g = group_of(name, len);
     if (g < 0) return tool_usage_error("stats: more than %d groups", STATS_MAX_GROUPS);
-    stats_run* R = &S.runs[S.nruns];
+    stats_run* R = &stats_S.runs[stats_S.nruns];
     memset(R, 0, sizeof *R);
     R->dir = dir;
     R->group = g;
-    S.groups[g].runs[S.groups[g].n++] = S.nruns++;
+    stats_S.groups[g].runs[stats_S.groups[g].n++] = stats_S.nruns++;
     return 0;
 }
 
@@ -137,20 +95,20 @@ static am_status log_row(void* ctx, const char* fname, int lineno, const am_evo_
     if (lr->rows > 0 && row.evaluations < R->last)
         return am_fail_at(err, errsz, AM_ERR_PARSE, fname, lineno, "evaluations go backwards (%ld after %ld)", row.evaluations, R->last);
     const double before = lr->rows > 0 ? lr->best : row.best;
-    for (long m = (R->counts + 1) * S.every; m < row.evaluations; m += S.every) {
+    for (long m = (R->counts + 1) * stats_S.every; m < row.evaluations; m += stats_S.every) {
         if (R->counts >= STATS_MAX_COUNTS)
             return am_fail_at(err, errsz, AM_ERR_CAPACITY, fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
-                              STATS_MAX_COUNTS, S.every);
+                              STATS_MAX_COUNTS, stats_S.every);
         R->val[R->counts++] = before;
     }
     if (lr->rows == 0 || row.best > lr->best) lr->best = row.best;
     R->last = row.evaluations;
     lr->rows++;
     /* a row at a checkpoint holds it itself */
-    if (row.evaluations == (R->counts + 1) * S.every) {
+    if (row.evaluations == (R->counts + 1) * stats_S.every) {
         if (R->counts >= STATS_MAX_COUNTS)
             return am_fail_at(err, errsz, AM_ERR_CAPACITY, fname, lineno, "more than %d counts of %ld evaluations (a larger --every)",
-                              STATS_MAX_COUNTS, S.every);
+                              STATS_MAX_COUNTS, stats_S.every);
         R->val[R->counts++] = lr->best;
     }
     return AM_OK;
@@ -235,8 +193,8 @@ static am_status gait_line(void* ctx, int lineno, char* line, long n, char* err,
     if (v) {
         int k = -1;
         for (int i = 0; i < GAITS; i++) {
-            size_t len = strlen(gait_names[i]);
-            if (v[0] == '"' && !strncmp(v + 1, gait_names[i], len) && v[len + 1] == '"') k = i;
+            size_t len = strlen(stats_gait_names[i]);
+            if (v[0] == '"' && !strncmp(v + 1, stats_gait_names[i], len) && v[len + 1] == '"') k = i;
         }
         if (k < 0) {
             long len = 0;
@@ -296,254 +254,6 @@ static int read_gait(stats_run* R)
     return 0;
 }
 
-/* ---- the numbers at one count ---- */
-
-/* the values of group g at checkpoint k (sustained: its scores) into x; their number */
-static int values(int g, int k, double* x)
-{
-    const stats_group* G = &S.groups[g];
-    for (int i = 0; i < G->n; i++) {
-        const stats_run* R = &S.runs[G->runs[i]];
-        x[i] = S.sustained ? R->sustained : R->val[k];
-    }
-    return G->n;
-}
-
-/* 1 when group g has a value at checkpoint k (every run reached it) */
-static int has(int g, int k) { return S.sustained ? k == 0 : k < S.groups[g].counts; }
-
-/* the groups that have checkpoint k, by mean from the highest (the first named first among equal
- * means) into order; their number */
-static int ranked(int k, int* order, double* mean)
-{
-    int n = 0;
-    for (int g = 0; g < S.ngroups; g++) {
-        if (!has(g, k)) continue;
-        tool_stats_sample s;
-        tool_stats_describe(S.a, values(g, k, S.a), &s);
-        int at = n++;
-        while (at > 0 && mean[at - 1] < s.mean) {
-            order[at] = order[at - 1];
-            mean[at] = mean[at - 1];
-            at--;
-        }
-        order[at] = g;
-        mean[at] = s.mean;
-    }
-    return n;
-}
-
-/* the comparison of groups ga and gb at checkpoint k */
-static void compare(int ga, int gb, int k, tool_stats_compare* c)
-{
-    int na = values(ga, k, S.a), nb = values(gb, k, S.b);
-    tool_stats_compare_samples(S.a, na, S.b, nb, &S.work, c);
-}
-
-/* ---- markdown ---- */
-
-#define put am_text_put
-
-/* a number of the tables: "-" when not a number, "inf" when infinite */
-static void put_num(am_text* t, double v, int decimals)
-{
-    if (isnan(v)) put(t, " - |");
-    else if (isinf(v)) put(t, " %sinf |", v < 0 ? "-" : "");
-    else put(t, " %.*f |", decimals, v);
-}
-
-/* a p value: 3 decimals, or below 0.001 two digits and a power of ten ("2.3e-05"), written out
- * here because C libraries differ in the digits of an exponent */
-static void put_p(am_text* t, double p, const char* note)
-{
-    if (isnan(p)) put(t, " - |");
-    else if (p >= 0.001 || p == 0) put(t, " %.3f%s |", p, note);
-    else {
-        int e = (int)floor(log10(p));
-        double m = floor(p / pow(10, e) * 10 + 0.5) / 10;
-        if (m >= 10) m /= 10, e++;
-        put(t, " %.1fe-%02d%s |", m, -e, note);
-    }
-}
-
-/* the first cell of a row: the count, or the score's name */
-static void put_key(am_text* t, int k)
-{
-    if (S.sustained) put(t, "| sustained |");
-    else put(t, "| %ld |", (k + 1) * S.every);
-}
-
-static int max_counts(void)
-{
-    int top = 0;
-    for (int g = 0; g < S.ngroups; g++) top = S.groups[g].counts > top ? S.groups[g].counts : top;
-    return S.sustained ? 1 : top;
-}
-
-static void markdown(am_text* t)
-{
-    const int top = max_counts(), dec = S.sustained ? 3 : 2;
-    const char* key = S.sustained ? "score" : "evaluations";
-    const char* what = S.sustained ? "travel per cycle, cycles 11-30" : "best fitness so far";
-    static int order[STATS_MAX_GROUPS];
-    static double mean[STATS_MAX_GROUPS];
-    /* each group: its runs, mean, sd, se (and, sustained, its gaits) */
-    put(t, "| %s | group | runs | mean %s (mm) | standard deviation (mm) | standard error (mm) |", key, what);
-    if (S.sustained) put(t, " still | flop | scoot | bounce | roll |");
-    put(t, "\n|---:|---|---:|---:|---:|---:|%s\n", S.sustained ? "---:|---:|---:|---:|---:|" : "");
-    for (int k = 0; k < top; k++)
-        for (int g = 0; g < S.ngroups; g++) {
-            if (!has(g, k)) continue;
-            tool_stats_sample s;
-            tool_stats_describe(S.a, values(g, k, S.a), &s);
-            put_key(t, k);
-            put(t, " %s | %d |", S.groups[g].name, s.n);
-            put_num(t, s.mean * 1000, dec);
-            put_num(t, s.sd * 1000, dec);
-            put_num(t, s.se * 1000, dec);
-            if (S.sustained)
-                for (int i = 0; i < GAITS; i++) put(t, " %d |", S.groups[g].gaits[i]);
-            put(t, "\n");
-        }
-    /* each pair, the higher mean first */
-    put(t, "\n| %s | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80%% power |\n", key);
-    put(t, "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
-        for (int i = 0; i < n; i++)
-            for (int j = i + 1; j < n; j++) {
-                tool_stats_compare c;
-                compare(order[i], order[j], k, &c);
-                put_key(t, k);
-                put(t, " %s - %s |", S.groups[order[i]].name, S.groups[order[j]].name);
-                put_num(t, c.difference * 1000, dec);
-                if (!c.tested) {
-                    const stats_group* few = S.groups[order[i]].n < 2 ? &S.groups[order[i]] : &S.groups[order[j]];
-                    put(t, " no test: %s has %d run%s | | | | | | | |\n", few->name, few->n, few->n == 1 ? "" : "s");
-                    continue;
-                }
-                put_num(t, c.t, 2);
-                put_num(t, c.df, 1);
-                put_p(t, c.p_welch, "");
-                put(t, " %.*f |", c.u == floor(c.u) ? 0 : 1, c.u);
-                put_p(t, c.p_mw, c.mw_exact ? "" : " (normal)");
-                put_num(t, c.d, 2);
-                put_num(t, c.g, 2);
-                if (c.runs_needed > 0) put(t, " %ld |\n", c.runs_needed);
-                else put(t, " - |\n");
-            }
-    }
-    /* the ranking, and which of its differences each test finds at 0.05 */
-    put(t, "\n| %s | ranking by mean | significant at 0.05, Welch's t | significant at 0.05, Mann-Whitney |\n|---:|---|---|---|\n", key);
-    for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
-        if (n < 2) continue;
-        put_key(t, k);
-        put(t, " %s", S.groups[order[0]].name);
-        for (int i = 1; i < n; i++) {
-            /* equal when the table's means are */
-            char m1[64], m2[64];
-            snprintf(m1, sizeof m1, "%.*f", dec, mean[i - 1] * 1000);
-            snprintf(m2, sizeof m2, "%.*f", dec, mean[i] * 1000);
-            int same = !strcmp(m1, m2);
-            put(t, " %s %s", same ? "=" : ">", S.groups[order[i]].name);
-        }
-        put(t, " |");
-        for (int test = 0; test < 2; test++) {
-            int found = 0;
-            for (int i = 0; i < n; i++)
-                for (int j = i + 1; j < n; j++) {
-                    tool_stats_compare c;
-                    compare(order[i], order[j], k, &c);
-                    double p = test == 0 ? c.p_welch : c.p_mw;
-                    if (!c.tested || !(p < 0.05)) continue;
-                    put(t, "%s %s > %s", found ? "," : "", S.groups[order[i]].name, S.groups[order[j]].name);
-                    found++;
-                }
-            put(t, "%s |", found ? "" : " none");
-        }
-        put(t, "\n");
-    }
-}
-
-/* ---- JSON ---- */
-
-static void put_jnum(am_text* t, const char* key, double v, int comma)
-{
-    if (isfinite(v)) put(t, "%s\"%s\": %.9g", comma ? ", " : "", key, v);
-    else put(t, "%s\"%s\": null", comma ? ", " : "", key);
-}
-
-static void json(am_text* t)
-{
-    const int top = max_counts();
-    static int order[STATS_MAX_GROUPS];
-    static double mean[STATS_MAX_GROUPS];
-    put(t, "{\"score\": \"%s\", ", S.sustained ? "sustained" : "best");
-    if (!S.sustained) put(t, "\"every\": %ld, ", S.every);
-    put(t, "\"groups\": [");
-    for (int g = 0; g < S.ngroups; g++) {
-        const stats_group* G = &S.groups[g];
-        put(t, "%s{\"group\": \"%s\", \"runs\": [", g ? ", " : "", G->name);
-        for (int i = 0; i < G->n; i++) {
-            char esc[TOOL_PATH_MAX * 2];
-            tool_json_escape(esc, sizeof esc, S.runs[G->runs[i]].dir);
-            put(t, "%s\"", i ? ", " : "");
-            am_text_write(t, esc, (long)strlen(esc));
-            put(t, "\"");
-        }
-        put(t, "]");
-        if (S.sustained)
-            for (int i = 0; i < GAITS; i++) put(t, ", \"%s\": %d", gait_names[i], G->gaits[i]);
-        else put(t, ", \"counts\": %d", G->counts);
-        put(t, "}");
-    }
-    put(t, "], \"rows\": [");
-    int rows = 0;
-    for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
-        if (n == 0) continue;
-        put(t, "%s{", rows++ ? ", " : "");
-        if (!S.sustained) put(t, "\"evaluations\": %ld, ", (k + 1) * S.every);
-        put(t, "\"groups\": [");
-        for (int g = 0, first = 1; g < S.ngroups; g++) {
-            if (!has(g, k)) continue;
-            tool_stats_sample s;
-            tool_stats_describe(S.a, values(g, k, S.a), &s);
-            put(t, "%s{\"group\": \"%s\", \"n\": %d", first ? "" : ", ", S.groups[g].name, s.n);
-            put_jnum(t, "mean", s.mean, 1);
-            put_jnum(t, "sd", s.sd, 1);
-            put_jnum(t, "se", s.se, 1);
-            put(t, "}");
-            first = 0;
-        }
-        put(t, "], \"pairs\": [");
-        for (int i = 0, first = 1; i < n; i++)
-            for (int j = i + 1; j < n; j++) {
-                tool_stats_compare c;
-                compare(order[i], order[j], k, &c);
-                put(t, "%s{\"a\": \"%s\", \"b\": \"%s\", \"tested\": %s", first ? "" : ", ", S.groups[order[i]].name, S.groups[order[j]].name,
-                    c.tested ? "true" : "false");
-                put_jnum(t, "difference", c.difference, 1);
-                put_jnum(t, "t", c.t, 1);
-                put_jnum(t, "df", c.df, 1);
-                put_jnum(t, "p_welch", c.p_welch, 1);
-                put_jnum(t, "u", c.u, 1);
-                put_jnum(t, "p_mann_whitney", c.p_mw, 1);
-                put(t, ", \"mann_whitney_exact\": %s", c.tested && c.mw_exact ? "true" : "false");
-                put_jnum(t, "cohen_d", c.d, 1);
-                put_jnum(t, "hedges_g", c.g, 1);
-                if (c.runs_needed > 0) put(t, ", \"runs_needed\": %ld}", c.runs_needed);
-                else put(t, ", \"runs_needed\": null}");
-                first = 0;
-            }
-        put(t, "], \"ranking\": [");
-        for (int i = 0; i < n; i++) put(t, "%s\"%s\"", i ? ", " : "", S.groups[order[i]].name);
-        put(t, "]}");
-    }
-    put(t, "]}\n");
-}
-
 /* ---- the command ---- */
 
 static const char stats_help[] =
@@ -572,9 +282,9 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
 {
     (void)c;
     int as_json = 0;
-    S.nruns = S.ngroups = 0;
-    S.every = 1000;
-    S.sustained = 0;
+    stats_S.nruns = stats_S.ngroups = 0;
+    stats_S.every = 1000;
+    stats_S.sustained = 0;
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -586,10 +296,10 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
             as_json = 1;
         } else if (!strcmp(a, "--score")) {
             if (!v || (strcmp(v, "best") && strcmp(v, "sustained"))) return tool_usage_error("stats: --score needs best or sustained");
-            S.sustained = !strcmp(v, "sustained");
+            stats_S.sustained = !strcmp(v, "sustained");
             i++;
         } else if (!strcmp(a, "--every")) {
-            if (!tool_parse_long(v, 1, 1000000000L, &S.every)) return tool_usage_error("stats: --every needs a whole number 1..1000000000");
+            if (!tool_parse_long(v, 1, 1000000000L, &stats_S.every)) return tool_usage_error("stats: --every needs a whole number 1..1000000000");
             i++;
         } else if (!strcmp(a, "--group")) {
             const char* eq = v ? strchr(v, '=') : 0;
@@ -611,28 +321,28 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
             if (rc) return rc;
         }
     }
-    if (S.nruns == 0) return tool_usage_error("stats: name run folders (amorph stats --help)");
-    for (int r = 0; r < S.nruns; r++) {
-        int rc = S.sustained ? read_gait(&S.runs[r]) : read_log(&S.runs[r]);
+    if (stats_S.nruns == 0) return tool_usage_error("stats: name run folders (amorph stats --help)");
+    for (int r = 0; r < stats_S.nruns; r++) {
+        int rc = stats_S.sustained ? read_gait(&stats_S.runs[r]) : read_log(&stats_S.runs[r]);
         if (rc) return rc;
     }
-    for (int g = 0; g < S.ngroups; g++) {
-        stats_group* G = &S.groups[g];
+    for (int g = 0; g < stats_S.ngroups; g++) {
+        stats_group* G = &stats_S.groups[g];
         G->counts = STATS_MAX_COUNTS;
         for (int i = 0; i < G->n; i++) {
-            const stats_run* R = &S.runs[G->runs[i]];
+            const stats_run* R = &stats_S.runs[G->runs[i]];
             if (R->counts < G->counts) G->counts = R->counts;
-            if (S.sustained) G->gaits[R->gait]++;
+            if (stats_S.sustained) G->gaits[R->gait]++;
         }
     }
-    if (!S.sustained && max_counts() == 0) {
-        fprintf(stderr, "amorph: stats: no group's runs have all reached %ld evaluations: nothing to compare\n", S.every);
+    if (!stats_S.sustained && stats_max_counts() == 0) {
+        fprintf(stderr, "amorph: stats: no group's runs have all reached %ld evaluations: nothing to compare\n", stats_S.every);
         return 0;
     }
     tool_out o;
     if (tool_out_open(&o, NULL)) return 1;
-    if (as_json) json(&o.text);
-    else markdown(&o.text);
+    if (as_json) stats_json(&o.text);
+    else stats_markdown(&o.text);
     return tool_out_close(&o, 1);
 }
 
