@@ -220,9 +220,9 @@ $(BUILD)/board_sim: $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) tools/board_sim/cortex-m.ld
 # objects it tests (TEST_TOOLS_<test>, default none: then it also cannot see tools/'s headers) and
 # the port when it calls am_port_* (TEST_PORT_<test> := 1). make check-test-links proves that a
 # library-only test holds no symbol of tools/ (nor of the port).
-TEST_TOOLS_test_io_png := tools/account.o tools/args.o tools/cmd_render.o tools/files.o tools/picture.o \
-                          tools/record.o tools/robot.o tools/run_dir.o
-TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/run_dir.o
+TEST_TOOLS_test_io_png := tools/account.o tools/args.o tools/film.o tools/files.o tools/picture.o \
+                          tools/record.o tools/robot.o tools/robot_args.o tools/run_dir.o
+TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/robot_args.o tools/run_dir.o
 TEST_TOOLS_test_record := tools/record.o
 TEST_TOOLS_test_stats  := tools/stats.o
 TEST_PORT_test_io_png  := 1

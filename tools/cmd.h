@@ -60,7 +60,7 @@ int cmd_evolve(tool_ctx* c, int argc, char** argv);
 int cmd_experiment(tool_ctx* c, int argc, char** argv);
 int cmd_repro(tool_ctx* c, int argc, char** argv);
 int cmd_export(tool_ctx* c, int argc, char** argv);
-/* amorph stats: groups of run folders compared by Welch's t and Mann-Whitney (tools/cmd_stats.c, tools/stats.h) */
+/* amorph stats: groups of run folders compared by Welch's t and Mann-Whitney (tools/cmd_stats.c, tools/stats_table.c, tools/stats.h) */
 int cmd_stats(tool_ctx* c, int argc, char** argv);
 /* amorph eval: robots as JSON lines on stdin, results as JSON lines (tools/cmd_eval.c, docs/embedding.md) */
 int cmd_eval(tool_ctx* c, int argc, char** argv);
@@ -233,7 +233,7 @@ int tool_parse_onoff(const char* s, int* out); /* "on" or "off" */
 #else
 #define TOOL_PICTURES 1
 #endif
-/* pictures (docs/pictures.md), for the end of a run; each simulates the robot with recording (its
+/* pictures (docs/pictures.md; tools/film.c, tools/viewer.c, tools/plot.c), for the end of a run; each simulates the robot with recording (its
  * eval.record is ignored) and writes path atomically. Silent on success;
  * 0, or 1 after a one-line message on stderr. */
 int tool_write_filmstrip(tool_ctx* c, const am_robot* r, const char* path);

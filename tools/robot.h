@@ -45,6 +45,8 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
  * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
  * as --population, a value missing). */
 int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_args* a);
+/* 1 when s ends with tail */
+int tool_ends_with(const char* s, const char* tail);
 
 /* the robot of a as *r (amorph/sim.h, am_robot): its body in lat, its per-cell layers (a VXA
  * file's; in c's static room, desktop profile), its environment and evaluation ready to build the
