@@ -90,6 +90,11 @@ endif
 # include/amorph/base.h (docs/porting.md, Capacities); passed as AMORPH_CONFIG_H with its absolute path
 CONFIG  ?=
 CONFIG_DEF :=
+# CHECKS=1: the debug build that checks the model's and the state's invariants after every model
+# build and step (-DAM_CHECKS, src/sim/sim_check.c, docs/architecture.md, Invariants)
+ifeq ($(CHECKS),1)
+CONFIG_DEF += -DAM_CHECKS
+endif
 ifneq ($(CONFIG),)
 ifeq ($(wildcard $(CONFIG)),)
 $(error CONFIG=$(CONFIG): no such file)
@@ -292,11 +297,19 @@ CHECK_SH ?= tests/cli_lib.sh tests/cli_build.sh tests/cli_determinism.sh tests/c
 check: all check-alloc check-tests check-layers check-exports $(TEST_BIN) check-test-links
 	@AM_TEST_QUICK=1 BUILD=$(BUILD) CLI_TESTS='$(CHECK_SH)' sh tests/run_all.sh $(TEST_BIN)
 
+# the invariants checked after every model build and step while the simulator's unit tests run their scenes
+CHECKS_TESTS := test_sim_model test_sim_step test_sim_eval test_sim_collide
+.PHONY: checks
+checks:
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/checks CHECKS=1 $(addprefix $(BUILD)/checks/tests/,$(CHECKS_TESTS))
+	@for t in $(CHECKS_TESTS); do $(BUILD)/checks/tests/$$t >/dev/null || { echo "checks: $$t failed"; exit 1; }; done; echo "checks: $(CHECKS_TESTS) pass with the invariants checked after every build and step"
+
 test: all check-alloc check-fma check-tests check-layers check-exports
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/fixed REAL=fixed all
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/board PROFILE=board $(BUILD)/board/amorph
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/small CONFIG=docs/examples/config_small.h $(BUILD)/small/amorph
+	@$(MAKE) --no-print-directory checks
 	@if command -v x86_64-w64-mingw32-gcc >/dev/null 2>&1 && command -v wine >/dev/null 2>&1; then \
 	    $(MAKE) --no-print-directory TARGET=win64 BUILD=$(BUILD)/windows all check-alloc; else echo "test: no mingw-w64 or wine: Windows build skipped"; fi
 	@if command -v mpicc >/dev/null 2>&1 && command -v mpirun >/dev/null 2>&1; then \

@@ -2,9 +2,12 @@
  * statuses with messages (capacity and range errors), and the link entries of random bodies. */
 #include "amorph.h"
 #include "harness.h"
+#include <math.h>
+#include <string.h>
 
 static am_lattice g_lat;
 static am_model g_m;
+static am_state g_s;
 
 /* bad models are statuses with messages, never crashes */
 static void test_model_errors(void)
@@ -75,11 +78,42 @@ static void test_link_layout(void)
     }
 }
 
+/* am_model_validate / am_state_validate: a built model and its steps pass; a corrupted one names
+ * the broken invariant */
+static void test_validate(void)
+{
+    char err[AM_ERR_MAX];
+    am_env env = am_default_env();
+    CHECK(am_lattice_init(&g_lat, 3, 3, 3, AM_P(0.01), err, sizeof err) == AM_OK, "%s", err);
+    for (int c = 0; c < 27; c++) g_lat.cell[c] = (uint8_t)(1 + c % 2);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_model_validate(&g_m, err, sizeof err) == AM_OK, "built model fails: %s", err);
+    am_state_reset(&g_m, &g_s);
+    g_s.actuate = 1;
+    for (int k = 0; k < 200; k++) am_step(&g_m, &g_s);
+    CHECK(!g_s.diverged, "diverged");
+    CHECK(am_state_validate(&g_m, &g_s, err, sizeof err) == AM_OK, "stepped state fails: %s", err);
+    const am_index keep = g_m.lpos[g_m.axis_end[1]];
+    g_m.lpos[g_m.axis_end[1]] = (am_index)g_m.nv;
+    CHECK(am_model_validate(&g_m, err, sizeof err) == AM_ERR_RANGE && strstr(err, "link"), "link index: %s", err);
+    g_m.lpos[g_m.axis_end[1]] = keep;
+    const am_real mass = g_m.mass[AM_VC(&g_m, 5)];
+    g_m.mass[AM_VC(&g_m, 5)] = AM_R(0);
+    CHECK(am_model_validate(&g_m, err, sizeof err) == AM_ERR_RANGE && strstr(err, "mass"), "zero mass: %s", err);
+    g_m.mass[AM_VC(&g_m, 5)] = mass;
+    CHECK(am_model_validate(&g_m, err, sizeof err) == AM_OK, "restored model fails: %s", err);
+#if !defined(AM_REAL_FIXED_POINT)
+    g_s.x[1][4] = (am_real)NAN;
+    CHECK(am_state_validate(&g_m, &g_s, err, sizeof err) == AM_ERR_RANGE && strstr(err, "voxel 4 position"), "NaN position: %s", err);
+#endif
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
     (void)test_quick; /* the harness's, unused here */
     RUN(test_model_errors);
     RUN(test_link_layout);
+    RUN(test_validate);
     return SUMMARY();
 }

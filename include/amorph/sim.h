@@ -410,6 +410,13 @@ AM_API void am_state_reset(const am_model* m, am_state* s);
 AM_API void am_step(const am_model* m, am_state* s);
 /* n time steps, stopping early on divergence; returns steps taken */
 AM_API long am_steps(const am_model* m, am_state* s, long n);
+/* the invariants (docs/architecture.md, Invariants): AM_OK, or AM_ERR_RANGE with err naming the first
+ * broken one. The model's: link layout, voxel, link and constant indices in range, finite positions,
+ * stiffnesses and time step, positive masses; the state's: finite positions, orientations, momenta,
+ * positive scales and time step (a diverged state passes: it is flagged). A build with -DAM_CHECKS
+ * runs them after every am_model_build and am_step and calls the handler on a failure */
+AM_API am_status am_model_validate(const am_model* m, char* err, int errsz);
+AM_API am_status am_state_validate(const am_model* m, const am_state* s, char* err, int errsz);
 
 /* 1 / (2 pi sqrt(max over links a1 / min(m_neg, m_pos))), s */
 AM_API am_real am_dt_analytic(const am_model* m);

@@ -221,4 +221,11 @@ static inline double am_sim_pos(const am_model* m, const am_state* s, int c, int
 /* self-collision forces into s->fc, rebuilding the candidate list when needed (sim_collide.c) */
 void am_sim_collide(const am_model* m, am_state* s);
 
+/* the AM_CHECKS build's hooks (sim_check.c): the invariants after each model build and step; a
+ * failure calls AM_CHECK_HANDLER(file, line, message) (default: stderr and abort) */
+#if defined(AM_CHECKS)
+void am_check_model(const am_model* m);
+void am_check_state(const am_model* m, const am_state* s);
+#endif
+
 #endif

@@ -417,6 +417,9 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
                            (double)env->period_s, k, dt);
         m->env.period_steps = am_period_steps(m, env, AM_MUL(AM_PV(env->dt_frac, 1.0), m->dt_rec));
     }
+#if defined(AM_CHECKS)
+    am_check_model(m);
+#endif
     return AM_OK;
 }
 

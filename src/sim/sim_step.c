@@ -889,6 +889,9 @@ void am_step(const am_model* m, am_state* s)
         s->diverged = 1;
         s->diverge_step = s->step;
     }
+#if defined(AM_CHECKS)
+    am_check_state(m, s);
+#endif
 }
 
 long am_steps(const am_model* m, am_state* s, long n)
