@@ -8,7 +8,9 @@
 # evaluations, interleaved so every representation has runs early), others-N (the other
 # experiments' variants that differ from the seed's settings, seeds 1..3, to N evaluations),
 # full-N (seed 1 of each representation extended to N evaluations: the seed's budget was
-# 20,000). Taken in rounds (fig6-1000, fig6-2000, others-2000, fig6-3000, fig6-4000,
+# 20,000), actuation-N (bodies and actuation evolved together, issue 44: GMX and CPPN on a 10^3
+# workspace, the seed's palette or the follow-up's four materials, global or evolved phase,
+# seeds 1..5, to N evaluations). Taken in rounds (fig6-1000, fig6-2000, others-2000, fig6-3000, fig6-4000,
 # fig6-5000, full-20000), all runs of a stage reach a count before any goes beyond it; a run
 # already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
@@ -72,17 +74,33 @@ others() {
     done
 }
 
+# the four variants of the actuation experiment (docs/results.md): the seed's palette (passive,
+# active) or the follow-up's four materials (palette = unshackled), each voxel actuated with its
+# material's phase (actuation = global) or with its own evolved phase too (actuation = phase);
+# GMX and CPPN on a 10^3 workspace, seeds 1..5, interleaved so every variant has runs early
+actuation() {
+    mkdir -p "$DIR/actuation"
+    for k in 1 2 3 4 5; do
+        for r in gmx cppn; do
+            run "$DIR/actuation/$r-seed-global-$k" "$1" representation=$r workspace=10 seed=$k
+            run "$DIR/actuation/$r-four-global-$k" "$1" representation=$r workspace=10 palette=unshackled seed=$k
+            run "$DIR/actuation/$r-seed-phase-$k" "$1" representation=$r workspace=10 actuation=phase seed=$k
+            run "$DIR/actuation/$r-four-phase-$k" "$1" representation=$r workspace=10 palette=unshackled actuation=phase seed=$k
+        done
+    done
+}
 case $STAGE in
-fig6-*[!0-9]* | fig6- | others-*[!0-9]* | others- | full-*[!0-9]* | full-)
-    echo "run.sh: '$STAGE': the stage takes a number of evaluations (fig6-N, others-N, full-N)" >&2
+fig6-*[!0-9]* | fig6- | others-*[!0-9]* | others- | full-*[!0-9]* | full- | actuation-*[!0-9]* | actuation-)
+    echo "run.sh: '$STAGE': the stage takes a number of evaluations (fig6-N, others-N, full-N, actuation-N)" >&2
     exit 2
     ;;
 fig6-*) fig6 "${STAGE#fig6-}" ;;
 others-*) others "${STAGE#others-}" ;;
+actuation-*) actuation "${STAGE#actuation-}" ;;
 full-*)
     for r in dct cppn gmx; do
         run "$DIR/representations/$r-1" "${STAGE#full-}" representation=$r seed=1
     done
     ;;
-*) echo "run.sh: unknown stage '$STAGE' (fig6-N, others-N, full-N)" >&2; exit 2 ;;
+*) echo "run.sh: unknown stage '$STAGE' (fig6-N, others-N, full-N, actuation-N)" >&2; exit 2 ;;
 esac

@@ -371,13 +371,17 @@ static int finish_pictures(tool_ctx* c, const char* dir)
 #else
     const am_evo* e = &c->evo;
     char path[TOOL_PATH_MAX], err[AM_ERR_MAX], title[256];
-    if (am_evo_lattice(&e->def, &e->palette, &e->best.genome, &c->work[0].geno, &c->work[0].lattice, err, sizeof err) != AM_OK) {
+    if (am_evo_express(&e->def, &e->palette, &e->best.genome, &c->work[0], err, sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: best robot: %s\n", err);
         return 1;
     }
-    /* the best robot: its body, no per-cell layers, the run's environment and evaluation */
+    /* the best robot: its body, its evolved phases and stiffnesses if it has them, the run's
+     * environment and evaluation */
     am_robot best;
     am_robot_init(&best, &c->work[0].lattice, NULL);
+#if AM_GENO_LAYERS
+    if (c->work[0].has_layers) best.layers = &c->work[0].layers;
+#endif
     best.env = e->def.env;
     best.eval = e->def.eval;
     best.eval.record = NULL;

@@ -150,7 +150,11 @@ int cmd_sim(tool_ctx* c, int argc, char** argv)
     char err[AM_ERR_MAX];
     am_lattice* lat = &c->work[0].lattice; /* the robot */
     am_robot rob;
-    static char own[TOOL_PATH_MAX];
+#if TOOL_VXA
+    static char own[TOOL_PATH_MAX]; /* a voxcraft folder's VXD name (the board reads no VXA: no room for one) */
+#else
+    char own[1];
+#endif
     if (tool_robot_load(c, &ra, lat, &rob, err, sizeof err) != AM_OK) return tool_usage_error("%s", err);
     const char* file = tool_robot_name(&ra, own, (int)sizeof own); /* a voxcraft robot: its VXD */
     if (rob.eval.dt_search && ra.dt_s > 0) return tool_usage_error("sim: --dt and dt_search exclude each other");

@@ -131,6 +131,18 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
     return AM_OK;
 }
 
+/* the evolved phases and stiffnesses of the genome just expressed into c->work[0].geno, into the
+ * robot's layers (nothing for a genome without them); ex NULL: the default stiffness range */
+static am_status genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* r, const char* fname, char* err, int errsz)
+{
+    const am_genome* g = tool_genome(c);
+    char msg[AM_ERR_MAX];
+    if (!g->controls) return AM_OK;
+    am_status st = r->layers ? am_genome_layers(g, ex, &c->work[0].geno, r->layers, msg, sizeof msg)
+                             : am_fail(msg, sizeof msg, AM_ERR_CAPACITY, "an evolved phase or stiffness: this build keeps no layers per voxel");
+    return st == AM_OK ? AM_OK : am_fail(err, errsz, st, "%s: %s", fname, msg);
+}
+
 /* a run folder's best robot, with the environment and evaluation it evolved in */
 static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, int errsz)
 {
@@ -154,6 +166,8 @@ static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, 
     am_evo_palette_into(&d, &c->evo.palette);
     st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, r->lattice, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
+    const am_express_def ex = am_evo_express_def(&d, &c->evo.palette);
+    if ((st = genome_layers(c, &ex, r, path, err, errsz)) != AM_OK) return st;
     r->env = d.env;
     r->eval = d.eval;
     return AM_OK;
@@ -185,6 +199,7 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_ro
         st = am_fail(err, errsz, AM_ERR_PARSE, "%s: not a VXA file: a VXD file (%s) goes over a base VXA file", name, vxd);
     } else if (kind == TOOL_TEXT_GENOME) {
         st = tool_genome_to_lattice(c, &src, r->lattice, err, errsz);
+        if (st == AM_OK) st = genome_layers(c, NULL, r, name, err, errsz);
     } else {
         am_lattice_reader lr;
         am_lattice_read_begin(&lr, r->lattice, name);

@@ -22,4 +22,5 @@
 #define AM_XML_MAX_ATTRS 256
 #define AM_XML_MAX_BYTES (512L << 10)
 #define AM_GAIT_MAX_CYCLES 64
+#define AM_GENO_LAYERS 0 /* no evolved phase or stiffness: genomes of materials only */
 #endif

@@ -123,10 +123,17 @@ extern "C" {
 #ifndef AM_CPPN_CHUNK
 #define AM_CPPN_CHUNK 256       /* cells a CPPN sweep evaluates at once (board: 64) */
 #endif
+#ifndef AM_GENO_LAYERS
+#define AM_GENO_LAYERS 1        /* 1: a genome may carry evolved fields beyond its materials, a phase and a
+                                 * stiffness per voxel (actuation = phase, stiffness = evolved; docs/genotypes.md);
+                                 * 0: not, and no memory for them (board: 0, its simulator has no per-voxel layers) */
+#endif
+#define AM_GENO_CONTROLS (2 * AM_GENO_LAYERS) /* evolved fields a genome may carry: phase, stiffness */
+#define AM_MAX_GENO_FIELDS (AM_MAX_GENO_MATERIALS + AM_GENO_CONTROLS) /* fields of a genome: materials, then those */
 /* the largest genome text am_genome_format can produce (every value takes at most 26 chars) */
-#define AM_GENOME_TEXT_MAX (4096L + 30L * (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K * (AM_MAX_DCT_K + 4) \
-    + AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES * (2 * AM_MAX_CPPN_NODES + 14) + AM_MAX_GENO_MATERIALS * (2 * AM_MAX_CPPN_NODES + 4) \
-    + AM_MAX_GMX_POINTS * 8))
+#define AM_GENOME_TEXT_MAX (4096L + 30L * (AM_MAX_GENO_FIELDS * AM_MAX_DCT_K * AM_MAX_DCT_K * (AM_MAX_DCT_K + 4) \
+    + AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES * (2 * AM_MAX_CPPN_NODES + 14) + AM_MAX_GENO_FIELDS * (2 * AM_MAX_CPPN_NODES + 4) \
+    + AM_MAX_GMX_POINTS * (8 + AM_GENO_CONTROLS)))
 /* ---- end of genotypes ---- */
 
 /* ---- evolver (include/amorph/evo.h) ---- */

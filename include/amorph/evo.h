@@ -52,6 +52,8 @@ typedef struct am_evo_material {
 } am_evo_material;
 enum { AM_EVO_MAT_POISSON = 1, AM_EVO_MAT_MU_STATIC = 2, AM_EVO_MAT_MU_KINETIC = 4, AM_EVO_MAT_COLOR = 8 };
 
+enum { AM_ACTUATION_GLOBAL = 0, AM_ACTUATION_PHASE = 1 };
+enum { AM_STIFFNESS_MATERIAL = 0, AM_STIFFNESS_EVOLVED = 1 };
 /* everything that defines a run; am_default_evo() is the seed's two-material experiment */
 typedef struct am_evo_def {
     am_geno_def geno;         /* representation, materials, workspace, variation rates (GMX, 2, 20^3);
@@ -64,6 +66,12 @@ typedef struct am_evo_def {
     am_param mu_static;        /* static floor friction of every material (1.0) */
     am_param mu_kinetic;       /* kinetic floor friction of every material (0.3) */
     am_param voxel_size;       /* m (0.01) */
+    int actuation;            /* AM_ACTUATION_GLOBAL (the seed's: each material's sinusoid) or AM_ACTUATION_PHASE
+                               * (the genomes evolve each voxel's phase besides, AM_CTL_PHASE) */
+    int stiffness;            /* AM_STIFFNESS_MATERIAL (each material's modulus) or AM_STIFFNESS_EVOLVED (the
+                               * genomes evolve each voxel's modulus, AM_CTL_STIFFNESS, in the range below) */
+    am_param stiffness_min;    /* Pa: an evolved modulus's range (1e5) */
+    am_param stiffness_max;    /* Pa (1e7; at most 100 x stiffness_min) */
     int population;           /* individuals, even, 2..AM_MAX_POPULATION (20) */
     long evaluations;         /* the run stops after this many evaluations, >= population */
     uint64_t seed;            /* the random stream (1) */
@@ -206,18 +214,24 @@ static inline int am_evo_packed_cell(const uint8_t* packed, int c, int materials
 {
     return materials <= 3 ? packed[c >> 2] >> 2 * (c & 3) & 3 : packed[c >> 1] >> 4 * (c & 1) & 15;
 }
-#define AM_EVO_MEMO_BYTES (AM_MAX_GENO_MATERIALS <= 3 ? (AM_MAX_CELLS + 3) / 4 : (AM_MAX_CELLS + 1) / 2)
+/* bytes of a body of n cells with its evolved fields (AM_CTL_* bits in controls): the packed cells,
+ * then a byte a cell of each field (phase, then stiffness; am_geno_work.ctl), lowered as the cells */
+static inline int am_evo_body_bytes(int n, int materials, int controls)
+{
+    return am_evo_packed_bytes(n, materials) + n * ((controls & 1) + (controls >> 1 & 1));
+}
+#define AM_EVO_MEMO_BYTES ((AM_MAX_GENO_MATERIALS <= 3 ? (AM_MAX_CELLS + 3) / 4 : (AM_MAX_CELLS + 1) / 2) + AM_GENO_CONTROLS * AM_MAX_CELLS)
 typedef struct am_evo_memo {
     long used;                /* the id of the last evaluation that stored or took it (a full table
                                * gives the slot used longest ago to the next new body) */
     uint64_t key;             /* am_evo_body_key of the body; 0: a free slot */
-    uint8_t cells[AM_EVO_MEMO_BYTES]; /* the body, packed (am_evo_cell_bits) */
+    uint8_t cells[AM_EVO_MEMO_BYTES]; /* the body, packed (am_evo_cell_bits), and its evolved fields (am_evo_body_bytes) */
     am_evo_result res;        /* its result as the evaluation gave it */
 } am_evo_memo;
 
-/* the key of a body of n cells of a run of `materials` materials packed as am_evo_memo.cells: a
- * hash of them, never 0 */
-AM_API uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials);
+/* the key of a body of n cells of a run of `materials` materials and evolved fields `controls`
+ * packed as am_evo_memo.cells: a hash of its am_evo_body_bytes, never 0 */
+AM_API uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials, int controls);
 
 /* what a caller of am_evo_generation may watch; every member may be NULL */
 typedef struct am_evo_hooks {
@@ -266,7 +280,11 @@ typedef struct am_evo {
     int order_voxels[AM_EVO_BATCH];           /* voxels of item i's body (the order's key) */
     uint8_t body[AM_MAX_CELLS];               /* scratch: the first parent's body of a crowding pair
                                                  (the second's is in w[0].geno.other); before
-                                                 crowding, bodies packed as memo's */
+                                                 crowding, bodies packed as memo's (without layers) */
+#if AM_GENO_LAYERS
+    uint8_t body_ctl[AM_GENO_CONTROLS][AM_MAX_CELLS]; /* the first parent's evolved fields (am_geno_work.ctl) */
+    uint8_t packed[2][AM_EVO_MEMO_BYTES];     /* bodies packed as memo's */
+#endif
     /* same body, same result: the bodies simulated last and their results (in the checkpoint) */
     am_evo_memo memo[AM_EVO_MEMO];
     long reused;                              /* evaluations that took a remembered result (in the checkpoint) */
@@ -291,6 +309,10 @@ typedef struct am_evo_work {
     am_lattice lattice;
     am_model model;
     am_state state;
+#if AM_GENO_LAYERS
+    am_layers layers;         /* the evolved phases and stiffnesses of the body in lattice (am_evo_express) */
+#endif
+    int has_layers;           /* 1: layers go with lattice (am_evo_simulate builds its model with them) */
 } am_evo_work;
 
 /* ---- running ---- */
@@ -375,14 +397,21 @@ AM_API am_status am_evo_generations(am_evo* const* runs, int n, am_evo_wave* wav
  * may be NULL (detail gets the measurements: displacement, settling, voxels per material) */
 AM_API void am_evo_evaluate(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w,
                      am_record* rec, am_evo_ind* out, am_evo_eval* detail);
-/* the model of w->lattice in d's environment evaluated by d's evaluation into *out (rec may be
- * NULL): what am_evo_evaluate does after the expression. AM_ERR_EMPTY (out untouched) for a body
+/* the model of w->lattice (with w->layers when w->has_layers) in d's environment evaluated by d's
+ * evaluation into *out (rec may be NULL): what am_evo_evaluate does after the expression. AM_ERR_EMPTY (out untouched) for a body
  * with no voxel, a failure of am_model_build with its message, AM_ERR_RANGE (no step taken) for an
  * evaluation over the budget at this body's period (am_evo_check_budget) */
 AM_API am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz);
-/* expresses g into lat with the run's palette and voxel size */
+/* expresses g into lat with the run's palette and voxel size (the body alone: am_evo_express
+ * gives its evolved fields too) */
 AM_API am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
                          am_lattice* lat, char* err, int errsz);
+/* expresses g into w->lattice as am_evo_lattice does, and a genome's evolved phases and
+ * stiffnesses into w->layers (w->has_layers 1; 0 for a genome without them) */
+AM_API am_status am_evo_express(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w, char* err,
+                                int errsz);
+/* how the run's genomes become bodies: its palette, voxel size and evolved stiffness range */
+AM_API am_express_def am_evo_express_def(const am_evo_def* d, const am_palette* pal);
 /* the 64-bit hash of the run so far: every genome and fitness evaluated, in order, and the
  * final population (what `make repro` compares across platforms) */
 AM_API uint64_t am_evo_hash(const am_evo* e);

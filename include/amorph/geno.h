@@ -55,11 +55,19 @@ typedef enum am_cppn_fn {
 #define AM_GMX_RADIUS_MIN AM_R(1)     /* GMX radius in [1, max(W, H, D) / 2] cells */
 #define AM_GMX_ISO AM_R(0.5)          /* GMX iso-level: fields are sum w g - AM_GMX_ISO / materials */
 
-/* DCT: a k x k x k amplitude matrix per material */
+/* Evolved fields beyond the materials (docs/genotypes.md, Evolved actuation): a genome may also
+ * describe each voxel's actuation phase and its stiffness. They follow the material fields in a
+ * genome's field order (phase first): DCT one more amplitude matrix each, CPPN one more output
+ * each, GMX a phase and a stiffness on every point. Expression quantises them to a byte a cell
+ * (am_geno_work.ctl), the same bytes a run compares, remembers and simulates. */
+enum { AM_CTL_PHASE = 1, AM_CTL_STIFFNESS = 2 };
+#define AM_CTL_ALL (AM_CTL_PHASE | AM_CTL_STIFFNESS)
+
+/* DCT: a k x k x k amplitude matrix per field */
 typedef struct am_dct_genome {
     int k;                                   /* amplitudes per axis, 1..AM_MAX_DCT_K, <= each side */
-    am_real amp[AM_MAX_GENO_MATERIALS][AM_MAX_DCT_K * AM_MAX_DCT_K * AM_MAX_DCT_K];
-                                             /* (materials x k^3) in [-1, 1] at u + k (v + k w) */
+    am_real amp[AM_MAX_GENO_FIELDS][AM_MAX_DCT_K * AM_MAX_DCT_K * AM_MAX_DCT_K];
+                                             /* (fields x k^3) in [-1, 1] at u + k (v + k w) */
 } am_dct_genome;
 
 /* one CPPN node */
@@ -80,8 +88,8 @@ typedef struct am_cppn_genome {
     am_real w[AM_MAX_CPPN_LAYERS - 1][AM_MAX_CPPN_NODES][AM_MAX_CPPN_NODES];
                                              /* ((m-1) x n x n) w[l][j][i]: node (l, i) -> (l + 1, j) */
     uint8_t on[AM_MAX_CPPN_LAYERS - 1][AM_MAX_CPPN_NODES][AM_MAX_CPPN_NODES]; /* active flags */
-    am_real w_out[AM_MAX_GENO_MATERIALS][AM_MAX_CPPN_NODES]; /* (materials x n) node (m-1, j) -> output */
-    uint8_t on_out[AM_MAX_GENO_MATERIALS][AM_MAX_CPPN_NODES]; /* active flags */
+    am_real w_out[AM_MAX_GENO_FIELDS][AM_MAX_CPPN_NODES]; /* (fields x n) node (m-1, j) -> output */
+    uint8_t on_out[AM_MAX_GENO_FIELDS][AM_MAX_CPPN_NODES]; /* active flags */
 } am_cppn_genome;
 
 /* one Gaussian point: adds weight e^(-(d / radius)^2) to its material's field at distance d */
@@ -90,6 +98,10 @@ typedef struct am_gmx_point {
     am_real weight;                          /* signed weight, [-1, 1] */
     am_real radius;                          /* cells, [1, max(W, H, D) / 2] */
     uint8_t mat;                             /* material index, < materials */
+#if AM_GENO_LAYERS
+    am_real phase;                           /* periods, [0, 1): its actuation phase (AM_CTL_PHASE) */
+    am_real stiff;                           /* [0, 1] of the run's stiffness range (AM_CTL_STIFFNESS) */
+#endif
 } am_gmx_point;
 
 /* GMX: an ordered list of Gaussian points */
@@ -102,6 +114,7 @@ typedef struct am_gmx_genome {
 typedef struct am_genome {
     int repr;                                /* am_repr */
     int materials;                           /* density fields, 1..AM_MAX_GENO_MATERIALS */
+    int controls;                            /* AM_CTL_* bits: the evolved fields it carries besides (0: none) */
     int nx, ny, nz;                          /* workspace, cells, 1..AM_MAX_DIM each */
     char mat[AM_MAX_GENO_MATERIALS][AM_NAME_MAX]; /* palette name of each material */
     union {
@@ -117,6 +130,7 @@ typedef struct am_genome {
 typedef struct am_geno_def {
     int repr;                 /* am_repr (AM_REPR_DCT) */
     int materials;            /* density fields, 1..AM_MAX_GENO_MATERIALS (2: passive, active) */
+    int controls;             /* AM_CTL_* bits: evolved phase and stiffness fields (0: none, the seed's) */
     char mat[AM_MAX_GENO_MATERIALS][AM_NAME_MAX]; /* palette name of each field; "" (the default):
                                                    * the seed's passive, active, active90 */
     int nx, ny, nz;           /* workspace, cells (AM_MAX_DIM: 20 desktop, 8 board) */
@@ -143,20 +157,30 @@ typedef struct am_express_def {
     const am_palette* palette; /* materials are looked up by the genome's names; NULL: am_default_palette() */
     am_param voxel_size;       /* lattice cell edge, m (0.01) */
     am_real threshold;         /* a cell is filled where the density sum exceeds this (0) */
+    am_param stiffness_min;    /* Pa: an evolved stiffness's range, byte 0 .. (1e5) */
+    am_param stiffness_max;    /* Pa: .. byte 255, geometric between (1e7; at most 100 x stiffness_min) */
 } am_express_def;
 
-/* default palette, 0.01 m voxels, threshold 0 */
+/* default palette, 0.01 m voxels, threshold 0, evolved stiffnesses 1e5 to 1e7 Pa */
 AM_API am_express_def am_default_express(void);
 
 /* ---- workspace ---- */
 
 /* scratch and results of expression; large: declare it static (zeroed), one per thread */
 typedef struct am_geno_work {
-    am_real dens[AM_MAX_GENO_MATERIALS][AM_MAX_CELLS]; /* (materials x cells) density fields, lattice order */
+    /* (materials x cells) density fields, lattice order; then the evolved fields' rows (two each:
+     * a representation may need both before it reduces them to one) */
+    am_real dens[AM_MAX_GENO_MATERIALS + 2 * AM_GENO_CONTROLS][AM_MAX_CELLS];
     uint8_t cell[AM_MAX_CELLS];      /* (cells) the body: 0 empty, 1 + material index */
     int voxels;                      /* filled cells of cell[] */
     int nx, ny, nz;                  /* shape of dens and cell */
     uint8_t other[AM_MAX_CELLS];     /* (cells) a second body: am_genome_distance's, the evolver's crowding's */
+#if AM_GENO_LAYERS
+    int controls;                    /* the AM_CTL_* fields of the last expression (0: ctl[] not set) */
+    uint8_t ctl[AM_GENO_CONTROLS][AM_MAX_CELLS];   /* [0] phase in 1/256 periods, [1] stiffness byte, of
+                                                    * every filled cell of cell[] (0 in empty cells) */
+    uint8_t other_ctl[AM_GENO_CONTROLS][AM_MAX_CELLS]; /* the same of other[] */
+#endif
     am_dct_work dct;                 /* DCT basis tables (cached) */
     /* lookup tables of the CPPN and GMX functions (filled and read by src/geno/geno_internal.h's helpers) */
     int tables;                      /* 1 once the lookup tables below are filled */
@@ -221,6 +245,32 @@ AM_API am_status am_genome_distance(const am_genome* a, const am_genome* b, am_g
 /* the same distance between two bodies already expressed: fraction of the n cells that differ */
 AM_API am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n);
 
+/* fields of g: its materials, then its evolved fields (AM_CTL_*) */
+static inline int am_genome_fields(const am_genome* g)
+{
+    return g->materials + (g->controls & AM_CTL_PHASE ? 1 : 0) + (g->controls & AM_CTL_STIFFNESS ? 1 : 0);
+}
+/* the field index of evolved field ctl (AM_CTL_PHASE or AM_CTL_STIFFNESS) of g, or -1 */
+static inline int am_genome_field_of(const am_genome* g, int ctl)
+{
+    if (!(g->controls & ctl)) return -1;
+    return g->materials + (ctl == AM_CTL_STIFFNESS && (g->controls & AM_CTL_PHASE) ? 1 : 0);
+}
+/* the body's layers from the last expression of g on w (am_genome_express): phase[] from its phase
+ * field (byte / 256 periods), stiffness[] from its stiffness field (def's range, geometric); the
+ * flags of the fields g does not carry 0, no boundary conditions. AM_ERR_CAPACITY in a build
+ * without AM_GENO_LAYERS, AM_ERR_ARG when w does not hold g's expression */
+AM_API am_status am_genome_layers(const am_genome* g, const am_express_def* def, const am_geno_work* w, am_layers* out,
+                                  char* err, int errsz);
+/* the stiffness of byte s (0..255) in def's range: stiffness_min (stiffness_max / stiffness_min)^(s / 255), Pa */
+AM_API am_param am_stiffness_of_byte(const am_express_def* def, int s);
+/* the crowding distance of bodies that carry evolved fields: per cell 1 where the materials differ,
+ * else the mean over the fields in `controls` of the phase's circular difference (half a period: 1)
+ * and the stiffness byte's difference (/ 255); averaged over the n cells. controls 0 is
+ * am_body_distance. actl / bctl: the bodies' rows as am_geno_work.ctl holds them */
+AM_API am_real am_body_distance_ctl(const uint8_t* a, const uint8_t* actl0, const uint8_t* actl1, const uint8_t* b,
+                                    const uint8_t* bctl0, const uint8_t* bctl1, int controls, int n);
+
 /* ---- level set ---- */
 
 /* the level set of w->dens (materials fields of nx x ny x nz): cells whose density sum exceeds
@@ -250,8 +300,8 @@ AM_API am_status am_genome_parse(am_genome* g, const char* text, const char* fna
 /* ---- reading a genome line by line ---- */
 
 /* lines a representation may require to appear once each (the largest over all of them) */
-#define AM_GENO_SEEN_MAX (AM_MAX_GENO_MATERIALS * AM_MAX_DCT_K * AM_MAX_DCT_K \
-                          + 2 * AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES + AM_MAX_GENO_MATERIALS + 8)
+#define AM_GENO_SEEN_MAX (AM_MAX_GENO_FIELDS * AM_MAX_DCT_K * AM_MAX_DCT_K \
+                          + 2 * AM_MAX_CPPN_LAYERS * AM_MAX_CPPN_NODES + AM_MAX_GENO_FIELDS + 8)
 /* state a representation's line parser keeps (part of am_genome_reader; not for callers) */
 typedef struct am_geno_parse {
     int shape;                          /* 1 once the representation's shape line was read */
@@ -269,6 +319,7 @@ typedef struct am_genome_reader {
     am_genome* g;                  /* the genome being read */
     const char* fname;             /* for messages; must stay valid while reading */
     int state;                     /* the header line expected next, or the body */
+    int version;                   /* the format version its first line gave */
     int lineno;                    /* lines read */
     am_status st;                  /* the first failure: every later call returns it */
     am_geno_parse ps;

@@ -96,7 +96,7 @@ am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, c
     if (st != AM_OK) return st;
     am_evo_palette_into(&w->def, &w->palette);
     char msg[AM_ERR_MAX];
-    st = am_evo_lattice(&w->def, &w->palette, &w->genome, &w->work.geno, &w->work.lattice, msg, sizeof msg);
+    st = am_evo_express(&w->def, &w->palette, &w->genome, &w->work, msg, sizeof msg); /* with its evolved fields */
     if (st != AM_OK) return am_fail(err, errsz, st, "genome: %s", msg);
     return simulate(w, out, err, errsz);
 }
@@ -107,6 +107,7 @@ am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, 
     if (st != AM_OK) return st;
     if (!text || !out) return am_fail(err, errsz, AM_ERR_ARG, "no lattice text or no result (NULL)");
     am_lattice* lat = &w->work.lattice;
+    w->work.has_layers = 0; /* a lattice carries no layers */
     st = am_lattice_parse(lat, text, "lattice", err, errsz);
     if (st != AM_OK) return st;
     /* the material keys that were set change the lattice's own materials (amorph sim's rule) */

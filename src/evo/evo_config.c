@@ -22,6 +22,10 @@ am_evo_def am_default_evo(void)
     d.mu_static = AM_P(1.0);
     d.mu_kinetic = AM_P(0.3);
     d.voxel_size = AM_P(0.01);
+    d.actuation = AM_ACTUATION_GLOBAL;
+    d.stiffness = AM_STIFFNESS_MATERIAL;
+    d.stiffness_min = AM_P(1e5);
+    d.stiffness_max = AM_P(1e7);
     d.population = 20;
     d.evaluations = 200;
     d.seed = 1;
@@ -280,6 +284,8 @@ static const char* const repr_names[] = {"none", "dct", "cppn", "gmx", NULL};
 static const char* const fit_names[] = {"horizontal", "x", "3d", NULL};
 static const char* const cte_names[] = {"volumetric", "linear", NULL};
 static const char* const score_names[] = {"travel", "sustained", NULL};
+static const char* const actuation_names[] = {"global", "phase", NULL};
+static const char* const stiffness_names[] = {"material", "evolved", NULL};
 
 #define OFF(f) offsetof(am_evo_def, f)
 #define MATERIAL_KEY(k, help) {"material" #k, K_MATERIAL, OFF(material[k - 1]), k, k, NULL, 0, help}
@@ -310,6 +316,12 @@ static const key_def keys[] = {
 #endif
     {"materials", K_INT, OFF(geno.materials), 1, AM_MAX_GENO_MATERIALS, NULL, 0,
      "materials of the genomes: the palette's first N (seed: 1 passive, 2 + active, 3 + active90)"},
+    {"actuation", K_ENUM, OFF(actuation), 0, 1, actuation_names, 0,
+     "global (each material's sinusoid) or phase (the genomes also evolve each voxel's phase)"},
+    {"stiffness", K_ENUM, OFF(stiffness), 0, 1, stiffness_names, 0,
+     "material (each material's modulus) or evolved (the genomes evolve each voxel's, in stiffness_min..stiffness_max)"},
+    {"stiffness_min", K_PARAM, OFF(stiffness_min), 1, 1e12, NULL, 0, "Pa: the lowest evolved modulus (stiffness = evolved)"},
+    {"stiffness_max", K_PARAM, OFF(stiffness_max), 1, 1e12, NULL, 0, "Pa: the highest, at most 100 x stiffness_min"},
     {"workspace", K_WORKSPACE, OFF(geno.nx), 1, AM_MAX_DIM, NULL, 0, "workspace cells: N or NxMxK"},
     {"population", K_INT, OFF(population), 2, AM_MAX_POPULATION, NULL, 0, "individuals (even)"},
     {"evaluations", K_LONG, OFF(evaluations), 2, 1e9, NULL, 0, "the run stops after this many evaluations"},
@@ -384,6 +396,8 @@ int am_evo_key_group(const char* key)
     if (!k) return -1;
     const size_t off = k->off;
     if (k->kind == K_PALETTE || k->kind == K_MATERIAL) return AM_KEYS_GENOTYPE; /* what genomes are made of */
+    if (off == OFF(actuation) || off == OFF(stiffness) || off == OFF(stiffness_min) || off == OFF(stiffness_max))
+        return AM_KEYS_GENOTYPE;
     /* unsigned: an offset below the member wraps past its end */
     if (off - OFF(env) < sizeof(am_env)) return AM_KEYS_ENV;
     if (off - OFF(eval) < sizeof(am_eval_def)) return AM_KEYS_EVAL;
@@ -407,7 +421,17 @@ const char* am_evo_key_help(int i)
     return i >= 0 && i < KEY_COUNT ? keys[i].help : NULL;
 }
 
+static am_status set_key(am_evo_def* d, const char* key, const char* value, char* err, int errsz);
+
 am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* err, int errsz)
+{
+    am_status st = set_key(d, key, value, err, errsz);
+    /* the genomes' evolved fields follow the two keys */
+    d->geno.controls = (d->actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) | (d->stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
+    return st;
+}
+
+static am_status set_key(am_evo_def* d, const char* key, const char* value, char* err, int errsz)
 {
     const key_def* k = find_key(key);
     char qv[AM_QUOTE_BUF]; /* the key, then the value, as messages show them */
@@ -547,6 +571,16 @@ am_status am_evo_check_key(const am_evo_def* d, int* key, char* err, int errsz)
     if (d->geno.repr == AM_REPR_DCT && (d->geno.dct_k > d->geno.nx || d->geno.dct_k > d->geno.ny || d->geno.dct_k > d->geno.nz))
         return *key = key_index("dct_k"), am_fail(err, errsz, AM_ERR_RANGE, "dct_k = %d exceeds a workspace side (%dx%dx%d)",
                                                   d->geno.dct_k, d->geno.nx, d->geno.ny, d->geno.nz);
+    if ((d->actuation != AM_ACTUATION_GLOBAL || d->stiffness != AM_STIFFNESS_MATERIAL) && !AM_GENO_LAYERS)
+        return *key = key_index(d->actuation != AM_ACTUATION_GLOBAL ? "actuation" : "stiffness"),
+               am_fail(err, errsz, AM_ERR_RANGE, "%s: the %s profile keeps no phase or stiffness per voxel (AM_GENO_LAYERS 0)",
+                       d->actuation != AM_ACTUATION_GLOBAL ? "actuation = phase" : "stiffness = evolved", AM_PROFILE_NAME);
+    if (d->stiffness == AM_STIFFNESS_EVOLVED &&
+        !(AM_PARAM_TO_DOUBLE(d->stiffness_min) <= AM_PARAM_TO_DOUBLE(d->stiffness_max) &&
+          AM_PARAM_TO_DOUBLE(d->stiffness_max) <= 100.0 * AM_PARAM_TO_DOUBLE(d->stiffness_min)))
+        return *key = key_index("stiffness_max"),
+               am_fail(err, errsz, AM_ERR_RANGE, "stiffness_max = %g: from stiffness_min (%g) to 100 times it", AM_PARAM_TO_DOUBLE(d->stiffness_max),
+                       AM_PARAM_TO_DOUBLE(d->stiffness_min));
     if (d->eval.score == AM_SCORE_SUSTAINED && d->eval.cycles <= d->eval.sustained_from)
         return *key = key_index("score"),
                am_fail(err, errsz, AM_ERR_RANGE, "score = sustained needs cycles above sustained_from (cycles = %d, sustained_from = %d): say cycles = 30",
@@ -671,6 +705,10 @@ static int written(const am_evo_def* d, const key_def* k)
 {
     if (k->kind == K_PALETTE) return d->palette != AM_PALETTE_SEED;
     if (k->kind == K_MATERIAL) return d->material[(int)k->lo - 1].name[0] != 0;
+    /* the evolved fields' keys likewise: only in a run that evolves them */
+    if (k->off == OFF(actuation)) return d->actuation != AM_ACTUATION_GLOBAL;
+    if (k->off == OFF(stiffness) || k->off == OFF(stiffness_min) || k->off == OFF(stiffness_max))
+        return d->stiffness != AM_STIFFNESS_MATERIAL;
     return 1;
 }
 

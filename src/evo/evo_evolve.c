@@ -8,13 +8,16 @@
 #include <string.h>
 
 
-static am_express_def express_def(const am_evo_def* d, const am_palette* pal)
+am_express_def am_evo_express_def(const am_evo_def* d, const am_palette* pal)
 {
     am_express_def ex = am_default_express();
     ex.palette = pal;
     ex.voxel_size = d->voxel_size;
+    ex.stiffness_min = d->stiffness_min;
+    ex.stiffness_max = d->stiffness_max;
     return ex;
 }
+#define express_def am_evo_express_def
 
 am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_geno_work* w,
                          am_lattice* lat, char* err, int errsz)
@@ -23,9 +26,30 @@ am_status am_evo_lattice(const am_evo_def* d, const am_palette* pal, const am_ge
     return am_genome_to_lattice(g, &ex, w, lat, err, errsz);
 }
 
+am_status am_evo_express(const am_evo_def* d, const am_palette* pal, const am_genome* g, am_evo_work* w, char* err,
+                         int errsz)
+{
+    w->has_layers = 0;
+    am_status st = am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, errsz);
+    if (st != AM_OK || !g->controls) return st;
+#if AM_GENO_LAYERS
+    am_express_def ex = express_def(d, pal);
+    st = am_genome_layers(g, &ex, &w->geno, &w->layers, err, errsz);
+    w->has_layers = st == AM_OK;
+    return st;
+#else
+    return am_genome_layers(g, NULL, &w->geno, NULL, err, errsz); /* refuses: no room for layers */
+#endif
+}
+
 am_status am_evo_simulate(const am_evo_def* d, am_evo_work* w, am_record* rec, am_result* out, char* err, int errsz)
 {
-    am_status st = am_model_build(&w->model, &w->lattice, &d->env, err, errsz);
+#if AM_GENO_LAYERS
+    const am_layers* layers = w->has_layers ? &w->layers : NULL;
+#else
+    const am_layers* layers = NULL;
+#endif
+    am_status st = am_model_build_layers(&w->model, &w->lattice, &d->env, layers, err, errsz);
     if (st != AM_OK) return st;
     /* the budget at this body's period (am_evo_check_key took a period in seconds at its most) */
     int key;
@@ -44,7 +68,7 @@ static void evaluate(const am_evo_def* d, const am_palette* pal, const am_genome
     am_evo_eval* detail = &r->detail;
     memset(r, 0, sizeof *r);
     detail->parent[0] = detail->parent[1] = -1;
-    if (am_evo_lattice(d, pal, g, &w->geno, &w->lattice, err, sizeof err) != AM_OK) {
+    if (am_evo_express(d, pal, g, w, err, sizeof err) != AM_OK) {
         detail->sim.diverged = 1; /* cannot happen for a checked genome; never wins if it does */
         detail->sim.fitness = AM_NO_SCORE;
         return;
@@ -104,10 +128,12 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
     if (st != AM_OK) return st;
     memset(e, 0, sizeof *e);
     e->def = *d;
+    /* the genomes' evolved fields as the run's keys say (a caller may have set the keys' members alone) */
+    e->def.geno.controls = (d->actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) | (d->stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
     am_evo_palette_into(d, &e->palette);
     am_rng_seed(&e->rng, d->seed);
     for (int i = 0; i < d->population; i++) {
-        st = am_genome_init(&e->pop[i].genome, &d->geno, &e->rng, err, errsz);
+        st = am_genome_init(&e->pop[i].genome, &e->def.geno, &e->rng, err, errsz);
         if (st != AM_OK) return st;
         e->pop[i].id = -1; /* not evaluated yet */
     }
@@ -133,13 +159,32 @@ _Static_assert(AM_EVO_BATCH >= 2 && AM_EVO_BATCH % 2 == 0, "offspring come in pa
 
 /* ---- crowding ---- */
 
-/* the body of g into w->cell (all empty when it cannot be expressed) */
+/* the body of g into w->cell and its evolved fields into w->ctl (all empty when it cannot be expressed) */
 static void express_body(const am_evo* e, const am_genome* g, am_geno_work* w)
 {
     am_express_def ex = express_def(&e->def, &e->palette);
     char msg[AM_ERR_MAX];
     int cells = g->nx * g->ny * g->nz;
-    if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) memset(w->cell, 0, (size_t)cells);
+    if (am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) {
+        memset(w->cell, 0, (size_t)cells);
+#if AM_GENO_LAYERS
+        memset(w->ctl, 0, sizeof w->ctl);
+#endif
+    }
+}
+
+/* the crowding distance of body a (its fields actl) to the body just expressed in w */
+static am_real distance_to(const am_evo* e, const uint8_t* a, const uint8_t* a0, const uint8_t* a1, const am_geno_work* w,
+                           int cells)
+{
+#if AM_GENO_LAYERS
+    if (e->def.geno.controls) return am_body_distance_ctl(a, a0, a1, w->cell, w->ctl[0], w->ctl[1], e->def.geno.controls, cells);
+#else
+    (void)e;
+    (void)a0;
+    (void)a1;
+#endif
+    return am_body_distance(a, w->cell, cells);
 }
 
 /* offspring c and c + 1 against parents a and b; e->eval[].placed says which entered */
@@ -152,14 +197,25 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
     const int cells = p1->genome.nx * p1->genome.ny * p1->genome.nz;
     /* the parents' bodies kept (the first in e->body, the second in the workspace's spare body),
      * each offspring's compared with both in w->cell */
+#if AM_GENO_LAYERS
+    const uint8_t *p1a = e->body_ctl[0], *p1b = e->body_ctl[1], *p2a = w->other_ctl[0], *p2b = w->other_ctl[1];
+#else
+    const uint8_t *p1a = NULL, *p1b = NULL, *p2a = NULL, *p2b = NULL;
+#endif
     express_body(e, &p1->genome, w);
     memcpy(e->body, w->cell, (size_t)cells);
+#if AM_GENO_LAYERS
+    if (e->def.geno.controls) memcpy(e->body_ctl, w->ctl, sizeof e->body_ctl);
+#endif
     express_body(e, &p2->genome, w);
     memcpy(w->other, w->cell, (size_t)cells);
+#if AM_GENO_LAYERS
+    if (e->def.geno.controls) memcpy(w->other_ctl, w->ctl, sizeof w->other_ctl);
+#endif
     express_body(e, &c1->genome, w);
-    am_real d1a = am_body_distance(e->body, w->cell, cells), d1b = am_body_distance(w->other, w->cell, cells);
+    am_real d1a = distance_to(e, e->body, p1a, p1b, w, cells), d1b = distance_to(e, w->other, p2a, p2b, w, cells);
     express_body(e, &c2->genome, w);
-    am_real d2a = am_body_distance(e->body, w->cell, cells), d2b = am_body_distance(w->other, w->cell, cells);
+    am_real d2a = distance_to(e, e->body, p1a, p1b, w, cells), d2b = distance_to(e, w->other, p2a, p2b, w, cells);
     am_real straight = d1a + d2b;
     am_real crossed = d2a + d1b;
     int k1 = c, k2 = c + 1;
@@ -248,16 +304,23 @@ void am_evo_gen_begin(am_evo* e, double now)
 
 /* ---- same body, same result ---- */
 
+#if AM_GENO_LAYERS
+/* scratch for packed bodies: the body looked up and one it is compared with */
+#define PACKED(e) ((e)->packed[0])
+#define PACKED_OTHER(e) ((e)->packed[1])
+#else
 _Static_assert(AM_MAX_CELLS >= 2 * AM_EVO_MEMO_BYTES, "e->body holds two packed bodies");
-
 /* scratch for packed bodies: e->body, free outside crowding, holds the body looked up (its first
  * AM_EVO_MEMO_BYTES) and one it is compared with (the next) */
 #define PACKED(e) ((e)->body)
 #define PACKED_OTHER(e) ((e)->body + AM_EVO_MEMO_BYTES)
+#endif
+/* the bytes of a packed body of the run */
+#define BODY_BYTES(e, n) am_evo_body_bytes((n), (e)->def.geno.materials, (e)->def.geno.controls)
 
-uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials)
+uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials, int controls)
 {
-    uint64_t h = am_hash_bytes(am_hash_u64(AM_HASH_INIT, (uint64_t)n), packed, (unsigned long)am_evo_packed_bytes(n, materials));
+    uint64_t h = am_hash_bytes(am_hash_u64(AM_HASH_INIT, (uint64_t)n), packed, (unsigned long)am_evo_body_bytes(n, materials, controls));
     return h ? h : 1;
 }
 
@@ -265,17 +328,29 @@ uint64_t am_evo_body_key(const uint8_t* packed, int n, int materials)
  * (am_evo_cell_bits), lowered to the first layer: the simulator sets a body down on the floor from
  * its lowest voxel (sim_model.c), so two bodies that differ only in their height in the workspace
  * are one body to it */
-static void pack_body(const uint8_t* cell, int layer, int n, int materials, uint8_t* out)
+static void pack_body(const am_geno_work* w, int layer, int n, int materials, int controls, uint8_t* out)
 {
+    const uint8_t* cell = w->cell;
     if (n < 1) return;
     int from = 0;
     while (from < n && !cell[from]) from++;
     from -= from % layer;
-    memset(out, 0, (size_t)am_evo_packed_bytes(n, materials));
+    memset(out, 0, (size_t)am_evo_body_bytes(n, materials, controls));
     if (materials <= 3)
         for (int c = from; c < n; c++) out[(c - from) >> 2] |= (uint8_t)((cell[c] & 3) << 2 * ((c - from) & 3));
     else
         for (int c = from; c < n; c++) out[(c - from) >> 1] |= (uint8_t)((cell[c] & 15) << 4 * ((c - from) & 1));
+#if AM_GENO_LAYERS
+    /* the evolved fields, a byte a cell each, lowered with the cells */
+    uint8_t* at = out + am_evo_packed_bytes(n, materials);
+    for (int k = 0; k < AM_GENO_CONTROLS; k++) {
+        if (!(controls & (1 << k))) continue;
+        memcpy(at, w->ctl[k] + from, (size_t)(n - from));
+        at += n;
+    }
+#else
+    (void)controls;
+#endif
 }
 
 /* the slots the table may use now */
@@ -288,7 +363,7 @@ static int memo_slots(const am_evo* e)
 static int memo_find(const am_evo* e, uint64_t key, int n)
 {
     for (int k = 0; k < AM_EVO_MEMO; k++)
-        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, PACKED(e), (size_t)am_evo_packed_bytes(n, e->def.geno.materials))) return k;
+        if (e->memo[k].key == key && !memcmp(e->memo[k].cells, PACKED(e), (size_t)BODY_BYTES(e, n))) return k;
     return -1;
 }
 
@@ -308,7 +383,7 @@ static void memo_store(am_evo* e, uint64_t key, int n, long id, const am_evo_res
     am_evo_memo* m = &e->memo[k];
     m->key = key;
     m->used = id;
-    const int bytes = am_evo_packed_bytes(n, e->def.geno.materials);
+    const int bytes = BODY_BYTES(e, n);
     memcpy(m->cells, PACKED(e), (size_t)bytes);
     memset(m->cells + bytes, 0, sizeof m->cells - (size_t)bytes);
     m->res = *r;
@@ -327,8 +402,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
     e->reuse[j] = -1;
     e->child_key[j] = 0;
     if (!expressed || w->voxels == 0 || memo_slots(e) == 0) return;
-    pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED(e));
-    const uint64_t key = am_evo_body_key(PACKED(e), n, e->def.geno.materials);
+    pack_body(w, g->nx * g->ny, n, e->def.geno.materials, e->def.geno.controls, PACKED(e));
+    const uint64_t key = am_evo_body_key(PACKED(e), n, e->def.geno.materials, e->def.geno.controls);
     e->child_key[j] = key;
     int k = memo_find(e, key, n);
     if (k >= 0) {
@@ -339,8 +414,8 @@ static void mark_reuse(am_evo* e, int j, int expressed, am_geno_work* w, const a
         if (e->child_key[i] != key || e->reuse[i] != -1) continue;
         /* a key in common: the bodies compared cell for cell */
         if (am_genome_express(&e->child[i].genome, ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED_OTHER(e));
-        if (!memcmp(PACKED_OTHER(e), PACKED(e), (size_t)am_evo_packed_bytes(n, e->def.geno.materials))) {
+        pack_body(w, g->nx * g->ny, n, e->def.geno.materials, e->def.geno.controls, PACKED_OTHER(e));
+        if (!memcmp(PACKED_OTHER(e), PACKED(e), (size_t)BODY_BYTES(e, n))) {
             e->reuse[j] = -2 - i;
             return;
         }
@@ -470,7 +545,7 @@ am_status am_evo_batch_end(am_evo* e, const am_evo_result* res, am_geno_work* w,
         const am_genome* g = &e->child[j].genome;
         const int n = g->nx * g->ny * g->nz;
         if (e->reuse[j] != -1 || e->child_key[j] == 0 || am_genome_express(g, &ex, w, NULL, msg, sizeof msg) != AM_OK) continue;
-        pack_body(w->cell, g->nx * g->ny, n, e->def.geno.materials, PACKED(e));
+        pack_body(w, g->nx * g->ny, n, e->def.geno.materials, e->def.geno.controls, PACKED(e));
         memo_store(e, e->child_key[j], n, e->child[j].id, &res[item[j]]);
     }
     if (e->generation == 0) {

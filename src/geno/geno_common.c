@@ -53,6 +53,8 @@ am_express_def am_default_express(void)
     d.palette = NULL;
     d.voxel_size = AM_P(0.01);
     d.threshold = AM_R(0);
+    d.stiffness_min = AM_P(1e5);
+    d.stiffness_max = AM_P(1e7);
     return d;
 }
 
@@ -100,6 +102,10 @@ static am_status check_header(const am_genome* g, char* err, int errsz)
     if (g->nx > AM_MAX_DIM || g->ny > AM_MAX_DIM || g->nz > AM_MAX_DIM)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "workspace %d x %d x %d exceeds the %s profile's %d per side",
                        g->nx, g->ny, g->nz, AM_PROFILE_NAME, AM_MAX_DIM);
+    if (g->controls & ~AM_CTL_ALL) return am_fail(err, errsz, AM_ERR_RANGE, "evolved fields %d: not a set of phase (1) and stiffness (2)", g->controls);
+    if (g->controls && !AM_GENO_LAYERS)
+        return am_fail(err, errsz, AM_ERR_CAPACITY, "an evolved %s: the %s profile keeps no phase or stiffness per voxel (AM_GENO_LAYERS 0)",
+                       g->controls & AM_CTL_PHASE ? "phase" : "stiffness", AM_PROFILE_NAME);
     for (int m = 0; m < g->materials; m++) {
         size_t n = name_len(g->mat[m]);
         if (n == 0 || n >= AM_NAME_MAX) return am_fail(err, errsz, AM_ERR_RANGE, "material %d has no valid name", m);
@@ -122,6 +128,7 @@ am_status am_genome_init(am_genome* g, const am_geno_def* def, am_rng* r, char* 
     memset(g, 0, sizeof *g);
     g->repr = def->repr;
     g->materials = def->materials;
+    g->controls = def->controls;
     g->nx = def->nx;
     g->ny = def->ny;
     g->nz = def->nz;
@@ -140,7 +147,8 @@ void am_genome_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 
 static int same_header(const am_genome* a, const am_genome* b)
 {
-    if (a->repr != b->repr || a->materials != b->materials || a->nx != b->nx || a->ny != b->ny || a->nz != b->nz)
+    if (a->repr != b->repr || a->materials != b->materials || a->controls != b->controls || a->nx != b->nx ||
+        a->ny != b->ny || a->nz != b->nz)
         return 0;
     for (int m = 0; m < a->materials; m++)
         if (strcmp(a->mat[m], b->mat[m]) != 0) return 0;
@@ -176,6 +184,7 @@ uint64_t am_genome_hash(const am_genome* g)
     h = am_hash_u64(h, (uint64_t)g->nz);
     for (int m = 0; m < g->materials && m < AM_MAX_GENO_MATERIALS; m++)
         h = am_hash_bytes(h, g->mat[m], (unsigned long)name_len(g->mat[m]));
+    if (g->controls) h = am_hash_u64(h, 0x100u | (uint64_t)g->controls); /* none: the hash of a genome before them */
     const am_geno_ops* ops = am_geno_ops_of(g->repr);
     return ops ? ops->hash(h, g) : h;
 }
@@ -188,6 +197,21 @@ int am_genome_equal(const am_genome* a, const am_genome* b)
 }
 
 /* ---- helpers for the representations ---- */
+
+void am_geno_controls_of_fields(const am_genome* g, am_geno_work* w)
+{
+#if AM_GENO_LAYERS
+    const int cells = g->nx * g->ny * g->nz;
+    const int ph = am_genome_field_of(g, AM_CTL_PHASE), st = am_genome_field_of(g, AM_CTL_STIFFNESS);
+    if (ph >= 0)
+        for (int c = 0; c < cells; c++) w->dens[ph][c] = AM_MUL(w->dens[ph][c], AM_R(0.5));
+    if (st >= 0)
+        for (int c = 0; c < cells; c++) w->dens[st][c] = am_clamp(AM_MUL(w->dens[st][c] + AM_R(1), AM_R(0.5)), AM_R(0), AM_R(1));
+#else
+    (void)g;
+    (void)w;
+#endif
+}
 
 am_real am_geno_perturb(am_rng* r, am_real v, am_real step, am_real lo, am_real hi)
 {

@@ -39,7 +39,7 @@ static const am_real fn_lip[AM_FN_COUNT] = {AM_R(0.5), AM_R(1.7155277699214135),
 static int cppn_values(const am_genome* g)
 {
     const int L = g->cppn.layers, n = g->cppn.nodes;
-    return 4 * L * n + 2 * (4 * n + (L - 1) * n * n + g->materials * n);
+    return 4 * L * n + 2 * (4 * n + (L - 1) * n * n + am_genome_fields(g) * n);
 }
 
 static am_status cppn_check(const am_genome* g, char* err, int errsz)
@@ -66,7 +66,7 @@ static am_status cppn_check(const am_genome* g, char* err, int errsz)
             for (int i = 0; i < c->nodes; i++)
                 if (!(am_fabs(c->w[l][j][i]) <= AM_CPPN_WEIGHT_MAX) || c->on[l][j][i] > 1)
                     return am_fail(err, errsz, AM_ERR_RANGE, "CPPN connection %d %d %d out of range", l + 1, j, i);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int j = 0; j < c->nodes; j++)
             if (!(am_fabs(c->w_out[m][j]) <= AM_CPPN_WEIGHT_MAX) || c->on_out[m][j] > 1)
                 return am_fail(err, errsz, AM_ERR_RANGE, "CPPN output connection %d %d out of range", m, j);
@@ -117,7 +117,7 @@ static void walk_all(am_genome* g, walk* k)
     for (int l = 0; l + 1 < L; l++)
         for (int j = 0; j < n; j++)
             for (int i = 0; i < n; i++) walk_conn(k, &c->w[l][j][i], &c->on[l][j][i]);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int j = 0; j < n; j++) walk_conn(k, &c->w_out[m][j], &c->on_out[m][j]);
 }
 
@@ -176,7 +176,7 @@ static void take_node(am_genome* dst, const am_genome* src, int l, int j)
         }
     }
     if (l == s->layers - 1)
-        for (int m = 0; m < src->materials; m++) {
+        for (int m = 0; m < am_genome_fields(src); m++) {
             d->w_out[m][j] = s->w_out[m][j];
             d->on_out[m][j] = s->on_out[m][j];
         }
@@ -221,7 +221,7 @@ static uint64_t cppn_hash(uint64_t h, const am_genome* g)
     for (int l = 0; l + 1 < c->layers; l++)
         for (int j = 0; j < c->nodes; j++)
             for (int i = 0; i < c->nodes; i++) h = am_hash_real(am_hash_u64(h, c->on[l][j][i]), c->w[l][j][i]);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int j = 0; j < c->nodes; j++) h = am_hash_real(am_hash_u64(h, c->on_out[m][j]), c->w_out[m][j]);
     return h;
 }
@@ -248,7 +248,7 @@ static int cppn_equal(const am_genome* a, const am_genome* b)
         for (int j = 0; j < x->nodes; j++)
             for (int i = 0; i < x->nodes; i++)
                 if (x->on[l][j][i] != y->on[l][j][i] || !same_real(x->w[l][j][i], y->w[l][j][i])) return 0;
-    for (int m = 0; m < a->materials; m++)
+    for (int m = 0; m < am_genome_fields(a); m++)
         for (int j = 0; j < x->nodes; j++)
             if (x->on_out[m][j] != y->on_out[m][j] || !same_real(x->w_out[m][j], y->w_out[m][j])) return 0;
     return 1;
@@ -375,7 +375,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
             }
         }
         am_real(*last)[AM_CPPN_CHUNK] = w->scratch.cppn.act[(L - 1) & 1];
-        for (int m = 0; m < g->materials; m++) {
+        for (int m = 0; m < am_genome_fields(g); m++) {
             am_real* d = w->dens[m] + c0;
             for (int i = 0; i < cnt; i++) d[i] = AM_R(0);
             for (int j = 0; j < n; j++)
@@ -385,6 +385,7 @@ static void cppn_express(const am_genome* g, am_geno_work* w)
                 }
         }
     }
+    am_geno_controls_of_fields(g, w);
 }
 
 /* ---- text ---- */
@@ -423,7 +424,7 @@ static void cppn_format(const am_genome* g, am_text* s)
             for (int i = 0; i < c->nodes; i++) put_conn(s, c->on[l][j][i], c->w[l][j][i]);
             am_text_put(s, "\n");
         }
-    for (int m = 0; m < g->materials; m++) {
+    for (int m = 0; m < am_genome_fields(g); m++) {
         am_text_put(s, "out %d", m);
         for (int j = 0; j < c->nodes; j++) put_conn(s, c->on_out[m][j], c->w_out[m][j]);
         am_text_put(s, "\n");
@@ -506,9 +507,9 @@ static am_status cppn_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char
         id = L * n + n + (l - 1) * n + j;
     } else if (strcmp(tok[0], "out") == 0) {
         if (ntok != 2 + 2 * n) return am_fail(err, errsz, AM_ERR_PARSE, "'out MATERIAL' needs %d pairs ACTIVE WEIGHT", n);
-        if (!am_geno_tok_int(tok[1], 0, g->materials - 1, &l))
-            return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
-                           am_quote(q1, sizeof q1, tok[1], -1), g->materials - 1);
+        if (!am_geno_tok_int(tok[1], 0, am_genome_fields(g) - 1, &l))
+            return am_fail(err, errsz, AM_ERR_RANGE, "%s '%s' is not 0..%d", am_geno_field_word(g),
+                           am_quote(q1, sizeof q1, tok[1], -1), am_genome_fields(g) - 1);
         if ((st = parse_conns(tok + 2, n, c->w_out[l], 1, c->on_out[l], 1, err, errsz)) != AM_OK) return st;
         id = 2 * L * n + l;
     } else {
@@ -535,7 +536,7 @@ static am_status cppn_parse_end(am_genome* g, am_geno_parse* ps, char* err, int 
     for (int l = 1; l < L; l++)
         for (int j = 0; j < n; j++)
             if (!ps->seen[L * n + n + (l - 1) * n + j]) return am_fail(err, errsz, AM_ERR_PARSE, "missing line 'link %d %d'", l, j);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         if (!ps->seen[2 * L * n + m]) return am_fail(err, errsz, AM_ERR_PARSE, "missing line 'out %d'", m);
     return AM_OK;
 }

@@ -21,10 +21,10 @@ static am_status dct_check(const am_genome* g, char* err, int errsz)
         return am_fail(err, errsz, AM_ERR_CAPACITY, "DCT k %d exceeds the %s profile's %d", d->k, AM_PROFILE_NAME, AM_MAX_DCT_K);
     if (d->k < 1 || d->k > g->nx || d->k > g->ny || d->k > g->nz)
         return am_fail(err, errsz, AM_ERR_RANGE, "DCT k %d: must be 1 to the smallest workspace side", d->k);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int i = 0; i < cube(d->k); i++)
             if (!(d->amp[m][i] >= -AM_DCT_AMP_MAX && d->amp[m][i] <= AM_DCT_AMP_MAX))
-                return am_fail(err, errsz, AM_ERR_RANGE, "DCT amplitude %d of material %d outside [-1, 1]", i, m);
+                return am_fail(err, errsz, AM_ERR_RANGE, "DCT amplitude %d of %s %d outside [-1, 1]", i, am_geno_field_word(g), m);
     return AM_OK;
 }
 
@@ -35,7 +35,7 @@ static am_status dct_init(am_genome* g, const am_geno_def* def, am_rng* r, char*
         return am_fail(err, errsz, AM_ERR_CAPACITY, "DCT k %d exceeds the %s profile's %d", def->dct_k, AM_PROFILE_NAME, AM_MAX_DCT_K);
     if (def->dct_k < 1 || def->dct_k > g->nx || def->dct_k > g->ny || def->dct_k > g->nz)
         return am_fail(err, errsz, AM_ERR_RANGE, "DCT k %d: must be 1 to the smallest workspace side", def->dct_k);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int i = 0; i < cube(g->dct.k); i++) g->dct.amp[m][i] = am_rng_range(r, -AM_DCT_AMP_MAX, AM_DCT_AMP_MAX);
     return AM_OK;
 }
@@ -43,7 +43,7 @@ static am_status dct_init(am_genome* g, const am_geno_def* def, am_rng* r, char*
 static void dct_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
 {
     const am_real step = AM_MUL(def->step, AM_MUL(AM_R(2), AM_DCT_AMP_MAX));
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int i = 0; i < cube(g->dct.k); i++)
             if (am_rng_chance(r, def->rate))
                 g->dct.amp[m][i] = am_geno_perturb(r, g->dct.amp[m][i], step, -AM_DCT_AMP_MAX, AM_DCT_AMP_MAX);
@@ -55,7 +55,7 @@ static void dct_crossover(const am_genome* a, const am_genome* b, am_genome* c1,
     (void)def;
     *c1 = *a;
     if (c2) *c2 = *b;
-    for (int m = 0; m < a->materials; m++)
+    for (int m = 0; m < am_genome_fields(a); m++)
         for (int i = 0; i < cube(a->dct.k); i++)
             if (am_rng_below(r, 2)) {
                 c1->dct.amp[m][i] = b->dct.amp[m][i];
@@ -65,12 +65,12 @@ static void dct_crossover(const am_genome* a, const am_genome* b, am_genome* c1,
 
 static int dct_same_shape(const am_genome* a, const am_genome* b) { return a->dct.k == b->dct.k; }
 
-static int dct_values(const am_genome* g) { return g->materials * cube(g->dct.k); }
+static int dct_values(const am_genome* g) { return am_genome_fields(g) * cube(g->dct.k); }
 
 static uint64_t dct_hash(uint64_t h, const am_genome* g)
 {
     h = am_hash_u64(h, (uint64_t)g->dct.k);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int i = 0; i < cube(g->dct.k); i++) h = am_hash_real(h, g->dct.amp[m][i]);
     return h;
 }
@@ -78,7 +78,7 @@ static uint64_t dct_hash(uint64_t h, const am_genome* g)
 static int dct_equal(const am_genome* a, const am_genome* b)
 {
     if (a->dct.k != b->dct.k) return 0;
-    for (int m = 0; m < a->materials; m++)
+    for (int m = 0; m < am_genome_fields(a); m++)
         if (memcmp(a->dct.amp[m], b->dct.amp[m], sizeof(am_real) * (size_t)cube(a->dct.k)) != 0) return 0;
     return 1;
 }
@@ -88,7 +88,8 @@ static void dct_express(const am_genome* g, am_geno_work* w)
     const int k[3] = {g->dct.k, g->dct.k, g->dct.k};
     const int n[3] = {g->nx, g->ny, g->nz};
     am_dct_plan(&w->dct, k, n, NULL, 0); /* k and n were checked with the genome */
-    for (int m = 0; m < g->materials; m++) am_dct_inverse(&w->dct, &w->scratch.dct, g->dct.amp[m], w->dens[m]);
+    for (int m = 0; m < am_genome_fields(g); m++) am_dct_inverse(&w->dct, &w->scratch.dct, g->dct.amp[m], w->dens[m]);
+    am_geno_controls_of_fields(g, w);
 }
 
 static void dct_format(const am_genome* g, am_text* s)
@@ -96,7 +97,7 @@ static void dct_format(const am_genome* g, am_text* s)
     const int k = g->dct.k;
     am_text_put(s, "dct %d\n", k);
     am_text_put(s, "# amp MATERIAL V W, then the amplitudes of u = 0..%d\n", k - 1);
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int w = 0; w < k; w++)
             for (int v = 0; v < k; v++) {
                 am_text_put(s, "amp %d %d %d", m, v, w);
@@ -129,9 +130,9 @@ static am_status dct_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
                        am_quote(q1, sizeof q1, tok[0], -1));
     if (ntok != 4 + k)
         return am_fail(err, errsz, AM_ERR_PARSE, "'amp MATERIAL V W' needs %d amplitudes, found %d", k, ntok - 4 > 0 ? ntok - 4 : 0);
-    if (!am_geno_tok_int(tok[1], 0, g->materials - 1, &m))
-        return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
-                       am_quote(q1, sizeof q1, tok[1], -1), g->materials - 1);
+    if (!am_geno_tok_int(tok[1], 0, am_genome_fields(g) - 1, &m))
+        return am_fail(err, errsz, AM_ERR_RANGE, "%s '%s' is not 0..%d", am_geno_field_word(g),
+                       am_quote(q1, sizeof q1, tok[1], -1), am_genome_fields(g) - 1);
     if (!am_geno_tok_int(tok[2], 0, k - 1, &v) || !am_geno_tok_int(tok[3], 0, k - 1, &w))
         return am_fail(err, errsz, AM_ERR_RANGE, "amplitude row '%s %s' is not 0..%d",
                        am_quote(q1, sizeof q1, tok[2], -1), am_quote(q2, sizeof q2, tok[3], -1), k - 1);
@@ -150,7 +151,7 @@ static am_status dct_parse_end(am_genome* g, am_geno_parse* ps, char* err, int e
 {
     if (!ps->shape) return am_fail(err, errsz, AM_ERR_PARSE, "missing 'dct K' line");
     const int k = g->dct.k;
-    for (int m = 0; m < g->materials; m++)
+    for (int m = 0; m < am_genome_fields(g); m++)
         for (int w = 0; w < k; w++)
             for (int v = 0; v < k; v++)
                 if (!ps->seen[m * k * k + v + k * w])

@@ -3,6 +3,7 @@
  *   amorph-genome 1
  *   repr dct|cppn|gmx
  *   materials NAME...          (palette names, one per density field)
+ *   evolved phase stiffness    (version 2: the evolved fields after the materials', one or both)
  *   workspace W H D            (cells)
  *   ...                        (the representation's lines: its shape line first)
  *   end
@@ -15,10 +16,11 @@
 #include "geno_internal.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define GENOME_MAGIC "amorph-genome"
-#define GENOME_VERSION 1
+#define GENOME_VERSION 2 /* 2: the evolved fields' line; a genome without them is written as version 1 */
 #define LINE_MAX_CHARS 1024
 #define TOKENS_MAX 48
 
@@ -39,11 +41,13 @@ am_status am_genome_write(const am_genome* g, am_text* out, char* err, int errsz
 {
     am_status st = am_genome_check(g, err, errsz);
     if (st != AM_OK) return st;
-    am_text_put(out, "%s %d\n", GENOME_MAGIC, GENOME_VERSION);
+    am_text_put(out, "%s %d\n", GENOME_MAGIC, g->controls ? 2 : 1);
     am_text_put(out, "# amorph genome (am_real %s); format: docs/formats.md\n", AM_REAL_NAME);
     am_text_put(out, "repr %s\n", am_repr_name(g->repr));
     am_text_put(out, "materials");
     for (int m = 0; m < g->materials; m++) am_text_put(out, " %s", g->mat[m]);
+    if (g->controls)
+        am_text_put(out, "\nevolved%s%s", g->controls & AM_CTL_PHASE ? " phase" : "", g->controls & AM_CTL_STIFFNESS ? " stiffness" : "");
     am_text_put(out, "\nworkspace %d %d %d\n", g->nx, g->ny, g->nz);
     am_geno_ops_of(g->repr)->format(g, out);
     am_text_put(out, "end\n");
@@ -74,13 +78,34 @@ static int valid_name(const char* s)
 }
 
 enum { S_MAGIC, S_REPR, S_MATERIALS, S_WORKSPACE, S_BODY, S_DONE };
-static const char* const expected[] = {"'amorph-genome 1'", "'repr dct|cppn|gmx'", "'materials NAME...'", "'workspace W H D'"};
+static const char* const expected[] = {"'amorph-genome 1' or 'amorph-genome 2'", "'repr dct|cppn|gmx'", "'materials NAME...'",
+                                       "'workspace W H D'"};
+
+/* a version 2 genome's 'evolved phase stiffness' line (before 'workspace') */
+static am_status evolved_line(am_genome* g, int ntok, char** tok, char* msg, int msz)
+{
+    char qb[AM_QUOTE_BUF];
+    if (g->controls) return am_fail(msg, msz, AM_ERR_PARSE, "'evolved' given twice");
+    if (ntok < 2) return am_fail(msg, msz, AM_ERR_PARSE, "expected 'evolved phase', 'evolved stiffness' or 'evolved phase stiffness'");
+    int prev = 0;
+    for (int i = 1; i < ntok; i++) {
+        int c = strcmp(tok[i], "phase") == 0 ? AM_CTL_PHASE : strcmp(tok[i], "stiffness") == 0 ? AM_CTL_STIFFNESS : 0;
+        if (!c) return am_fail(msg, msz, AM_ERR_PARSE, "unknown evolved field '%s' (phase, stiffness)", am_quote(qb, sizeof qb, tok[i], -1));
+        if (c <= prev) return am_fail(msg, msz, AM_ERR_PARSE, "evolved fields in the order phase, stiffness, each once");
+        g->controls |= c;
+        prev = c;
+    }
+    if (!AM_GENO_LAYERS)
+        return am_fail(msg, msz, AM_ERR_CAPACITY, "an evolved %s: the %s profile keeps no phase or stiffness per voxel", tok[1], AM_PROFILE_NAME);
+    return AM_OK;
+}
 
 /* the header lines; msg gets the problem */
-static am_status header_line(am_genome* g, int state, int ntok, char** tok, char* msg, int msz)
+static am_status header_line(am_genome* g, int state, int version, int ntok, char** tok, char* msg, int msz)
 {
     const char* keyword[] = {GENOME_MAGIC, "repr", "materials", "workspace"};
     char qb[AM_QUOTE_BUF];
+    if (state == S_WORKSPACE && version >= 2 && strcmp(tok[0], "evolved") == 0) return evolved_line(g, ntok, tok, msg, msz);
     if (strcmp(tok[0], keyword[state]) != 0)
         return am_fail(msg, msz, AM_ERR_PARSE, state == S_MAGIC ? "not a genome: expected %s, found '%s'" : "expected %s, found '%s'",
                        expected[state], am_quote(qb, sizeof qb, tok[0], -1));
@@ -89,8 +114,8 @@ static am_status header_line(am_genome* g, int state, int ntok, char** tok, char
         int v = 0;
         if (ntok != 2 || !am_geno_tok_int(tok[1], 0, 1000000, &v))
             return am_fail(msg, msz, AM_ERR_PARSE, "expected %s", expected[state]);
-        if (v != GENOME_VERSION)
-            return am_fail(msg, msz, AM_ERR_PARSE, "genome format version %d: this build reads version %d", v, GENOME_VERSION);
+        if (v < 1 || v > GENOME_VERSION)
+            return am_fail(msg, msz, AM_ERR_PARSE, "genome format version %d: this build reads versions 1 to %d", v, GENOME_VERSION);
         return AM_OK;
     }
     case S_REPR:
@@ -183,8 +208,11 @@ am_status am_genome_read_line(am_genome_reader* r, const char* text, long n, cha
         return read_fail(r, AM_ERR_PARSE, msg, err, errsz);
     }
     if (r->state < S_BODY) {
-        st = header_line(g, r->state, ntok, tok, msg, sizeof msg);
+        const int evolved = r->state == S_WORKSPACE && strcmp(tok[0], "evolved") == 0;
+        st = header_line(g, r->state, r->version, ntok, tok, msg, sizeof msg);
         if (st != AM_OK) return read_fail(r, st, msg, err, errsz);
+        if (r->state == S_MAGIC) r->version = atoi(tok[1]);
+        if (evolved) return AM_OK; /* the workspace line still to come */
         r->state++;
         if (r->state == S_BODY) r->ops = am_geno_ops_of(g->repr);
         return AM_OK;

@@ -49,8 +49,23 @@ static am_gmx_point random_point(const am_genome* g, am_rng* r)
     p.weight = am_rng_range(r, -AM_GMX_WEIGHT_MAX, AM_GMX_WEIGHT_MAX);
     p.radius = am_rng_range(r, AM_GMX_RADIUS_MIN, radius_max(g));
     p.mat = (uint8_t)am_rng_below(r, (uint32_t)g->materials);
+#if AM_GENO_LAYERS
+    /* drawn only for the fields the genome carries: a genome of none draws as before them */
+    if (g->controls & AM_CTL_PHASE) p.phase = am_rng_range(r, AM_R(0), AM_R(1));
+    if (g->controls & AM_CTL_STIFFNESS) p.stiff = am_rng_range(r, AM_R(0), AM_R(1));
+    if (p.phase >= AM_R(1)) p.phase = AM_R(0);
+#endif
     return p;
 }
+
+#if AM_GENO_LAYERS
+/* a phase moved by a uniform step in [-step, step], wrapped into [0, 1) periods */
+static am_real wrap_phase(am_real v)
+{
+    am_real x = v - am_floor(v);
+    return x >= AM_R(1) || x < AM_R(0) ? AM_R(0) : x;
+}
+#endif
 
 static am_status gmx_check(const am_genome* g, char* err, int errsz)
 {
@@ -67,6 +82,10 @@ static am_status gmx_check(const am_genome* g, char* err, int errsz)
         if (!(am_fabs(p->weight) <= AM_GMX_WEIGHT_MAX) || !(p->radius >= AM_GMX_RADIUS_MIN && p->radius <= rmax) ||
             p->mat >= g->materials)
             return am_fail(err, errsz, AM_ERR_RANGE, "GMX point %d has a weight, radius or material out of range", i);
+#if AM_GENO_LAYERS
+        if (!(p->phase >= AM_R(0) && p->phase < AM_R(1)) || !(p->stiff >= AM_R(0) && p->stiff <= AM_R(1)))
+            return am_fail(err, errsz, AM_ERR_RANGE, "GMX point %d has a phase outside [0, 1) or a stiffness outside [0, 1]", i);
+#endif
     }
     return AM_OK;
 }
@@ -98,6 +117,12 @@ static void gmx_mutate(am_genome* g, const am_geno_def* def, am_rng* r)
             p->radius = am_geno_perturb(r, p->radius, AM_MUL(s, rmax - AM_GMX_RADIUS_MIN), AM_GMX_RADIUS_MIN, rmax);
         if (g->materials > 1 && am_rng_chance(r, def->gmx_material_rate))
             p->mat = (uint8_t)((p->mat + 1 + am_rng_below(r, (uint32_t)(g->materials - 1))) % (uint32_t)g->materials);
+#if AM_GENO_LAYERS
+        if ((g->controls & AM_CTL_PHASE) && am_rng_chance(r, def->rate))
+            p->phase = wrap_phase(p->phase + am_rng_range(r, -s, s)); /* a step of def->step of a period */
+        if ((g->controls & AM_CTL_STIFFNESS) && am_rng_chance(r, def->rate))
+            p->stiff = am_geno_perturb(r, p->stiff, s, AM_R(0), AM_R(1));
+#endif
     }
     if (am_rng_chance(r, def->gmx_add) && x->count < max_points(def)) x->pt[x->count++] = random_point(g, r);
     if (am_rng_chance(r, def->gmx_remove) && x->count > 1) {
@@ -167,7 +192,7 @@ static int gmx_same_shape(const am_genome* a, const am_genome* b)
     return 1;
 }
 
-static int gmx_values(const am_genome* g) { return 6 * g->gmx.count; }
+static int gmx_values(const am_genome* g) { return (6 + am_genome_fields(g) - g->materials) * g->gmx.count; }
 
 static uint64_t gmx_hash(uint64_t h, const am_genome* g)
 {
@@ -180,6 +205,10 @@ static uint64_t gmx_hash(uint64_t h, const am_genome* g)
         h = am_hash_real(h, p->weight);
         h = am_hash_real(h, p->radius);
         h = am_hash_u64(h, p->mat);
+#if AM_GENO_LAYERS
+        if (g->controls & AM_CTL_PHASE) h = am_hash_real(h, p->phase);
+        if (g->controls & AM_CTL_STIFFNESS) h = am_hash_real(h, p->stiff);
+#endif
     }
     return h;
 }
@@ -193,6 +222,10 @@ static int gmx_equal(const am_genome* a, const am_genome* b)
         const am_real pv[5] = {p->x, p->y, p->z, p->weight, p->radius};
         const am_real qv[5] = {q->x, q->y, q->z, q->weight, q->radius};
         if (p->mat != q->mat || memcmp(pv, qv, sizeof pv) != 0) return 0;
+#if AM_GENO_LAYERS
+        if ((a->controls & AM_CTL_PHASE) && memcmp(&p->phase, &q->phase, sizeof p->phase) != 0) return 0;
+        if ((a->controls & AM_CTL_STIFFNESS) && memcmp(&p->stiff, &q->stiff, sizeof p->stiff) != 0) return 0;
+#endif
     }
     return 1;
 }
@@ -218,12 +251,74 @@ static void factors(const am_geno_work* w, am_real* f, int n, am_real c, am_real
     }
 }
 
+#if AM_GENO_LAYERS
+/* Evolved fields: every point pulls the cells it reaches towards its own phase and stiffness in
+ * proportion to its strength there, |weight| e^(-d^2/r^2) (a hole's point as much as a solid's).
+ * The phase is the weighted circular mean (the angle of the summed unit vectors of the points'
+ * phases: a point at 0.95 and one at 0.05 average to 0, not 0.5), the stiffness the weighted mean.
+ * Rows of w->dens after the materials' (M): the phase's sums of cos and sin at M and M + 1, the
+ * stiffness's sums of weight x stiffness and of weight at M + 2k and M + 2k + 1 (k = 1 with a
+ * phase), reduced by control_means to the phase at M and the stiffness at M + k. */
+static void control_point(const am_genome* g, am_geno_work* w, const am_gmx_point* p, int x0, int x1, int y0, int y1,
+                          int z0, int z1)
+{
+    const int nx = g->nx, M = g->materials, k = g->controls & AM_CTL_PHASE ? 1 : 0;
+    am_real val[4];
+    am_real* row[4];
+    int n = 0;
+    if (g->controls & AM_CTL_PHASE) {
+        const am_real turn = AM_MUL(AM_R(6.283185307179586477), p->phase);
+        val[n] = am_cos(turn), row[n++] = w->dens[M];
+        val[n] = am_sin(turn), row[n++] = w->dens[M + 1];
+    }
+    if (g->controls & AM_CTL_STIFFNESS) {
+        val[n] = p->stiff, row[n++] = w->dens[M + 2 * k];
+        val[n] = AM_R(1), row[n++] = w->dens[M + 2 * k + 1];
+    }
+    const am_real strength = am_fabs(p->weight);
+    for (int z = z0; z < z1; z++) {
+        const am_real wz = AM_MUL(strength, w->scratch.gmx.fz[z]);
+        for (int y = y0; y < y1; y++) {
+            const am_real wyz = AM_MUL(wz, w->scratch.gmx.fy[y]);
+            const long at = (long)nx * (y + (long)g->ny * z);
+            for (int x = x0; x < x1; x++) {
+                const am_real s = AM_MUL(wyz, w->scratch.gmx.fx[x]);
+                for (int i = 0; i < n; i++) row[i][at + x] += AM_MUL(s, val[i]);
+            }
+        }
+    }
+}
+
+/* the sums of control_point reduced to a phase in periods and a stiffness in [0, 1] a cell (a cell
+ * no point reaches: phase 0, stiffness 1/2) */
+static void control_means(const am_genome* g, am_geno_work* w)
+{
+    const int cells = g->nx * g->ny * g->nz, M = g->materials, k = g->controls & AM_CTL_PHASE ? 1 : 0;
+    for (int c = 0; c < cells; c++) {
+        if (g->controls & AM_CTL_PHASE) {
+            const am_real cs = w->dens[M][c], sn = w->dens[M + 1][c];
+            const am_real turns = cs == AM_R(0) && sn == AM_R(0) ? AM_R(0)
+                                                                 : AM_MUL(am_atan2(sn, cs), AM_R(0.15915494309189533577));
+            w->dens[M][c] = turns < AM_R(0) ? turns + AM_R(1) : turns;
+        }
+        if (g->controls & AM_CTL_STIFFNESS) {
+            const am_real sum = w->dens[M + 2 * k][c], wt = w->dens[M + 2 * k + 1][c];
+            w->dens[M + k][c] = wt > AM_R(0) ? am_clamp(AM_DIV(sum, wt), AM_R(0), AM_R(1)) : AM_R(0.5);
+        }
+    }
+}
+#endif
+
 static void gmx_express(const am_genome* g, am_geno_work* w)
 {
     const int nx = g->nx, ny = g->ny, nz = g->nz, cells = nx * ny * nz;
     const am_real base = -AM_DIV(AM_GMX_ISO, AM_INT(g->materials));
     for (int m = 0; m < g->materials; m++)
         for (int c = 0; c < cells; c++) w->dens[m][c] = base;
+#if AM_GENO_LAYERS
+    for (int m = g->materials; m < g->materials + 2 * (am_genome_fields(g) - g->materials); m++)
+        for (int c = 0; c < cells; c++) w->dens[m][c] = AM_R(0);
+#endif
     for (int k = 0; k < g->gmx.count; k++) {
         const am_gmx_point* p = &g->gmx.pt[k];
         #if defined(AM_REAL_FIXED_POINT)
@@ -244,13 +339,23 @@ static void gmx_express(const am_genome* g, am_geno_work* w)
                 for (int x = x0; x < x1; x++) row[x] += AM_MUL(wyz, w->scratch.gmx.fx[x]);
             }
         }
+#if AM_GENO_LAYERS
+        if (g->controls) control_point(g, w, p, x0, x1, y0, y1, z0, z1);
+#endif
     }
+#if AM_GENO_LAYERS
+    if (g->controls) control_means(g, w);
+#endif
 }
 
 static void gmx_format(const am_genome* g, am_text* s)
 {
     am_text_put(s, "gmx %d\n", g->gmx.count);
-    am_text_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
+    if (g->controls)
+        am_text_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL%s%s (centre and radius in cells)\n",
+                    g->controls & AM_CTL_PHASE ? " PHASE" : "", g->controls & AM_CTL_STIFFNESS ? " STIFFNESS" : "");
+    else
+        am_text_put(s, "# point X Y Z WEIGHT RADIUS MATERIAL (centre and radius in cells)\n");
     for (int i = 0; i < g->gmx.count; i++) {
         const am_gmx_point* p = &g->gmx.pt[i];
         am_text_put(s, "point");
@@ -259,7 +364,12 @@ static void gmx_format(const am_genome* g, am_text* s)
         am_geno_put_real(s, p->z);
         am_geno_put_real(s, p->weight);
         am_geno_put_real(s, p->radius);
-        am_text_put(s, " %d\n", p->mat);
+        am_text_put(s, " %d", p->mat);
+#if AM_GENO_LAYERS
+        if (g->controls & AM_CTL_PHASE) am_geno_put_real(s, p->phase);
+        if (g->controls & AM_CTL_STIFFNESS) am_geno_put_real(s, p->stiff);
+#endif
+        am_text_put(s, "\n");
     }
 }
 
@@ -282,7 +392,10 @@ static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
     if (strcmp(tok[0], "point") != 0)
         return am_fail(err, errsz, AM_ERR_PARSE, "unknown line '%s' in a gmx genome (expected 'point' or 'end')",
                        am_quote(q1, sizeof q1, tok[0], -1));
-    if (ntok != 7) return am_fail(err, errsz, AM_ERR_PARSE, "'point' needs X Y Z WEIGHT RADIUS MATERIAL");
+    const int extra = am_genome_fields(g) - g->materials;
+    if (ntok != 7 + extra)
+        return am_fail(err, errsz, AM_ERR_PARSE, "'point' needs X Y Z WEIGHT RADIUS MATERIAL%s%s",
+                       g->controls & AM_CTL_PHASE ? " PHASE" : "", g->controls & AM_CTL_STIFFNESS ? " STIFFNESS" : "");
     if (ps->lines >= x->count) return am_fail(err, errsz, AM_ERR_PARSE, "more 'point' lines than the %d announced", x->count);
     am_gmx_point* p = &x->pt[ps->lines];
     const am_real hi[3] = {AM_INT(g->nx - 1), AM_INT(g->ny - 1), AM_INT(g->nz - 1)};
@@ -301,6 +414,13 @@ static am_status gmx_parse_line(am_genome* g, am_geno_parse* ps, int ntok, char*
         return am_fail(err, errsz, AM_ERR_RANGE, "material '%s' is not 0..%d",
                        am_quote(q1, sizeof q1, tok[6], -1), g->materials - 1);
     p->mat = (uint8_t)m;
+#if AM_GENO_LAYERS
+    int t = 7;
+    if ((g->controls & AM_CTL_PHASE) && !(am_geno_tok_real(tok[t++], AM_R(0), AM_R(1), &p->phase) && p->phase < AM_R(1)))
+        return am_fail(err, errsz, AM_ERR_RANGE, "phase '%s' is not a number in [0, 1)", am_quote(q1, sizeof q1, tok[t - 1], -1));
+    if ((g->controls & AM_CTL_STIFFNESS) && !am_geno_tok_real(tok[t++], AM_R(0), AM_R(1), &p->stiff))
+        return am_fail(err, errsz, AM_ERR_RANGE, "stiffness '%s' is not a number in [0, 1]", am_quote(q1, sizeof q1, tok[t - 1], -1));
+#endif
     ps->lines++;
     return AM_OK;
 }

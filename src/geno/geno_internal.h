@@ -49,6 +49,9 @@ extern const am_geno_ops am_geno_gmx_ops;   /* src/geno/geno_gmx.c */
 /* the operations of repr, or NULL */
 const am_geno_ops* am_geno_ops_of(int repr);
 
+/* what a field index names in messages: "material", or "field" in a genome with evolved fields */
+static inline const char* am_geno_field_word(const am_genome* g) { return g->controls ? "field" : "material"; }
+
 /* ---- text lines ---- */
 
 /* appends " " and a real that reads back bit for bit (%.9g for float, %.17g for double) */
@@ -125,6 +128,11 @@ static inline am_real am_geno_sigmoid(const am_geno_work* w, am_real t)
 #else
 #define AM_GENO_GAUSS_SQ(w, t) am_geno_gauss((w), AM_MUL((t), (t)))
 #endif
+/* the evolved fields of a representation whose fields are plain sums (DCT, CPPN), rows
+ * materials.. of w->dens, turned into what expression quantises: field f gives a phase of f / 2
+ * periods (wrapped: a field spanning [-1, 1] spans one period) and a stiffness of (f + 1) / 2 in
+ * [0, 1] (clamped). Nothing for a genome without them */
+void am_geno_controls_of_fields(const am_genome* g, am_geno_work* w);
 /* a value moved by a uniform step in [-step, step] and reflected into [lo, hi] */
 am_real am_geno_perturb(am_rng* r, am_real v, am_real step, am_real lo, am_real hi);
 

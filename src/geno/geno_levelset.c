@@ -118,6 +118,44 @@ int am_levelset(am_geno_work* w, int materials, int nx, int ny, int nz, am_real 
     return w->voxels;
 }
 
+#if AM_GENO_LAYERS
+/* floor(256 t) of a phase t in periods wrapped into [0, 1): 0..255 */
+static int phase_byte(am_real v)
+{
+    am_real t = v - am_floor(v);
+#if defined(AM_REAL_FIXED_POINT)
+    int b = (int)(t >> (AM_FIX_FRAC - 8));
+#else
+    int b = (int)(t * AM_R(256));
+#endif
+    return b < 0 ? 0 : b > 255 ? 255 : b;
+}
+
+/* round(255 v) of v in [0, 1]: 0..255 */
+static int unit_byte(am_real v)
+{
+#if defined(AM_REAL_FIXED_POINT)
+    int b = (int)(((int64_t)v * 255 + AM_FIX_HALF) >> AM_FIX_FRAC);
+#else
+    int b = (int)(v * AM_R(255) + AM_R(0.5));
+#endif
+    return b < 0 ? 0 : b > 255 ? 255 : b;
+}
+
+/* the evolved fields of the body just expressed, a byte a filled cell (0 in empty cells) */
+static void quantise_controls(const am_genome* g, am_geno_work* w)
+{
+    const int cells = g->nx * g->ny * g->nz;
+    const int ph = am_genome_field_of(g, AM_CTL_PHASE), st = am_genome_field_of(g, AM_CTL_STIFFNESS);
+    w->controls = g->controls;
+    for (int c = 0; c < cells; c++) {
+        const int on = w->cell[c] != 0;
+        w->ctl[0][c] = (uint8_t)(on && ph >= 0 ? phase_byte(w->dens[ph][c]) : 0);
+        w->ctl[1][c] = (uint8_t)(on && st >= 0 ? unit_byte(w->dens[st][c]) : 0);
+    }
+}
+#endif
+
 am_status am_genome_express(const am_genome* g, const am_express_def* def, am_geno_work* w, am_real* ratio,
                             char* err, int errsz)
 {
@@ -130,7 +168,55 @@ am_status am_genome_express(const am_genome* g, const am_express_def* def, am_ge
     am_geno_tables(w);
     am_geno_ops_of(g->repr)->express(g, w);
     am_levelset(w, g->materials, g->nx, g->ny, g->nz, d.threshold, ratio);
+#if AM_GENO_LAYERS
+    if (g->controls) quantise_controls(g, w);
+    else w->controls = 0;
+#endif
     return AM_OK;
+}
+
+am_param am_stiffness_of_byte(const am_express_def* def, int s)
+{
+    const am_express_def d = def ? *def : am_default_express();
+    if (s <= 0) return d.stiffness_min;
+    if (s >= 255) return d.stiffness_max;
+    /* the ratio (at most 100) and the power in am_real: the same bits on every platform */
+    const am_real ratio = AM_FROM_DOUBLE(AM_PARAM_TO_DOUBLE(d.stiffness_max) / AM_PARAM_TO_DOUBLE(d.stiffness_min));
+    const am_real f = am_pow(ratio, AM_RATIO(s, 255));
+    return AM_PARAM_FROM_DOUBLE(AM_PARAM_TO_DOUBLE(d.stiffness_min) * AM_TO_DOUBLE(f));
+}
+
+am_status am_genome_layers(const am_genome* g, const am_express_def* def, const am_geno_work* w, am_layers* out,
+                           char* err, int errsz)
+{
+    if (out) am_layers_clear(out);
+#if AM_GENO_LAYERS
+    const am_express_def d = def ? *def : am_default_express();
+    if (w->controls != g->controls || w->nx != g->nx || w->ny != g->ny || w->nz != g->nz)
+        return am_fail(err, errsz, AM_ERR_ARG, "the workspace does not hold this genome's expression");
+    if (!g->controls) return AM_OK;
+    if (!(d.stiffness_min > AM_P(0)) || !(d.stiffness_max >= d.stiffness_min) ||
+        !(AM_PARAM_TO_DOUBLE(d.stiffness_max) <= 100.0 * AM_PARAM_TO_DOUBLE(d.stiffness_min)))
+        return am_fail(err, errsz, AM_ERR_RANGE, "stiffness range %g to %g Pa: needs 0 < min <= max <= 100 min",
+                       AM_PARAM_TO_DOUBLE(d.stiffness_min), AM_PARAM_TO_DOUBLE(d.stiffness_max));
+    const int cells = g->nx * g->ny * g->nz;
+    out->has_phase = (g->controls & AM_CTL_PHASE) != 0;
+    out->has_stiffness = (g->controls & AM_CTL_STIFFNESS) != 0;
+    am_param E[256];
+    if (out->has_stiffness)
+        for (int s = 0; s < 256; s++) E[s] = am_stiffness_of_byte(&d, s);
+    for (int c = 0; c < cells; c++) {
+        if (out->has_phase) out->phase[c] = AM_P(w->ctl[0][c]) / AM_P(256);
+        if (out->has_stiffness) out->stiffness[c] = E[w->ctl[1][c]];
+    }
+    return AM_OK;
+#else
+    (void)def;
+    (void)w;
+    if (!g->controls) return AM_OK;
+    return am_fail(err, errsz, AM_ERR_CAPACITY, "an evolved phase or stiffness: the %s profile keeps none (AM_GENO_LAYERS 0)",
+                   AM_PROFILE_NAME);
+#endif
 }
 
 am_status am_genome_to_lattice(const am_genome* g, const am_express_def* def, am_geno_work* w, am_lattice* lat,
@@ -169,6 +255,29 @@ am_real am_body_distance(const uint8_t* a, const uint8_t* b, int n)
     return AM_RATIO(diff, n);
 }
 
+am_real am_body_distance_ctl(const uint8_t* a, const uint8_t* actl0, const uint8_t* actl1, const uint8_t* b,
+                             const uint8_t* bctl0, const uint8_t* bctl1, int controls, int n)
+{
+    const int k = (controls & AM_CTL_PHASE ? 1 : 0) + (controls & AM_CTL_STIFFNESS ? 1 : 0);
+    if (k == 0) return am_body_distance(a, b, n);
+    if (n <= 0) return AM_R(0);
+    /* in units of 1 / (128 x 255) of a cell: a phase difference of d / 256 periods (d <= 128 after
+     * wrapping) is 255 d of them, a stiffness difference of d bytes 128 d; a material difference
+     * is k whole cells (the mean over the k fields is taken at the end) */
+    int64_t sum = 0;
+    for (int c = 0; c < n; c++) {
+        if (a[c] != b[c]) sum += (int64_t)k * 32640;
+        else if (a[c]) {
+            if (controls & AM_CTL_PHASE) {
+                int d = actl0[c] > bctl0[c] ? actl0[c] - bctl0[c] : bctl0[c] - actl0[c];
+                sum += 255 * (d > 128 ? 256 - d : d);
+            }
+            if (controls & AM_CTL_STIFFNESS) sum += 128 * (actl1[c] > bctl1[c] ? actl1[c] - bctl1[c] : bctl1[c] - actl1[c]);
+        }
+    }
+    return AM_RATIO(sum, (int64_t)n * k * 32640);
+}
+
 am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_work* w, am_real* out,
                              char* err, int errsz)
 {
@@ -179,8 +288,17 @@ am_status am_genome_distance(const am_genome* a, const am_genome* b, am_geno_wor
     if (st != AM_OK) return st;
     const int cells = a->nx * a->ny * a->nz;
     memcpy(w->other, w->cell, (size_t)cells);
+#if AM_GENO_LAYERS
+    if (a->controls != b->controls)
+        return am_fail(err, errsz, AM_ERR_ARG, "distance between genomes of different evolved fields");
+    memcpy(w->other_ctl, w->ctl, sizeof w->ctl);
+    st = am_genome_express(b, NULL, w, NULL, err, errsz);
+    if (st != AM_OK) return st;
+    *out = am_body_distance_ctl(w->other, w->other_ctl[0], w->other_ctl[1], w->cell, w->ctl[0], w->ctl[1], a->controls, cells);
+#else
     st = am_genome_express(b, NULL, w, NULL, err, errsz);
     if (st != AM_OK) return st;
     *out = am_body_distance(w->other, w->cell, cells);
+#endif
     return AM_OK;
 }

@@ -198,12 +198,12 @@ static uint8_t memo_byte(const uint64_t v[MEMO_NUMBERS], long result_bytes, cons
 }
 
 /* the bytes of a remembered body of a run of n cells and `materials` materials */
-static long memo_bytes(int n, int materials) { return memo_result_bytes(materials) + am_evo_packed_bytes(n, materials); }
+static long memo_bytes(int n, int materials, int controls) { return memo_result_bytes(materials) + am_evo_body_bytes(n, materials, controls); }
 
 static void put_memo(am_text* s, const am_evo* e, int k)
 {
     const am_evo_memo* m = &e->memo[k];
-    const long bytes = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials);
+    const long bytes = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials, e->def.geno.controls);
     const long rb = memo_result_bytes(e->def.geno.materials);
     uint64_t v[MEMO_NUMBERS];
     memo_numbers(&m->res, memo_count(e->def.geno.materials), v);
@@ -452,8 +452,8 @@ static am_status read_genome_line(am_evo_ckpt_reader* r, const char* text, long 
     if (am_genome_read_end(&r->gr, msg, sizeof msg) != AM_OK) return r->st = am_fail(err, errsz, AM_ERR_PARSE, "%s", msg);
     const am_genome* g = &r->ind->genome;
     if (g->repr != e->def.geno.repr || g->nx != e->def.geno.nx || g->ny != e->def.geno.ny || g->nz != e->def.geno.nz ||
-        g->materials != e->def.geno.materials)
-        BAD("%s:%d: genome of individual %ld does not match the run's representation, workspace or materials", r->fname, r->first,
+        g->materials != e->def.geno.materials || g->controls != e->def.geno.controls)
+        BAD("%s:%d: genome of individual %ld does not match the run's representation, workspace, materials or evolved fields", r->fname, r->first,
             r->idx);
     if (am_genome_check(g, cerr, sizeof cerr) != AM_OK) BAD("%s:%d: %s", r->fname, r->first, cerr);
     if (r->ind_pop) r->pop_seen++;
@@ -485,7 +485,7 @@ static am_status memo_done(am_evo_ckpt_reader* r, char* err, int errsz)
             BAD("%s:%d: remembered body %d: a cell beyond the run's %d materials", r->fname, r->memo_line, r->memo_slot, mats);
     for (int c = n; c < 8 / am_evo_cell_bits(mats) * am_evo_packed_bytes(n, mats); c++)
         if (am_evo_packed_cell(m->cells, c, mats)) BAD("%s:%d: remembered body %d: bits past its last cell", r->fname, r->memo_line, r->memo_slot);
-    if (am_evo_body_key(m->cells, n, mats) != m->key) BAD("%s:%d: remembered body %d: its key is not its cells'", r->fname, r->memo_line, r->memo_slot);
+    if (am_evo_body_key(m->cells, n, mats, e->def.geno.controls) != m->key) BAD("%s:%d: remembered body %d: its key is not its cells'", r->fname, r->memo_line, r->memo_slot);
     r->memo_slot = -1;
     return AM_OK;
 }
@@ -505,7 +505,7 @@ static am_status read_memo(am_evo_ckpt_reader* r, char** tok, int ntok, char* er
     if (strcmp(tok[0], "memo") == 0) {
         long slot, used, bytes;
         uint64_t key;
-        const long want = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials);
+        const long want = memo_bytes(e->def.geno.nx * e->def.geno.ny * e->def.geno.nz, e->def.geno.materials, e->def.geno.controls);
         if (r->memo_slot >= 0) BAD("%s:%d: remembered body %d ends early", fname, r->line, r->memo_slot);
         if (ntok != 5 || !to_long(tok[1], 0, AM_EVO_MEMO - 1, &slot) || !to_long(tok[2], -1, LONG_MAX, &used) || !hex64(tok[3], &key) ||
             key == 0 || !to_long(tok[4], 0, LONG_MAX, &bytes))
