@@ -117,7 +117,7 @@ if [ -f "$base" ]; then
     range=
     if [ $# -gt 0 ]; then range=$("$AMORPH" report range "$n_at" "$@") || exit 1; fi
     rows=$(for cfg in "$DIR"/*/*/config.txt; do
-        case $cfg in "$DIR"/representations/*) continue ;; esac
+        case $cfg in "$DIR"/representations/* | "$DIR"/actuation/*) continue ;; esac
         [ -f "$cfg" ] || continue
         run=${cfg%/config.txt}
         b=$("$AMORPH" report best-at "$n_at" "$run") || exit 1
@@ -136,6 +136,53 @@ if [ -f "$base" ]; then
         echo "|---|---|---:|---|---|"
         echo "$range" | awk '{ printf "| representations/gmx-* | the seed'"'"'s (GMX, %d run%s) | %.4f +- %.4f (%.4f to %.4f) | | |\n", $1, $1 == 1 ? "" : "s", $2, $3, $4, $5 }'
         echo "$rows"
+    fi
+fi
+
+# the actuation experiment (results/run.sh actuation-N, docs/results.md): GMX and CPPN on a 10^3
+# workspace, the seed's palette or the follow-up's four materials, global or evolved phase. Per
+# variant, over its runs that reached ACT_EVALS (2,000) evaluations: the best fitness then (mean
+# +- standard error), the best robot's travel over 30 cycles in body lengths per cycle (the
+# follow-up's measure: gait30.json's mean cycle travel over its body_length), its sustained travel
+# (cycles 11-30, mm per cycle) and the gaits; then amorph stats between the variants at every
+# ACT_EVALS evaluations all their runs reached, and on the sustained score (the tables' first
+# header cell says "actuation", so that they are not the Figure 6 ones)
+a_at=${ACT_EVALS:-2000}
+if [ -d "$DIR/actuation" ]; then
+    rows=$(for v in gmx-seed-global gmx-four-global gmx-seed-phase gmx-four-phase cppn-seed-global cppn-four-global cppn-seed-phase cppn-four-phase; do
+        for run in "$DIR"/actuation/$v-[0-9]*; do
+            [ -f "$run/log.csv" ] && [ -f "$run/gait30.json" ] || continue
+            b=$("$AMORPH" report best-at "$a_at" "$run") || exit 1
+            [ -n "$b" ] || continue
+            g=$run/gait30.json
+            echo "$v $b $(json "$g" body_length) $(json "$g" sustained_travel) $(json "$g" gait) $(jarr "$g" cycle_travel)"
+        done
+    done | awk '
+        { v = $1; n[v]++; s[v] += $2; q[v] += $2 * $2; L = $3; t = 0; for (c = 6; c <= NF; c++) t += $c
+          bl[v] += L > 0 ? t / (NF - 5) / L : 0; sus[v] += $4 * 1000; gait[v, $5]++; if (!(v in order)) order[v] = ++nv; name[order[v]] = v }
+        END {
+            for (i = 1; i <= nv; i++) {
+                v = name[i]; m = s[v] / n[v]; sd = n[v] > 1 ? sqrt((q[v] - n[v] * m * m) / (n[v] - 1)) : 0
+                gs = ""; split("still flop scoot bounce roll", G, " ")
+                for (k = 1; k <= 5; k++) if (gait[v, G[k]]) gs = gs (gs ? ", " : "") G[k] " " gait[v, G[k]]
+                se = n[v] > 1 ? sd / sqrt(n[v]) : 0
+                printf "| actuation/%s | %d | %.4f +- %.4f | %.4f | %.3f | %s |\n", v, n[v], m, se, bl[v] / n[v], sus[v] / n[v], gs
+            }
+        }')
+    if [ -n "$rows" ]; then
+        echo
+        echo "| variant | runs at $a_at evaluations | best fitness (m), mean +- standard error | body lengths per cycle (30 cycles) | sustained (mm per cycle) | gaits |"
+        echo "|---|---:|---:|---:|---:|---|"
+        echo "$rows"
+        set --
+        for d in "$DIR"/actuation/*-[0-9]*; do [ -f "$d/log.csv" ] && set -- "$@" "$d"; done
+        # (through a variable: a failure of amorph stats ends the script, as it does above)
+        out=$(stats_tables --every "$a_at" "$@")
+        all=1
+        for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
+        [ $all = 0 ] || out="$out
+$(stats_tables --score sustained "$@")"
+        printf '%s\n' "$out" | sed 's/^| evaluations |/| evaluations (actuation) |/; s/^| score |/| score (actuation) |/'
     fi
 fi
 

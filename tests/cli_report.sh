@@ -155,6 +155,35 @@ check "others: dynamic/b within (its seed and evaluations are not settings): '$(
 check "others: dynamic/c below: '$(orow dynamic/c)'" [ "$(orow dynamic/c)" = "| dynamic/c | period_steps=50 | 0.0100 | below the range |  |" ]
 check "others: no row for a run short of the count: '$(orow three/d)'" [ -z "$(orow three/d)" ]
 
+# the actuation experiment's table: real small runs (6^3, 24 evaluations), two of the seed's
+# palette with global actuation and two with evolved phase; not in the others' table; a variant's
+# mean +- standard error is its runs' best at ACT_EVALS, its body lengths per cycle the mean of
+# each best robot's 30-cycle travel per cycle over its body length (gait30.json); the variants
+# compared by amorph stats, the tables' first cell saying "actuation"
+A=$TMPD/act
+mkdir -p "$A/actuation"
+for v in seed-global seed-phase; do
+    for k in 1 2; do
+        f=; [ $v = seed-phase ] && f="--actuation phase"
+        # shellcheck disable=SC2086
+        expect_ok "$AMORPH" evolve --workspace 6 --population 8 --evaluations 24 --cycles 2 --period_steps 100 --relax_max_steps 400 \
+            --relax_min_steps 50 --release_steps 100 --seed $k $f --threads 1 --quiet --no-pictures --out "$A/actuation/gmx-$v-$k"
+    done
+done
+mkdir -p "$A/representations/gmx-1" && cp "$O/representations/gmx-1/config.txt" "$O/representations/gmx-1/log.csv" "$A/representations/gmx-1/"
+ACT_EVALS=24 OTHERS_EVALS=24 expect_ok sh results/report.sh "$AMORPH" "$A"
+arow() { awk -v k="| actuation/$1 |" '/^\| variant \|/ { t = 1 } t && !NF { t = 0 } t && index($0, k) == 1' "$TMPD/out"; }
+want=$(for k in 1 2; do
+    g=$A/actuation/gmx-seed-phase-$k/gait30.json
+    echo "$("$AMORPH" report best-at 24 "$A/actuation/gmx-seed-phase-$k") $(sed -n 's/.*"body_length": \([^,]*\),.*/\1/p' "$g") $(sed -n 's/.*"cycle_travel": \[\([^]]*\)\].*/\1/p' "$g" | tr -d ',')"
+done | awk '{ s += $1; q += $1 * $1; t = 0; for (c = 3; c <= NF; c++) t += $c; bl += t / (NF - 2) / $2 }
+            END { m = s / 2; printf "%.4f +- %.4f | %.4f", m, sqrt((q - 2 * m * m) / 1) / sqrt(2), bl / 2 }')
+check "actuation: the evolved-phase row: '$(arow gmx-seed-phase)', want '$want'" sh -c "echo '$(arow gmx-seed-phase)' | grep -qF '| 2 | $want |'"
+check "actuation: a row per variant" [ -n "$(arow gmx-seed-global)" ]
+check "actuation: not in the others' table" [ -z "$(orow actuation/gmx-seed-phase-1)" ]
+check "actuation: the variants compared by amorph stats" grep -qF "| 24 | gmx-seed-phase - gmx-seed-global |" "$TMPD/out"
+check "actuation: the stats tables' header says so" grep -qF "| evaluations (actuation) | pair |" "$TMPD/out"
+
 # --- results/tables.sh: the report's tables copied over a page's older ones, the prose around
 # them kept (the page here: each table of the first report with one stale row, and the per-run
 # table without its 1000 column, as before the runs reached 1,000); a table the page lacks refused
@@ -281,6 +310,13 @@ rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" full-20000
 check "run.sh: full-20000 resumes seed 1 of each: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 gmx-1 " ]
 check "run.sh: to 20,000 evaluations" [ "$(grep -c -- '--evaluations 20000' "$RD/calls")" -eq 3 ]
+# the actuation experiment: GMX and CPPN, four variants, seeds 1..5 (40 runs) on a 10^3 workspace
+rm -f "$RD/calls" "$RD/order"
+FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" actuation-2000
+check "run.sh: actuation-2000 makes 40 runs: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 40 ]
+check "run.sh: the four-material evolved-phase CPPN of seed 5" grep -qx -- "evolve --representation cppn --workspace 10 --palette unshackled --actuation phase --seed 5 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/actuation/cppn-four-phase-5" "$RD/calls"
+check "run.sh: the seed's palette with global actuation first" grep -qx -- "evolve --representation gmx --workspace 10 --seed 1 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/actuation/gmx-seed-global-1" "$RD/calls"
+expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" actuation-
 expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" fig6-4k
 expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" others-
 expect_fail 2 "unknown stage 'fig7-2000'" sh results/run.sh "$F" "$RD" fig7-2000

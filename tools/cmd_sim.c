@@ -48,6 +48,17 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     for (int m = 0; m < lat->palette.count; m++)
         if (count[m] > 0) names[nused] = lat->palette.mat[m].name, used[nused++] = count[m];
     const double voxel_size = AM_PARAM_TO_DOUBLE(lat->voxel_size);
+    /* the body's length: the longer horizontal side of its bounding box as built (travel in body
+     * lengths per cycle, the follow-up's measure, divides by it) */
+    int lo[2] = {lat->nx, lat->ny}, hi[2] = {-1, -1};
+    for (int z = 0, i = 0; z < lat->nz; z++)
+        for (int y = 0; y < lat->ny; y++)
+            for (int x = 0; x < lat->nx; x++, i++)
+                if (lat->cell[i]) {
+                    lo[0] = x < lo[0] ? x : lo[0], hi[0] = x > hi[0] ? x : hi[0];
+                    lo[1] = y < lo[1] ? y : lo[1], hi[1] = y > hi[1] ? y : hi[1];
+                }
+    const int side = hi[0] < 0 ? 0 : (hi[0] - lo[0] > hi[1] - lo[1] ? hi[0] - lo[0] : hi[1] - lo[1]) + 1;
     am_gait_summary gs;
     am_gait_summarize(g, fitness, voxel_size, &gs);
     double travel[AM_GAIT_MAX_CYCLES];
@@ -66,6 +77,7 @@ static int print_result(const char* robot, const am_lattice* lat, const am_resul
     tool_rec_int(q, "voxels", r->voxels);
     tool_rec_strs(q, "materials", names, nused);
     tool_rec_nums(q, "material_voxels", used, nused);
+    tool_rec_num(q, "body_length", side * voxel_size);
     tool_rec_int(q, "links", r->links);
     tool_rec_num(q, "dt", r->dt);
     tool_rec_int(q, "period_steps", r->period_steps);
