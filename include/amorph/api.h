@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 /* the version of this API: its functions and am_result's layout (a new field raises it) */
-#define AM_API_VERSION 1
+#define AM_API_VERSION 2 /* 2: ask/tell (am_api_seed ... am_api_crowd) */
 
 /* one evaluation's workspace and settings. Large (tens of MB on the desktop): static, or on the
  * heap of a caller that may allocate; never on a stack. */
@@ -34,6 +34,8 @@ typedef struct am_api_work {
     am_palette palette;       /* the palette a genome is expressed with (am_evo_palette(&def)) */
     am_genome genome;         /* the genome being evaluated */
     am_evo_work work;         /* expression, lattice, model, state */
+    am_rng rng;               /* the genome operators' stream (am_api_seed; seed 1 after am_api_init) */
+    am_genome op[4];          /* the genome operators' genomes: parents, offspring */
 } am_api_work;
 
 /* ==== the caller's layout. Every struct of the headers is the caller's to allocate, and its layout
@@ -80,6 +82,38 @@ AM_API am_status am_api_eval_genome(am_api_work* w, const char* text, am_result*
  * ones; mu_static, mu_kinetic: all; voxel_size: the lattice's), as `amorph sim FILE --KEY VALUE`
  * does. Empty body and failures as am_api_eval_genome ("lattice:LINE: ...") */
 AM_API am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
+
+/* ==== ask/tell: amorph's own operators for an outer loop (docs/embedding.md, Ask/tell). Genomes go
+ * in and out as text (the genome text format); random draws come from w's stream, one stream per
+ * workspace, consumed in call order, so the same calls give the same genomes. A population made
+ * with am_api_genome_new after am_api_seed(w, S), paired with am_api_pairing, bred with
+ * am_api_offspring, evaluated with am_api_eval_genome and crowded with am_api_crowd is the run
+ * `amorph evolve --seed S` makes with w's settings, generation for generation. Text out goes to
+ * out (capacity cap, NUL-terminated; AM_GENOME_TEXT_MAX always suffices; AM_ERR_CAPACITY when it
+ * does not fit). Genomes in are parsed as "genome:LINE: ..." (AM_ERR_PARSE), and must be of w's
+ * settings' shape where two meet (AM_ERR_ARG otherwise). */
+
+/* seeds w's stream (seed >= 0): the stream a run of `seed = SEED` draws from */
+AM_API am_status am_api_seed(am_api_work* w, long seed, char* err, int errsz);
+/* a random genome of w's settings (representation, materials and palette, workspace, evolved
+ * fields, sizes), as a run's initial population draws them */
+AM_API am_status am_api_genome_new(am_api_work* w, char* out, long cap, char* err, int errsz);
+/* the pairs of a generation: order[0..n-1] the members 0..n-1 shuffled (n 2..AM_MAX_POPULATION, even);
+ * a run pairs order[2k] with order[2k + 1] */
+AM_API am_status am_api_pairing(am_api_work* w, int n, int* order, char* err, int errsz);
+/* the two offspring of parents a and b as a run breeds them: crossover, then each mutated */
+AM_API am_status am_api_offspring(am_api_work* w, const char* a, const char* b, char* out1, char* out2, long cap, char* err,
+                                  int errsz);
+/* the genome in, mutated once (w's rates) */
+AM_API am_status am_api_mutate(am_api_work* w, const char* in, char* out, long cap, char* err, int errsz);
+/* the crowding distance of two genomes' bodies (am_genome_distance with their evolved fields),
+ * expressed with w's palette and voxel size: in [0, 1] */
+AM_API am_status am_api_distance(am_api_work* w, const char* a, const char* b, double* out, char* err, int errsz);
+/* deterministic crowding's step for parents a, b and their offspring 1, 2, each with its fitness
+ * (a NaN: diverged, always loses): meets[k] gets the parent (0: a, 1: b) offspring k + 1 competes
+ * with, replaces[k] 1 when it is strictly better and takes that parent's place, as a run decides */
+AM_API am_status am_api_crowd(am_api_work* w, const char* a, double fa, const char* b, double fb, const char* c1, double f1,
+                              const char* c2, double f2, int* meets, int* replaces, char* err, int errsz);
 
 #ifdef __cplusplus
 }

@@ -412,6 +412,13 @@ AM_API am_status am_evo_express(const am_evo_def* d, const am_palette* pal, cons
                                 int errsz);
 /* how the run's genomes become bodies: its palette, voxel size and evolved stiffness range */
 AM_API am_express_def am_evo_express_def(const am_evo_def* d, const am_palette* pal);
+/* a generation's parents in pairs: order[0..n-1] the members 0..n-1 shuffled from r (Fisher-Yates),
+ * offspring 2k and 2k + 1 coming from members order[2k] and order[2k + 1] (am_evo_gen_begin's draw) */
+AM_API void am_evo_pairing(am_rng* r, int n, int* order);
+/* deterministic crowding's rule (Mahfoud 1996): 1 when offspring 1 meets parent a and offspring
+ * 2 parent b (d1a + d2b <= d2a + d1b, the body distances of each offspring to each parent), 0
+ * when they meet the other way round */
+AM_API int am_evo_crowd_straight(am_real d1a, am_real d1b, am_real d2a, am_real d2b);
 /* the 64-bit hash of the run so far: every genome and fitness evaluated, in order, and the
  * final population (what `make repro` compares across platforms) */
 AM_API uint64_t am_evo_hash(const am_evo* e);

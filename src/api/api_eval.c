@@ -60,6 +60,7 @@ am_status am_api_init(am_api_work* w, long size, char* err, int errsz)
     if ((uintptr_t)w % _Alignof(am_api_work) != 0)
         return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not aligned to %d bytes", (int)_Alignof(am_api_work));
     w->def = am_default_evo();
+    am_rng_seed(&w->rng, w->def.seed); /* the stream of the genome operators (api_ask.c) */
     w->materials_set = 0;
     w->size = (long)sizeof *w;
     return AM_OK;

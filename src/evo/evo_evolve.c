@@ -187,6 +187,25 @@ static am_real distance_to(const am_evo* e, const uint8_t* a, const uint8_t* a0,
     return am_body_distance(a, w->cell, cells);
 }
 
+int am_evo_crowd_straight(am_real d1a, am_real d1b, am_real d2a, am_real d2b)
+{
+    am_real straight = d1a + d2b;
+    am_real crossed = d2a + d1b;
+    return straight <= crossed;
+}
+
+void am_evo_pairing(am_rng* r, int n, int* order)
+{
+    for (int i = 0; i < n; i++) order[i] = i;
+    /* random pairs: a Fisher-Yates shuffle of the population */
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)am_rng_below(r, (uint32_t)(i + 1));
+        int t = order[i];
+        order[i] = order[j];
+        order[j] = t;
+    }
+}
+
 /* offspring c and c + 1 against parents a and b; e->eval[].placed says which entered */
 static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
 {
@@ -216,10 +235,8 @@ static void crowd_pair(am_evo* e, int a, int b, int c, am_geno_work* w)
     am_real d1a = distance_to(e, e->body, p1a, p1b, w, cells), d1b = distance_to(e, w->other, p2a, p2b, w, cells);
     express_body(e, &c2->genome, w);
     am_real d2a = distance_to(e, e->body, p1a, p1b, w, cells), d2b = distance_to(e, w->other, p2a, p2b, w, cells);
-    am_real straight = d1a + d2b;
-    am_real crossed = d2a + d1b;
     int k1 = c, k2 = c + 1;
-    if (!(straight <= crossed)) {
+    if (!am_evo_crowd_straight(d1a, d1b, d2a, d2b)) {
         am_evo_ind* t = c1;
         c1 = c2;
         c2 = t;
@@ -290,16 +307,9 @@ void am_evo_gen_begin(am_evo* e, double now)
     e->gen_m = 0;
     e->gen_steps = e->gen_voxel_steps = 0;
     e->gen_diverged = e->gen_empty = e->gen_unsettled = 0;
-    for (int i = 0; i < n; i++) e->gen_parent[i] = i;
-    if (e->generation > 0) {
-        /* random pairs: a Fisher-Yates shuffle of the population */
-        for (int i = n - 1; i > 0; i--) {
-            int j = (int)am_rng_below(&e->rng, (uint32_t)(i + 1));
-            int t = e->gen_parent[i];
-            e->gen_parent[i] = e->gen_parent[j];
-            e->gen_parent[j] = t;
-        }
-    }
+    if (e->generation > 0) am_evo_pairing(&e->rng, n, e->gen_parent);
+    else
+        for (int i = 0; i < n; i++) e->gen_parent[i] = i;
 }
 
 /* ---- same body, same result ---- */
