@@ -1,0 +1,77 @@
+# tests/cli_python.sh: the Python module (tools/python/amorph.py, docs/embedding.md). Imported
+# from another folder it finds the library (AMORPH_LIB, or the checkout's build/ beside it), and
+# evaluates a genome and a lattice to amorph sim's fitness and hash; its crowding() (amorph's own run
+# written over the ask/tell calls) ends with the best genome and fitness `amorph evolve` reaches
+# with the same settings and seed, plain and with evolved phases; a bad setting and a missing
+# library are one-line AmorphErrors. Skipped without python3 and in a sanitizer build (Python
+# cannot load its library).
+. tests/shlib.sh
+if ! command -v python3 >/dev/null 2>&1; then echo "cli_python: no python3: skipped"; summary cli_python; exit 0; fi
+if grep -q -- '-fsanitize' "$BUILD/flags.txt" 2>/dev/null; then echo "cli_python: a sanitizer build: skipped"; summary cli_python; exit 0; fi
+ROOT=$(pwd)
+LIB=$ROOT/$BUILD/libamorph.so
+[ -f "$LIB" ] || make -s --no-print-directory BUILD="$BUILD" shared >/dev/null
+check "the shared library is built" test -f "$LIB"
+W=$TMPD
+SMALL="--workspace 6 --cycles 2 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 --gmx_points 6"
+"$AMORPH" random --representation gmx --workspace 8 --seed 7 --out "$W/gmx.genome" 2>/dev/null
+"$AMORPH" export --scene sphere:6 --lattice "$W/sphere.lattice" >/dev/null 2>&1
+
+# evaluate, from another folder: the module's result is amorph sim's
+for r in gmx.genome sphere.lattice; do
+    want=$("$AMORPH" sim "$W/$r" --cycles 2 --json 2>/dev/null | sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+    got=$(cd "$W" && AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+r = amorph.Workspace({"cycles": 2}).evaluate(open(sys.argv[2]).read())
+print("%.9g %016x" % (r.fitness, r.hash))' "$ROOT" "$r" 2>&1)
+    check "$r: the module ($got) is amorph sim ($want)" test -n "$want" -a "$got" = "$want"
+done
+# without AMORPH_LIB: the checkout's build/ beside the module (the default build only)
+if [ "$BUILD" = build ]; then
+    got=$(cd "$W" && env -u AMORPH_LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+print("%.9g" % amorph.Workspace({"cycles": 2}).evaluate(open("gmx.genome").read()).fitness)' "$ROOT" 2>&1)
+    want=$("$AMORPH" sim "$W/gmx.genome" --cycles 2 2>/dev/null | sed -n 's/^fitness = //p')
+    check "found beside the module: $got, amorph sim $want" test -n "$want" -a "$got" = "$want"
+fi
+
+# crowding(): amorph's run through ask/tell ends where amorph evolve ends
+for act in global phase; do
+    d=$W/run-$act
+    # shellcheck disable=SC2086
+    expect_ok "$AMORPH" evolve $SMALL --actuation $act --population 8 --evaluations 32 --seed 5 --threads 1 --quiet --no-pictures --out "$d"
+    got=$(cd "$W" && AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph, math
+s = {"workspace": 6, "cycles": 2, "period_steps": 100, "relax_max_steps": 400, "relax_min_steps": 50, "release_steps": 100,
+     "gmx_points": 6, "actuation": sys.argv[2]}
+w = amorph.Workspace(s)
+pop = amorph.crowding(w, 8, 3, 5)
+top = max(-math.inf if f != f else f for g, f in pop)
+# the run keeps the first genome evaluated at the top: members of one body may tie with it
+best = open(sys.argv[3]).read()
+print("%.9g %d" % (top, any(g == best and f == top for g, f in pop)))' "$ROOT" "$act" "$d/best.genome" 2>&1)
+    check "$act: crowding()'s best fitness and genome ($got) are amorph evolve's ($(sumval "$d" best_fitness))" \
+        test "$got" = "$(sumval "$d" best_fitness) 1"
+done
+
+# refusals: one line each
+got=$(AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+try:
+    amorph.Workspace({"cycles": "many"})
+except amorph.AmorphError as e:
+    print("refused:", e)' "$ROOT" 2>&1)
+case $got in "refused: cycles = 'many': expected an integer in [0, 100000]") ok ;; *) ko "a bad setting: $got" ;; esac
+got=$(cd "$W" && AMORPH_LIB=$W/none.so python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+try:
+    amorph.load("'"$W"'/none.so")
+except amorph.AmorphError as e:
+    print("refused:", e)' "$ROOT" 2>&1)
+case $got in "refused: libamorph not found (make shared, or set AMORPH_LIB); tried: "*none.so) ok ;; *) ko "no library: $got" ;; esac
+summary cli_python

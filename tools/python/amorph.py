@@ -1,0 +1,227 @@
+"""amorph from Python: evaluate robots and run amorph's genetic operators through libamorph.so.
+
+Standard library only (ctypes); numpy is never needed. docs/embedding.md is the manual.
+
+    import amorph
+    w = amorph.Workspace({"cycles": 4})           # the embedding API's workspace, with settings
+    r = w.evaluate(open("robot.genome").read())    # a genome or lattice text: an amorph.Result
+    print(r.fitness, "%016x" % r.hash)
+
+Ask/tell, amorph's own operators with any outer loop:
+
+    w.seed(5)
+    pop = [w.new_genome() for _ in range(20)]
+    a, b = w.offspring(pop[0], pop[1])             # crossover, then each mutated, as a run breeds
+    d = w.distance(a, pop[0])                      # the crowding distance of their bodies
+    meets, replaces = w.crowd(pop[0], fa, pop[1], fb, a, f1, b, f2)
+
+crowding(w, population, generations, seed) is amorph's own run (deterministic crowding) written
+over these calls: it ends in the population `amorph evolve` reaches with the same settings.
+
+The library is found, in order: the path given to Workspace or load(), $AMORPH_LIB, beside this
+file, the checkout's build/ folder (this file is tools/python/amorph.py), then the system's
+(ctypes.util.find_library("amorph"), after `make install`).
+"""
+import ctypes
+import ctypes.util
+import math
+import os
+
+__all__ = ["Result", "Workspace", "AmorphError", "load", "crowding"]
+
+GENOME_TEXT_MAX = 1 << 22  # bytes a genome text may take (the library's AM_GENOME_TEXT_MAX is below it)
+
+
+class AmorphError(Exception):
+    """a refusal of the library: its one-line message"""
+
+
+class Result(ctypes.Structure):
+    """am_result (include/amorph/sim.h), field by field; am_api_result_size() checks the layout"""
+    _fields_ = [
+        ("fitness", ctypes.c_double), ("travel", ctypes.c_double),
+        ("dx", ctypes.c_double), ("dy", ctypes.c_double), ("dz", ctypes.c_double),
+        ("sustained", ctypes.c_double),
+        ("voxels", ctypes.c_int), ("links", ctypes.c_int),
+        ("dt", ctypes.c_double), ("period_steps", ctypes.c_int),
+        ("relax_steps", ctypes.c_long), ("move_steps", ctypes.c_long), ("steps", ctypes.c_long),
+        ("relax_dt", ctypes.c_double), ("relax_retried", ctypes.c_int),
+        ("diverged", ctypes.c_int), ("settled", ctypes.c_int),
+        ("residual_speed", ctypes.c_double), ("kinetic_resets", ctypes.c_long),
+        ("sim_seconds", ctypes.c_double), ("rebuilds", ctypes.c_long),
+        ("max_pairs", ctypes.c_int), ("hash", ctypes.c_uint64),
+    ]
+
+    def score(self):
+        """the fitness as crowding compares it: NaN for a diverged body (it always loses)"""
+        return math.nan if self.diverged else self.fitness
+
+
+_API_VERSION = 2  # the functions below are AM_API_VERSION 2's
+_libs = {}
+
+
+def _candidates(path):
+    if path:
+        return [path]
+    out = []
+    if os.environ.get("AMORPH_LIB"):
+        out.append(os.environ["AMORPH_LIB"])
+    here = os.path.dirname(os.path.abspath(__file__))
+    out += [os.path.join(here, "libamorph.so"), os.path.join(here, "libamorph.so.1"),
+            os.path.join(here, "..", "..", "build", "libamorph.so")]
+    found = ctypes.util.find_library("amorph")
+    if found:
+        out.append(found)
+    return out
+
+
+def load(path=None):
+    """the library (a ctypes.CDLL with its functions typed), found as the module's doc says"""
+    tried = []
+    for cand in _candidates(path):
+        if cand in _libs:
+            return _libs[cand]
+        if os.path.sep in cand and not os.path.exists(cand):
+            tried.append(cand)
+            continue
+        try:
+            lib = ctypes.CDLL(cand)
+        except OSError as e:
+            tried.append("%s (%s)" % (cand, e))
+            continue
+        _type(lib, cand)
+        _libs[cand] = lib
+        return lib
+    raise AmorphError("libamorph not found (make shared, or set AMORPH_LIB); tried: " + ", ".join(tried))
+
+
+def _type(lib, where):
+    c_int, c_long, c_char_p, c_double, P = ctypes.c_int, ctypes.c_long, ctypes.c_char_p, ctypes.c_double, ctypes.c_void_p
+    sig = {
+        "am_api_version": ([], c_int),
+        "am_api_work_size": ([], c_long),
+        "am_api_result_size": ([], c_long),
+        "am_api_init": ([P, c_long, c_char_p, c_int], c_int),
+        "am_api_set": ([P, c_char_p, c_char_p, c_char_p, c_int], c_int),
+        "am_api_eval_genome": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
+        "am_api_eval_lattice": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
+        "am_api_seed": ([P, c_long, c_char_p, c_int], c_int),
+        "am_api_genome_new": ([P, c_char_p, c_long, c_char_p, c_int], c_int),
+        "am_api_pairing": ([P, c_int, ctypes.POINTER(c_int), c_char_p, c_int], c_int),
+        "am_api_offspring": ([P, c_char_p, c_char_p, c_char_p, c_char_p, c_long, c_char_p, c_int], c_int),
+        "am_api_mutate": ([P, c_char_p, c_char_p, c_long, c_char_p, c_int], c_int),
+        "am_api_distance": ([P, c_char_p, c_char_p, ctypes.POINTER(c_double), c_char_p, c_int], c_int),
+        "am_api_crowd": ([P, c_char_p, c_double, c_char_p, c_double, c_char_p, c_double, c_char_p, c_double,
+                          ctypes.POINTER(c_int), ctypes.POINTER(c_int), c_char_p, c_int], c_int),
+    }
+    for name, (args, res) in sig.items():
+        try:
+            fn = getattr(lib, name)
+        except AttributeError:
+            raise AmorphError("%s has no %s: a library older than this module (API %d)" % (where, name, _API_VERSION))
+        fn.argtypes, fn.restype = args, res
+    if lib.am_api_version() < _API_VERSION:
+        raise AmorphError("%s is API %d; this module needs %d" % (where, lib.am_api_version(), _API_VERSION))
+    if lib.am_api_result_size() != ctypes.sizeof(Result):
+        raise AmorphError("am_result is %d bytes in %s, %d here" % (lib.am_api_result_size(), where, ctypes.sizeof(Result)))
+
+
+class Workspace:
+    """one workspace of the embedding API: settings, evaluations and the genome operators' random
+    stream. Calls on one workspace are sequential; use one workspace per thread."""
+
+    def __init__(self, settings=None, lib=None):
+        self.lib = load(lib)
+        size = self.lib.am_api_work_size()
+        self.work = ctypes.create_string_buffer(size)  # malloc'd: aligned for a double
+        self.err = ctypes.create_string_buffer(512)
+        self._out = [ctypes.create_string_buffer(GENOME_TEXT_MAX) for _ in range(2)]
+        self._check(self.lib.am_api_init(self.work, size, self.err, len(self.err)))
+        for key, value in (settings or {}).items():
+            self.set(key, value)
+
+    def _check(self, status):
+        if status != 0:
+            raise AmorphError(self.err.value.decode())
+
+    def set(self, key, value):
+        """one configuration key (amorph evolve --help-config), as `amorph sim --KEY VALUE` applies it"""
+        self._check(self.lib.am_api_set(self.work, str(key).encode(), str(value).encode(), self.err, len(self.err)))
+
+    def evaluate(self, text):
+        """a genome or lattice text, evaluated as amorph evaluates it: a Result"""
+        r = Result()
+        fn = self.lib.am_api_eval_genome if text.lstrip().startswith("amorph-genome") else self.lib.am_api_eval_lattice
+        self._check(fn(self.work, text.encode(), ctypes.byref(r), self.err, len(self.err)))
+        return r
+
+    # ---- ask/tell ----
+
+    def seed(self, seed):
+        """seeds the genome operators' stream: the stream of a run of `seed = SEED`"""
+        self._check(self.lib.am_api_seed(self.work, int(seed), self.err, len(self.err)))
+
+    def new_genome(self):
+        """a random genome of the settings, as a run's first population draws it (text)"""
+        self._check(self.lib.am_api_genome_new(self.work, self._out[0], len(self._out[0]), self.err, len(self.err)))
+        return self._out[0].value.decode()
+
+    def pairing(self, n):
+        """a generation's pairs: a shuffle of 0..n-1, order[2k] with order[2k + 1]"""
+        order = (ctypes.c_int * n)()
+        self._check(self.lib.am_api_pairing(self.work, n, order, self.err, len(self.err)))
+        return list(order)
+
+    def offspring(self, a, b):
+        """two offspring of parents a and b: crossover, then each mutated (texts)"""
+        self._check(self.lib.am_api_offspring(self.work, a.encode(), b.encode(), self._out[0], self._out[1], len(self._out[0]),
+                                              self.err, len(self.err)))
+        return self._out[0].value.decode(), self._out[1].value.decode()
+
+    def mutate(self, genome):
+        """the genome mutated once (text)"""
+        self._check(self.lib.am_api_mutate(self.work, genome.encode(), self._out[0], len(self._out[0]), self.err, len(self.err)))
+        return self._out[0].value.decode()
+
+    def distance(self, a, b):
+        """the crowding distance of two genomes' bodies, in [0, 1]"""
+        d = ctypes.c_double()
+        self._check(self.lib.am_api_distance(self.work, a.encode(), b.encode(), ctypes.byref(d), self.err, len(self.err)))
+        return d.value
+
+    def crowd(self, a, fa, b, fb, c1, f1, c2, f2):
+        """deterministic crowding's decision: (meets, replaces), meets[k] the parent (0: a, 1: b)
+        offspring k + 1 competes with, replaces[k] True when it takes that parent's place. A
+        fitness of NaN is a diverged body's (Result.score())"""
+        meets, repl = (ctypes.c_int * 2)(), (ctypes.c_int * 2)()
+        self._check(self.lib.am_api_crowd(self.work, a.encode(), fa, b.encode(), fb, c1.encode(), f1, c2.encode(), f2, meets, repl,
+                                          self.err, len(self.err)))
+        return [meets[0], meets[1]], [bool(repl[0]), bool(repl[1])]
+
+
+def crowding(w, population, generations, seed, evaluate=None):
+    """amorph's own run, deterministic crowding, written over the ask/tell calls: a population of
+    `population` random genomes from seed, then `generations` generations of pairing, breeding,
+    evaluation and crowding. evaluate(text) -> score (default: w.evaluate(text).score()) may be
+    any function: the loop is then amorph's variation and replacement around the caller's
+    measure. Returns [(genome, score)] of the final population, in member order."""
+    if evaluate is None:
+        evaluate = lambda text: w.evaluate(text).score()  # noqa: E731
+    w.seed(seed)
+    pop = [w.new_genome() for _ in range(population)]
+    fit = [evaluate(g) for g in pop]
+    for _ in range(generations):
+        order = w.pairing(population)
+        kids = []
+        for k in range(0, population, 2):
+            kids += w.offspring(pop[order[k]], pop[order[k + 1]])
+        kfit = [evaluate(g) for g in kids]
+        for k in range(0, population, 2):
+            pa, pb = order[k], order[k + 1]
+            meets, repl = w.crowd(pop[pa], fit[pa], pop[pb], fit[pb], kids[k], kfit[k], kids[k + 1], kfit[k + 1])
+            for c in range(2):
+                if repl[c]:
+                    p = pb if meets[c] else pa
+                    pop[p], fit[p] = kids[k + c], kfit[k + c]
+    return list(zip(pop, fit))
