@@ -57,6 +57,67 @@ print("%.9g %d" % (top, any(g == best and f == top for g, f in pop)))' "$ROOT" "
         test "$got" = "$(sumval "$d" best_fitness) 1"
 done
 
+# the same run through an amorph eval pipe: the operators as JSON lines ({"op": "new"}, "pairing",
+# "offspring", "crowd"), the evaluations as robot lines, batch by batch
+cat >"$W/pipe_ga.py" <<'PY'
+import json, math, subprocess, sys
+amorph, act, best_path = sys.argv[1], sys.argv[2], sys.argv[3]
+s = ["--workspace", "6", "--cycles", "2", "--period_steps", "100", "--relax_max_steps", "400", "--relax_min_steps", "50",
+     "--release_steps", "100", "--gmx_points", "6", "--actuation", act]
+p = subprocess.Popen([amorph, "eval", "--threads", "2"] + s, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+def batch(lines):
+    for l in lines:
+        p.stdin.write(json.dumps(l) + "\n")
+    p.stdin.write("\n"); p.stdin.flush()
+    out = []
+    while True:
+        line = p.stdout.readline()
+        if not line:
+            raise SystemExit("eval ended: %s" % p.wait())
+        if line == "\n":
+            return out
+        out.append(json.loads(line))
+def score(r):
+    return math.nan if r["diverged"] else r["fitness"]
+N = 8
+batch([{"op": "seed", "seed": 5}])
+pop = [r["genome"] for r in batch([{"op": "new"}] * N)]
+fit = [score(r) for r in batch([{"genome": g} for g in pop])]
+for gen in range(3):
+    order = batch([{"op": "pairing", "n": N}])[0]["order"]
+    kids = []
+    for r in batch([{"op": "offspring", "a": pop[order[k]], "b": pop[order[k + 1]]} for k in range(0, N, 2)]):
+        kids += r["genomes"]
+    kfit = [score(r) for r in batch([{"genome": g} for g in kids])]
+    nul = lambda f: None if f != f else f
+    res = batch([{"op": "crowd", "a": pop[order[k]], "fa": nul(fit[order[k]]), "b": pop[order[k + 1]], "fb": nul(fit[order[k + 1]]),
+                  "c1": kids[k], "f1": nul(kfit[k]), "c2": kids[k + 1], "f2": nul(kfit[k + 1])} for k in range(0, N, 2)])
+    for i, r in enumerate(res):
+        k = 2 * i
+        for c in range(2):
+            if r["replaces"][c]:
+                q = order[k + r["meets"][c]]
+                pop[q], fit[q] = kids[k + c], kfit[k + c]
+p.stdin.close(); p.wait()
+top = max(-math.inf if f != f else f for f in fit)
+best = open(best_path).read()
+print("%.9g %d" % (top, any(g == best and f == top for g, f in zip(pop, fit))))
+PY
+for act in global phase; do
+    d=$W/run-$act
+    got=$(python3 "$W/pipe_ga.py" "$AMORPH" $act "$d/best.genome" 2>&1)
+    check "$act: the pipe's run ($got) ends at amorph evolve's best ($(sumval "$d" best_fitness))" test "$got" = "$(sumval "$d" best_fitness) 1"
+done
+# the pipe's operator lines refused in one line each, naming the line
+printf '{"op": "fly"}\n' >"$W/bad1.jsonl"
+expect_fail 2 'eval: stdin:1: column [0-9]*: unknown op "fly" \(seed, new, pairing, offspring, mutate, distance, crowd\)' sh -c "'$AMORPH' eval <'$W/bad1.jsonl'"
+printf '{"op": "new"}\n{"op": "offspring", "a": "x"}\n' >"$W/bad2.jsonl"
+expect_fail 2 'eval: stdin:2: column [0-9]*: op "offspring" needs "b"' sh -c "'$AMORPH' eval <'$W/bad2.jsonl'"
+printf '{"op": "mutate", "genome": "amorph-genome 1"}\n' >"$W/bad3.jsonl"
+expect_fail 2 'eval: stdin:1: genome:1: unexpected end of text: expected .repr dct|cppn|gmx.' sh -c "'$AMORPH' eval <'$W/bad3.jsonl'"
+printf '{"a": "x"}\n' >"$W/bad4.jsonl"
+expect_fail 2 "eval: stdin:1: column [0-9]*: an operator's inputs without \"op\"" sh -c "'$AMORPH' eval <'$W/bad4.jsonl'"
+
 # refusals: one line each
 got=$(AMORPH_LIB=$LIB python3 -c '
 import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")

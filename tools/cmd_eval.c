@@ -6,7 +6,9 @@
 #include "robot.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #if defined(AM_PROFILE_BOARD)
@@ -25,6 +27,12 @@ static const char eval_help[] =
     "id (an integer) is optional: the line's number on stdin stands in. An empty line or the end of\n"
     "the input ends a batch: its robots are evaluated on the threads, their results printed in input\n"
     "order (the same for any --threads), then an empty line, and the output is flushed.\n"
+    "A line may ask for one of amorph's genome operators instead (ask/tell, docs/embedding.md):\n"
+    "{\"op\": \"seed\", \"seed\": 5}, {\"op\": \"new\"}, {\"op\": \"pairing\", \"n\": 20},\n"
+    "{\"op\": \"offspring\", \"a\": G, \"b\": G}, {\"op\": \"mutate\", \"genome\": G}, {\"op\": \"distance\", \"a\": G, \"b\": G},\n"
+    "{\"op\": \"crowd\", \"a\": G, \"fa\": F, \"b\": G, \"fb\": F, \"c1\": G, \"f1\": F, \"c2\": G, \"f2\": F} (null: diverged);\n"
+    "they run in input order on one stream that goes on across batches, and answer with \"genome\",\n"
+    "\"genomes\", \"order\", \"distance\" or \"meets\" and \"replaces\".\n"
     "A result: id, fitness, travel, dx, dy, dz, sustained_travel, voxels, links, empty, steps,\n"
     "diverged, settled, hash (as amorph sim --json). A genome is evaluated as amorph evolve's run\n"
     "evaluates it (its palette and voxel size from the settings), a lattice as amorph sim does.\n"
@@ -43,12 +51,24 @@ static const char eval_help[] =
 #define EVAL_VALUE_MAX 256            /* bytes of a setting's value */
 
 enum { ROBOT_GENOME = 1, ROBOT_LATTICE = 2 };
+/* the genome operators a line may ask for instead of an evaluation (ask/tell, amorph/api.h) */
+enum { OP_NONE, OP_SEED, OP_NEW, OP_PAIRING, OP_OFFSPRING, OP_MUTATE, OP_DISTANCE, OP_CROWD, OP_COUNT };
+static const char* const op_name[OP_COUNT] = {"", "seed", "new", "pairing", "offspring", "mutate", "distance", "crowd"};
+/* the texts an operator takes ("genome" is a, "c1" c, "c2" d) and the fitnesses of crowd */
+static const char* const op_text[4] = {"a", "b", "c1", "c2"};
+static const char* const op_fit[4] = {"fa", "fb", "f1", "f2"};
+static const int op_texts[OP_COUNT] = {0, 0, 0, 0, 2, 1, 2, 4};
 
 typedef struct eval_item {
     long id;
     int line;                         /* its line on stdin */
     int kind;                         /* ROBOT_GENOME or ROBOT_LATTICE */
     const char* text;                 /* in the arena */
+    int op;                           /* OP_NONE (an evaluation) or the operator asked for */
+    const char* t[4];                 /* its texts, in the arena */
+    double f[4];                      /* crowd's fitnesses (null: NaN, a diverged body) */
+    long num;                         /* pairing's n, seed's seed */
+    int has_num, nf;
     int nset;
     const char* key[EVAL_MAX_SETTINGS];
     const char* val[EVAL_MAX_SETTINGS];
@@ -58,6 +78,9 @@ typedef struct eval_out {
     am_result r;
     int st;                           /* am_status */
     char err[AM_ERR_MAX];
+    char* g[2];                       /* an operator's genomes out, in the operators' arena */
+    double d;                         /* distance's */
+    int v[AM_MAX_POPULATION];         /* pairing's order, crowd's meets and replaces */
 } eval_out;
 
 typedef struct eval_batch {
@@ -75,6 +98,10 @@ static eval_batch g_batch;
 static char g_line[EVAL_LINE_MAX + 2];
 static char g_arena[EVAL_ARENA];
 static am_api_work g_work[AM_MAX_WORKERS];
+/* the genome operators' workspace: its stream goes on from line to line and batch to batch */
+static am_api_work g_ops;
+static int g_ops_ready;
+static char g_ops_arena[EVAL_ARENA]; /* operators' genomes out, one batch's */
 
 /* room for cap bytes in the arena, or NULL */
 static char* arena(eval_batch* b, long cap)
@@ -145,6 +172,34 @@ static const char* check_budget(const eval_batch* b, const eval_item* it, char* 
     return err;
 }
 
+/* index of key in names[4], or -1 */
+static int op_slot(const char* key, const char* const names[4])
+{
+    for (int k = 0; k < 4; k++)
+        if (!strcmp(key, names[k])) return k;
+    return -1;
+}
+
+/* an operator line has what its operator takes, and nothing else */
+static int check_op(tool_json* j, eval_item* it)
+{
+    const int op = it->op, nt = op_texts[op];
+    if (op == OP_MUTATE && it->kind == ROBOT_GENOME && !it->t[0]) /* "genome" read before "op" */
+        it->t[0] = it->text, it->text = NULL, it->kind = 0;
+    if (it->kind) return tool_json_fail(j, "op \"%s\" evaluates nothing: no \"genome\" or \"lattice\" robot with it", op_name[op]);
+    for (int k = 0; k < 4; k++) {
+        const char* name = op == OP_MUTATE && k == 0 ? "genome" : op_text[k];
+        if (k < nt && !it->t[k]) return tool_json_fail(j, "op \"%s\" needs \"%s\"", op_name[op], name);
+        if (k >= nt && it->t[k]) return tool_json_fail(j, "op \"%s\" takes no \"%s\"", op_name[op], op_text[k]);
+    }
+    if (op == OP_CROWD && it->nf != 15) return tool_json_fail(j, "op \"crowd\" needs \"fa\", \"fb\", \"f1\" and \"f2\"");
+    if (op != OP_CROWD && it->nf) return tool_json_fail(j, "op \"%s\" takes no fitness", op_name[op]);
+    if ((op == OP_SEED || op == OP_PAIRING) != (it->has_num != 0))
+        return tool_json_fail(j, op == OP_SEED ? "op \"seed\" needs \"seed\"" : op == OP_PAIRING ? "op \"pairing\" needs \"n\"" :
+                                                                                             "op \"%s\" takes no \"n\" or \"seed\"", op_name[op]);
+    return 1;
+}
+
 /* one robot line into the batch's next item */
 static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
 {
@@ -161,6 +216,40 @@ static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
                 if (has_id++) return tool_json_fail(j, "\"id\" given twice");
                 if (!tool_json_number(j, num, sizeof num)) return 0;
                 if (!tool_parse_long(num, LONG_MIN, LONG_MAX, &it->id)) return tool_json_fail(j, "\"id\" must be an integer, not %s", num);
+            } else if (!strcmp(key, "op")) {
+                char name[16];
+                if (it->op) return tool_json_fail(j, "\"op\" given twice");
+                if (!tool_json_string(j, name, sizeof name, NULL)) return 0;
+                for (int k = 1; k < OP_COUNT && !it->op; k++)
+                    if (!strcmp(name, op_name[k])) it->op = k;
+                if (!it->op) return tool_json_fail(j, "unknown op \"%s\" (seed, new, pairing, offspring, mutate, distance, crowd)", name);
+            } else if (!strcmp(key, "n") || !strcmp(key, "seed")) {
+                char num[32];
+                if (it->has_num++) return tool_json_fail(j, "\"n\" or \"seed\" given twice");
+                if (!tool_json_number(j, num, sizeof num)) return 0;
+                if (!tool_parse_long(num, 0, LONG_MAX, &it->num)) return tool_json_fail(j, "\"%s\" must be an integer of 0 or more, not %s", key, num);
+            } else if (op_slot(key, op_fit) >= 0) {
+                const int k = op_slot(key, op_fit);
+                int lit = 0;
+                char num[64];
+                while (*j->p == ' ' || *j->p == '\t') j->p++;
+                if (*j->p == 'n') {
+                    if (!tool_json_literal(j, &lit) || lit != -1) return tool_json_fail(j, "\"%s\": a number, or null for a diverged body", key);
+                    it->f[k] = (double)NAN;
+                } else {
+                    if (!tool_json_number(j, num, sizeof num)) return 0;
+                    it->f[k] = strtod(num, NULL);
+                }
+                it->nf |= 1 << k;
+            } else if (op_slot(key, op_text) >= 0 || (!strcmp(key, "genome") && it->op)) {
+                const int k = op_slot(key, op_text) >= 0 ? op_slot(key, op_text) : 0;
+                if (it->t[k]) return tool_json_fail(j, "\"%s\" given twice", key);
+                char* t = arena(b, EVAL_LINE_MAX);
+                if (!t) return tool_json_fail(j, "the batch's texts pass %ld bytes: end the batch sooner (an empty line)", EVAL_ARENA);
+                long len = 0;
+                if (!tool_json_string(j, t, EVAL_LINE_MAX, &len)) return 0;
+                it->t[k] = t;
+                b->used += len + 1;
             } else if (!strcmp(key, "genome") || !strcmp(key, "lattice")) {
                 if (it->kind) return tool_json_fail(j, "one robot per line (\"genome\" or \"lattice\", once)");
                 it->kind = key[0] == 'g' ? ROBOT_GENOME : ROBOT_LATTICE;
@@ -175,13 +264,108 @@ static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
                 if (!read_settings(j, b, it)) return 0;
             } else {
                 char q[AM_QUOTE_BUF];
-                return tool_json_fail(j, "unknown key \"%s\" (a line holds id, genome or lattice, settings)", am_quote(q, sizeof q, key, -1));
+                return tool_json_fail(j, "unknown key \"%s\" (a line holds id, genome or lattice, settings; or op and its inputs)",
+                                      am_quote(q, sizeof q, key, -1));
             }
         } while (tool_json_take(j, ','));
     if (!tool_json_expect(j, '}', "to close the robot's object")) return 0;
     if (!tool_json_end(j)) return 0;
-    if (!it->kind) return tool_json_fail(j, "no robot: the line needs \"genome\" or \"lattice\"");
+    if (it->op) return check_op(j, it);
+    if (it->t[0] || it->t[1] || it->t[2] || it->t[3] || it->nf || it->has_num)
+        return tool_json_fail(j, "an operator's inputs without \"op\"");
+    if (!it->kind) return tool_json_fail(j, "no robot: the line needs \"genome\" or \"lattice\" (or an \"op\")");
     return 1;
+}
+
+/* the batch's operators, in input order on the operators' workspace (its stream goes on), each with
+ * the command line's settings, then its own */
+static void run_ops(eval_batch* b)
+{
+    long used = 0;
+    for (int i = 0; i < b->n; i++) {
+        const eval_item* it = &b->item[i];
+        eval_out* o = &b->out[i];
+        if (!it->op) continue;
+        am_api_work* k = &g_ops;
+        am_rng stream = k->rng;
+        am_status st = am_api_init(k, (long)sizeof *k, o->err, sizeof o->err);
+        if (g_ops_ready) k->rng = stream; /* am_api_init seeded it: the stream goes on */
+        g_ops_ready = 1;
+        for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
+        for (int s = 0; st == AM_OK && s < it->nset; s++) st = am_api_set(k, it->key[s], it->val[s], o->err, sizeof o->err);
+        const long cap = AM_GENOME_TEXT_MAX;
+        o->g[0] = o->g[1] = NULL;
+        if (st == AM_OK && (it->op == OP_NEW || it->op == OP_MUTATE || it->op == OP_OFFSPRING)) {
+            if (used + 2 * cap > EVAL_ARENA) {
+                o->st = am_fail(o->err, sizeof o->err, AM_ERR_CAPACITY, "the batch's genomes out pass %ld bytes: end the batch sooner",
+                                EVAL_ARENA);
+                continue;
+            }
+            o->g[0] = g_ops_arena + used;
+            o->g[1] = g_ops_arena + used + cap;
+        }
+        if (st == AM_OK) switch (it->op) {
+            case OP_SEED: st = am_api_seed(k, it->num, o->err, sizeof o->err); break;
+            case OP_NEW: st = am_api_genome_new(k, o->g[0], cap, o->err, sizeof o->err); break;
+            case OP_MUTATE: st = am_api_mutate(k, it->t[0], o->g[0], cap, o->err, sizeof o->err); break;
+            case OP_OFFSPRING: st = am_api_offspring(k, it->t[0], it->t[1], o->g[0], o->g[1], cap, o->err, sizeof o->err); break;
+            case OP_DISTANCE: st = am_api_distance(k, it->t[0], it->t[1], &o->d, o->err, sizeof o->err); break;
+            case OP_PAIRING:
+                st = it->num > AM_MAX_POPULATION ? am_fail(o->err, sizeof o->err, AM_ERR_RANGE, "pairing %ld members: at most %d", it->num, AM_MAX_POPULATION)
+                                                 : am_api_pairing(k, (int)it->num, o->v, o->err, sizeof o->err);
+                break;
+            default:
+                st = am_api_crowd(k, it->t[0], it->f[0], it->t[1], it->f[1], it->t[2], it->f[2], it->t[3], it->f[3], o->v, o->v + 2,
+                                  o->err, sizeof o->err);
+            }
+        if (o->g[0]) used += (long)strlen(o->g[0]) + 1;
+        if (o->g[1] && it->op == OP_OFFSPRING) {
+            memmove(g_ops_arena + used, o->g[1], strlen(o->g[1]) + 1);
+            o->g[1] = g_ops_arena + used;
+            used += (long)strlen(o->g[1]) + 1;
+        }
+        o->st = (int)st;
+    }
+}
+
+/* a genome text as a JSON string */
+static void put_genome(am_text* t, const char* s)
+{
+    am_text_put(t, "\"");
+    for (; *s; s++) {
+        const unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\') am_text_put(t, "\\%c", c);
+        else if (c == '\n') am_text_put(t, "\\n");
+        else if (c < 0x20) am_text_put(t, "\\u%04x", c);
+        else am_text_put(t, "%c", c);
+    }
+    am_text_put(t, "\"");
+}
+
+/* an operator's result line */
+static void put_op(am_text* t, const eval_item* it, const eval_out* o)
+{
+    am_text_put(t, "{\"id\": %ld, \"op\": \"%s\"", it->id, op_name[it->op]);
+    switch (it->op) {
+    case OP_SEED: am_text_put(t, ", \"seed\": %ld", it->num); break;
+    case OP_NEW:
+    case OP_MUTATE: am_text_put(t, ", \"genome\": "), put_genome(t, o->g[0]); break;
+    case OP_OFFSPRING:
+        am_text_put(t, ", \"genomes\": [");
+        put_genome(t, o->g[0]);
+        am_text_put(t, ", ");
+        put_genome(t, o->g[1]);
+        am_text_put(t, "]");
+        break;
+    case OP_DISTANCE: am_text_put(t, ", \"distance\": %.9g", o->d); break;
+    case OP_PAIRING:
+        am_text_put(t, ", \"order\": [");
+        for (long k = 0; k < it->num; k++) am_text_put(t, "%s%d", k ? ", " : "", o->v[k]);
+        am_text_put(t, "]");
+        break;
+    default: am_text_put(t, ", \"meets\": [%d, %d], \"replaces\": [%d, %d]", o->v[0], o->v[1], o->v[2], o->v[3]);
+    }
+    am_text_put(t, "}\n");
 }
 
 /* item i on worker w's workspace: the settings (command line, then the line's), then the robot */
@@ -190,6 +374,7 @@ static void eval_task(void* ctx, int i, int w)
     eval_batch* b = (eval_batch*)ctx;
     const eval_item* it = &b->item[i];
     eval_out* o = &b->out[i];
+    if (it->op) return; /* done by run_ops */
     am_api_work* k = &g_work[w];
     am_status st = am_api_init(k, (long)sizeof *k, o->err, sizeof o->err);
     for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
@@ -205,6 +390,7 @@ static int run_batch(eval_batch* b, int threads)
 {
     char err[AM_ERR_MAX];
     if (b->n > 0) {
+        run_ops(b);
         int workers = threads < b->n ? threads : b->n;
         am_status st = am_port_parallel_map(b->n, workers, eval_task, b, b->out, (long)sizeof b->out[0], err, sizeof err);
         if (st != AM_OK) return tool_usage_error("eval: %s", err), 1;
@@ -215,6 +401,10 @@ static int run_batch(eval_batch* b, int threads)
     if (tool_out_open(&out, NULL)) return 1;
     for (int i = 0; i < b->n; i++) {
         const am_result* r = &b->out[i].r;
+        if (b->item[i].op) {
+            put_op(&out.text, &b->item[i], &b->out[i]);
+            continue;
+        }
         tool_rec q;
         tool_rec_begin(&q, &out.text, 1);
         tool_rec_int(&q, "id", b->item[i].id);
