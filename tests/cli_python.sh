@@ -118,6 +118,16 @@ expect_fail 2 'eval: stdin:1: genome:1: unexpected end of text: expected .repr d
 printf '{"a": "x"}\n' >"$W/bad4.jsonl"
 expect_fail 2 "eval: stdin:1: column [0-9]*: an operator's inputs without \"op\"" sh -c "'$AMORPH' eval <'$W/bad4.jsonl'"
 
+# docs/examples/map_elites.py: the same output twice (its draws are seeded), and its crowding line is
+# amorph evolve's run at the same budget (crowding() is amorph's run)
+(cd "$W" && AMORPH_LIB=$LIB python3 "$ROOT/docs/examples/map_elites.py" --evals 40 --seeds 1 --set workspace=6 --set cycles=2) >"$W/me1.txt" 2>&1
+(cd "$W" && AMORPH_LIB=$LIB python3 "$ROOT/docs/examples/map_elites.py" --evals 40 --seeds 1 --set workspace=6 --set cycles=2) >"$W/me2.txt" 2>&1
+check "map_elites.py: the same output twice: $(head -c 200 "$W/me1.txt")" sh -c "cmp -s '$W/me1.txt' '$W/me2.txt' && grep -q '^seed 1 map-elites best ' '$W/me1.txt'"
+expect_ok "$AMORPH" evolve --workspace 6 --cycles 2 --population 20 --evaluations 40 --seed 1 --threads 1 --quiet --no-pictures --out "$W/me-run"
+got=$(sed -n 's/^seed 1 crowding   best \([0-9.]*\) m.*/\1/p' "$W/me1.txt")
+check "map_elites.py: its crowding ($got) is amorph evolve's ($(sumval "$W/me-run" best_fitness))" \
+    test -n "$got" -a "$got" = "$(printf '%.4f' "$(sumval "$W/me-run" best_fitness)")"
+
 # refusals: one line each
 got=$(AMORPH_LIB=$LIB python3 -c '
 import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
