@@ -414,7 +414,7 @@ AM_API long am_steps(const am_model* m, am_state* s, long n);
  * broken one. The model's: link layout, voxel, link and constant indices in range, finite positions,
  * stiffnesses and time step, positive masses; the state's: finite positions, orientations, momenta,
  * positive scales and time step (a diverged state passes: it is flagged). A build with -DAM_CHECKS
- * runs them after every am_model_build and am_step and calls the handler on a failure */
+ * runs them after every am_model_build and am_step and calls AM_CHECK_HANDLER (amorph/base.h) on a failure */
 AM_API am_status am_model_validate(const am_model* m, char* err, int errsz);
 AM_API am_status am_state_validate(const am_model* m, const am_state* s, char* err, int errsz);
 

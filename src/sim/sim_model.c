@@ -227,6 +227,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         if (!id) continue;
         if (id > lat->palette.count)
             return am_fail(err, errsz, AM_ERR_RANGE, "cell %d holds material %d, the palette has %d", c, id, lat->palette.count);
+        AM_ASSERT(nv < AM_MAX_VOXELS); /* nv <= the cells of an AM_MAX_DIM lattice */
         vid[c] = (am_index)nv;
         m->cell[nv] = (am_index)c;
         m->mat[nv] = (am_matid)(id - 1);
@@ -277,6 +278,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
                 if (axis == 0) nc = x + 1 < nx ? c + 1 : -1;
                 else if (axis == 1) nc = y + 1 < ny ? c + nx : -1;
                 else nc = z + 1 < nz ? c + nx * ny : -1;
+                AM_ASSERT(nc < ncell);
                 if (nc >= 0) j = vid[nc];
             }
             const int live = j >= 0;
@@ -285,6 +287,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             const int edge = axis == 0 && (i < 0 || i + 1 >= nv); /* lane 0 or nv */
             const int a = edge ? 0 : i; /* the negative end */
             if (axis == 0) j = edge ? 0 : i + 1;
+            AM_ASSERT(a >= 0 && a < nv && j >= 0 && j < nv && (axis == 0 || a < j)); /* a link's ends are voxels, + after - */
             if (live) {
                 m->slot[2 * axis][a] = (am_index)nl;
                 m->slot[2 * axis + 1][j] = (am_index)nl;
@@ -300,6 +303,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             m->lpos[nl] = (am_index)j;
             m->lpair[nl] = (am_pair)(m->mat[a] * AM_MAX_MATERIALS + m->mat[j]);
             const int lc = AM_LC(m, nl); /* the link's constants (once per pair of materials on a board) */
+            AM_ASSERT(lc >= 0 && lc < AM_LC_CAP);
             m->k_ax[lc] = AM_MUL(E, L2);
             m->a2[lc] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
             m->b1[lc] = AM_MUL(E, L);
