@@ -297,12 +297,15 @@ CHECK_SH ?= tests/cli_lib.sh tests/cli_build.sh tests/cli_determinism.sh tests/c
 check: all check-alloc check-tests check-layers check-exports $(TEST_BIN) check-test-links
 	@AM_TEST_QUICK=1 BUILD=$(BUILD) CLI_TESTS='$(CHECK_SH)' sh tests/run_all.sh $(TEST_BIN)
 
-# the invariants checked after every model build and step while the simulator's unit tests run their scenes
-CHECKS_TESTS := test_sim_model test_sim_step test_sim_eval test_sim_collide
+# the invariants checked after every model build and step, and every AM_ASSERT, while the
+# simulator's unit tests run their scenes, then a VXA file's scene and the shipped best robots
+# through the checked program, and a false AM_ASSERT through the handler (tests/cli_checks.sh)
+CHECKS_TESTS := test_base test_sim_model test_sim_step test_sim_eval test_sim_collide
 .PHONY: checks
 checks:
-	@$(MAKE) --no-print-directory BUILD=$(BUILD)/checks CHECKS=1 $(addprefix $(BUILD)/checks/tests/,$(CHECKS_TESTS))
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/checks CHECKS=1 $(addprefix $(BUILD)/checks/tests/,$(CHECKS_TESTS)) $(BUILD)/checks/amorph
 	@for t in $(CHECKS_TESTS); do $(BUILD)/checks/tests/$$t >/dev/null || { echo "checks: $$t failed"; exit 1; }; done; echo "checks: $(CHECKS_TESTS) pass with the invariants checked after every build and step"
+	@CHECKS_BUILD=$(BUILD)/checks BUILD=$(BUILD) sh tests/cli_checks.sh
 
 test: all check-alloc check-fma check-tests check-layers check-exports
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/o0 OPT=-O0 ARCH= all
