@@ -393,8 +393,9 @@ AM_API am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err
 typedef struct am_vxa_info {
     am_env env;              /* the file's environment mapped to amorph (docs/vxa.md) */
     double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
-    int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
-                                converts temp_period with am_vxa_period_steps once dt is known */
+    int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else am_vxa_robot
+                                gives temp_period as env.period_s, which am_period_steps turns into
+                                steps of the robot's step */
     am_eval_def eval;        /* how the robot is evaluated: <Amorph>'s <Evaluation>, else am_default_eval() */
     int key_line[AM_EVO_KEY_MAX]; /* the line of the element that set each configuration key's value (by
                                      the key's index, am_evo_key_name: <DtFrac> dt_frac, <TempPeriod>
