@@ -624,6 +624,31 @@ static void test_temp_name_pid(void)
     for (size_t k = 0; k < sizeof no / sizeof no[0]; k++) CHECK(am_temp_name_pid(no[k]) == -1, "'%s' is no temporary", no[k]);
 }
 
+/* the condition of an AM_ASSERT, counting its evaluations */
+static int g_assert_evals;
+static int assert_cond(int v)
+{
+    g_assert_evals++;
+    return v;
+}
+
+/* AM_ASSERT: compiled out without AM_CHECKS (the condition not even evaluated), checked with it;
+ * `test_base assert_fires` (tests/cli_checks.sh, in the CHECKS=1 build) makes one fail, which
+ * calls the handler: "tests/test_base.c:LINE: invariant broken: assert_cond(0)" and abort() */
+static void test_assert_fires(void)
+{
+    g_assert_evals = 0;
+    AM_ASSERT(assert_cond(1));
+#if defined(AM_CHECKS)
+    CHECK(g_assert_evals == 1, "AM_CHECKS: the condition evaluated %d times", g_assert_evals);
+    if (t_argc_ == 2 && !strcmp(t_argv_[1], "assert_fires")) AM_ASSERT(assert_cond(0));
+#else
+    CHECK(g_assert_evals == 0, "without AM_CHECKS the condition was evaluated %d times", g_assert_evals);
+#endif
+    const int before = g_assert_evals;
+    CHECK(assert_cond(1) && g_assert_evals == before + 1, "the counter counts");
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -646,5 +671,6 @@ int main(int argc, char** argv)
     RUN(test_hash);
     RUN(test_text_buffer_and_stream);
     RUN(test_quote);
+    RUN(test_assert_fires);
     return SUMMARY();
 }

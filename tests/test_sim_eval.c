@@ -432,6 +432,18 @@ static void test_period_range(void)
     CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
     env.period_s = AM_P(1e-9);
     CHECK(am_period_steps(&g_m, &env, g_m.dt_rec) == 2, "a searched step's period %d", am_period_steps(&g_m, &env, g_m.dt_rec));
+    /* the period's one owner: the model keeps am_period_steps at its step, a state copies it, and
+     * the rounding is am_period_steps_si's, a VXA file's period in seconds included */
+    env.period_s = AM_P(0.05);
+    CHECK(am_model_build(&g_m, &g_lat, &env, err, sizeof err) == AM_OK, "%s", err);
+    am_state_reset(&g_m, &g_s);
+    const int own = am_period_steps(&g_m, &env, g_s.dt);
+    CHECK(g_m.env.period_steps == own && g_s.period_steps == own && own > 2, "model %d, state %d, owner %d", g_m.env.period_steps,
+          g_s.period_steps, own);
+    CHECK(own == am_period_steps_si(0.05, am_to_si(&g_m, g_s.dt, AM_DIM_TIME)), "owner %d", own);
+    CHECK(am_period_steps_si(1.0, 0.4) == 3 && am_period_steps_si(1.0, 0.8) == 2 && am_period_steps_si(1.0, 1e-9) == 10000000 &&
+              am_period_steps_si(NAN, 1.0) == 2 && am_period_steps_si(1.0, 0.0) == 10000000,
+          "am_period_steps_si rounds to the nearest, 2 to 10^7");
 }
 
 int main(int argc, char** argv)

@@ -6,7 +6,8 @@
 # amorph (no amorph.h, no port.h: the porting layer is the program's, port/port.h; no path into
 # another folder). The ports (port/) may include port.h and, of the library, amorph/base.h only;
 # include/amorph/ holds no port.h. The profiles' configuration headers (include/amorph/config_*.h)
-# belong to the base layer and include nothing. Prints one line per breach and exits 1 when there is one.
+# belong to the base layer and include nothing. Inside a layer, the files' calls form no circle.
+# Prints one line per breach and exits 1 when there is one.
 LAYERS="base sim geno evo io api"
 CONFIGS=$(cd include && ls amorph/config_*.h | tr '\n' ' ')
 bad=0 n=0
@@ -34,6 +35,20 @@ for l in $LAYERS; do
     check_file "include/amorph/$l.h" $(allowed "$l" | sed "s| amorph/$l.h||")
 done
 for f in include/amorph/config_*.h; do check_file "$f"; done
+# and inside a layer no circle of calls between its files: a file calls another's functions (a
+# function defined at the start of a line, am_NAME(...), mentioned as am_NAME( elsewhere), and
+# those calls sort in an order (tsort), so the step never calls back into the model build
+for l in $LAYERS; do
+    set -- src/$l/*.c
+    edges=$(awk 'FNR == 1 { if (!first) first = FILENAME; pass += FILENAME == first; f = FILENAME; sub(/.*\//, "", f) }
+        pass == 1 && /^[a-z][a-z0-9_ ]*[ *]am_[a-z0-9_]*\(.*[^;]$/ { s = $0; sub(/\(.*/, "", s); sub(/.*[ *]/, "", s); def[s] = f; next }
+        pass == 2 { s = $0; while (match(s, /am_[a-z0-9_]*\(/)) { fn = substr(s, RSTART, RLENGTH - 1); s = substr(s, RSTART + RLENGTH)
+            if ((fn in def) && def[fn] != f) print f, def[fn] } }' "$@" "$@" | sort -u)
+    [ -n "$edges" ] || continue
+    if ! echo "$edges" | tsort >/dev/null 2>&1; then
+        echo "check-layers: src/$l: its files call each other in a circle:" $(echo "$edges" | tsort 2>&1 >/dev/null | grep -v 'input contains a loop' | sed 's/^tsort: //'); bad=1
+    fi
+done
 for f in src/*; do
     case " $LAYERS " in *" $(basename "$f") "*) ;; *) echo "check-layers: $f is not a layer's folder"; bad=1 ;; esac
 done
@@ -49,4 +64,4 @@ for f in include/amorph/port.h include/port.h; do
     [ -e "$f" ] && { echo "check-layers: $f: the porting layer is the program's (port/port.h), not the library's"; bad=1; }
 done
 if [ $bad -ne 0 ]; then echo "check-layers: 0 passed, 1 failed"; exit 1; fi
-echo "check-layers: $n files of src/, include/amorph/ and port/ include only what their layer may"
+echo "check-layers: $n files of src/, include/amorph/ and port/ include only what their layer may, and no layer's files call each other in a circle"

@@ -67,7 +67,7 @@ int cmd_eval(tool_ctx* c, int argc, char** argv);
 /* amorph report: the tables of docs/results.md from run folders' log.csv (tools/cmd_report.c) */
 int cmd_report(tool_ctx* c, int argc, char** argv);
 
-/* a run folder's and an experiment folder's file names and table rows: amorph/io.h (AM_RUN_*,
+/* a run folder's and an experiment folder's file names and table rows: amorph/evo.h (AM_RUN_*,
  * AM_EXP_*); tools/run_dir.c writes and reads the files */
 
 /* 1 when path is a run folder of amorph evolve (config.txt and best.genome) */

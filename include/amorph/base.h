@@ -373,6 +373,28 @@ AM_API am_status am_fail_at(char* err, int errsz, am_status code, const char* fn
 #endif
     ;
 
+/* ---- invariants ----
+ * AM_ASSERT(cond) states what the library assumes at that point (an index in range, a count within
+ * its capacity). Compiled out unless the build defines AM_CHECKS (make CHECKS=1): then cond is not
+ * evaluated and no instruction is emitted. With AM_CHECKS a false cond calls the check handler
+ * with the file, the line and the condition's text. The handler is AM_CHECK_HANDLER(file, line,
+ * message): a project's function given with -DAM_CHECK_HANDLER=name (a compile-time hook: the
+ * library keeps no writable global), else am_check_failed, which prints "file:line: invariant
+ * broken: message" on stderr and aborts. The model's and the state's invariants after every
+ * build and step (am_model_validate, am_state_validate: docs/architecture.md, Invariants) go to
+ * the same handler. */
+#if defined(AM_CHECKS)
+#if defined(AM_CHECK_HANDLER)
+void AM_CHECK_HANDLER(const char* file, int line, const char* msg);
+#else
+#define AM_CHECK_HANDLER am_check_failed
+#endif
+AM_API void am_check_failed(const char* file, int line, const char* msg);
+#define AM_ASSERT(cond) ((cond) ? (void)0 : AM_CHECK_HANDLER(__FILE__, __LINE__, #cond))
+#else
+#define AM_ASSERT(cond) ((void)sizeof(!(cond))) /* not evaluated: no code, and its names count as used */
+#endif
+
 /* ---- input quoted in messages ----
  * am_quote writes the input token s (its first n bytes; n < 0: up to its NUL; NULL: empty) into
  * out (capacity cap) the one way every reader quotes input in a message, "... '%s' ...":

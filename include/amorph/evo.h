@@ -1,5 +1,6 @@
 /* amorph/evo.h: the evolver layer (src/evo/): a run's settings, deterministic crowding one
- * generation at a time, and the run's hash. It includes amorph/base.h, amorph/sim.h and
+ * generation at a time, the run's hash, and the run folder's file names and tables (log.csv,
+ * evals.csv, an experiment's results.csv). It includes amorph/base.h, amorph/sim.h and
  * amorph/geno.h.
  */
 #ifndef AMORPH_EVO_H
@@ -423,6 +424,77 @@ AM_API int am_evo_crowd_straight(am_real d1a, am_real d1b, am_real d2a, am_real 
  * final population (what `make repro` compares across platforms) */
 AM_API uint64_t am_evo_hash(const am_evo* e);
 
+
+/* ==== the run folder of amorph evolve and the experiment folder of amorph experiment
+ * (docs/evolve.md; src/evo/evo_run.c): the names of their files, and below the rows of log.csv,
+ * evals.csv and results.csv and the reader of log.csv (config.txt is am_evo_write's, the
+ * checkpoint amorph/io.h's). The program reads and writes the files through the port; every place
+ * that names one uses these. */
+#define AM_RUN_CONFIG "config.txt"         /* the settings, key = value */
+#define AM_RUN_LOG "log.csv"               /* a row per generation (am_evo_log_row) */
+#define AM_RUN_EVALS "evals.csv"           /* a row per evaluation (am_evo_evals_row) */
+#define AM_RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
+#define AM_RUN_BEST_GENOME "best.genome"
+#define AM_RUN_BEST_LATTICE "best.lattice"
+#define AM_RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
+#define AM_RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
+#define AM_RUN_LOCK "lock"                 /* held while a process runs the folder */
+#define AM_RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
+#define AM_RUN_BEST_HTML "best.html"       /* its viewer page */
+#define AM_RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
+/* an experiment folder: its run folders <variant>-<k>, and */
+#define AM_EXP_ABOUT "experiment.txt"      /* what the experiment is */
+#define AM_EXP_RESULTS "results.csv"       /* mean and standard error per variant (am_exp_results_row) */
+
+
+/* ---- statistics ---- */
+
+/* the log.csv header line (no newline) and one row for s; returns the characters written */
+AM_API const char* am_evo_log_header(void);
+AM_API int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
+
+/* log.csv read back line by line (a file streamed through a small buffer, or held whole): begin,
+ * one call per line, end. The header is the first line that is not blank; the reader finds its
+ * columns there by name, so a log with its columns in another order, or with columns it does not
+ * know, still reads. generation, evaluations and best are required; mean, median, diverged,
+ * empty, wall_s and unsettled fill their fields when the header has them, else they are left NAN
+ * (mean, median, wall_s) or -1 (diverged, empty, unsettled). Blank lines are skipped and a CR before
+ * the newline is dropped. Messages are "fname:line: problem": a header without a required column
+ * (or naming one twice), a row without as many fields as the header, a field that is not a finite
+ * number (or, for generation, evaluations, diverged, empty and unsettled, not a whole number from
+ * 0). */
+#define AM_EVO_LOG_COLUMNS 9          /* the columns of am_evo_log_header */
+typedef struct am_evo_log_reader {
+    const char* fname;                /* for messages; must stay valid while reading */
+    int line;                         /* lines read */
+    int header;                       /* 1 once the header was read */
+    int columns;                      /* columns the header names */
+    int col[AM_EVO_LOG_COLUMNS];      /* the column (from 0) of each name of am_evo_log_header, in
+                                       * its order; -1 when the header has none */
+    long rows;                        /* rows read */
+    am_status st;                     /* the first failure: every later call returns it */
+} am_evo_log_reader;
+AM_API void am_evo_log_read_begin(am_evo_log_reader* r, const char* fname);
+/* one line of n characters without its newline (nothing past them is read): a row is parsed into
+ * *row and *is_row set to 1; the header and blank lines set *is_row to 0 and leave *row alone
+ * (is_row may be NULL: r->rows counts the rows) */
+AM_API am_status am_evo_log_read_line(am_evo_log_reader* r, const char* text, long n, am_evo_stats* row, int* is_row, char* err,
+                               int errsz);
+/* after the last line: AM_OK when the header was read (a log may have no rows yet) */
+AM_API am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
+/* the evals.csv header line of a run with `materials` materials (no newline), and one row for an
+ * evaluation; both return the characters written (cut to cap - 1). docs/evolve.md gives the
+ * columns. AM_EVO_EVALS_ROW_MAX: a capacity every header and row fits. */
+#define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
+AM_API int am_evo_evals_header(int materials, char* buf, int cap);
+AM_API int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
+/* an experiment's results.csv: its header line (no newline), and one row (no newline) for a variant
+ * at an evaluation count: the mean and the standard error of its runs' best fitness there; returns
+ * the characters written (cut to cap - 1). AM_EXP_RESULTS_ROW_MAX: a capacity every row fits with
+ * a variant name of up to 160 characters. */
+#define AM_EXP_RESULTS_ROW_MAX 256
+AM_API const char* am_exp_results_header(void);
+AM_API int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,6 @@
 /* amorph/io.h: the file layer (src/io/): every codec (XML, inflate, PNG, pictures, surface meshes
  * and printable files, the lattice text format, VoxCAD/voxcraft VXA) and the run folder's
- * checkpoint, log.csv and evals.csv. It includes the four layers below it.
+ * checkpoint (its file names and tables: amorph/evo.h). It includes the four layers below it.
  */
 #ifndef AMORPH_IO_H
 #define AMORPH_IO_H
@@ -393,8 +393,9 @@ AM_API am_status am_lattice_write(const am_lattice* lat, am_text* out, char* err
 typedef struct am_vxa_info {
     am_env env;              /* the file's environment mapped to amorph (docs/vxa.md) */
     double temp_period;      /* s: the actuation period (<TempPeriod>); 0 when there is none */
-    int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else the caller
-                                converts temp_period with am_vxa_period_steps once dt is known */
+    int period_steps_given;  /* 1 when the <Amorph> element fixed env.period_steps; else am_vxa_robot
+                                gives temp_period as env.period_s, which am_period_steps turns into
+                                steps of the robot's step */
     am_eval_def eval;        /* how the robot is evaluated: <Amorph>'s <Evaluation>, else am_default_eval() */
     int key_line[AM_EVO_KEY_MAX]; /* the line of the element that set each configuration key's value (by
                                      the key's index, am_evo_key_name: <DtFrac> dt_frac, <TempPeriod>
@@ -483,25 +484,8 @@ AM_API am_status am_vxa_format_robot(const am_robot* r, double dt, char* buf, lo
  * number, at least 2, at most 10^7 (the range of the configuration's period_steps) */
 AM_API int am_vxa_period_steps(double period_s, double dt);
 
-/* ==== the run folder of amorph evolve and the experiment folder of amorph experiment
- * (docs/evolve.md): the names of their files, and below the texts they hold (the checkpoint, the
- * rows of log.csv, evals.csv and results.csv, and their readers; config.txt is am_evo_write's).
- * The program reads and writes the files through the port; every place that names one uses these. */
-#define AM_RUN_CONFIG "config.txt"         /* the settings, key = value */
-#define AM_RUN_LOG "log.csv"               /* a row per generation (am_evo_log_row) */
-#define AM_RUN_EVALS "evals.csv"           /* a row per evaluation (am_evo_evals_row) */
-#define AM_RUN_CHECKPOINT "checkpoint.txt" /* the whole state, to resume from */
-#define AM_RUN_BEST_GENOME "best.genome"
-#define AM_RUN_BEST_LATTICE "best.lattice"
-#define AM_RUN_SUMMARY_TXT "summary.txt"   /* at the end: key = value lines */
-#define AM_RUN_SUMMARY_JSON "summary.json" /* the same as one JSON object */
-#define AM_RUN_LOCK "lock"                 /* held while a process runs the folder */
-#define AM_RUN_BEST_PNG "best.png"         /* at the end, with pictures: the best robot's filmstrip */
-#define AM_RUN_BEST_HTML "best.html"       /* its viewer page */
-#define AM_RUN_FITNESS_SVG "fitness.svg"   /* the best fitness against evaluations */
-/* an experiment folder: its run folders <variant>-<k>, and */
-#define AM_EXP_ABOUT "experiment.txt"      /* what the experiment is */
-#define AM_EXP_RESULTS "results.csv"       /* mean and standard error per variant (am_exp_results_row) */
+/* ==== a run's checkpoint (docs/evolve.md): the text of checkpoint.txt in the run folder, whose
+ * file names and tables are amorph/evo.h's (AM_RUN_*, log.csv, evals.csv) ==== */
 
 /* ---- checkpoints ---- */
 
@@ -572,55 +556,6 @@ AM_API am_status am_evo_checkpoint_read_end(am_evo_ckpt_reader* r, char* err, in
 #define AM_EVO_CHECKPOINT_MAX(n) (16384L + ((long)(n) + 1) * (AM_GENOME_TEXT_MAX + 256L) + AM_EVO_MEMO * AM_EVO_MEMO_TEXT_MAX)
 /* the text of one remembered body: its memo line, then base64 lines of 48 bytes (64 characters) */
 #define AM_EVO_MEMO_TEXT_MAX (80L + (AM_EVO_MEMO_RESULT_BYTES + AM_EVO_MEMO_BYTES + 47L) / 48L * 68L)
-
-/* ---- statistics ---- */
-
-/* the log.csv header line (no newline) and one row for s; returns the characters written */
-AM_API const char* am_evo_log_header(void);
-AM_API int am_evo_log_row(const am_evo_stats* s, char* buf, int cap);
-
-/* log.csv read back line by line (a file streamed through a small buffer, or held whole): begin,
- * one call per line, end. The header is the first line that is not blank; the reader finds its
- * columns there by name, so a log with its columns in another order, or with columns it does not
- * know, still reads. generation, evaluations and best are required; mean, median, diverged,
- * empty, wall_s and unsettled fill their fields when the header has them, else they are left NAN
- * (mean, median, wall_s) or -1 (diverged, empty, unsettled). Blank lines are skipped and a CR before
- * the newline is dropped. Messages are "fname:line: problem": a header without a required column
- * (or naming one twice), a row without as many fields as the header, a field that is not a finite
- * number (or, for generation, evaluations, diverged, empty and unsettled, not a whole number from
- * 0). */
-#define AM_EVO_LOG_COLUMNS 9          /* the columns of am_evo_log_header */
-typedef struct am_evo_log_reader {
-    const char* fname;                /* for messages; must stay valid while reading */
-    int line;                         /* lines read */
-    int header;                       /* 1 once the header was read */
-    int columns;                      /* columns the header names */
-    int col[AM_EVO_LOG_COLUMNS];      /* the column (from 0) of each name of am_evo_log_header, in
-                                       * its order; -1 when the header has none */
-    long rows;                        /* rows read */
-    am_status st;                     /* the first failure: every later call returns it */
-} am_evo_log_reader;
-AM_API void am_evo_log_read_begin(am_evo_log_reader* r, const char* fname);
-/* one line of n characters without its newline (nothing past them is read): a row is parsed into
- * *row and *is_row set to 1; the header and blank lines set *is_row to 0 and leave *row alone
- * (is_row may be NULL: r->rows counts the rows) */
-AM_API am_status am_evo_log_read_line(am_evo_log_reader* r, const char* text, long n, am_evo_stats* row, int* is_row, char* err,
-                               int errsz);
-/* after the last line: AM_OK when the header was read (a log may have no rows yet) */
-AM_API am_status am_evo_log_read_end(am_evo_log_reader* r, char* err, int errsz);
-/* the evals.csv header line of a run with `materials` materials (no newline), and one row for an
- * evaluation; both return the characters written (cut to cap - 1). docs/evolve.md gives the
- * columns. AM_EVO_EVALS_ROW_MAX: a capacity every header and row fits. */
-#define AM_EVO_EVALS_ROW_MAX (320 + 12 * AM_MAX_GENO_MATERIALS)
-AM_API int am_evo_evals_header(int materials, char* buf, int cap);
-AM_API int am_evo_evals_row(const am_evo_def* d, const am_evo_ind* ind, const am_evo_eval* ev, char* buf, int cap);
-/* an experiment's results.csv: its header line (no newline), and one row (no newline) for a variant
- * at an evaluation count: the mean and the standard error of its runs' best fitness there; returns
- * the characters written (cut to cap - 1). AM_EXP_RESULTS_ROW_MAX: a capacity every row fits with
- * a variant name of up to 160 characters. */
-#define AM_EXP_RESULTS_ROW_MAX 256
-AM_API const char* am_exp_results_header(void);
-AM_API int am_exp_results_row(const char* variant, long evaluations, double mean, double stderr_best, long runs, char* buf, int cap);
 
 #ifdef __cplusplus
 }

@@ -414,7 +414,7 @@ AM_API long am_steps(const am_model* m, am_state* s, long n);
  * broken one. The model's: link layout, voxel, link and constant indices in range, finite positions,
  * stiffnesses and time step, positive masses; the state's: finite positions, orientations, momenta,
  * positive scales and time step (a diverged state passes: it is flagged). A build with -DAM_CHECKS
- * runs them after every am_model_build and am_step and calls the handler on a failure */
+ * runs them after every am_model_build and am_step and calls AM_CHECK_HANDLER (amorph/base.h) on a failure */
 AM_API am_status am_model_validate(const am_model* m, char* err, int errsz);
 AM_API am_status am_state_validate(const am_model* m, const am_state* s, char* err, int errsz);
 
@@ -489,8 +489,12 @@ AM_API am_status am_robot_build(am_model* m, const am_robot* r, char* err, int e
 AM_API long am_steps_at(const am_model* m, const am_state* s, long n);
 /* the actuation period in steps of a step dt (model units) for env's period: period_steps, or
  * period_s / dt rounded, 2 to 10^7 (the range of the key period_steps; am_model_build refuses a
- * period_s outside it at the model's step) */
+ * period_s outside it at the model's step). The one place a run's period is decided: the model
+ * keeps it for its step (env.period_steps), a state for its own (am_state.period_steps) */
 AM_API int am_period_steps(const am_model* m, const am_env* env, am_real dt);
+/* its rounding: a period of period_s seconds in steps of dt_s seconds, period_s / dt_s rounded to
+ * the nearest, 2 to 10^7 (2 below 1.5 steps or for NaN) */
+AM_API int am_period_steps_si(double period_s, double dt_s);
 
 /* The score of a body that has none: it diverged, or it did not come to rest before the movement.
  * It is the one meaning of "fitness when diverged" everywhere: am_result.fitness, the evolver's

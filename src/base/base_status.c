@@ -1,4 +1,4 @@
-/* Status messages into caller buffers. */
+/* Status messages into caller buffers, and the AM_CHECKS build's default check handler. */
 #include "amorph/base.h"
 
 #include <stdarg.h>
@@ -88,3 +88,12 @@ const char* am_quote(char* out, int cap, const char* s, long n)
     out[len] = 0;
     return out;
 }
+
+#if defined(AM_CHECKS)
+#include <stdlib.h>
+void am_check_failed(const char* file, int line, const char* msg)
+{
+    fprintf(stderr, "%s:%d: invariant broken: %s\n", file, line, msg);
+    abort();
+}
+#endif

@@ -75,6 +75,7 @@ void am_text_write(am_text* t, const char* data, long n)
             return;
         }
         long k = n < room ? n : room;
+        AM_ASSERT(t->len >= 0 && t->len + k < t->cap); /* the piece and its NUL fit */
         memcpy(t->buf + t->len, data, (size_t)k);
         t->len += k;
         t->buf[t->len] = 0;

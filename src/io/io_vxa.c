@@ -1466,10 +1466,7 @@ am_status am_vxa_parse_vxd(am_lattice* lat, am_vxa_info* info, am_xml_doc* work,
 
 int am_vxa_period_steps(double period_s, double dt)
 {
-    double k = dt > 0 ? period_s / dt : 0;
-    if (!(k >= 1.5)) return 2; /* the configuration's smallest period_steps */
-    if (k >= 1e7) return 10000000; /* the configuration's largest period_steps */
-    return (int)floor(k + 0.5);
+    return dt > 0 ? am_period_steps_si(period_s, dt) : 2; /* the simulator's rounding (am_period_steps) */
 }
 
 /* ---- writing ----------------------------------------------------------------------------- */

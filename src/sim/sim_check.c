@@ -66,20 +66,7 @@ am_status am_state_validate(const am_model* m, const am_state* s, char* err, int
 }
 
 #if defined(AM_CHECKS)
-#if !defined(AM_CHECK_HANDLER)
-#include <stdio.h>
-#include <stdlib.h>
-/* the default handler: the broken invariant on stderr, then abort (a debug build only) */
-static void check_failed(const char* file, int line, const char* msg)
-{
-    fprintf(stderr, "%s:%d: invariant broken: %s\n", file, line, msg);
-    abort();
-}
-#define AM_CHECK_HANDLER check_failed
-#else
-void AM_CHECK_HANDLER(const char* file, int line, const char* msg);
-#endif
-
+/* a broken invariant goes to the handler of amorph/base.h (AM_CHECK_HANDLER, as AM_ASSERT) */
 void am_check_model(const am_model* m)
 {
     char err[AM_ERR_MAX];

@@ -163,12 +163,14 @@ static void rebuild(const am_model* m, am_state* s)
             for (int dy = -1; dy <= 1; dy++)
                 for (int dx = -1; dx <= 1; dx++) {
                     uint32_t b = bucket_of(cx + dx, cy + dy, cz + dz);
+                    AM_ASSERT(b < AM_COLL_BUCKETS);
                     /* two cells that hash alike: the bucket is visited once, at the first; then
                      * its entries after i, the pairs (i, j > i) */
 #if defined(AM_COMPACT)
                     int dup = 0;
                     for (int k = 0; k < nseen; k++) dup |= seen[k] == b;
                     if (dup) continue;
+                    AM_ASSERT(nseen < 27);
                     seen[nseen++] = b;
                     int k = b ? end[b - 1] : 0;
                     const int k1 = end[b];
@@ -184,6 +186,7 @@ static void rebuild(const am_model* m, am_state* s)
 #endif
                     for (; k < k1; k++) {
                         const int j = s->bucket_item[k];
+                        AM_ASSERT(j > i && j < m->nv); /* a bucket's entries after i are voxels after it */
                         am_real ex = ITEM_POS(0, k) - pix, ey = ITEM_POS(1, k) - piy, ez = ITEM_POS(2, k) - piz;
 #if defined(AM_REAL_FIXED_POINT)
                         /* a far pair is out on one axis already (and its square might leave the

@@ -166,6 +166,13 @@ static void record_extra(const am_model* m, const am_state* s, am_record* rec)
     rec->frames++;
 }
 
+/* s at the step dt, with the period at that step (am_period_steps, the period's one owner) */
+static void run_at(const am_model* m, am_state* s, am_real dt)
+{
+    s->dt = dt;
+    s->period_steps = am_period_steps(m, &m->env, dt);
+}
+
 /* 100 steps after every voxel is displaced by up to 2% of L and turned by up to 0.02 rad in a
  * fixed pseudo-random pattern, so that every mode, symmetric or not, starts with a finite
  * amplitude, and with the actuation switched on at its peak; gravity and floor as configured. In a
@@ -174,8 +181,7 @@ static void record_extra(const am_model* m, const am_state* s, am_record* rec)
 static int stable_at(const am_model* m, am_state* s, am_real dt)
 {
     am_state_reset(m, s);
-    s->dt = dt;
-    s->period_steps = am_period_steps(m, &m->env, dt);
+    run_at(m, s, dt);
     /* the actuation from its peak: a thermal step load on every actuated voxel (large deformations
      * are where a step first fails: the actuated sphere:20 runs stable at rest at 2 dt_rec, and
      * diverges actuated at 1.6) */
@@ -404,7 +410,7 @@ const char* am_gait_mode_name(am_gait_mode mode)
 typedef struct relax_limits {
     long max, min, release, calm;
     am_real dt, dt_settle;   /* the run's step; settling's pseudo-step (>= dt) */
-    int period_steps;        /* the run's actuation period */
+    int period_steps;        /* the run's actuation period (am_evaluate's, from am_period_steps) */
 } relax_limits;
 
 /* s back to the start of the evaluation, at the run's step and period */
@@ -501,7 +507,8 @@ double am_eval_max_steps(const am_env* env, const am_eval_def* def, double perio
     const double n = (double)def->relax_max_steps;
     const int at_ref = !def->dt_search && env->dt_frac == AM_P(AM_REF_DT_FRAC); /* the counts as given */
     c.relax = n > 0 ? at_ref ? n : fmax(1.0, ceil(n * AM_REF_DT_FRAC / c.step)) : 0.0;
-    /* a period in seconds is period_steps of env's step, more of a smaller searched step */
+    /* a period in seconds is period_steps of env's step, more of a smaller searched step: a bound
+     * of what am_period_steps gives at the smallest step the search may take (no model here) */
     c.period = period_steps;
     if (def->dt_search && env->period_s > AM_P(0))
         c.period = fmin(1e7, ceil(period_steps * AM_PARAM_TO_DOUBLE(env->dt_frac) / c.step));
@@ -537,10 +544,7 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     }
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
-    if (def->dt_search) {
-        s->dt = dt;
-        s->period_steps = am_period_steps(m, &m->env, dt); /* a period in seconds at the searched step */
-    }
+    if (def->dt_search) run_at(m, s, dt); /* a period in seconds at the searched step */
     out->dt = am_to_si(m, s->dt, AM_DIM_TIME);
     out->period_steps = s->period_steps;
     /* the relaxation's step counts are steps of the default step (amorph/sim.h) */

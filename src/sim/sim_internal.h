@@ -194,7 +194,8 @@ static inline am_real am_acc_x(am_real v, am_real* rem, am_real a, am_real b)
 static inline am_real am_sim_inertia(am_real mass, am_real L) { return AM_DIV(AM_MUL(mass, AM_MUL(L, L)), AM_R(6)); }
 static inline am_real am_sim_reduced_mass(am_real ma, am_real mb) { return AM_DIV(AM_MUL(ma, mb), ma + mb); }
 
-/* linear scale of a voxel of thermal coefficient cte at temperature T (sim_model.c) */
+/* linear scale of a voxel of thermal coefficient cte at temperature T (sim_scale.c: the step's, which
+ * the model build asks for the largest scale) */
 am_real am_sim_scale(int cte_mode, am_real cte, am_real T);
 /* its change for a small change dT of T (its derivative times dT), s being am_sim_scale's value (0
  * where it clamps); with dT = dT/dt, the scale's rate of change */

@@ -99,20 +99,6 @@ static am_status check_env(const am_env* e, char* err, int errsz)
     return AM_OK;
 }
 
-am_real am_sim_scale(int cte_mode, am_real cte, am_real T)
-{
-    am_real arg = AM_R(1) + AM_MUL(cte, T);
-    if (arg < AM_R(0.01)) arg = AM_R(0.01); /* a voxel never shrinks to nothing */
-    return cte_mode == AM_CTE_LINEAR ? arg : am_cbrt(arg);
-}
-
-am_real am_sim_scale_rate(int cte_mode, am_real cte, am_real T, am_real dT, am_real s)
-{
-    if (AM_R(1) + AM_MUL(cte, T) < AM_R(0.01)) return AM_R(0); /* clamped: the scale holds */
-    const am_real a = AM_MUL(cte, dT); /* the change of 1 + cte T */
-    return cte_mode == AM_CTE_LINEAR ? a : AM_DIV(a, AM_MUL(AM_R(3), AM_MUL(s, s)));
-}
-
 void am_layers_clear(am_layers* l)
 {
     l->has_phase = 0;
@@ -123,20 +109,6 @@ void am_layers_clear(am_layers* l)
 am_status am_model_build(am_model* m, const am_lattice* lat, const am_env* env, char* err, int errsz)
 {
     return am_model_build_layers(m, lat, env, NULL, err, errsz);
-}
-
-void am_robot_init(am_robot* r, am_lattice* lat, am_layers* layers)
-{
-    r->lattice = lat;
-    r->layers = layers;
-    if (layers) am_layers_clear(layers);
-    r->env = am_default_env();
-    r->eval = am_default_eval();
-}
-
-am_status am_robot_build(am_model* m, const am_robot* r, char* err, int errsz)
-{
-    return am_model_build_layers(m, r->lattice, &r->env, r->layers, err, errsz);
 }
 
 /* the elastic modulus of filled cell c, Pa: the layers' stiffness when they have one, else its
@@ -255,6 +227,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
         if (!id) continue;
         if (id > lat->palette.count)
             return am_fail(err, errsz, AM_ERR_RANGE, "cell %d holds material %d, the palette has %d", c, id, lat->palette.count);
+        AM_ASSERT(nv < AM_MAX_VOXELS); /* nv <= the cells of an AM_MAX_DIM lattice */
         vid[c] = (am_index)nv;
         m->cell[nv] = (am_index)c;
         m->mat[nv] = (am_matid)(id - 1);
@@ -305,6 +278,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
                 if (axis == 0) nc = x + 1 < nx ? c + 1 : -1;
                 else if (axis == 1) nc = y + 1 < ny ? c + nx : -1;
                 else nc = z + 1 < nz ? c + nx * ny : -1;
+                AM_ASSERT(nc < ncell);
                 if (nc >= 0) j = vid[nc];
             }
             const int live = j >= 0;
@@ -313,6 +287,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             const int edge = axis == 0 && (i < 0 || i + 1 >= nv); /* lane 0 or nv */
             const int a = edge ? 0 : i; /* the negative end */
             if (axis == 0) j = edge ? 0 : i + 1;
+            AM_ASSERT(a >= 0 && a < nv && j >= 0 && j < nv && (axis == 0 || a < j)); /* a link's ends are voxels, + after - */
             if (live) {
                 m->slot[2 * axis][a] = (am_index)nl;
                 m->slot[2 * axis + 1][j] = (am_index)nl;
@@ -328,6 +303,7 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             m->lpos[nl] = (am_index)j;
             m->lpair[nl] = (am_pair)(m->mat[a] * AM_MAX_MATERIALS + m->mat[j]);
             const int lc = AM_LC(m, nl); /* the link's constants (once per pair of materials on a board) */
+            AM_ASSERT(lc >= 0 && lc < AM_LC_CAP);
             m->k_ax[lc] = AM_MUL(E, L2);
             m->a2[lc] = AM_DIV(AM_MUL(E, L3), AM_MUL(AM_R(12), AM_R(1) + nu));
             m->b1[lc] = AM_MUL(E, L);
@@ -410,7 +386,8 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
 #endif
     m->dt_rec = am_dt_analytic(m);
     if (env->period_s > AM_P(0)) {
-        /* the period in seconds as steps of the model's step */
+        /* the period in seconds as steps of the model's step: refused where am_period_steps would
+         * clamp it, else its value kept in the model's env for every state at the model's step */
         const double dt = am_dt_si(m, env->dt_frac), k = (double)env->period_s / dt;
         if (!(k >= 1.5 && k <= 1e7)) /* rounded: period_steps' range, 2 to 10^7 */
             return am_fail(err, errsz, AM_ERR_RANGE, "period_s = %g s is %.3g steps of %.4g s (a period takes 2 to 10^7 steps)",
@@ -423,10 +400,21 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     return AM_OK;
 }
 
+/* The period's one owner: a run's actuation period in steps is decided here and nowhere else.
+ * am_model_build keeps it for the model's step in m->env.period_steps, am_state_reset copies that
+ * into the state, a run at another step (am_dt_search's trials, am_evaluate's searched step) asks
+ * again with its step; everything else reads s->period_steps or m->env.period_steps. A VXA file's
+ * period in seconds (am_vxa_period_steps) and the programs take the same rounding from
+ * am_period_steps_si. */
 int am_period_steps(const am_model* m, const am_env* env, am_real dt)
 {
     if (!(env->period_s > AM_P(0))) return env->period_steps;
-    const double k = (double)env->period_s / am_to_si(m, dt, AM_DIM_TIME);
+    return am_period_steps_si((double)env->period_s, am_to_si(m, dt, AM_DIM_TIME));
+}
+
+int am_period_steps_si(double period_s, double dt_s)
+{
+    const double k = period_s / dt_s;
     return !(k >= 1.5) ? 2 : k >= 1e7 ? 10000000 : (int)floor(k + 0.5);
 }
 
@@ -459,7 +447,7 @@ void am_state_reset(const am_model* m, am_state* s)
     s->dt = AM_MUL(AM_PV(m->env.dt_frac, 1.0), m->dt_rec);
     s->settle_steps = 0;
     s->settle_dt = s->dt;
-    s->period_steps = m->env.period_steps;
+    s->period_steps = m->env.period_steps; /* am_period_steps at the model's step (am_model_build) */
     s->actuate = 0;
     s->actuation_step0 = 0;
     s->diverged = 0;

@@ -1,6 +1,6 @@
 /* A run's tables: log.csv (one row per generation) and evals.csv (one row per evaluation), their
- * writers, and the reader of log.csv; an experiment's results.csv rows (amorph/io.h, the run
- * folder).
+ * writers, and the reader of log.csv; an experiment's results.csv rows (amorph/evo.h, the run
+ * folder: beside the evolver whose numbers they hold, apart from the codecs).
  *
  * The reader is the one parser of log.csv (amorph plot and amorph experiment read logs through
  * it). It takes a line at a time, like the lattice and genome readers, so a log streamed through a
@@ -10,7 +10,7 @@
  * buffer before it is converted, so a number never runs past its comma, and accepted only when the
  * whole field is consumed and the value is finite; a field a message shows goes through am_quote.
  */
-#include "amorph/io.h"
+#include "amorph/evo.h"
 
 #include <errno.h>
 #include <limits.h>

@@ -1,4 +1,4 @@
-/* tests/test_io_log.c: reading log.csv back (src/io/io_run.c, am_evo_log_read_*): rows written by
+/* tests/test_evo_run.c: reading log.csv back (src/evo/evo_run.c, am_evo_log_read_*): rows written by
  * am_evo_log_row read back exactly; columns are found by name (reordered, unknown ones skipped,
  * optional ones missing); a missing required column, a short or long row, a field that is not a
  * number, not finite or not whole are refused with "file:line: problem" (the field quoted by
