@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 /* the version of this API: its functions and am_result's layout (a new field raises it) */
-#define AM_API_VERSION 2 /* 2: ask/tell (am_api_seed ... am_api_crowd) */
+#define AM_API_VERSION 3 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*) */
 
 /* one evaluation's workspace and settings. Large (tens of MB on the desktop): static, or on the
  * heap of a caller that may allocate; never on a stack. */
@@ -36,6 +36,7 @@ typedef struct am_api_work {
     am_evo_work work;         /* expression, lattice, model, state */
     am_rng rng;               /* the genome operators' stream (am_api_seed; seed 1 after am_api_init) */
     am_genome op[4];          /* the genome operators' genomes: parents, offspring */
+    int sim;                  /* the robot being stepped (am_api_sim_*): 0 none, 1 open, 2 settled */
 } am_api_work;
 
 /* ==== the caller's layout. Every struct of the headers is the caller's to allocate, and its layout
@@ -114,6 +115,28 @@ AM_API am_status am_api_distance(am_api_work* w, const char* a, const char* b, d
  * with, replaces[k] 1 when it is strictly better and takes that parent's place, as a run decides */
 AM_API am_status am_api_crowd(am_api_work* w, const char* a, double fa, const char* b, double fb, const char* c1, double f1,
                               const char* c2, double f2, int* meets, int* replaces, char* err, int errsz);
+
+/* ==== stepping: a robot under the caller's control (docs/embedding.md, Stepping). Open a robot
+ * (genome or lattice text, evaluated as am_api_eval_* evaluates it: w's settings), settle it as
+ * the evaluation's relaxation settles it (out may be NULL: its relaxation fields), then step it N
+ * steps at a time and observe it. The actuation starts at the settle (the movement's phase 0);
+ * each voxel follows its sinusoid unless the step's scale[] sets it: scale[i] is voxel i's linear
+ * scale, 1 + its expansion (0.5..2), rate[i] the scale's rate of change in 1/s (NULL: 0), held for
+ * the N steps; a NaN scale leaves that voxel to its sinusoid; scale NULL leaves every voxel to it.
+ * am_api_sim_sinusoid gives each voxel's own scale and rate for the next step: fed back step by
+ * step, the robot moves exactly as am_api_eval_* moves it (the same hash, bit for bit). The desktop
+ * profile only (a phase per voxel: the board refuses, AM_ERR_CAPACITY). Deterministic, no
+ * allocation; a diverged robot takes no more steps (am_obs.diverged). */
+AM_API am_status am_api_sim_open(am_api_work* w, const char* text, char* err, int errsz);
+AM_API am_status am_api_sim_settle(am_api_work* w, am_result* out, char* err, int errsz);
+/* the open robot's voxels (-1 when none is open) and, when not NULL, each voxel's material (its
+ * index in the lattice's palette) and lattice cell: the order of every per-voxel array */
+AM_API long am_api_sim_voxels(am_api_work* w, int* material, int* cell);
+AM_API am_status am_api_sim_step(am_api_work* w, long n, const double* scale, const double* rate, char* err, int errsz);
+AM_API am_status am_api_sim_sinusoid(am_api_work* w, double* scale, double* rate, char* err, int errsz);
+/* am_observe (sim.h) of the open robot: *out, and each per-voxel array that is not NULL */
+AM_API am_status am_api_sim_observe(am_api_work* w, am_obs* out, double* pos, double* vel, double* strain, int* contact, char* err,
+                                    int errsz);
 
 #ifdef __cplusplus
 }

@@ -324,6 +324,13 @@ typedef struct am_state {
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
 #if !defined(AM_COMPACT)
     am_real s_rate[AM_MAX_VOXELS]; /* its rate of change, 1/s (a board reads mat_scale_rate) */
+    /* a controller's actuation (am_state_control; a model with a phase per voxel, voxel_phase):
+     * while controlled, each voxel with ctl_on takes ctl_scale and ctl_rate for its scale and its
+     * rate in place of the sinusoid's; am_state_reset clears it */
+    int controlled;
+    uint8_t ctl_on[AM_MAX_VOXELS];
+    am_real ctl_scale[AM_MAX_VOXELS];
+    am_real ctl_rate[AM_MAX_VOXELS];  /* 1/s, model units */
 #endif
     am_real fext[3][AM_MAX_VOXELS]; /* external force set by the caller, N */
     am_real mext[3][AM_MAX_VOXELS]; /* external moment set by the caller, N m */
@@ -534,6 +541,32 @@ typedef struct am_result {
 
 /* s's simulated time, s: its steps at dt, those of the relaxation's settling at settle_dt */
 AM_API double am_sim_time(const am_model* m, const am_state* s);
+
+/* ==== a robot under a controller (amorph/api.h, Stepping, is the caller's interface to these).
+ * am_eval_settle is am_evaluate up to its movement (the reset and the relaxation, *out's dt,
+ * period and relaxation fields set), am_eval_actuate starts the actuation at the state's step (the
+ * movement's phase 0). Between steps a caller may set each voxel's scale (1 + its linear
+ * expansion) and the scale's rate in place of the sinusoid's (the desktop profile, a model with a
+ * phase per voxel: am_model_build_layers with layers of has_phase); am_actuation_of gives voxel
+ * i's own for the state's next step, the values am_step computes: set back as the control, the
+ * robot moves exactly as without it. */
+AM_API void am_eval_settle(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
+AM_API void am_eval_actuate(am_state* s);
+AM_API void am_actuation_of(const am_model* m, const am_state* s, int i, am_real* scale, am_real* rate);
+/* what a controller sees: the state's step and time, its centre of mass and that's velocity */
+typedef struct am_obs {
+    long step;                /* steps since the reset */
+    double time;              /* s (am_sim_time) */
+    double com[3];            /* centre of mass, m */
+    double com_vel[3];        /* its velocity, m/s */
+    int nv;                   /* voxels */
+    int contacts;             /* voxels touching the floor */
+    int diverged;             /* 1 once the state diverged (it takes no more steps) */
+} am_obs;
+/* the observation into *out and, each when not NULL, per voxel (the model's order): its centre (3 nv
+ * doubles, x y z of voxel 0 first), m; its velocity, m/s; its axial strain (the mean over its links
+ * of centre distance over rest length, less 1); its floor contact (0 none, 1 stuck, 2 sliding) */
+AM_API void am_observe(const am_model* m, const am_state* s, am_obs* out, double* pos, double* vel, double* strain, int* contact);
 
 /* the whole evaluation of one model; s is overwritten. An evaluation whose bound
  * (am_eval_max_steps of m->env and def) passes the budget AM_EVAL_MAX_STEPS takes no step: *out is

@@ -62,6 +62,7 @@ am_status am_api_init(am_api_work* w, long size, char* err, int errsz)
     w->def = am_default_evo();
     am_rng_seed(&w->rng, w->def.seed); /* the stream of the genome operators (api_ask.c) */
     w->materials_set = 0;
+    w->sim = 0;
     w->size = (long)sizeof *w;
     return AM_OK;
 }

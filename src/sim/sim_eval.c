@@ -530,18 +530,10 @@ am_status am_eval_check(const am_env* env, const am_eval_def* def, double period
                    (double)AM_EVAL_MAX_STEPS);
 }
 
-void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
+/* the evaluation up to its movement: the reset, the relaxation (again at the run's step when
+ * settling at the pseudo-step failed), the model's damping back; rec as am_evaluate records */
+static void settle(const am_model* m, am_state* s, const am_eval_def* def, am_record* rec, am_result* out)
 {
-    memset(out, 0, sizeof *out);
-    out->voxels = m->nv;
-    out->links = m->links;
-    if (am_eval_max_steps(&m->env, def, (double)m->env.period_steps, NULL) > (double)AM_EVAL_MAX_STEPS) {
-        /* over the budget: not run (am_eval_check says why) */
-        out->diverged = 1;
-        out->fitness = AM_NO_SCORE;
-        out->period_steps = m->env.period_steps;
-        return;
-    }
     am_real dt = def->dt_search ? am_dt_search(m, s) : AM_R(0);
     am_state_reset(m, s);
     if (def->dt_search) run_at(m, s, dt); /* a period in seconds at the searched step */
@@ -556,7 +548,6 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     lim.dt = s->dt;
     lim.dt_settle = settle_step(m, def, s->dt);
     lim.period_steps = s->period_steps;
-    am_record* rec = def->record;
     if (rec && lim.dt_settle != lim.dt) {
         /* a recording cannot take frames back: the relaxation is tried without it first, so that
          * a recorded evaluation is the unrecorded one frame for frame */
@@ -582,13 +573,44 @@ void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_resu
     out->relax_dt = am_to_si(m, lim.dt_settle, AM_DIM_TIME);
     s->glob_scale = AM_R(1); /* the movement segment: the model's damping */
     out->relax_steps = s->step;
+}
+
+void am_eval_settle(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
+{
+    memset(out, 0, sizeof *out);
+    out->voxels = m->nv;
+    out->links = m->links;
+    settle(m, s, def, NULL, out);
+    out->steps = s->step;
+    out->sim_seconds = am_sim_time(m, s);
+}
+
+void am_eval_actuate(am_state* s)
+{
+    s->actuate = 1;
+    s->actuation_step0 = s->step;
+}
+
+void am_evaluate(const am_model* m, am_state* s, const am_eval_def* def, am_result* out)
+{
+    memset(out, 0, sizeof *out);
+    out->voxels = m->nv;
+    out->links = m->links;
+    if (am_eval_max_steps(&m->env, def, (double)m->env.period_steps, NULL) > (double)AM_EVAL_MAX_STEPS) {
+        /* over the budget: not run (am_eval_check says why) */
+        out->diverged = 1;
+        out->fitness = AM_NO_SCORE;
+        out->period_steps = m->env.period_steps;
+        return;
+    }
+    am_record* rec = def->record;
+    settle(m, s, def, rec, out);
     record_extra(m, s, rec);
     double c0[3], c1[3];
     am_com(m, s, c0);
 
     /* movement: `cycles` whole actuation periods */
-    s->actuate = 1;
-    s->actuation_step0 = s->step;
+    am_eval_actuate(s);
     long n = (long)def->cycles * s->period_steps;
     am_gait* gait = def->gait;
     if (gait) gait_begin(m, s, gait, c0);

@@ -450,6 +450,9 @@ void am_state_reset(const am_model* m, am_state* s)
     s->period_steps = m->env.period_steps; /* am_period_steps at the model's step (am_model_build) */
     s->actuate = 0;
     s->actuation_step0 = 0;
+#if !defined(AM_COMPACT)
+    s->controlled = 0;
+#endif
     s->diverged = 0;
     s->diverge_step = -1;
     s->pairs_overflow = 0;

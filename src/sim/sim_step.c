@@ -96,41 +96,65 @@ static am_real actuation_omega(const am_state* s)
 }
 
 #if !defined(AM_COMPACT)
-/* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
- * material's argument plus its own phase, then each link's rest length from its two voxels. With
- * every voxel phase 0 these are the per-material path's values, operation for operation. */
-static void voxel_actuation(const am_model* m, am_state* s)
+/* the actuation's argument at the state's step, radians (0 while it is off) */
+static inline am_real actuation_arg0(const am_state* s)
+{
+    if (!s->actuate) return AM_R(0);
+    long ph = (s->step - s->actuation_step0) % s->period_steps; /* exact phase in steps */
+#if defined(AM_REAL_FIXED_POINT)
+    return AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)s->period_steps * AM_FIX_ONE);
+#else
+    return AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(s->period_steps));
+#endif
+}
+
+/* voxel i's scale and its rate from the sinusoid at argument arg0 (angular frequency wt) */
+static inline void voxel_sinusoid(const am_model* m, int i, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
 {
     const am_env* e = &m->env;
+    const int k = m->mat[i];
+    const am_real arg = (arg0 + m->mat_phase[k]) + m->vphase[i];
+    am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin(arg));
+    am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+    *sc_out = sc;
+    *rate_out = m->mat_cte[k] == AM_R(0) ? AM_R(0)
+        : AM_MUL(am_sim_scale_rate(e->cte_mode, m->mat_cte[k], T, AM_MUL(m->temp_amplitude, am_cos(arg)), sc), wt);
+}
+
+/* voxel i's scale while the actuation is off: its material's at temp_base */
+static inline am_real held_scale(const am_model* m, int k)
+{
+    return m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(m->env.cte_mode, m->mat_cte[k], m->temp_base);
+}
+
+void am_actuation_of(const am_model* m, const am_state* s, int i, am_real* scale, am_real* rate)
+{
+    if (s->actuate) voxel_sinusoid(m, i, actuation_arg0(s), actuation_omega(s), scale, rate);
+    else *scale = held_scale(m, m->mat[i]), *rate = AM_R(0);
+}
+
+/* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
+ * material's argument plus its own phase, then each link's rest length from its two voxels. With
+ * every voxel phase 0 these are the per-material path's values, operation for operation. A
+ * controlled state's voxels with ctl_on take the controller's scale and rate instead. */
+static void voxel_actuation(const am_model* m, am_state* s)
+{
     int changed = !s->scales_valid;
-    am_real arg0 = AM_R(0);
-    if (s->actuate) {
-        long ph = (s->step - s->actuation_step0) % s->period_steps; /* exact phase in steps */
-#if defined(AM_REAL_FIXED_POINT)
-        arg0 = AM_RATIO((int64_t)AM_R(6.283185307179586477) * ph, (int64_t)s->period_steps * AM_FIX_ONE);
-#else
-        arg0 = AM_DIV(AM_MUL(AM_MUL(AM_R(2), AM_PI), AM_R(ph)), AM_R(s->period_steps));
-#endif
-    }
+    const am_real arg0 = actuation_arg0(s);
     if (s->actuate) {
         const am_real wt = actuation_omega(s);
         for (int i = 0; i < m->nv; i++) {
-            const int k = m->mat[i];
-            const am_real arg = (arg0 + m->mat_phase[k]) + m->vphase[i];
-            am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin(arg));
-            am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
+            am_real sc, rate;
+            voxel_sinusoid(m, i, arg0, wt, &sc, &rate);
             changed |= sc != s->s[i];
             s->s[i] = sc;
-            const am_real rate = m->mat_cte[k] == AM_R(0) ? AM_R(0)
-                : AM_MUL(am_sim_scale_rate(e->cte_mode, m->mat_cte[k], T, AM_MUL(m->temp_amplitude, am_cos(arg)), sc), wt);
             changed |= rate != s->s_rate[i];
             s->s_rate[i] = rate;
         }
     } else {
         /* held at temp_base (relaxation): every voxel of a material has its material's scale, found
          * once per material, and nothing changes from step to step */
-        for (int k = 0; k < m->palette.count; k++)
-            s->mat_scale[k] = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], m->temp_base);
+        for (int k = 0; k < m->palette.count; k++) s->mat_scale[k] = held_scale(m, k);
         for (int i = 0; i < m->nv; i++) {
             const am_real sc = s->mat_scale[m->mat[i]];
             changed |= (sc != s->s[i]) | (s->s_rate[i] != AM_R(0));
@@ -138,6 +162,13 @@ static void voxel_actuation(const am_model* m, am_state* s)
             s->s_rate[i] = AM_R(0);
         }
     }
+    if (s->controlled)
+        for (int i = 0; i < m->nv; i++) {
+            if (!s->ctl_on[i]) continue;
+            changed |= (s->ctl_scale[i] != s->s[i]) | (s->ctl_rate[i] != s->s_rate[i]);
+            s->s[i] = s->ctl_scale[i];
+            s->s_rate[i] = s->ctl_rate[i];
+        }
     if (!changed) return;
     s->scales_valid = 1;
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
