@@ -128,6 +128,27 @@ got=$(sed -n 's/^seed 1 crowding   best \([0-9.]*\) m.*/\1/p' "$W/me1.txt")
 check "map_elites.py: its crowding ($got) is amorph evolve's ($(sumval "$W/me-run" best_fitness))" \
     test -n "$got" -a "$got" = "$(printf '%.4f' "$(sumval "$W/me-run" best_fitness)")"
 
+# Sim: reset / step / observe; the sinusoid fed back every step is the evaluation (its state hash),
+# a held action is another motion, the same calls give the same hash
+got=$(cd "$W" && AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph, math
+w = amorph.Workspace({"cycles": 2})
+text = open("gmx.genome").read()
+r = w.evaluate(text)
+sim = amorph.Sim(workspace=w)
+o0 = sim.reset(text)
+for k in range(2 * r.period_steps):
+    sc, rt = sim.sinusoid()
+    o = sim.step(sc, 1, rt)
+same = o["hash"] == r.hash and o["step"] == r.steps and abs(math.hypot(o["com"][0] - o0["com"][0], o["com"][1] - o0["com"][1]) - r.travel) < 1e-9
+held = []
+for t in range(2):
+    sim.reset(text)
+    held.append(sim.step({m: 1.0 for m in set(sim.materials)}, 2 * r.period_steps)["hash"])
+print(int(same), int(held[0] == held[1] and held[0] != r.hash), sim.nv == r.voxels, len(o["pos"]) == sim.nv)' "$ROOT" 2>&1)
+check "Sim: fed back, held, the same twice, per-voxel arrays: $got" test "$got" = "1 1 True True"
+
 # refusals: one line each
 got=$(AMORPH_LIB=$LIB python3 -c '
 import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")

@@ -562,6 +562,7 @@ typedef struct am_obs {
     int nv;                   /* voxels */
     int contacts;             /* voxels touching the floor */
     int diverged;             /* 1 once the state diverged (it takes no more steps) */
+    uint64_t hash;            /* am_state_hash: the same calls give the same hash */
 } am_obs;
 /* the observation into *out and, each when not NULL, per voxel (the model's order): its centre (3 nv
  * doubles, x y z of voxel 0 first), m; its velocity, m/s; its axial strain (the mean over its links

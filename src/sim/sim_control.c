@@ -15,6 +15,7 @@ void am_observe(const am_model* m, const am_state* s, am_obs* out, double* pos, 
     out->time = am_sim_time(m, s);
     out->nv = m->nv;
     out->diverged = s->diverged;
+    out->hash = am_state_hash(m, s);
     const double ul = m->unit_len, uv = am_unit(m, AM_DIM_VELOCITY);
     double mt = 0;
     for (int i = 0; i < m->nv; i++) {

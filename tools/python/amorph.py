@@ -27,7 +27,7 @@ import ctypes.util
 import math
 import os
 
-__all__ = ["Result", "Workspace", "AmorphError", "load", "crowding"]
+__all__ = ["Result", "Workspace", "Sim", "AmorphError", "load", "crowding"]
 
 GENOME_TEXT_MAX = 1 << 22  # bytes a genome text may take (the library's AM_GENOME_TEXT_MAX is below it)
 
@@ -57,7 +57,13 @@ class Result(ctypes.Structure):
         return math.nan if self.diverged else self.fitness
 
 
-_API_VERSION = 2  # the functions below are AM_API_VERSION 2's
+_API_VERSION = 3  # the functions below are AM_API_VERSION 3's
+
+
+class Obs(ctypes.Structure):
+    """am_obs (include/amorph/sim.h)"""
+    _fields_ = [("step", ctypes.c_long), ("time", ctypes.c_double), ("com", ctypes.c_double * 3), ("com_vel", ctypes.c_double * 3),
+                ("nv", ctypes.c_int), ("contacts", ctypes.c_int), ("diverged", ctypes.c_int), ("hash", ctypes.c_uint64)]
 _libs = {}
 
 
@@ -114,6 +120,12 @@ def _type(lib, where):
         "am_api_distance": ([P, c_char_p, c_char_p, ctypes.POINTER(c_double), c_char_p, c_int], c_int),
         "am_api_crowd": ([P, c_char_p, c_double, c_char_p, c_double, c_char_p, c_double, c_char_p, c_double,
                           ctypes.POINTER(c_int), ctypes.POINTER(c_int), c_char_p, c_int], c_int),
+        "am_api_sim_open": ([P, c_char_p, c_char_p, c_int], c_int),
+        "am_api_sim_settle": ([P, ctypes.POINTER(Result), c_char_p, c_int], c_int),
+        "am_api_sim_voxels": ([P, P, P], c_long),
+        "am_api_sim_step": ([P, c_long, P, P, c_char_p, c_int], c_int),
+        "am_api_sim_sinusoid": ([P, P, P, c_char_p, c_int], c_int),
+        "am_api_sim_observe": ([P, ctypes.POINTER(Obs), P, P, P, P, c_char_p, c_int], c_int),
     }
     for name, (args, res) in sig.items():
         try:
@@ -225,3 +237,85 @@ def crowding(w, population, generations, seed, evaluate=None):
                     p = pb if meets[c] else pa
                     pop[p], fit[p] = kids[k + c], kfit[k + c]
     return list(zip(pop, fit))
+
+
+try:  # numpy where present: observations as arrays; never required
+    import numpy as _np
+except ImportError:  # pragma: no cover
+    _np = None
+
+
+class Sim:
+    """a robot under control, gym-style (docs/embedding.md, Stepping):
+
+        sim = amorph.Sim({"cycles": 10})
+        obs = sim.reset(text)                 # open, settle; actuation starts now
+        for t in range(1000):
+            obs = sim.step(action, n=10)      # action: each voxel's scale (1 + expansion), None: the sinusoid's
+
+    An action is a sequence of one scale per voxel (NaN: that voxel's sinusoid), or a dict of
+    {material index: scale} for whole groups (the others keep their sinusoid); rate (optional, 1/s)
+    likewise. An observation is a dict: step, time, com, com_vel, contacts, diverged, hash and, per voxel
+    in the order of sim.materials, pos (x, y, z), vel, strain, contact; arrays with numpy, lists
+    without. sim.sinusoid() gives each voxel's own scale and rate for the next step: fed back as the
+    action every step, the robot moves exactly as Workspace.evaluate moves it."""
+
+    def __init__(self, settings=None, lib=None, workspace=None):
+        self.w = workspace or Workspace(settings, lib)
+        self.lib, self.nv = self.w.lib, 0
+
+    def _check(self, status):
+        self.w._check(status)
+
+    def reset(self, text):
+        """opens and settles the robot of a genome or lattice text; the first observation"""
+        w = self.w
+        self._check(self.lib.am_api_sim_open(w.work, text.encode(), w.err, len(w.err)))
+        self.settled = Result()
+        self._check(self.lib.am_api_sim_settle(w.work, ctypes.byref(self.settled), w.err, len(w.err)))
+        self.nv = self.lib.am_api_sim_voxels(w.work, None, None)
+        mat, cell = (ctypes.c_int * self.nv)(), (ctypes.c_int * self.nv)()
+        self.lib.am_api_sim_voxels(w.work, mat, cell)
+        self.materials, self.cells = list(mat), list(cell)
+        self._scale, self._rate = (ctypes.c_double * self.nv)(), (ctypes.c_double * self.nv)()
+        self._pos, self._vel = (ctypes.c_double * (3 * self.nv))(), (ctypes.c_double * (3 * self.nv))()
+        self._strain, self._contact = (ctypes.c_double * self.nv)(), (ctypes.c_int * self.nv)()
+        return self.observe()
+
+    def _fill(self, buf, values):
+        if isinstance(values, dict):
+            for i in range(self.nv):
+                buf[i] = float(values.get(self.materials[i], math.nan))
+        else:
+            if len(values) != self.nv:
+                raise AmorphError("an action of %d values for %d voxels" % (len(values), self.nv))
+            for i in range(self.nv):
+                buf[i] = float(values[i])
+
+    def step(self, action=None, n=1, rate=None):
+        """n steps with the action held; the observation after them"""
+        w = self.w
+        if action is None:
+            self._check(self.lib.am_api_sim_step(w.work, n, None, None, w.err, len(w.err)))
+        else:
+            self._fill(self._scale, action)
+            if rate is not None:
+                self._fill(self._rate, rate)
+            self._check(self.lib.am_api_sim_step(w.work, n, self._scale, self._rate if rate is not None else None, w.err, len(w.err)))
+        return self.observe()
+
+    def sinusoid(self):
+        """each voxel's own scale and rate (1/s) for the next step: (scales, rates)"""
+        w = self.w
+        self._check(self.lib.am_api_sim_sinusoid(w.work, self._scale, self._rate, w.err, len(w.err)))
+        return list(self._scale), list(self._rate)
+
+    def observe(self):
+        w, o = self.w, Obs()
+        self._check(self.lib.am_api_sim_observe(w.work, ctypes.byref(o), self._pos, self._vel, self._strain, self._contact, w.err,
+                                                len(w.err)))
+        arr = (lambda b, k: _np.ctypeslib.as_array(b).reshape(-1, k).copy() if k > 1 else _np.ctypeslib.as_array(b).copy()) \
+            if _np is not None else (lambda b, k: [tuple(b[i:i + k]) for i in range(0, len(b), k)] if k > 1 else list(b))
+        return {"step": o.step, "time": o.time, "com": tuple(o.com), "com_vel": tuple(o.com_vel), "contacts": o.contacts,
+                "diverged": bool(o.diverged), "hash": o.hash, "pos": arr(self._pos, 3), "vel": arr(self._vel, 3), "strain": arr(self._strain, 1),
+                "contact": arr(self._contact, 1)}
