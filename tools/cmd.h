@@ -51,6 +51,8 @@ int cmd_bench(tool_ctx* c, int argc, char** argv);
 void bench_print_build(void);
 /* amorph bench --convergence [options] [ROBOT...], the options from argv[first] (tools/bench_converge.c) */
 int bench_convergence(tool_ctx* c, int argc, char** argv, int first);
+/* amorph bench --control (tools/bench_control.c): the cost of stepping under control against sim */
+int tool_bench_control(tool_ctx* c, long steps, int repeat);
 int cmd_random(tool_ctx* c, int argc, char** argv);
 int cmd_express(tool_ctx* c, int argc, char** argv);
 int cmd_render(tool_ctx* c, int argc, char** argv);

@@ -279,6 +279,7 @@ static const char bench_help[] =
     "usage: amorph bench [--scene NAME] [--steps N] [--collisions on|off] [--dt-frac F] [--repeat N]\n"
     "       amorph bench --evolve [--evals N] [--threads T]\n"
     "       amorph bench --kernels\n"
+    "       amorph bench --control [--steps N] [--repeat R]\n"
     "       amorph bench --convergence [--fine F] [--random N] [--threads T] [ROBOT...]\n"
     "Prints name=value figures of the simulator on one thread. With no options: sphere:20 and\n"
     "cube:10, self-collision off and on, then the genotype expression times.\n"
@@ -290,6 +291,9 @@ static const char bench_help[] =
     "(or T only), each a run of N evaluations (60), the speedup of the second core, and the parallel\n"
     "map's own cost per item (map_us_per_item: maps of 20 items that only hand back a result). Under\n"
     "mpirun (the MPI build), every rank runs T threads: tools/bench_mpi.sh sets ranks against threads.\n"
+    "--control: the cost of stepping under control (amorph/api.h, Stepping) on cube:10 and sphere:20:\n"
+    "sim's open-loop steps against calls of 1, 10 and 100 steps that set every voxel's scale, ns per\n"
+    "voxel step and the overhead over sim" TOOL_DESKTOP_ONLY ".\n"
     "--kernels: the cost of a product alone, float against the fixed-point build's Q24, in\n"
     "vectorisable loops" TOOL_DESKTOP_ONLY ".\n"
     "--convergence: does the default step give the small-step answer? The calibration bars\n"
@@ -336,7 +340,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
     long steps = 2000, n;
     int coll = -1;
     long evolve_evals = 0;
-    int kernels = 0, repeat = 1, threads = 0;
+    int kernels = 0, repeat = 1, threads = 0, control = 0;
     double dt_frac = 0; /* the default step */
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
@@ -361,6 +365,8 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
             return bench_convergence(c, argc, argv, i + 1);
         } else if (!strcmp(a, "--kernels")) {
             kernels = 1;
+        } else if (!strcmp(a, "--control")) {
+            control = 1;
         } else if (!strcmp(a, "--evolve")) {
             evolve_evals = 60;
         } else if (!strcmp(a, "--evals")) {
@@ -379,6 +385,10 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         bench_kernels();
         return 0;
 #endif
+    }
+    if (control) {
+        bench_print_build();
+        return tool_bench_control(c, steps, repeat);
     }
     if (threads && !evolve_evals) return tool_usage_error("bench: --threads applies to --evolve");
     if (evolve_evals) {

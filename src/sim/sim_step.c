@@ -108,17 +108,29 @@ static inline am_real actuation_arg0(const am_state* s)
 #endif
 }
 
-/* voxel i's scale and its rate from the sinusoid at argument arg0 (angular frequency wt) */
-static inline void voxel_sinusoid(const am_model* m, int i, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
+/* the scale and its rate of a voxel of material k at the sinusoid's argument arg (angular
+ * frequency wt) */
+static inline void sinusoid_at(const am_model* m, int k, am_real arg, am_real wt, am_real* sc_out, am_real* rate_out)
 {
     const am_env* e = &m->env;
-    const int k = m->mat[i];
-    const am_real arg = (arg0 + m->mat_phase[k]) + m->vphase[i];
     am_real T = m->temp_base + AM_MUL(m->temp_amplitude, am_sin(arg));
     am_real sc = m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(e->cte_mode, m->mat_cte[k], T);
     *sc_out = sc;
     *rate_out = m->mat_cte[k] == AM_R(0) ? AM_R(0)
         : AM_MUL(am_sim_scale_rate(e->cte_mode, m->mat_cte[k], T, AM_MUL(m->temp_amplitude, am_cos(arg)), sc), wt);
+}
+
+/* voxel i's, with its own phase, at the actuation's argument arg0 */
+static inline void voxel_sinusoid(const am_model* m, int i, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
+{
+    const int k = m->mat[i];
+    sinusoid_at(m, k, (arg0 + m->mat_phase[k]) + m->vphase[i], wt, sc_out, rate_out);
+}
+
+/* a voxel's of material k and phase 0 */
+static inline void material_sinusoid(const am_model* m, int k, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
+{
+    sinusoid_at(m, k, arg0 + m->mat_phase[k], wt, sc_out, rate_out);
 }
 
 /* voxel i's scale while the actuation is off: its material's at temp_base */
@@ -143,9 +155,12 @@ static void voxel_actuation(const am_model* m, am_state* s)
     const am_real arg0 = actuation_arg0(s);
     if (s->actuate) {
         const am_real wt = actuation_omega(s);
+        /* a voxel of phase 0 has its material's values: found once per material (the same
+         * operations: the argument plus a zero phase is the argument) */
+        for (int k = 0; k < m->palette.count; k++) material_sinusoid(m, k, arg0, wt, &s->mat_scale[k], &s->mat_scale_rate[k]);
         for (int i = 0; i < m->nv; i++) {
-            am_real sc, rate;
-            voxel_sinusoid(m, i, arg0, wt, &sc, &rate);
+            am_real sc = s->mat_scale[m->mat[i]], rate = s->mat_scale_rate[m->mat[i]];
+            if (m->vphase[i] != AM_R(0)) voxel_sinusoid(m, i, arg0, wt, &sc, &rate);
             changed |= sc != s->s[i];
             s->s[i] = sc;
             changed |= rate != s->s_rate[i];
