@@ -149,6 +149,14 @@ for t in range(2):
 print(int(same), int(held[0] == held[1] and held[0] != r.hash), sim.nv == r.voxels, len(o["pos"]) == sim.nv)' "$ROOT" 2>&1)
 check "Sim: fed back, held, the same twice, per-voxel arrays: $got" test "$got" = "1 1 True True"
 
+# docs/examples/closed_loop.py on a small run: stepping through Sim in calls of 10 steps without
+# control travels what the evaluation travels, and the tuned controller is never below its start
+(cd "$W" && AMORPH_LIB=$LIB python3 "$ROOT/docs/examples/closed_loop.py" --run "$W/run-global" --cycles 4 --iters 2) >"$W/cl.txt" 2>&1
+a1=$(sed -n 's/^open loop (amorph sim --cycles 4): \([0-9.]*\) m$/\1/p' "$W/cl.txt")
+a2=$(sed -n 's/^open loop, stepped every 10 steps: \([0-9.]*\) m$/\1/p' "$W/cl.txt")
+check "closed_loop.py: open loop $a1, stepped in calls of 10 $a2: $(tail -n 1 "$W/cl.txt")" test -n "$a1" -a "$a1" = "$a2"
+check "closed_loop.py: a tuned controller line" grep -q '^tuned controller: [0-9.]* m over 4 cycles' "$W/cl.txt"
+
 # refusals: one line each
 got=$(AMORPH_LIB=$LIB python3 -c '
 import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
