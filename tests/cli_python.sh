@@ -27,6 +27,20 @@ r = amorph.Workspace({"cycles": 2}).evaluate(open(sys.argv[2]).read())
 print("%.9g %016x" % (r.fitness, r.hash))' "$ROOT" "$r" 2>&1)
     check "$r: the module ($got) is amorph sim ($want)" test -n "$want" -a "$got" = "$want"
 done
+# VXA text: the module evaluates a VoxCAD and an evosoro file as amorph sim FILE runs them (their own
+# environment, layers and run length)
+for v in voxcad_quadruped.vxa evosoro_phase.vxa evosoro_stiffness.vxa; do
+    want=$("$AMORPH" sim "tests/data/$v" --json 2>/dev/null | sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+    got=$(AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+r = amorph.Workspace().evaluate(open(sys.argv[2]).read())
+print("%.9g %016x" % (r.fitness, r.hash))' "$ROOT" "tests/data/$v" 2>&1)
+    check "$v: the module ($got) is amorph sim ($want)" test -n "$want" -a "$got" = "$want"
+    got=$(python3 -c 'import json, sys; print(json.dumps({"vxa": open(sys.argv[1]).read()}))' "tests/data/$v" | "$AMORPH" eval 2>&1 |
+        sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+    check "$v: through amorph eval ($got) is amorph sim ($want)" test -n "$want" -a "$got" = "$want"
+done
 # without AMORPH_LIB: the checkout's build/ beside the module (the default build only)
 if [ "$BUILD" = build ]; then
     got=$(cd "$W" && env -u AMORPH_LIB python3 -c '

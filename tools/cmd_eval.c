@@ -22,7 +22,7 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
 static const char eval_help[] =
     "usage: amorph eval [--threads N] [--KEY VALUE ...] < robots.jsonl\n"
     "Reads robots as JSON lines on stdin and writes one JSON result per robot on stdout.\n"
-    "A line is one object: {\"id\": 3, \"genome\": \"amorph-genome 1\\n...\"} or {\"id\": 3, \"lattice\": \"...\"},\n"
+    "A line is one object: {\"id\": 3, \"genome\": \"amorph-genome 1\\n...\"} or {\"id\": 3, \"lattice\": \"...\"} or {\"vxa\": \"<VXA ...\"},\n"
     "with optional \"settings\": {\"cycles\": \"4\", ...} (configuration keys, values as strings or numbers).\n"
     "id (an integer) is optional: the line's number on stdin stands in. An empty line or the end of\n"
     "the input ends a batch: its robots are evaluated on the threads, their results printed in input\n"
@@ -50,7 +50,7 @@ static const char eval_help[] =
 #define EVAL_MAX_SETTINGS 32          /* settings of one line, and of the command line */
 #define EVAL_VALUE_MAX 256            /* bytes of a setting's value */
 
-enum { ROBOT_GENOME = 1, ROBOT_LATTICE = 2 };
+enum { ROBOT_GENOME = 1, ROBOT_LATTICE = 2, ROBOT_VXA = 3 };
 /* the genome operators a line may ask for instead of an evaluation (ask/tell, amorph/api.h) */
 enum { OP_NONE, OP_SEED, OP_NEW, OP_PAIRING, OP_OFFSPRING, OP_MUTATE, OP_DISTANCE, OP_CROWD, OP_COUNT };
 static const char* const op_name[OP_COUNT] = {"", "seed", "new", "pairing", "offspring", "mutate", "distance", "crowd"};
@@ -250,9 +250,9 @@ static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
                 if (!tool_json_string(j, t, EVAL_LINE_MAX, &len)) return 0;
                 it->t[k] = t;
                 b->used += len + 1;
-            } else if (!strcmp(key, "genome") || !strcmp(key, "lattice")) {
-                if (it->kind) return tool_json_fail(j, "one robot per line (\"genome\" or \"lattice\", once)");
-                it->kind = key[0] == 'g' ? ROBOT_GENOME : ROBOT_LATTICE;
+            } else if (!strcmp(key, "genome") || !strcmp(key, "lattice") || !strcmp(key, "vxa")) {
+                if (it->kind) return tool_json_fail(j, "one robot per line (\"genome\", \"lattice\" or \"vxa\", once)");
+                it->kind = key[0] == 'g' ? ROBOT_GENOME : key[0] == 'l' ? ROBOT_LATTICE : ROBOT_VXA;
                 char* t = arena(b, EVAL_LINE_MAX);
                 if (!t) return tool_json_fail(j, "the batch's texts pass %ld bytes: end the batch sooner (an empty line)", EVAL_ARENA);
                 long len = 0;
@@ -264,7 +264,7 @@ static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
                 if (!read_settings(j, b, it)) return 0;
             } else {
                 char q[AM_QUOTE_BUF];
-                return tool_json_fail(j, "unknown key \"%s\" (a line holds id, genome or lattice, settings; or op and its inputs)",
+                return tool_json_fail(j, "unknown key \"%s\" (a line holds id, genome, lattice or vxa, settings; or op and its inputs)",
                                       am_quote(q, sizeof q, key, -1));
             }
         } while (tool_json_take(j, ','));
@@ -273,7 +273,7 @@ static int read_robot(tool_json* j, eval_batch* b, eval_item* it, int lineno)
     if (it->op) return check_op(j, it);
     if (it->t[0] || it->t[1] || it->t[2] || it->t[3] || it->nf || it->has_num)
         return tool_json_fail(j, "an operator's inputs without \"op\"");
-    if (!it->kind) return tool_json_fail(j, "no robot: the line needs \"genome\" or \"lattice\" (or an \"op\")");
+    if (!it->kind) return tool_json_fail(j, "no robot: the line needs \"genome\", \"lattice\" or \"vxa\" (or an \"op\")");
     return 1;
 }
 
@@ -380,8 +380,9 @@ static void eval_task(void* ctx, int i, int w)
     for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
     for (int s = 0; st == AM_OK && s < it->nset; s++) st = am_api_set(k, it->key[s], it->val[s], o->err, sizeof o->err);
     if (st == AM_OK)
-        st = it->kind == ROBOT_GENOME ? am_api_eval_genome(k, it->text, &o->r, o->err, sizeof o->err)
-                                      : am_api_eval_lattice(k, it->text, &o->r, o->err, sizeof o->err);
+        st = it->kind == ROBOT_GENOME  ? am_api_eval_genome(k, it->text, &o->r, o->err, sizeof o->err)
+             : it->kind == ROBOT_VXA ? am_api_eval_vxa(k, it->text, &o->r, o->err, sizeof o->err)
+                                     : am_api_eval_lattice(k, it->text, &o->r, o->err, sizeof o->err);
     o->st = (int)st;
 }
 

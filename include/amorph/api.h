@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 /* the version of this API: its functions and am_result's layout (a new field raises it) */
-#define AM_API_VERSION 3 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*) */
+#define AM_API_VERSION 3 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*), VXA text */
 
 /* one evaluation's workspace and settings. Large (tens of MB on the desktop): static, or on the
  * heap of a caller that may allocate; never on a stack. */
@@ -37,6 +37,8 @@ typedef struct am_api_work {
     am_rng rng;               /* the genome operators' stream (am_api_seed; seed 1 after am_api_init) */
     am_genome op[4];          /* the genome operators' genomes: parents, offspring */
     int sim;                  /* the robot being stepped (am_api_sim_*): 0 none, 1 open, 2 settled */
+    am_xml_doc xml;           /* a VXA text's XML (am_api_eval_vxa, am_api_sim_open) */
+    am_vxa_info vxa;          /* and what it holds */
 } am_api_work;
 
 /* ==== the caller's layout. Every struct of the headers is the caller's to allocate, and its layout
@@ -83,6 +85,12 @@ AM_API am_status am_api_eval_genome(am_api_work* w, const char* text, am_result*
  * ones; mu_static, mu_kinetic: all; voxel_size: the lattice's), as `amorph sim FILE --KEY VALUE`
  * does. Empty body and failures as am_api_eval_genome ("lattice:LINE: ...") */
 AM_API am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
+/* evaluates a VXA text (VoxCAD, evosoro, amorph export --vxa; docs/vxa.md) as `amorph sim FILE`
+ * does: its body with its per-voxel layers, in the file's own environment and evaluation, which
+ * replace w's (a file holds all of them). Messages "vxa:LINE: ..."; the board refuses VXA text */
+AM_API am_status am_api_eval_vxa(am_api_work* w, const char* text, am_result* out, char* err, int errsz);
+/* (the step of am_api_eval_vxa and am_api_sim_open that reads the text into w) */
+AM_API am_status am_api_read_vxa(am_api_work* w, const char* text, char* err, int errsz);
 
 /* ==== ask/tell: amorph's own operators for an outer loop (docs/embedding.md, Ask/tell). Genomes go
  * in and out as text (the genome text format); random draws come from w's stream, one stream per
@@ -117,7 +125,8 @@ AM_API am_status am_api_crowd(am_api_work* w, const char* a, double fa, const ch
                               const char* c2, double f2, int* meets, int* replaces, char* err, int errsz);
 
 /* ==== stepping: a robot under the caller's control (docs/embedding.md, Stepping). Open a robot
- * (genome or lattice text, evaluated as am_api_eval_* evaluates it: w's settings), settle it as
+ * (genome, lattice or VXA text, built as am_api_eval_* builds it: a VXA text's environment and
+ * evaluation replace w's), settle it as
  * the evaluation's relaxation settles it (out may be NULL: its relaxation fields), then step it N
  * steps at a time and observe it. The actuation starts at the settle (the movement's phase 0);
  * each voxel follows its sinusoid unless the step's scale[] sets it: scale[i] is voxel i's linear

@@ -116,3 +116,43 @@ am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, 
     am_evo_apply_materials(&w->def, w->materials_set, lat);
     return simulate(w, out, err, errsz);
 }
+
+/* a VXA text's robot into w->work (lattice, layers) and w->def's environment and evaluation */
+am_status am_api_read_vxa(am_api_work* w, const char* text, char* err, int errsz)
+{
+#if AM_GENO_LAYERS && !defined(AM_COMPACT)
+    am_evo_work* k = &w->work;
+    am_robot r;
+    am_robot_init(&r, &k->lattice, &k->layers);
+    am_status st = am_vxa_parse(&k->lattice, &w->vxa, &w->xml, text, "vxa", err, errsz);
+    if (st == AM_OK) st = am_vxa_robot(&r, &w->vxa, err, errsz);
+    if (st != AM_OK) return st;
+    k->has_layers = k->layers.has_phase || k->layers.has_stiffness || k->layers.has_bc;
+    w->def.env = r.env;
+    w->def.eval = r.eval;
+    w->def.eval.record = NULL;
+    w->def.eval.gait = NULL;
+    /* the file's run length (its StopCondition, InitCmTime) as the evaluation's cycles and least
+     * relaxation, at the robot's own step, as amorph sim FILE takes it */
+    if (!(w->vxa.stop_type >= 0 || w->vxa.init_cm_time > 0) || w->def.eval.dt_search) return AM_OK;
+    st = am_model_build_layers(&k->model, &k->lattice, &w->def.env, k->has_layers ? &k->layers : NULL, err, errsz);
+    if (st == AM_ERR_EMPTY) return AM_OK; /* no voxel: nothing to run */
+    if (st != AM_OK) return st;
+    char note[640];
+    const double dt = am_dt_si(&k->model, w->def.env.dt_frac), dt_rec = am_to_si(&k->model, k->model.dt_rec, AM_DIM_TIME);
+    return am_vxa_stop_settings(&w->vxa, dt, AM_REF_DT_FRAC * dt_rec, k->model.env.period_steps, 0, &w->def.eval, note, (int)sizeof note,
+                                err, errsz);
+#else
+    (void)w, (void)text;
+    return am_fail(err, errsz, AM_ERR_CAPACITY, "VXA text: the %s profile reads no VXA", AM_PROFILE_NAME);
+#endif
+}
+
+am_status am_api_eval_vxa(am_api_work* w, const char* text, am_result* out, char* err, int errsz)
+{
+    am_status st = ready(w, err, errsz);
+    if (st != AM_OK) return st;
+    if (!text || !out) return am_fail(err, errsz, AM_ERR_ARG, "no VXA text or no result (NULL)");
+    if ((st = am_api_read_vxa(w, text, err, errsz)) != AM_OK) return st;
+    return simulate(w, out, err, errsz);
+}

@@ -35,9 +35,9 @@ am_status am_api_sim_open(am_api_work* w, const char* text, char* err, int errsz
 #else
     char msg[AM_ERR_MAX];
     am_evo_work* k = &w->work;
-    const char* p = text;
-    while (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r') p++;
-    if (am_genome_sniff(text)) {
+    if (am_vxa_sniff(text)) {
+        if ((st = am_api_read_vxa(w, text, err, errsz)) != AM_OK) return st;
+    } else if (am_genome_sniff(text)) {
         if ((st = am_genome_parse(&w->genome, text, "genome", err, errsz)) != AM_OK) return st;
         am_evo_palette_into(&w->def, &w->palette);
         if ((st = am_evo_express(&w->def, &w->palette, &w->genome, k, msg, sizeof msg)) != AM_OK)

@@ -112,6 +112,7 @@ def _type(lib, where):
         "am_api_set": ([P, c_char_p, c_char_p, c_char_p, c_int], c_int),
         "am_api_eval_genome": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
         "am_api_eval_lattice": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
+        "am_api_eval_vxa": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
         "am_api_seed": ([P, c_long, c_char_p, c_int], c_int),
         "am_api_genome_new": ([P, c_char_p, c_long, c_char_p, c_int], c_int),
         "am_api_pairing": ([P, c_int, ctypes.POINTER(c_int), c_char_p, c_int], c_int),
@@ -162,9 +163,12 @@ class Workspace:
         self._check(self.lib.am_api_set(self.work, str(key).encode(), str(value).encode(), self.err, len(self.err)))
 
     def evaluate(self, text):
-        """a genome or lattice text, evaluated as amorph evaluates it: a Result"""
+        """a genome, lattice or VXA text, evaluated as amorph evaluates it (a VXA file in its own
+        environment and evaluation, as `amorph sim FILE`): a Result"""
         r = Result()
-        fn = self.lib.am_api_eval_genome if text.lstrip().startswith("amorph-genome") else self.lib.am_api_eval_lattice
+        head = text.lstrip()
+        fn = self.lib.am_api_eval_genome if head.startswith("amorph-genome") else \
+            self.lib.am_api_eval_vxa if head.startswith("<") else self.lib.am_api_eval_lattice
         self._check(fn(self.work, text.encode(), ctypes.byref(r), self.err, len(self.err)))
         return r
 
@@ -268,7 +272,7 @@ class Sim:
         self.w._check(status)
 
     def reset(self, text):
-        """opens and settles the robot of a genome or lattice text; the first observation"""
+        """opens and settles the robot of a genome, lattice or VXA text; the first observation"""
         w = self.w
         self._check(self.lib.am_api_sim_open(w.work, text.encode(), w.err, len(w.err)))
         self.settled = Result()
