@@ -8,6 +8,13 @@
 
 #include <string.h>
 
+/* stepping needs the per-voxel actuation of the desktop profile's model and a genome's layers */
+#if AM_GENO_LAYERS && !defined(AM_COMPACT)
+#define STEPPING 1
+#else
+#define STEPPING 0
+#endif
+
 static am_status ready(const am_api_work* w, char* err, int errsz)
 {
     if (!w || w->size != (long)sizeof *w) return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not prepared (am_api_init)");
@@ -30,7 +37,7 @@ am_status am_api_sim_open(am_api_work* w, const char* text, char* err, int errsz
     if (st != AM_OK) return st;
     w->sim = 0;
     if (!text) return am_fail(err, errsz, AM_ERR_ARG, "no robot text (NULL)");
-#if !AM_GENO_LAYERS || defined(AM_COMPACT)
+#if !STEPPING
     return am_fail(err, errsz, AM_ERR_CAPACITY, "stepping a robot under control: the %s profile keeps no actuation per voxel", AM_PROFILE_NAME);
 #else
     char msg[AM_ERR_MAX];
@@ -101,6 +108,7 @@ am_status am_api_sim_step(am_api_work* w, long n, const double* scale, const dou
         if (!(v >= 0.5 && v <= 2.0) || !(r >= -1e6 && r <= 1e6))
             return am_fail(err, errsz, AM_ERR_RANGE, "voxel %d: scale %g (0.5 to 2) or rate %g 1/s (+-1e6) out of range", i, v, r);
     }
+#if STEPPING
     /* the control, held for the n steps */
     s->controlled = scale != NULL;
     for (int i = 0; scale && i < m->nv; i++) {
@@ -109,6 +117,7 @@ am_status am_api_sim_step(am_api_work* w, long n, const double* scale, const dou
         s->ctl_scale[i] = on ? AM_FROM_DOUBLE(scale[i]) : AM_R(1);
         s->ctl_rate[i] = on && rate ? AM_FROM_DOUBLE(rate[i] * am_unit(m, AM_DIM_TIME)) : AM_R(0);
     }
+#endif
     for (long k = 0; k < n && !s->diverged; k++) am_step(m, s);
     return AM_OK;
 }
@@ -118,6 +127,7 @@ am_status am_api_sim_sinusoid(am_api_work* w, double* scale, double* rate, char*
     am_status st = is_open(w, 1, err, errsz);
     if (st != AM_OK) return st;
     if (!scale) return am_fail(err, errsz, AM_ERR_ARG, "no scale array (NULL)");
+#if STEPPING
     const am_model* m = &w->work.model;
     for (int i = 0; i < m->nv; i++) {
         am_real sc, r;
@@ -125,6 +135,9 @@ am_status am_api_sim_sinusoid(am_api_work* w, double* scale, double* rate, char*
         scale[i] = AM_TO_DOUBLE(sc);
         if (rate) rate[i] = AM_TO_DOUBLE(r) / am_unit(m, AM_DIM_TIME);
     }
+#else
+    (void)rate;
+#endif
     return AM_OK;
 }
 
