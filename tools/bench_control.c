@@ -1,11 +1,15 @@
 /* amorph bench --control: the cost of stepping a robot under control through the embedding API
- * (amorph/api.h, Stepping) against amorph sim's open-loop step. For each scene (cube:10, sphere:20)
- * after the evaluation's relaxation: sim's actuated steps (am_steps on the plain model), then the
- * same number of steps by am_api_sim_step calls of 1, 10 and 100 steps, each call setting every
- * voxel's scale (a controller that alternates two vectors, so that every call changes the rest
- * lengths). Prints ns per voxel step of each and the overhead over sim, best of --repeat runs. */
+ * (amorph/api.h, Stepping) against amorph sim's open-loop step, on the same motion. For each scene
+ * (cube:10, sphere:20) after the evaluation's relaxation: sim's actuated steps (am_steps on the
+ * plain model); the same steps in one am_api_sim_step call (the model with a phase per voxel, the
+ * layout stepping needs); and in calls of 1, 10 and 100 steps, each passing an action for every
+ * voxel (all NaN: each voxel keeps its sinusoid, so the motion is sim's and only the calls cost).
+ * Prints ns per voxel step of each and the overhead over sim, best of --repeat runs in turns. What
+ * a controller's own targets cost beyond that is its choice of motion (a target that changes
+ * moves the rest lengths at the next step, as the sinusoid does at every step). */
 #include "evolve_cmd.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -19,7 +23,7 @@ int tool_bench_control(tool_ctx* c, long steps, int repeat)
 
 static am_api_work g_bench_api;
 static char g_bench_text[1L << 22];
-static double g_bench_scale[2][AM_MAX_VOXELS];
+static double g_bench_scale[AM_MAX_VOXELS];
 
 /* seconds of `steps` open-loop actuated steps of lat after the relaxation, as amorph sim steps */
 static double time_sim(tool_ctx* c, const am_lattice* lat, long steps, char* err, int errsz)
@@ -34,14 +38,18 @@ static double time_sim(tool_ctx* c, const am_lattice* lat, long steps, char* err
     return am_port_now() - t0;
 }
 
-/* seconds of the same steps by calls of `every` steps through the API, each setting every voxel */
+/* seconds of the same steps through the API: one call (every 0), or calls of `every` steps each
+ * passing an action for every voxel */
 static double time_control(long steps, long every, char* err, int errsz)
 {
     am_api_work* w = &g_bench_api;
     if (am_api_sim_open(w, g_bench_text, err, errsz) != AM_OK || am_api_sim_settle(w, NULL, err, errsz) != AM_OK) return -1;
     double t0 = am_port_now();
-    for (long k = 0; k < steps; k += every)
-        if (am_api_sim_step(w, every, g_bench_scale[(k / every) & 1], NULL, err, errsz) != AM_OK) return -1;
+    if (every == 0) {
+        if (am_api_sim_step(w, steps, NULL, NULL, err, errsz) != AM_OK) return -1;
+    } else
+        for (long k = 0; k < steps; k += every)
+            if (am_api_sim_step(w, every, g_bench_scale, NULL, err, errsz) != AM_OK) return -1;
     return am_port_now() - t0;
 }
 
@@ -49,7 +57,7 @@ int tool_bench_control(tool_ctx* c, long steps, int repeat)
 {
     char err[AM_ERR_MAX];
     static const char* const scenes[2] = {"cube:10", "sphere:20"};
-    static const long every[3] = {1, 10, 100};
+    static const long every[4] = {0, 1, 10, 100};
     for (int sc = 0; sc < 2; sc++) {
         am_lattice* lat = &c->work[1].lattice;
         long len = 0;
@@ -58,14 +66,14 @@ int tool_bench_control(tool_ctx* c, long steps, int repeat)
             am_api_init(&g_bench_api, (long)sizeof g_bench_api, err, sizeof err) != AM_OK)
             return tool_usage_error("bench: %s", err);
         const long nv = am_lattice_count(lat);
-        for (long i = 0; i < nv; i++) g_bench_scale[0][i] = 1.02, g_bench_scale[1][i] = 0.98;
-        double base = 1e30, best[3] = {1e30, 1e30, 1e30};
+        for (long i = 0; i < nv; i++) g_bench_scale[i] = (double)NAN;
+        double base = 1e30, best[4] = {1e30, 1e30, 1e30, 1e30};
         for (int r = 0; r < repeat; r++) {
             /* in turns, so that a slower minute of a shared machine falls on all of them */
             double t = time_sim(c, lat, steps, err, sizeof err);
             if (t < 0) return tool_usage_error("bench: %s", err);
             if (t < base) base = t;
-            for (int k = 0; k < 3; k++) {
+            for (int k = 0; k < 4; k++) {
                 t = time_control(steps, every[k], err, sizeof err);
                 if (t < 0) return tool_usage_error("bench: %s", err);
                 if (t < best[k]) best[k] = t;
@@ -73,7 +81,8 @@ int tool_bench_control(tool_ctx* c, long steps, int repeat)
         }
         const double vs = (double)steps * (double)nv;
         printf("control scene=%s voxels=%ld steps=%ld sim_ns_per_voxel_step=%.2f", scenes[sc], nv, steps, base / vs * 1e9);
-        for (int k = 0; k < 3; k++)
+        printf(" api_ns_per_voxel_step=%.2f api_overhead=%.1f%%", best[0] / vs * 1e9, 100.0 * (best[0] / base - 1.0));
+        for (int k = 1; k < 4; k++)
             printf(" every%ld_ns_per_voxel_step=%.2f every%ld_overhead=%.1f%%", every[k], best[k] / vs * 1e9, every[k],
                    100.0 * (best[k] / base - 1.0));
         printf(" runs=%d\n", repeat);

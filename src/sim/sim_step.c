@@ -187,8 +187,23 @@ static void voxel_actuation(const am_model* m, am_state* s)
     if (!changed) return;
     s->scales_valid = 1;
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    /* a link whose two voxels have their materials' scales (a phase of 0, not controlled) has its
+     * pair of materials' rest length: found once per pair, the same operations on the same values */
+    const int nm = m->palette.count;
+    am_real rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS], inv[AM_MAX_MATERIALS * AM_MAX_MATERIALS];
+    for (int i = 0; i < nm; i++)
+        for (int j = 0; j < nm; j++) {
+            rest[i * AM_MAX_MATERIALS + j] = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
+            inv[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), rest[i * AM_MAX_MATERIALS + j]);
+        }
     for (int l = 0; l < m->nl; l++) {
-        am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
+        const int a = m->lneg[l], b = m->lpos[l], ka = m->mat[a], kb = m->mat[b];
+        if (s->s[a] == s->mat_scale[ka] && s->s[b] == s->mat_scale[kb]) {
+            s->pair_rest[l] = rest[ka * AM_MAX_MATERIALS + kb];
+            s->pair_inv_rest[l] = inv[ka * AM_MAX_MATERIALS + kb];
+            continue;
+        }
+        am_real r = AM_MUL(half_L, s->s[a] + s->s[b]);
         s->pair_rest[l] = r;
         s->pair_inv_rest[l] = AM_DIV(AM_R(1), r);
     }
