@@ -7,13 +7,16 @@ Two ways to evaluate robots:
   * a pipe: start `amorph eval` once and send it batches of JSON lines, reading one JSON result per
     robot and an empty line after each batch (ask/tell).
 
-Usage: eval_pipe.py [--lib build/libamorph.so] [--amorph build/amorph] [--set KEY=VALUE ...] ROBOT...
+Usage: eval_pipe.py [--lib LIB] [--amorph AMORPH] [--set KEY=VALUE ...] ROBOT...
+(defaults: $AMORPH_LIB, else the checkout's build/libamorph.so, and build/amorph, found from this
+file's place, so it runs from any folder; tools/python/amorph.py is the module for programs)
 Each ROBOT is a genome or lattice file. For every robot it prints one line: the file, then
 "ctypes" and "pipe" each with fitness (as %.9g, what amorph sim prints) and hash (16 hex digits).
 """
 import argparse
 import ctypes
 import json
+import os
 import subprocess
 import sys
 
@@ -101,8 +104,10 @@ class Pipe:
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--lib", default="build/libamorph.so")
-    ap.add_argument("--amorph", default="build/amorph")
+    # defaults: the checkout's build/, found from this file's place (the example runs from any folder)
+    build = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build")
+    ap.add_argument("--lib", default=os.environ.get("AMORPH_LIB") or os.path.join(build, "libamorph.so"))
+    ap.add_argument("--amorph", default=os.path.join(build, "amorph"))
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
     ap.add_argument("robots", nargs="+")
     a = ap.parse_args()
