@@ -21,21 +21,9 @@ import subprocess
 import sys
 
 
-class Result(ctypes.Structure):
-    """am_result (include/amorph/sim.h), field by field; am_api_result_size() checks the layout"""
-    _fields_ = [
-        ("fitness", ctypes.c_double), ("travel", ctypes.c_double),
-        ("dx", ctypes.c_double), ("dy", ctypes.c_double), ("dz", ctypes.c_double),
-        ("sustained", ctypes.c_double),
-        ("voxels", ctypes.c_int), ("links", ctypes.c_int),
-        ("dt", ctypes.c_double), ("period_steps", ctypes.c_int),
-        ("relax_steps", ctypes.c_long), ("move_steps", ctypes.c_long), ("steps", ctypes.c_long),
-        ("relax_dt", ctypes.c_double), ("relax_retried", ctypes.c_int),
-        ("diverged", ctypes.c_int), ("settled", ctypes.c_int),
-        ("residual_speed", ctypes.c_double), ("kinetic_resets", ctypes.c_long),
-        ("sim_seconds", ctypes.c_double), ("rebuilds", ctypes.c_long),
-        ("max_pairs", ctypes.c_int), ("hash", ctypes.c_uint64),
-    ]
+# am_result's mirror, field by field: the module's (tools/python/amorph.py)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "python"))
+from amorph import Result  # noqa: E402
 
 
 class Amorph:
