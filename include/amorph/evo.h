@@ -80,6 +80,13 @@ typedef struct am_evo_def {
     long checkpoint_seconds;  /* 0: a checkpoint every generation; else at most one per this many s */
 } am_evo_def;
 
+/* the genomes' evolved fields (AM_CTL_* bits) that d's actuation and stiffness keys ask for: the one
+ * place geno.controls is derived from them */
+static inline int am_evo_controls(const am_evo_def* d)
+{
+    return (d->actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) | (d->stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
+}
+
 /* the seed's two-material GMX experiment on the profile's workspace (20^3 desktop), 200 evaluations */
 AM_API am_evo_def am_default_evo(void);
 /* the defaults under a stored configuration (a run folder's config.txt, a checkpoint): those of

@@ -3,16 +3,9 @@
  * initial population draws, am_evo_pairing as a generation pairs, crossover then two mutations as
  * a batch breeds, the body distance and am_evo_crowd_straight as crowding decides, so a caller that
  * makes these calls in a run's order gets the run. */
-#include "amorph/api.h"
+#include "api_internal.h"
 
 #include <string.h>
-
-/* AM_OK when w is a workspace am_api_init prepared */
-static am_status ready(const am_api_work* w, char* err, int errsz)
-{
-    if (!w || w->size != (long)sizeof *w) return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not prepared (am_api_init)");
-    return AM_OK;
-}
 
 /* genome text into w->op[k], which must be of w's settings' representation, materials, evolved
  * fields and workspace; what names it in messages */
@@ -43,14 +36,13 @@ static am_status write_genome(const am_genome* g, char* out, long cap, char* err
 static am_geno_def run_geno(const am_api_work* w)
 {
     am_geno_def d = w->def.geno;
-    d.controls = (w->def.actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) |
-                 (w->def.stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
+    d.controls = am_evo_controls(&w->def);
     return d;
 }
 
 am_status am_api_seed(am_api_work* w, long seed, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (seed < 0) return am_fail(err, errsz, AM_ERR_RANGE, "seed %ld: 0 or more", seed);
     am_rng_seed(&w->rng, (uint64_t)seed);
@@ -59,7 +51,7 @@ am_status am_api_seed(am_api_work* w, long seed, char* err, int errsz)
 
 am_status am_api_genome_new(am_api_work* w, char* out, long cap, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     const am_geno_def d = run_geno(w);
     am_rng saved = w->rng;
@@ -70,7 +62,7 @@ am_status am_api_genome_new(am_api_work* w, char* out, long cap, char* err, int 
 
 am_status am_api_pairing(am_api_work* w, int n, int* order, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!order) return am_fail(err, errsz, AM_ERR_ARG, "no order array (NULL)");
     if (n < 2 || n > AM_MAX_POPULATION || n % 2)
@@ -82,7 +74,7 @@ am_status am_api_pairing(am_api_work* w, int n, int* order, char* err, int errsz
 am_status am_api_offspring(am_api_work* w, const char* a, const char* b, char* out1, char* out2, long cap, char* err,
                            int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if ((st = read_genome(w, 0, a, "parent a", err, errsz)) != AM_OK || (st = read_genome(w, 1, b, "parent b", err, errsz)) != AM_OK)
         return st;
@@ -98,7 +90,7 @@ am_status am_api_offspring(am_api_work* w, const char* a, const char* b, char* o
 
 am_status am_api_mutate(am_api_work* w, const char* in, char* out, long cap, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if ((st = read_genome(w, 0, in, "genome", err, errsz)) != AM_OK) return st;
     const am_geno_def d = run_geno(w);
@@ -108,33 +100,15 @@ am_status am_api_mutate(am_api_work* w, const char* in, char* out, long cap, cha
     return st;
 }
 
-/* the body distance of w->op[i] and w->op[j] with w's palette, voxel size and stiffness range */
+/* the crowding distance of w->op[i] and w->op[j] (their bodies do not depend on the palette) */
 static am_status op_distance(am_api_work* w, int i, int j, am_real* out, char* err, int errsz)
 {
-    am_evo_palette_into(&w->def, &w->palette);
-    const am_express_def ex = am_evo_express_def(&w->def, &w->palette);
-    am_geno_work* gw = &w->work.geno;
-    const am_genome* a = &w->op[i];
-    const am_genome* b = &w->op[j];
-    const int cells = a->nx * a->ny * a->nz;
-    am_status st = am_genome_express(a, &ex, gw, NULL, err, errsz);
-    if (st != AM_OK) return st;
-    memcpy(gw->other, gw->cell, (size_t)cells);
-#if AM_GENO_LAYERS
-    memcpy(gw->other_ctl, gw->ctl, sizeof gw->ctl);
-#endif
-    if ((st = am_genome_express(b, &ex, gw, NULL, err, errsz)) != AM_OK) return st;
-#if AM_GENO_LAYERS
-    *out = am_body_distance_ctl(gw->other, gw->other_ctl[0], gw->other_ctl[1], gw->cell, gw->ctl[0], gw->ctl[1], a->controls, cells);
-#else
-    *out = am_body_distance(gw->other, gw->cell, cells);
-#endif
-    return AM_OK;
+    return am_genome_distance(&w->op[i], &w->op[j], &w->work.geno, out, err, errsz);
 }
 
 am_status am_api_distance(am_api_work* w, const char* a, const char* b, double* out, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!out) return am_fail(err, errsz, AM_ERR_ARG, "no output (NULL)");
     if ((st = read_genome(w, 0, a, "genome a", err, errsz)) != AM_OK || (st = read_genome(w, 1, b, "genome b", err, errsz)) != AM_OK)
@@ -156,7 +130,7 @@ static int better(double child, double parent)
 am_status am_api_crowd(am_api_work* w, const char* a, double fa, const char* b, double fb, const char* c1, double f1,
                        const char* c2, double f2, int* meets, int* replaces, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!meets || !replaces) return am_fail(err, errsz, AM_ERR_ARG, "no meets or replaces array (NULL)");
     if ((st = read_genome(w, 0, a, "parent a", err, errsz)) != AM_OK || (st = read_genome(w, 1, b, "parent b", err, errsz)) != AM_OK ||

@@ -2,7 +2,7 @@
  * owns. A thin layer over the others: the genome and lattice readers, the run's expression
  * (am_evo_lattice), am_model_build and am_evaluate, with the settings applied as amorph sim applies
  * its flags, so that a result here is the command's, bit for bit. */
-#include "amorph/api.h"
+#include "api_internal.h"
 
 #include <stdint.h>
 #include <string.h>
@@ -42,13 +42,6 @@ long am_api_result_size(void)
     return (long)sizeof(am_result);
 }
 
-/* AM_OK when w is a workspace am_api_init prepared */
-static am_status ready(const am_api_work* w, char* err, int errsz)
-{
-    if (!w || w->size != (long)sizeof *w) return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not prepared (am_api_init)");
-    return AM_OK;
-}
-
 am_status am_api_init(am_api_work* w, long size, char* err, int errsz)
 {
     if (!w) return am_fail(err, errsz, AM_ERR_ARG, "no workspace (NULL)");
@@ -69,7 +62,7 @@ am_status am_api_init(am_api_work* w, long size, char* err, int errsz)
 
 am_status am_api_set(am_api_work* w, const char* key, const char* value, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!key || !value) return am_fail(err, errsz, AM_ERR_ARG, "a setting needs a key and a value (NULL)");
     am_evo_def d = w->def;
@@ -91,7 +84,7 @@ static am_status simulate(am_api_work* w, am_result* out, char* err, int errsz)
 
 am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!text || !out) return am_fail(err, errsz, AM_ERR_ARG, "no genome text or no result (NULL)");
     st = am_genome_parse(&w->genome, text, "genome", err, errsz);
@@ -105,7 +98,7 @@ am_status am_api_eval_genome(am_api_work* w, const char* text, am_result* out, c
 
 am_status am_api_eval_lattice(am_api_work* w, const char* text, am_result* out, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!text || !out) return am_fail(err, errsz, AM_ERR_ARG, "no lattice text or no result (NULL)");
     am_lattice* lat = &w->work.lattice;
@@ -150,7 +143,7 @@ am_status am_api_read_vxa(am_api_work* w, const char* text, char* err, int errsz
 
 am_status am_api_eval_vxa(am_api_work* w, const char* text, am_result* out, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (!text || !out) return am_fail(err, errsz, AM_ERR_ARG, "no VXA text or no result (NULL)");
     if ((st = am_api_read_vxa(w, text, err, errsz)) != AM_OK) return st;

@@ -4,7 +4,7 @@
  * phase per voxel (every phase 0 unless the genome evolved its own), the layout whose per-voxel
  * actuation the step can take over; fed back the sinusoid's own values (am_api_sim_sinusoid) it
  * moves exactly as the open-loop evaluation moves it. */
-#include "amorph/api.h"
+#include "api_internal.h"
 
 #include <string.h>
 
@@ -15,16 +15,10 @@
 #define STEPPING 0
 #endif
 
-static am_status ready(const am_api_work* w, char* err, int errsz)
-{
-    if (!w || w->size != (long)sizeof *w) return am_fail(err, errsz, AM_ERR_ARG, "the workspace is not prepared (am_api_init)");
-    return AM_OK;
-}
-
 /* AM_OK when a robot is open (settled: and settled) */
 static am_status is_open(const am_api_work* w, int settled, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     if (w->sim < 1) return am_fail(err, errsz, AM_ERR_ARG, "no robot is open (am_api_sim_open)");
     if (settled && w->sim < 2) return am_fail(err, errsz, AM_ERR_ARG, "the robot is not settled yet (am_api_sim_settle)");
@@ -33,7 +27,7 @@ static am_status is_open(const am_api_work* w, int settled, char* err, int errsz
 
 am_status am_api_sim_open(am_api_work* w, const char* text, char* err, int errsz)
 {
-    am_status st = ready(w, err, errsz);
+    am_status st = am_api_ready(w, err, errsz);
     if (st != AM_OK) return st;
     w->sim = 0;
     if (!text) return am_fail(err, errsz, AM_ERR_ARG, "no robot text (NULL)");
@@ -85,7 +79,7 @@ am_status am_api_sim_settle(am_api_work* w, am_result* out, char* err, int errsz
 
 long am_api_sim_voxels(am_api_work* w, int* material, int* cell)
 {
-    if (ready(w, NULL, 0) != AM_OK || w->sim < 1) return -1;
+    if (am_api_ready(w, NULL, 0) != AM_OK || w->sim < 1) return -1;
     const am_model* m = &w->work.model;
     for (int i = 0; i < m->nv; i++) {
         if (material) material[i] = m->mat[i];

@@ -427,7 +427,7 @@ am_status am_evo_set(am_evo_def* d, const char* key, const char* value, char* er
 {
     am_status st = set_key(d, key, value, err, errsz);
     /* the genomes' evolved fields follow the two keys */
-    d->geno.controls = (d->actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) | (d->stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
+    d->geno.controls = am_evo_controls(d);
     return st;
 }
 

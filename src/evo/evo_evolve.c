@@ -129,7 +129,7 @@ am_status am_evo_init(am_evo* e, const am_evo_def* d, char* err, int errsz)
     memset(e, 0, sizeof *e);
     e->def = *d;
     /* the genomes' evolved fields as the run's keys say (a caller may have set the keys' members alone) */
-    e->def.geno.controls = (d->actuation == AM_ACTUATION_PHASE ? AM_CTL_PHASE : 0) | (d->stiffness == AM_STIFFNESS_EVOLVED ? AM_CTL_STIFFNESS : 0);
+    e->def.geno.controls = am_evo_controls(d);
     am_evo_palette_into(d, &e->palette);
     am_rng_seed(&e->rng, d->seed);
     for (int i = 0; i < d->population; i++) {
