@@ -300,7 +300,7 @@ check: all check-alloc check-tests check-layers check-exports $(TEST_BIN) check-
 # the invariants checked after every model build and step, and every AM_ASSERT, while the
 # simulator's unit tests run their scenes, then a VXA file's scene and the shipped best robots
 # through the checked program, and a false AM_ASSERT through the handler (tests/cli_checks.sh)
-CHECKS_TESTS := test_base test_sim_model test_sim_step test_sim_eval test_sim_collide
+CHECKS_TESTS := test_base test_sim_model test_sim_step test_sim_eval test_sim_collide test_api_sim
 .PHONY: checks
 checks:
 	@$(MAKE) --no-print-directory BUILD=$(BUILD)/checks CHECKS=1 $(addprefix $(BUILD)/checks/tests/,$(CHECKS_TESTS)) $(BUILD)/checks/amorph

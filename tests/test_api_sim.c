@@ -125,6 +125,61 @@ static void test_control_changes_the_motion(void)
     CHECK(h[0] == h[1], "the same calls: %016llx, %016llx", (unsigned long long)h[0], (unsigned long long)h[1]);
     CHECK(h[0] != r.hash, "half the voxels held: the open-loop state");
 }
+
+/* the robot stepped with no action (NULL) all the way: the evaluation bit for bit */
+static void test_no_action_is_the_evaluation(void)
+{
+    char err[AM_ERR_MAX];
+    am_result r;
+    am_obs o;
+    CHECK(prepare("representation", "gmx", err), "%s", err);
+    am_api_seed(&W, 5, err, sizeof err);
+    do CHECK(am_api_genome_new(&W, text, sizeof text, err, sizeof err) == AM_OK && am_api_eval_genome(&W, text, &r, err, sizeof err) == AM_OK,
+             "%s", err);
+    while (r.voxels < 2);
+    CHECK(am_api_sim_open(&W, text, err, sizeof err) == AM_OK && am_api_sim_settle(&W, NULL, err, sizeof err) == AM_OK, "%s", err);
+    while (W.work.state.step < r.steps) {
+        const long left = r.steps - W.work.state.step;
+        if (am_api_sim_step(&W, left < 7 ? left : 7, NULL, NULL, err, sizeof err) != AM_OK) break;
+    }
+    CHECK(am_api_sim_observe(&W, &o, NULL, NULL, NULL, NULL, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(o.hash == r.hash && o.step == r.steps, "no action: state %016llx after %ld steps, the evaluation %016llx after %ld",
+          (unsigned long long)o.hash, o.step, (unsigned long long)r.hash, r.steps);
+}
+
+/* control that comes and goes (a voxel held, left to its sinusoid, given its sinusoid's own value,
+ * no action at all, every voxel held): after every call each link's rest length is the mean of
+ * its two voxels' edges at their current scales (am_state_validate), with phases and without */
+static void test_rest_lengths_follow_the_control(void)
+{
+    char err[AM_ERR_MAX];
+    am_rng rng;
+    am_rng_seed(&rng, 17);
+    for (int phases = 0; phases < 2; phases++) {
+        CHECK(prepare("representation", "gmx", err) && (!phases || am_api_set(&W, "actuation", "phase", err, sizeof err) == AM_OK), "%s", err);
+        do CHECK(am_api_genome_new(&W, text, sizeof text, err, sizeof err) == AM_OK, "%s", err);
+        while (strstr(text, "gmx 0\n"));
+        CHECK(am_api_sim_open(&W, text, err, sizeof err) == AM_OK && am_api_sim_settle(&W, NULL, err, sizeof err) == AM_OK, "%s", err);
+        const long n = am_api_sim_voxels(&W, NULL, NULL);
+        int bad = 0, calls = 0;
+        for (int c = 0; c < 60 && !bad; c++, calls++) {
+            const int kind = (int)am_rng_below(&rng, 5);
+            CHECK(am_api_sim_sinusoid(&W, sc, NULL, err, sizeof err) == AM_OK, "%s", err);
+            for (long i = 0; i < n; i++) {
+                const int pick = (int)am_rng_below(&rng, 4);
+                if (kind == 1) sc[i] = 1.02; /* every voxel held */
+                else if (pick == 0) sc[i] = 0.97 + 0.01 * (double)am_rng_below(&rng, 6); /* held */
+                else if (pick == 1) sc[i] = (double)NAN; /* its sinusoid */
+                /* else its sinusoid's own value at this step, held */
+            }
+            const long steps = 1 + (long)am_rng_below(&rng, 9);
+            CHECK(am_api_sim_step(&W, steps, kind == 0 ? NULL : sc, NULL, err, sizeof err) == AM_OK, "%s", err);
+            if (am_state_validate(&W.work.model, &W.work.state, err, sizeof err) != AM_OK) bad = 1;
+        }
+        CHECK(!bad, "%s, after call %d: %s", phases ? "evolved phases" : "global actuation", calls, err);
+        CHECK(!W.work.state.diverged, "diverged");
+    }
+}
 #endif
 
 static void test_refusals(void)
@@ -156,6 +211,8 @@ int main(int argc, char** argv)
     RUN(test_sinusoid_fed_back);
     RUN(test_held_scale_is_the_expansion);
     RUN(test_control_changes_the_motion);
+    RUN(test_no_action_is_the_evaluation);
+    RUN(test_rest_lengths_follow_the_control);
 #endif
     RUN(test_refusals);
     return SUMMARY();

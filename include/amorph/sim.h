@@ -215,15 +215,15 @@ typedef struct am_model {
     am_real mat_phase[AM_MAX_MATERIALS];
     /* a robot with its own phase per voxel (am_layers; desktop profile): each voxel actuates with
      * its material's phase plus vphase, and each link's rest length follows its two voxels (the
-     * link loop finds it at entry lself[l] = l of the state's rest lengths, where a robot without
-     * them finds its pair of materials' at lpair[l]). voxel_phase is 0 for every other robot,
-     * which keeps the per-material actuation */
+     * link loop finds it where the state's rest_at[l] says, where a robot without them finds its
+     * pair of materials' at lpair[l]). voxel_phase is 0 for every other robot, which keeps the
+     * per-material actuation */
     int voxel_phase;
     int any_force;                 /* 1: some voxel has a constant external force or a prescribed
                                       displacement (force) */
 #if !defined(AM_COMPACT)
+    int vphase_any;                   /* 1: some voxel's vphase is not 0 */
     am_real vphase[AM_MAX_VOXELS];    /* radians */
-    am_pair lself[AM_MAX_LINKS];      /* l */
     am_real force[3][AM_MAX_VOXELS];  /* the boundary conditions, model units: a free voxel's force
                                        * (am_state_reset puts it in fext), a clamped voxel's prescribed
                                        * displacement (am_state_reset puts it in x, where it stays: the
@@ -292,7 +292,7 @@ typedef struct am_record {
 #if defined(AM_COMPACT)
 #define AM_REST_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS)
 #else
-#define AM_REST_CAP (AM_MAX_LINKS + 1)
+#define AM_REST_CAP (AM_MAX_MATERIALS * AM_MAX_MATERIALS + AM_MAX_LINKS)
 #endif
 
 /* the mutable state of one simulation */
@@ -324,9 +324,9 @@ typedef struct am_state {
     am_real s[AM_MAX_VOXELS];     /* current linear scale from temperature */
 #if !defined(AM_COMPACT)
     am_real s_rate[AM_MAX_VOXELS]; /* its rate of change, 1/s (a board reads mat_scale_rate) */
-    /* a controller's actuation (am_state_control; a model with a phase per voxel, voxel_phase):
-     * while controlled, each voxel with ctl_on takes ctl_scale and ctl_rate for its scale and its
-     * rate in place of the sinusoid's; am_state_reset clears it */
+    /* a controller's actuation (am_api_sim_step; a model with a phase per voxel, voxel_phase):
+     * each voxel with ctl_on takes ctl_scale and ctl_rate for its scale and its rate in place of
+     * the sinusoid's; controlled is 1 when some voxel has ctl_on; am_state_reset clears it */
     int controlled;
     uint8_t ctl_on[AM_MAX_VOXELS];
     am_real ctl_scale[AM_MAX_VOXELS];
@@ -337,10 +337,18 @@ typedef struct am_state {
     am_real fc[3][AM_MAX_VOXELS];   /* scratch: self-collision force, then the step's total force, N */
     uint8_t contact[AM_MAX_VOXELS]; /* 0 no floor contact, 1 stuck, 2 sliding */
     /* per pair of materials (i * AM_MAX_MATERIALS + j): a link's rest length follows the scales
-     * of its two voxels' materials; for a robot with a phase per voxel (model voxel_phase) per
-     * link instead (entry l) */
+     * of its two voxels' materials. A robot with a phase per voxel (model voxel_phase) also has one
+     * per link (entry AM_MAX_MATERIALS^2 + l) for each link with an end whose scale is not its
+     * material's (a phase, a controller), and rest_at[l] says which entry link l reads */
     am_real pair_rest[AM_REST_CAP];     /* current rest length, m */
     am_real pair_inv_rest[AM_REST_CAP]; /* its inverse, 1/m */
+#if !defined(AM_COMPACT)
+    am_pair rest_at[AM_MAX_LINKS];      /* link l's entry: lpair[l], or its own */
+    uint8_t rest_own[AM_MAX_VOXELS];    /* bit 0: voxel i's scale is not its material's at this
+                                         * step; bit 1: nor was it at the last */
+    int vox_plain;                      /* 1: at the last step every voxel had its material's
+                                         * scale and rate (and rest_own bit 0 is clear) */
+#endif
     /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t (scaled
      * down only past the limit of docs/physics.md, Damping), L^2 / 12 (c_r = c_t L^2 / 12) and the
      * scale alpha dt^2 of the damping correction; recomputed when dt or glob_scale changes */
@@ -547,12 +555,12 @@ AM_API double am_sim_time(const am_model* m, const am_state* s);
  * period and relaxation fields set), am_eval_actuate starts the actuation at the state's step (the
  * movement's phase 0). Between steps a caller may set each voxel's scale (1 + its linear
  * expansion) and the scale's rate in place of the sinusoid's (the desktop profile, a model with a
- * phase per voxel: am_model_build_layers with layers of has_phase); am_actuation_of gives voxel
- * i's own for the state's next step, the values am_step computes: set back as the control, the
- * robot moves exactly as without it. */
+ * phase per voxel: am_model_build_layers with layers of has_phase); am_actuation_values gives
+ * every voxel's own for the state's next step (scale, and rate in 1/s unless NULL), the values
+ * am_step computes: set back as the control, the robot moves exactly as without it. */
 AM_API void am_eval_settle(const am_model* m, am_state* s, const am_eval_def* def, am_result* out);
 AM_API void am_eval_actuate(am_state* s);
-AM_API void am_actuation_of(const am_model* m, const am_state* s, int i, am_real* scale, am_real* rate);
+AM_API void am_actuation_values(const am_model* m, const am_state* s, double* scale, double* rate);
 /* what a controller sees: the state's step and time, its centre of mass and that's velocity */
 typedef struct am_obs {
     long step;                /* steps since the reset */

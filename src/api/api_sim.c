@@ -104,9 +104,10 @@ am_status am_api_sim_step(am_api_work* w, long n, const double* scale, const dou
     }
 #if STEPPING
     /* the control, held for the n steps */
-    s->controlled = scale != NULL;
+    s->controlled = 0;
     for (int i = 0; scale && i < m->nv; i++) {
         const int on = scale[i] == scale[i];
+        s->controlled |= on;
         s->ctl_on[i] = (uint8_t)on;
         s->ctl_scale[i] = on ? AM_FROM_DOUBLE(scale[i]) : AM_R(1);
         s->ctl_rate[i] = on && rate ? AM_FROM_DOUBLE(rate[i] * am_unit(m, AM_DIM_TIME)) : AM_R(0);
@@ -122,13 +123,7 @@ am_status am_api_sim_sinusoid(am_api_work* w, double* scale, double* rate, char*
     if (st != AM_OK) return st;
     if (!scale) return am_fail(err, errsz, AM_ERR_ARG, "no scale array (NULL)");
 #if STEPPING
-    const am_model* m = &w->work.model;
-    for (int i = 0; i < m->nv; i++) {
-        am_real sc, r;
-        am_actuation_of(m, &w->work.state, i, &sc, &r);
-        scale[i] = AM_TO_DOUBLE(sc);
-        if (rate) rate[i] = AM_TO_DOUBLE(r) / am_unit(m, AM_DIM_TIME);
-    }
+    am_actuation_values(&w->work.model, &w->work.state, scale, rate);
 #else
     (void)rate;
 #endif

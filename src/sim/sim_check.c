@@ -62,6 +62,21 @@ am_status am_state_validate(const am_model* m, const am_state* s, char* err, int
             if (!FIN(s->q[k][i])) return am_fail(err, errsz, AM_ERR_RANGE, "state: step %ld voxel %d orientation not finite", s->step, i);
         if (!FIN(s->s[i]) || !(s->s[i] > 0)) return am_fail(err, errsz, AM_ERR_RANGE, "state: step %ld voxel %d scale not positive", s->step, i);
     }
+    /* each link's rest length, where the link loop reads it (its pair of materials' or its own),
+     * is the mean of its two voxels' edges at their current scales, bit for bit */
+    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    for (int l = 0; s->scales_valid && l < m->nl; l++) {
+#if defined(AM_COMPACT)
+        const int e = m->lpair[l];
+#else
+        const int e = m->voxel_phase ? s->rest_at[l] : m->lpair[l];
+#endif
+        if (e < 0 || e >= AM_REST_CAP) return am_fail(err, errsz, AM_ERR_RANGE, "state: step %ld link %d rest length entry %d out of range", s->step, l, e);
+        const am_real r = AM_MUL(half_L, s->s[m->lneg[l]] + s->s[m->lpos[l]]);
+        if (s->pair_rest[e] != r || s->pair_inv_rest[e] != AM_DIV(AM_R(1), r))
+            return am_fail(err, errsz, AM_ERR_RANGE, "state: step %ld link %d rest length %g, its voxels' scales give %g", s->step, l,
+                           (double)s->pair_rest[e], (double)r);
+    }
     return AM_OK;
 }
 

@@ -352,9 +352,11 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     m->voxel_phase = layers != NULL && layers->has_phase;
     m->any_force = any_force;
 #if !defined(AM_COMPACT)
+    m->vphase_any = 0;
     for (int i = 0; i < nv; i++) {
         m->vphase[i] = AM_R(0);
         if (m->voxel_phase) m->vphase[i] = AM_PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
+        m->vphase_any |= m->vphase[i] != AM_R(0);
         /* a clamped voxel takes no force: its slot holds the displacement a region prescribes (a
          * voxel clamped by its material alone: none) */
         const int bc_fixed = any_force && layers->fixed[m->cell[i]];
@@ -364,7 +366,6 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
             if (bc_fixed) m->force[k][i] = AM_PV(layers->force[k][m->cell[i]], m->unit_len);
         }
     }
-    for (int l = 0; l < nl; l++) m->lself[l] = (am_pair)l;
 #endif
 
     /* divergence bound: ten times the fastest sound speed of the palette */
@@ -452,6 +453,8 @@ void am_state_reset(const am_model* m, am_state* s)
     s->actuation_step0 = 0;
 #if !defined(AM_COMPACT)
     s->controlled = 0;
+    s->vox_plain = 0;
+    memset(s->rest_own, 0, sizeof s->rest_own[0] * (size_t)nv);
 #endif
     s->diverged = 0;
     s->diverge_step = -1;

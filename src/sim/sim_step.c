@@ -95,6 +95,19 @@ static am_real actuation_omega(const am_state* s)
 #endif
 }
 
+/* a link's rest length is the mean of its voxels' edges: one per pair of materials, from the
+ * materials' scales */
+static void pair_rest_lengths(const am_model* m, am_state* s)
+{
+    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    for (int i = 0; i < m->palette.count; i++)
+        for (int j = 0; j < m->palette.count; j++) {
+            const am_real r = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
+            s->pair_rest[i * AM_MAX_MATERIALS + j] = r;
+            s->pair_inv_rest[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), r);
+        }
+}
+
 #if !defined(AM_COMPACT)
 /* the actuation's argument at the state's step, radians (0 while it is off) */
 static inline am_real actuation_arg0(const am_state* s)
@@ -139,73 +152,146 @@ static inline am_real held_scale(const am_model* m, int k)
     return m->mat_cte[k] == AM_R(0) ? AM_R(1) : am_sim_scale(m->env.cte_mode, m->mat_cte[k], m->temp_base);
 }
 
-void am_actuation_of(const am_model* m, const am_state* s, int i, am_real* scale, am_real* rate)
+void am_actuation_values(const am_model* m, const am_state* s, double* scale, double* rate)
 {
-    if (s->actuate) voxel_sinusoid(m, i, actuation_arg0(s), actuation_omega(s), scale, rate);
-    else *scale = held_scale(m, m->mat[i]), *rate = AM_R(0);
+    /* as the step finds them: a voxel of phase 0 its material's, found once per material */
+    const am_real arg0 = actuation_arg0(s), wt = actuation_omega(s);
+    am_real msc[AM_MAX_MATERIALS], mrt[AM_MAX_MATERIALS];
+    for (int k = 0; k < m->palette.count; k++) {
+        msc[k] = held_scale(m, k), mrt[k] = AM_R(0);
+        if (s->actuate) material_sinusoid(m, k, arg0, wt, &msc[k], &mrt[k]);
+    }
+    const double unit_time = am_unit(m, AM_DIM_TIME);
+    for (int i = 0; i < m->nv; i++) {
+        am_real sc = msc[m->mat[i]], r = mrt[m->mat[i]];
+        if (s->actuate && m->vphase[i] != AM_R(0)) voxel_sinusoid(m, i, arg0, wt, &sc, &r);
+        scale[i] = AM_TO_DOUBLE(sc);
+        if (rate) rate[i] = AM_TO_DOUBLE(r) / unit_time;
+    }
 }
 
 /* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
  * material's argument plus its own phase, then each link's rest length from its two voxels. With
  * every voxel phase 0 these are the per-material path's values, operation for operation. A
  * controlled state's voxels with ctl_on take the controller's scale and rate instead. */
+enum { OWN_NOW = 1, OWN_WAS = 2, OWN_MOVED = 4 }; /* am_state.rest_own */
+/* 1: a voxel whose links' rest lengths are looked at: it moved, or took or left a scale of its own */
+static inline int own_visit(int f) { return ((f >> 2) | ((f >> 1) ^ f)) & 1; }
+
+/* link l's rest length: its pair's when both ends have their materials' scales, else its own
+ * entry (the same operations on the same values) */
+static inline void link_rest(const am_model* m, am_state* s, int l, am_real half_L)
+{
+    const int a = m->lneg[l], b = m->lpos[l], own0 = AM_MAX_MATERIALS * AM_MAX_MATERIALS;
+    if (s->s[a] == s->mat_scale[m->mat[a]] && s->s[b] == s->mat_scale[m->mat[b]]) {
+        s->rest_at[l] = m->lpair[l];
+        return;
+    }
+    const am_real r = AM_MUL(half_L, s->s[a] + s->s[b]);
+    s->rest_at[l] = (am_pair)(own0 + l);
+    s->pair_rest[own0 + l] = r;
+    s->pair_inv_rest[own0 + l] = AM_DIV(AM_R(1), r);
+}
+
+/* one voxel's scale and rate: its material's, its own phase's (actuate), or a controller's
+ * (controlled) */
+static inline void voxel_values(const am_model* m, const am_state* s, int i, int actuate, int controlled, am_real arg0, am_real wt,
+                                const am_real* mrate, am_real* sc, am_real* rate)
+{
+    *sc = s->mat_scale[m->mat[i]], *rate = mrate[m->mat[i]];
+    if (actuate && m->vphase[i] != AM_R(0)) voxel_sinusoid(m, i, arg0, wt, sc, rate);
+    if (controlled && s->ctl_on[i]) *sc = s->ctl_scale[i], *rate = s->ctl_rate[i];
+}
+
 static void voxel_actuation(const am_model* m, am_state* s)
 {
     int changed = !s->scales_valid;
-    const am_real arg0 = actuation_arg0(s);
-    if (s->actuate) {
-        const am_real wt = actuation_omega(s);
-        /* a voxel of phase 0 has its material's values: found once per material (the same
-         * operations: the argument plus a zero phase is the argument) */
-        for (int k = 0; k < m->palette.count; k++) material_sinusoid(m, k, arg0, wt, &s->mat_scale[k], &s->mat_scale_rate[k]);
+    const int fresh = !s->scales_valid; /* (am_state_reset cleared rest_own) */
+    const int actuate = s->actuate, controlled = s->controlled;
+    const am_real arg0 = actuation_arg0(s), wt = actuate ? actuation_omega(s) : AM_R(0);
+    /* a voxel of phase 0 has its material's values: found once per material (the same
+     * operations: the argument plus a zero phase is the argument); held at temp_base (relaxation)
+     * every voxel of a material has its material's scale, and nothing changes from step to step */
+    am_real mrate[AM_MAX_MATERIALS];
+    for (int k = 0; k < m->palette.count; k++) {
+        am_real sc = held_scale(m, k);
+        mrate[k] = AM_R(0);
+        if (s->actuate) {
+            material_sinusoid(m, k, arg0, wt, &sc, &mrate[k]);
+            changed |= mrate[k] != s->mat_scale_rate[k];
+            s->mat_scale_rate[k] = mrate[k];
+        }
+        changed |= sc != s->mat_scale[k];
+        s->mat_scale[k] = sc;
+    }
+    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    if (m->vphase_any) {
+        /* phases: most voxels move at every step, and every link is looked at once */
         for (int i = 0; i < m->nv; i++) {
-            am_real sc = s->mat_scale[m->mat[i]], rate = s->mat_scale_rate[m->mat[i]];
-            if (m->vphase[i] != AM_R(0)) voxel_sinusoid(m, i, arg0, wt, &sc, &rate);
-            changed |= sc != s->s[i];
+            am_real sc, rate;
+            voxel_values(m, s, i, actuate, controlled, arg0, wt, mrate, &sc, &rate);
+            changed |= (sc != s->s[i]) | (rate != s->s_rate[i]);
             s->s[i] = sc;
-            changed |= rate != s->s_rate[i];
             s->s_rate[i] = rate;
         }
-    } else {
-        /* held at temp_base (relaxation): every voxel of a material has its material's scale, found
-         * once per material, and nothing changes from step to step */
-        for (int k = 0; k < m->palette.count; k++) s->mat_scale[k] = held_scale(m, k);
-        for (int i = 0; i < m->nv; i++) {
-            const am_real sc = s->mat_scale[m->mat[i]];
-            changed |= (sc != s->s[i]) | (s->s_rate[i] != AM_R(0));
-            s->s[i] = sc;
-            s->s_rate[i] = AM_R(0);
-        }
+        if (!changed) return;
+        s->scales_valid = 1;
+        pair_rest_lengths(m, s);
+        for (int l = 0; l < m->nl; l++) link_rest(m, s, l, half_L);
+        return;
     }
-    if (s->controlled)
+    /* no phases and no controller's values, now or at the last step (stepping a robot under a
+     * controller that leaves it to its sinusoid): every voxel has its material's values and every
+     * link its pair's rest length, as on the per-material path */
+    if (!fresh && s->vox_plain && !s->controlled) {
+        if (!changed) return;
         for (int i = 0; i < m->nv; i++) {
-            if (!s->ctl_on[i]) continue;
-            changed |= (s->ctl_scale[i] != s->s[i]) | (s->ctl_rate[i] != s->s_rate[i]);
-            s->s[i] = s->ctl_scale[i];
-            s->s_rate[i] = s->ctl_rate[i];
+            s->s[i] = s->mat_scale[m->mat[i]];
+            s->s_rate[i] = mrate[m->mat[i]];
         }
+        pair_rest_lengths(m, s);
+        return;
+    }
+    /* a controller's values: each voxel's, and whether its scale is its material's, was at the
+     * last step, and moved (rest_own: which links to look at) */
+    int acc = 0;
+    for (int i = 0; i < m->nv; i++) {
+        am_real sc, rate;
+        voxel_values(m, s, i, actuate, controlled, arg0, wt, mrate, &sc, &rate);
+        const int moved = fresh | (sc != s->s[i]);
+        changed |= moved | (rate != s->s_rate[i]);
+        s->s[i] = sc;
+        s->s_rate[i] = rate;
+        const int f = (sc != s->mat_scale[m->mat[i]]) * OWN_NOW | (s->rest_own[i] & OWN_NOW) * OWN_WAS | moved * OWN_MOVED;
+        s->rest_own[i] = (uint8_t)f;
+        acc |= f;
+    }
+    s->vox_plain = !s->controlled; /* with no controller every voxel has its material's values */
     if (!changed) return;
     s->scales_valid = 1;
-    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
-    /* a link whose two voxels have their materials' scales (a phase of 0, not controlled) has its
-     * pair of materials' rest length: found once per pair, the same operations on the same values */
-    const int nm = m->palette.count;
-    am_real rest[AM_MAX_MATERIALS * AM_MAX_MATERIALS], inv[AM_MAX_MATERIALS * AM_MAX_MATERIALS];
-    for (int i = 0; i < nm; i++)
-        for (int j = 0; j < nm; j++) {
-            rest[i * AM_MAX_MATERIALS + j] = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
-            inv[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), rest[i * AM_MAX_MATERIALS + j]);
+    pair_rest_lengths(m, s);
+    if (fresh) /* a state just reset: every link at its pair's entry until its voxels say otherwise */
+        for (int l = 0; l < m->nl; l++) s->rest_at[l] = m->lpair[l];
+    if (!(acc & (OWN_NOW | OWN_WAS))) return; /* and every link still is */
+    /* a link is looked at when an end of it takes or leaves a scale of its own, or moves */
+    int visits = 0;
+    for (int i = 0; i < m->nv; i++) visits += own_visit(s->rest_own[i]);
+    if (visits > m->nv / 4) { /* many: each link once */
+        for (int l = 0; l < m->nl; l++) link_rest(m, s, l, half_L);
+        return;
+    }
+    for (int i = 0; i < m->nv; i++) {
+        if (!own_visit(s->rest_own[i])) continue; /* still, and as it was */
+        /* its links: the x lanes i and i + 1 (lane l joins voxels l - 1 and l; the two edge lanes 0
+         * and nv join voxel 0 to itself), and its y and z links by slot; a link both of whose ends
+         * are looked at, once, from its - end */
+        const int at[8] = {i, i + 1, 0, m->nv, m->slot[2][i], m->slot[3][i], m->slot[4][i], m->slot[5][i]};
+        for (int k = 0; k < 8; k++) {
+            const int l = at[k];
+            if (l >= m->nl || (m->lneg[l] != i && m->lpos[l] != i)) continue;
+            if (m->lneg[l] != i && own_visit(s->rest_own[m->lneg[l]])) continue;
+            link_rest(m, s, l, half_L);
         }
-    for (int l = 0; l < m->nl; l++) {
-        const int a = m->lneg[l], b = m->lpos[l], ka = m->mat[a], kb = m->mat[b];
-        if (s->s[a] == s->mat_scale[ka] && s->s[b] == s->mat_scale[kb]) {
-            s->pair_rest[l] = rest[ka * AM_MAX_MATERIALS + kb];
-            s->pair_inv_rest[l] = inv[ka * AM_MAX_MATERIALS + kb];
-            continue;
-        }
-        am_real r = AM_MUL(half_L, s->s[a] + s->s[b]);
-        s->pair_rest[l] = r;
-        s->pair_inv_rest[l] = AM_DIV(AM_R(1), r);
     }
 }
 #endif
@@ -249,14 +335,7 @@ static void actuation(const am_model* m, am_state* s)
 #if !defined(AM_COMPACT)
     voxel_scales(m->nv, m->mat, s->mat_scale_rate, s->s_rate);
 #endif
-    /* a link's rest length is the mean of its voxels' edges: one per pair of materials */
-    const am_real half_L = AM_MUL(AM_R(0.5), m->L);
-    for (int i = 0; i < m->palette.count; i++)
-        for (int j = 0; j < m->palette.count; j++) {
-            am_real r = AM_MUL(half_L, s->mat_scale[i] + s->mat_scale[j]);
-            s->pair_rest[i * AM_MAX_MATERIALS + j] = r;
-            s->pair_inv_rest[i * AM_MAX_MATERIALS + j] = AM_DIV(AM_R(1), r);
-        }
+    pair_rest_lengths(m, s);
 }
 
 /* the constants of one link and its current rest length */
@@ -513,7 +592,7 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 #if defined(AM_COMPACT)
     const am_pair* rest_at = m->lpair;
 #else
-    const am_pair* rest_at = m->voxel_phase ? m->lself : m->lpair;
+    const am_pair* rest_at = m->voxel_phase ? s->rest_at : m->lpair;
 #endif
     const int chunks = (l1 - l0 + LINK_CHUNK - 1) / LINK_CHUNK;
     int bad = 0;
