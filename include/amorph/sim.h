@@ -224,6 +224,13 @@ typedef struct am_model {
 #if !defined(AM_COMPACT)
     int vphase_any;                   /* 1: some voxel's vphase is not 0 */
     am_real vphase[AM_MAX_VOXELS];    /* radians */
+    /* the voxels of an actuated material and a phase other than 0, by their material and phase:
+     * a class's sinusoid is found once a step for all its voxels (evolved phases are bytes) */
+    int nphase;                           /* classes */
+    am_index vphase_class[AM_MAX_VOXELS]; /* voxel i's class, -1 for none (its material's values) */
+    am_index class_mat[AM_MAX_VOXELS];    /* a class's material */
+    am_real class_phase[AM_MAX_VOXELS];   /* its phase, radians */
+    am_index class_hash[2 * AM_MAX_VOXELS]; /* model build's scratch: the classes by material and phase */
     am_real force[3][AM_MAX_VOXELS];  /* the boundary conditions, model units: a free voxel's force
                                        * (am_state_reset puts it in fext), a clamped voxel's prescribed
                                        * displacement (am_state_reset puts it in x, where it stays: the
@@ -348,6 +355,8 @@ typedef struct am_state {
                                          * step; bit 1: nor was it at the last */
     int vox_plain;                      /* 1: at the last step every voxel had its material's
                                          * scale and rate (and rest_own bit 0 is clear) */
+    am_real class_scale[AM_MAX_VOXELS], class_rate[AM_MAX_VOXELS]; /* each phase class's (model
+                                         * nphase) scale and rate at this step */
 #endif
     /* the damping the step applies at this dt, per link constant (AM_LC): the model's c_t (scaled
      * down only past the limit of docs/physics.md, Damping), L^2 / 12 (c_r = c_t L^2 / 12) and the

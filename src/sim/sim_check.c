@@ -44,6 +44,16 @@ am_status am_model_validate(const am_model* m, char* err, int errsz)
             return am_fail(err, errsz, AM_ERR_RANGE, "model: link %d stiffness not finite", l);
     }
     if (!FIN(m->dt_rec) || !(m->dt_rec > 0)) return am_fail(err, errsz, AM_ERR_RANGE, "model: time step %g not positive", (double)m->dt_rec);
+#if !defined(AM_COMPACT)
+    /* a voxel of an actuated material and a phase other than 0 is in the class of both */
+    if (m->nphase < 0 || m->nphase > m->nv) return am_fail(err, errsz, AM_ERR_RANGE, "model: %d phase classes for %d voxels", m->nphase, m->nv);
+    for (int i = 0; i < m->nv; i++) {
+        const int c = m->vphase_class[i], k = m->mat[i];
+        const int want = m->vphase[i] != AM_R(0) && m->mat_cte[k] != AM_R(0);
+        if (c < -1 || c >= m->nphase || want != (c >= 0) || (c >= 0 && (m->class_mat[c] != k || m->class_phase[c] != m->vphase[i])))
+            return am_fail(err, errsz, AM_ERR_RANGE, "model: voxel %d phase class %d is not its material's and phase's", i, c);
+    }
+#endif
     return AM_OK;
 }
 

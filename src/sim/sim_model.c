@@ -149,6 +149,30 @@ static am_status check_layers(const am_lattice* lat, const am_layers* ly, int* a
     return AM_OK;
 }
 
+#if !defined(AM_COMPACT)
+/* voxel i's phase class (am_model.vphase_class): -1 for a voxel of phase 0 or of a material that
+ * does not actuate (cte 0: its scale is 1 at any phase, its material's); else the class of its
+ * material and phase, added when new (open addressing in class_hash, at most half full) */
+static int phase_class(am_model* m, int i)
+{
+    const int k = m->mat[i], cap = 2 * AM_MAX_VOXELS;
+    if (m->vphase[i] == AM_R(0) || m->mat_cte[k] == AM_R(0)) return -1;
+    uint64_t bits = 0;
+    memcpy(&bits, &m->vphase[i], sizeof m->vphase[i]);
+    const uint64_t key = (bits ^ (uint64_t)k << 56) * UINT64_C(0x9E3779B97F4A7C15);
+    int h = (int)((key >> 32) % (uint64_t)cap);
+    for (; m->class_hash[h] >= 0; h = h + 1 == cap ? 0 : h + 1) {
+        const int c = m->class_hash[h];
+        if (m->class_mat[c] == k && m->class_phase[c] == m->vphase[i]) return c;
+    }
+    const int c = m->nphase++;
+    m->class_hash[h] = (am_index)c;
+    m->class_mat[c] = (am_index)k;
+    m->class_phase[c] = m->vphase[i];
+    return c;
+}
+#endif
+
 am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env* env, const am_layers* layers, char* err,
                                 int errsz)
 {
@@ -353,10 +377,13 @@ am_status am_model_build_layers(am_model* m, const am_lattice* lat, const am_env
     m->any_force = any_force;
 #if !defined(AM_COMPACT)
     m->vphase_any = 0;
+    m->nphase = 0;
+    for (int h = 0; m->voxel_phase && h < 2 * AM_MAX_VOXELS; h++) m->class_hash[h] = -1;
     for (int i = 0; i < nv; i++) {
         m->vphase[i] = AM_R(0);
         if (m->voxel_phase) m->vphase[i] = AM_PV(2.0 * 3.14159265358979323846 * (double)layers->phase[m->cell[i]], 1.0);
         m->vphase_any |= m->vphase[i] != AM_R(0);
+        m->vphase_class[i] = (am_index)phase_class(m, i);
         /* a clamped voxel takes no force: its slot holds the displacement a region prescribes (a
          * voxel clamped by its material alone: none) */
         const int bc_fixed = any_force && layers->fixed[m->cell[i]];

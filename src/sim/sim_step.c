@@ -193,13 +193,13 @@ static inline void link_rest(const am_model* m, am_state* s, int l, am_real half
     s->pair_inv_rest[own0 + l] = AM_DIV(AM_R(1), r);
 }
 
-/* one voxel's scale and rate: its material's, its own phase's (actuate), or a controller's
+/* one voxel's scale and rate: its material's, its phase class's (actuate), or a controller's
  * (controlled) */
-static inline void voxel_values(const am_model* m, const am_state* s, int i, int actuate, int controlled, am_real arg0, am_real wt,
-                                const am_real* mrate, am_real* sc, am_real* rate)
+static inline void voxel_values(const am_model* m, const am_state* s, int i, int actuate, int controlled, const am_real* mrate,
+                                am_real* sc, am_real* rate)
 {
     *sc = s->mat_scale[m->mat[i]], *rate = mrate[m->mat[i]];
-    if (actuate && m->vphase[i] != AM_R(0)) voxel_sinusoid(m, i, arg0, wt, sc, rate);
+    if (actuate && m->vphase_class[i] >= 0) *sc = s->class_scale[m->vphase_class[i]], *rate = s->class_rate[m->vphase_class[i]];
     if (controlled && s->ctl_on[i]) *sc = s->ctl_scale[i], *rate = s->ctl_rate[i];
 }
 
@@ -225,11 +225,17 @@ static void voxel_actuation(const am_model* m, am_state* s)
         s->mat_scale[k] = sc;
     }
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
+    /* a phase class's values (voxel_sinusoid's operations on its material and phase), once for all
+     * its voxels */
+    for (int c = 0; actuate && c < m->nphase; c++) {
+        const int k = m->class_mat[c];
+        sinusoid_at(m, k, (arg0 + m->mat_phase[k]) + m->class_phase[c], wt, &s->class_scale[c], &s->class_rate[c]);
+    }
     if (m->vphase_any) {
         /* phases: most voxels move at every step, and every link is looked at once */
         for (int i = 0; i < m->nv; i++) {
             am_real sc, rate;
-            voxel_values(m, s, i, actuate, controlled, arg0, wt, mrate, &sc, &rate);
+            voxel_values(m, s, i, actuate, controlled, mrate, &sc, &rate);
             changed |= (sc != s->s[i]) | (rate != s->s_rate[i]);
             s->s[i] = sc;
             s->s_rate[i] = rate;
@@ -257,7 +263,7 @@ static void voxel_actuation(const am_model* m, am_state* s)
     int acc = 0;
     for (int i = 0; i < m->nv; i++) {
         am_real sc, rate;
-        voxel_values(m, s, i, actuate, controlled, arg0, wt, mrate, &sc, &rate);
+        voxel_values(m, s, i, actuate, controlled, mrate, &sc, &rate);
         const int moved = fresh | (sc != s->s[i]);
         changed |= moved | (rate != s->s_rate[i]);
         s->s[i] = sc;
