@@ -123,8 +123,9 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
     am_default_palette_into(&lat->palette);
     for (int m = 0; m < g->materials; m++)
         if (am_palette_find(&lat->palette, g->mat[m]) < 0)
-            return am_fail(err, errsz, AM_ERR_RANGE, "%s:%d: material '%s' is not in the built-in palette", fname,
-                           gr.materials_line ? gr.materials_line : 1, g->mat[m]);
+            return am_fail(err, errsz, AM_ERR_RANGE,
+                           "%s:%d: material '%s' is not in the built-in palette (a run's genome: give its run folder, which keeps its materials)",
+                           fname, gr.materials_line ? gr.materials_line : 1, g->mat[m]);
     char msg[AM_ERR_MAX];
     st = am_genome_to_lattice(g, NULL, &c->work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
