@@ -49,7 +49,7 @@ expect_fail 2 'big\.genome:4: workspace side 99 exceeds' "$AMORPH" express "$TMP
 printf 'amorph-genome 1\nrepr cppn\nmaterials passive active\nworkspace 8 8 8\ncppn 1 1\nnode 0 0 tanh 0 1 1\n' >"$TMPD/fn.genome"
 expect_fail 2 "fn\.genome:6: unknown function 'tanh'" "$AMORPH" express "$TMPD/fn.genome"
 printf 'amorph-genome 1\nrepr gmx\nmaterials passive steel\nworkspace 8 8 8\ngmx 0\nend\n' >"$TMPD/steel.genome"
-expect_fail 2 "steel\.genome:3: material 'steel' is not in the built-in palette (a run's genome: give its run folder" "$AMORPH" express "$TMPD/steel.genome"
+expect_fail 2 "steel\.genome:3: material 'steel' is not in the built-in palette \(a run's genome: give its run folder" "$AMORPH" express "$TMPD/steel.genome"
 printf 'size 2 2 2\n' >"$TMPD/notgenome.txt"
 expect_fail 2 'notgenome\.txt:1: not a genome' "$AMORPH" express "$TMPD/notgenome.txt"
 expect_fail 2 'nothere\.genome' "$AMORPH" express "$TMPD/nothere.genome"
