@@ -152,8 +152,9 @@ static void palette_names_sync(am_evo_def* d)
     const int preset = d->palette == AM_PALETTE_UNSHACKLED ? preset_size[1] : preset_size[0];
     memset(d->geno.mat, 0, sizeof d->geno.mat);
     for (int k = 0; k < AM_MAX_GENO_MATERIALS; k++) {
+        const am_material pm = k < preset ? preset_material(d, k) : am_default_material();
         if (d->material[k].name[0]) snprintf(d->geno.mat[k], AM_NAME_MAX, "%s", d->material[k].name);
-        else if (k < preset) snprintf(d->geno.mat[k], AM_NAME_MAX, "%s", preset_material(d, k).name);
+        else if (k < preset) snprintf(d->geno.mat[k], AM_NAME_MAX, "%s", pm.name);
     }
 }
 
