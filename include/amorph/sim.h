@@ -352,7 +352,8 @@ typedef struct am_state {
 #if !defined(AM_COMPACT)
     am_pair rest_at[AM_MAX_LINKS];      /* link l's entry: lpair[l], or its own */
     uint8_t rest_own[AM_MAX_VOXELS];    /* bit 0: voxel i's scale is not its material's at this
-                                         * step; bit 1: nor was it at the last */
+                                         * step; bit 1: nor was it at the last; bit 2: it moved
+                                         * (a controlled robot without phases keeps them) */
     int vox_plain;                      /* 1: at the last step every voxel had its material's
                                          * scale and rate (and rest_own bit 0 is clear) */
     am_real class_scale[AM_MAX_VOXELS], class_rate[AM_MAX_VOXELS]; /* each phase class's (model

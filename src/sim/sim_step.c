@@ -134,10 +134,13 @@ static inline void sinusoid_at(const am_model* m, int k, am_real arg, am_real wt
 }
 
 /* voxel i's, with its own phase, at the actuation's argument arg0 */
+static inline void phase_sinusoid(const am_model* m, int k, am_real phase, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
+{
+    sinusoid_at(m, k, (arg0 + m->mat_phase[k]) + phase, wt, sc_out, rate_out);
+}
 static inline void voxel_sinusoid(const am_model* m, int i, am_real arg0, am_real wt, am_real* sc_out, am_real* rate_out)
 {
-    const int k = m->mat[i];
-    sinusoid_at(m, k, (arg0 + m->mat_phase[k]) + m->vphase[i], wt, sc_out, rate_out);
+    phase_sinusoid(m, m->mat[i], m->vphase[i], arg0, wt, sc_out, rate_out);
 }
 
 /* a voxel's of material k and phase 0 */
@@ -170,10 +173,6 @@ void am_actuation_values(const am_model* m, const am_state* s, double* scale, do
     }
 }
 
-/* a robot with a phase per voxel (model voxel_phase): each voxel's temperature and scale from its
- * material's argument plus its own phase, then each link's rest length from its two voxels. With
- * every voxel phase 0 these are the per-material path's values, operation for operation. A
- * controlled state's voxels with ctl_on take the controller's scale and rate instead. */
 enum { OWN_NOW = 1, OWN_WAS = 2, OWN_MOVED = 4 }; /* am_state.rest_own */
 /* 1: a voxel whose links' rest lengths are looked at: it moved, or took or left a scale of its own */
 static inline int own_visit(int f) { return ((f >> 2) | ((f >> 1) ^ f)) & 1; }
@@ -203,6 +202,10 @@ static inline void voxel_values(const am_model* m, const am_state* s, int i, int
     if (controlled && s->ctl_on[i]) *sc = s->ctl_scale[i], *rate = s->ctl_rate[i];
 }
 
+/* a robot with a phase per voxel (model voxel_phase): each voxel's scale and rate from its
+ * material's argument plus its own phase (once per phase class), or a controller's (ctl_on), then
+ * the rest lengths of the links that need their own. With every voxel phase 0 and no controller
+ * these are the per-material path's values, operation for operation. */
 static void voxel_actuation(const am_model* m, am_state* s)
 {
     int changed = !s->scales_valid;
@@ -227,10 +230,8 @@ static void voxel_actuation(const am_model* m, am_state* s)
     const am_real half_L = AM_MUL(AM_R(0.5), m->L);
     /* a phase class's values (voxel_sinusoid's operations on its material and phase), once for all
      * its voxels */
-    for (int c = 0; actuate && c < m->nphase; c++) {
-        const int k = m->class_mat[c];
-        sinusoid_at(m, k, (arg0 + m->mat_phase[k]) + m->class_phase[c], wt, &s->class_scale[c], &s->class_rate[c]);
-    }
+    for (int c = 0; actuate && c < m->nphase; c++)
+        phase_sinusoid(m, m->class_mat[c], m->class_phase[c], arg0, wt, &s->class_scale[c], &s->class_rate[c]);
     if (m->vphase_any) {
         /* phases: most voxels move at every step, and every link is looked at once */
         for (int i = 0; i < m->nv; i++) {
@@ -251,10 +252,8 @@ static void voxel_actuation(const am_model* m, am_state* s)
      * link its pair's rest length, as on the per-material path */
     if (!fresh && s->vox_plain && !s->controlled) {
         if (!changed) return;
-        for (int i = 0; i < m->nv; i++) {
-            s->s[i] = s->mat_scale[m->mat[i]];
-            s->s_rate[i] = mrate[m->mat[i]];
-        }
+        voxel_scales(m->nv, m->mat, s->mat_scale, s->s);
+        voxel_scales(m->nv, m->mat, mrate, s->s_rate);
         pair_rest_lengths(m, s);
         return;
     }
