@@ -2,7 +2,8 @@
 # actuation): runs with actuation = phase and stiffness = evolved in every representation are the
 # same for one and two threads, their config.txt names the keys (the seed's runs still do not),
 # the run folder, its best genome and its exported VXA file replay the logged best (the phases and
-# stiffnesses reach the simulator every way), --lattice says what it leaves out, a run resumes
+# stiffnesses reach the simulator every way; a genome file alone in the range --stiffness_min and
+# --stiffness_max give), --lattice says what it leaves out, a run resumes
 # after kill -9 exactly like the uninterrupted run, bad settings are refused in one line, and the
 # board refuses the setting in one line. Run from the repository root.
 . tests/shlib.sh
@@ -48,6 +49,29 @@ expect_ok $E --config "$TMPD/ph.cfg" --threads 1 --out "$TMPD/ph"
 f=$("$AMORPH" sim "$TMPD/ph/best.genome" --cycles 2 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100 |
     sed -n 's/^fitness = //p')
 if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/ph" best_fitness)" ]; then ok; else ko "phase alone: the genome file gives '$f', the run $(sumval "$TMPD/ph" best_fitness)"; fi
+
+# the run's genome file alone takes its range from the flags: the run's range gives the run's travel
+# (and the file alone another), in sim and through an exported VXA; in its run folder a note names
+# the run's range; a robot without an evolved stiffness and a range past 100x are refused
+SHORT="--cycles 2 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100"
+cp "$TMPD/gmx-1/best.genome" "$TMPD/alone.genome"
+best=$(sumval "$TMPD/gmx-1" best_fitness)
+f=$("$AMORPH" sim "$TMPD/alone.genome" $SHORT --stiffness-min 2e5 --stiffness_max 5e6 | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" = "$best" ]; then ok; else ko "the genome file with the run's range gives '$f', the run logged $best"; fi
+f0=$("$AMORPH" sim "$TMPD/alone.genome" $SHORT | sed -n 's/^fitness = //p')
+if [ -n "$f0" ] && [ "$f0" != "$best" ]; then ok; else ko "the genome file in the default range gives '$f0', the run's $best"; fi
+"$AMORPH" export "$TMPD/alone.genome" $SHORT --stiffness_min 2e5 --stiffness_max 5e6 --vxa "$TMPD/alone.vxa" 2>"$TMPD/err" ||
+    ko "export of the genome file with a range: $(cat "$TMPD/err")"
+f=$("$AMORPH" sim "$TMPD/alone.vxa" 2>/dev/null | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" = "$best" ]; then ok; else ko "its VXA file gives '$f', the run logged $best"; fi
+"$AMORPH" sim "$TMPD/gmx-1/best.genome" $SHORT >/dev/null 2>"$TMPD/err"
+if grep -q "the run had .*stiffness_min = 200000, stiffness_max = 5e+06" "$TMPD/err"; then ok
+else ko "the genome in its run folder: no note of the range: $(cat "$TMPD/err")"; fi
+"$AMORPH" sim "$TMPD/gmx-1/best.genome" $SHORT --stiffness_min 2e5 --stiffness_max 5e6 >/dev/null 2>"$TMPD/err"
+if ! grep -q "stiffness" "$TMPD/err"; then ok; else ko "the genome in the run's range: a note all the same: $(cat "$TMPD/err")"; fi
+expect_fail 2 "--stiffness_min: cube:3 has no evolved stiffness" "$AMORPH" sim --scene cube:3 --stiffness_min 2e5
+expect_fail 2 "--stiffness_min: .*ph/best\.genome has no evolved stiffness" "$AMORPH" sim "$TMPD/ph/best.genome" --stiffness_min 2e5
+expect_fail 2 "--stiffness_max = 5e\+07: from stiffness_min \(200000\) to 100 times it" "$AMORPH" sim "$TMPD/alone.genome" --stiffness_min 2e5 --stiffness_max 5e7
 
 # --- kill -9 and resume: the uninterrupted run, remembered bodies with their fields included ---
 ref="$TMPD/ref"; d="$TMPD/kill"

@@ -132,12 +132,43 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
     return AM_OK;
 }
 
+/* the stiffness range an evolved stiffness field maps to: the run's (or the default, for a genome
+ * file) under the settings' stiffness_min and stiffness_max, checked as amorph evolve checks them */
+static am_status stiffness_range(const tool_robot_args* a, am_express_def* ex, char* err, int errsz)
+{
+    am_evo_def d = am_default_evo();
+    d.stiffness = AM_STIFFNESS_EVOLVED;
+    d.stiffness_min = ex->stiffness_min;
+    d.stiffness_max = ex->stiffness_max;
+    int given = 0;
+    for (int k = 0; k < a->nset; k++) {
+        if (strcmp(a->key[k], "stiffness_min") && strcmp(a->key[k], "stiffness_max")) continue;
+        am_status st = am_evo_set(&d, a->key[k], a->val[k], err, errsz);
+        if (st != AM_OK) return st;
+        given = 1;
+    }
+    if (!given) return AM_OK;
+    const double lo = AM_PARAM_TO_DOUBLE(d.stiffness_min), hi = AM_PARAM_TO_DOUBLE(d.stiffness_max);
+    if (!(lo <= hi && hi <= 100.0 * lo))
+        return am_fail(err, errsz, AM_ERR_RANGE, "--stiffness_max = %g: from stiffness_min (%g) to 100 times it", hi, lo);
+    ex->stiffness_min = d.stiffness_min;
+    ex->stiffness_max = d.stiffness_max;
+    return AM_OK;
+}
+
+/* the stiffness range the robot being loaded was expressed in, and 1 when it has an evolved
+ * stiffness field (a genome's), for the checks and the note after loading */
+static am_express_def g_range;
+static int g_evolved_stiffness;
+
 /* the evolved phases and stiffnesses of the genome just expressed into c->work[0].geno, into the
- * robot's layers (nothing for a genome without them); ex NULL: the default stiffness range */
+ * robot's layers (nothing for a genome without them), its stiffnesses in ex's range */
 static am_status genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* r, const char* fname, char* err, int errsz)
 {
     const am_genome* g = tool_genome(c);
     char msg[AM_ERR_MAX];
+    g_range = *ex;
+    g_evolved_stiffness = (g->controls & AM_CTL_STIFFNESS) != 0;
     if (!g->controls) return AM_OK;
     am_status st = r->layers ? am_genome_layers(g, ex, &c->work[0].geno, r->layers, msg, sizeof msg)
                              : am_fail(msg, sizeof msg, AM_ERR_CAPACITY, "an evolved phase or stiffness: this build keeps no layers per voxel");
@@ -145,7 +176,7 @@ static am_status genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* 
 }
 
 /* a run folder's best robot, with the environment and evaluation it evolved in */
-static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, int errsz)
+static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir, am_robot* r, char* err, int errsz)
 {
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
     am_evo_def d = am_stored_evo(); /* a key config.txt does not name: as the run had it */
@@ -167,7 +198,8 @@ static am_status load_run(tool_ctx* c, const char* dir, am_robot* r, char* err, 
     am_evo_palette_into(&d, &c->evo.palette);
     st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, r->lattice, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
-    const am_express_def ex = am_evo_express_def(&d, &c->evo.palette);
+    am_express_def ex = am_evo_express_def(&d, &c->evo.palette);
+    if ((st = stiffness_range(a, &ex, err, errsz)) != AM_OK) return st;
     if ((st = genome_layers(c, &ex, r, path, err, errsz)) != AM_OK) return st;
     r->env = d.env;
     r->eval = d.eval;
@@ -181,7 +213,8 @@ static am_status lattice_line(void* ctx, int lineno, char* line, long n, char* e
 }
 
 /* a file in any format amorph reads: lattice text, genome text (expressed), VXA (desktop) */
-static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_robot* r, const am_vxa_info** vxa, char* err, int errsz)
+static am_status load_file(tool_ctx* c, const tool_robot_args* a, const char* name, const char* vxd, am_robot* r, const am_vxa_info** vxa,
+                           char* err, int errsz)
 {
     tool_src src;
     am_status st = tool_src_open(&src, name, TOOL_FILE_MAX, 0, err, errsz);
@@ -200,7 +233,9 @@ static am_status load_file(tool_ctx* c, const char* name, const char* vxd, am_ro
         st = am_fail(err, errsz, AM_ERR_PARSE, "%s: not a VXA file: a VXD file (%s) goes over a base VXA file", name, vxd);
     } else if (kind == TOOL_TEXT_GENOME) {
         st = tool_genome_to_lattice(c, &src, r->lattice, err, errsz);
-        if (st == AM_OK) st = genome_layers(c, NULL, r, name, err, errsz);
+        am_express_def ex = am_default_express();
+        if (st == AM_OK) st = stiffness_range(a, &ex, err, errsz);
+        if (st == AM_OK) st = genome_layers(c, &ex, r, name, err, errsz);
     } else {
         am_lattice_reader lr;
         am_lattice_read_begin(&lr, r->lattice, name);
@@ -328,6 +363,7 @@ int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned m
         } else {
             int named = 0;
             for (int b = 0; b < 4; b++) named |= (materials >> b & 1u) && !strcmp(key, mat_key[b]);
+            named |= (materials & TOOL_APART_STIFFNESS) && (!strcmp(key, "stiffness_min") || !strcmp(key, "stiffness_max"));
             if (!named) continue;
         }
         int w = snprintf(out + len, (size_t)cap - len, "%s%s = %s", n ? ", " : "", key, v);
@@ -375,6 +411,10 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
         if (pal->mat[j].mu_kinetic != own->mat[k].mu_kinetic) mat |= AM_MATERIAL_MU_KINETIC;
         if (pal->mat[j].cte != own->mat[k].cte) mat |= AM_MATERIAL_CTE;
     }
+    /* a genome's evolved stiffness field in the run's range, as the run expressed it */
+    if (g_evolved_stiffness && d.stiffness == AM_STIFFNESS_EVOLVED &&
+        (d.stiffness_min != g_range.stiffness_min || d.stiffness_max != g_range.stiffness_max))
+        mat |= TOOL_APART_STIFFNESS;
     const int n = tool_settings_apart(&h, &d, mat, apart, (int)sizeof apart);
     if (n > 0)
         fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
@@ -433,20 +473,26 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
     memset(&g_origin, 0, sizeof g_origin);
+    g_evolved_stiffness = 0;
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
-    else if (tool_is_run_dir(a->name)) st = load_run(c, a->name, r, err, errsz);
+    else if (tool_is_run_dir(a->name)) st = load_run(c, a, a->name, r, err, errsz);
 #if TOOL_VXA
     else if (!a->vxd && (st = (am_status)voxcraft_dir(a->name, base, robot, err, errsz)) != 0) {
         if ((int)st < 0) return AM_ERR_ARG;
-        st = load_file(c, base, robot, r, &vxa, err, errsz);
+        st = load_file(c, a, base, robot, r, &vxa, err, errsz);
     }
 #endif
     else if (!a->vxd && is_folder(a->name)) return not_a_robot_folder(a->name, err, errsz);
     else {
-        st = load_file(c, a->name, a->vxd, r, &vxa, err, errsz);
+        st = load_file(c, a, a->name, a->vxd, r, &vxa, err, errsz);
         one_file = !a->vxd;
     }
     if (st != AM_OK) return st;
+    /* a stiffness range is what an evolved stiffness field maps to: a robot without one has none */
+    for (int k = 0; k < a->nset && !g_evolved_stiffness; k++)
+        if (!strcmp(a->key[k], "stiffness_min") || !strcmp(a->key[k], "stiffness_max"))
+            return am_fail(err, errsz, AM_ERR_ARG, "--%s: %s has no evolved stiffness (the range applies to a genome's or a run's with "
+                                                   "stiffness = evolved)", a->key[k], a->name);
     const am_env own = r->env; /* the robot's own, before the settings */
     int period_set = 0;
     unsigned keep = 0;

@@ -72,8 +72,10 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 const char* tool_robot_name(const tool_robot_args* a, char* buf, int cap);
 
 /* the environment and evaluation keys whose values in `to` differ from those in `from`, and the
- * material keys named by the AM_MATERIAL_* bits of `materials`, as "key = value" items (to's
- * values) separated by ", " into out (cut short with ", ..." when out is full); their count */
+ * material keys named by the AM_MATERIAL_* bits of `materials` (TOOL_APART_STIFFNESS: stiffness_min
+ * and stiffness_max), as "key = value" items (to's values) separated by ", " into out (cut short
+ * with ", ..." when out is full); their count */
+#define TOOL_APART_STIFFNESS 16u
 int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned materials, char* out, int cap);
 
 /* the time step in seconds the simulator takes for the robot r (an empty robot is timed as one
@@ -89,6 +91,8 @@ am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, i
     "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
     "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot, in dt_frac's [1e-6, 10])\n"  \
+    "  --stiffness_min PA, --stiffness_max PA   the range a genome's evolved stiffness maps to (a\n"   \
+    "                     genome file's: 1e5..1e7 unless given; a run folder's: the run's)\n"          \
     "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
     "holding base.vxa and one .vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
