@@ -140,7 +140,8 @@ if [ -f "$base" ]; then
 fi
 
 # the actuation experiment (results/run.sh actuation-N, docs/results.md): GMX and CPPN on a 10^3
-# workspace, the seed's palette or the follow-up's four materials, global or evolved phase. Per
+# workspace, the seed's palette or the follow-up's four materials, global or evolved phase, and two
+# of the follow-up's materials (its soft tissue and one muscle) with global phase. Per
 # variant, over its runs that reached ACT_EVALS (2,000) evaluations: the best fitness then (mean
 # +- standard error), the best robot's travel over 30 cycles in body lengths per cycle (the
 # follow-up's measure: gait30.json's mean cycle travel over its body_length), its sustained travel
@@ -149,7 +150,8 @@ fi
 # header cell says "actuation", so that they are not the Figure 6 ones)
 a_at=${ACT_EVALS:-2000}
 if [ -d "$DIR/actuation" ]; then
-    rows=$(for v in gmx-seed-global gmx-four-global gmx-seed-phase gmx-four-phase cppn-seed-global cppn-four-global cppn-seed-phase cppn-four-phase; do
+    rows=$(for v in gmx-seed-global gmx-two-global gmx-four-global gmx-seed-phase gmx-four-phase cppn-seed-global cppn-two-global cppn-four-global \
+        cppn-seed-phase cppn-four-phase; do
         for run in "$DIR"/actuation/$v-[0-9]*; do
             [ -f "$run/log.csv" ] && [ -f "$run/gait30.json" ] || continue
             b=$("$AMORPH" report best-at "$a_at" "$run") || exit 1

@@ -9,8 +9,8 @@
 # experiments' variants that differ from the seed's settings, seeds 1..3, to N evaluations),
 # full-N (seed 1 of each representation extended to N evaluations: the seed's budget was
 # 20,000), actuation-N (bodies and actuation evolved together, issue 44: GMX and CPPN on a 10^3
-# workspace, the seed's palette or the follow-up's four materials, global or evolved phase,
-# seeds 1..5, to N evaluations). Taken in rounds (fig6-1000, fig6-2000, others-2000, fig6-3000, fig6-4000,
+# workspace, the seed's palette or the follow-up's four materials, global or evolved phase, and
+# two of the follow-up's materials with global phase, seeds 1..5, to N evaluations). Taken in rounds (fig6-1000, fig6-2000, others-2000, fig6-3000, fig6-4000,
 # fig6-5000, full-20000), all runs of a stage reach a count before any goes beyond it; a run
 # already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
@@ -34,7 +34,14 @@ run() {
     if [ -f "$folder/checkpoint.txt" ]; then
         "$AMORPH" evolve --resume "$folder" --evaluations "$evals" --threads 1 --quiet 2>"$err"
     else
-        set -- $(for kv in "$@"; do printf -- '--%s %s ' "${kv%%=*}" "${kv#*=}"; done)
+        # KEY=VALUE into --KEY VALUE, a value with spaces kept whole (a materialK key's)
+        n=$#
+        while [ "$n" -gt 0 ]; do
+            kv=$1
+            shift
+            set -- "$@" "--${kv%%=*}" "${kv#*=}"
+            n=$((n - 1))
+        done
         "$AMORPH" evolve "$@" --evaluations "$evals" --threads 1 --quiet --no-pictures --out "$folder" 2>"$err"
     fi
     rc=$?
@@ -77,7 +84,11 @@ others() {
 # the four variants of the actuation experiment (docs/results.md): the seed's palette (passive,
 # active) or the follow-up's four materials (palette = unshackled), each voxel actuated with its
 # material's phase (actuation = global) or with its own evolved phase too (actuation = phase);
-# GMX and CPPN on a 10^3 workspace, seeds 1..5, interleaved so every variant has runs early
+# and a control for the count of materials: two of the follow-up's four, its soft tissue and one
+# muscle (the same modulus, density and Poisson's ratio as its active_plus, renamed as a material
+# of a palette may not be named twice), global actuation. GMX and CPPN on a 10^3 workspace, seeds
+# 1..5, interleaved so every variant has runs early
+ACT_TWO="muscle modulus=5e6 density=1e6 cte=0.01 phase=0 poisson=0.35 color=ff0000"
 actuation() {
     mkdir -p "$DIR/actuation"
     for k in 1 2 3 4 5; do
@@ -86,6 +97,8 @@ actuation() {
             run "$DIR/actuation/$r-four-global-$k" "$1" representation=$r workspace=10 palette=unshackled seed=$k
             run "$DIR/actuation/$r-seed-phase-$k" "$1" representation=$r workspace=10 actuation=phase seed=$k
             run "$DIR/actuation/$r-four-phase-$k" "$1" representation=$r workspace=10 palette=unshackled actuation=phase seed=$k
+            run "$DIR/actuation/$r-two-global-$k" "$1" representation=$r workspace=10 palette=unshackled materials=2 \
+                "material2=$ACT_TWO" seed=$k
         done
     done
 }

@@ -270,7 +270,7 @@ cat >"$F" <<'FAKE'
 #!/bin/sh
 echo "$*" >>"$RD/calls"
 while [ $# -gt 0 ]; do
-    case $1 in --resume | --out) dir=$2 ;; --evaluations) n=$2 ;; esac
+    case $1 in --resume | --out) dir=$2 ;; --evaluations) n=$2 ;; --material2) printf '%s\n' "$2" >>"$RD/material2" ;; esac
     shift
 done
 echo "${dir#"$RD"/representations/}" >>"$RD/order"
@@ -310,10 +310,14 @@ rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" full-20000
 check "run.sh: full-20000 resumes seed 1 of each: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 gmx-1 " ]
 check "run.sh: to 20,000 evaluations" [ "$(grep -c -- '--evaluations 20000' "$RD/calls")" -eq 3 ]
-# the actuation experiment: GMX and CPPN, four variants, seeds 1..5 (40 runs) on a 10^3 workspace
+# the actuation experiment: GMX and CPPN, five variants, seeds 1..5 (50 runs) on a 10^3 workspace;
+# the two-material control's material a single argument, its spaces kept
 rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=none expect_ok sh results/run.sh "$F" "$RD" actuation-2000
-check "run.sh: actuation-2000 makes 40 runs: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 40 ]
+check "run.sh: actuation-2000 makes 50 runs: $(wc -l <"$RD/calls")" [ "$(wc -l <"$RD/calls")" -eq 50 ]
+check "run.sh: the two-material control of seed 2" grep -qx -- "evolve --representation gmx --workspace 10 --palette unshackled --materials 2 --material2 muscle modulus=5e6 density=1e6 cte=0.01 phase=0 poisson=0.35 color=ff0000 --seed 2 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/actuation/gmx-two-global-2" "$RD/calls"
+m2="$(grep -c . "$RD/material2") $(sort -u "$RD/material2")"
+check "run.sh: its material one argument, ten runs: $m2" [ "$m2" = "10 muscle modulus=5e6 density=1e6 cte=0.01 phase=0 poisson=0.35 color=ff0000" ]
 check "run.sh: the four-material evolved-phase CPPN of seed 5" grep -qx -- "evolve --representation cppn --workspace 10 --palette unshackled --actuation phase --seed 5 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/actuation/cppn-four-phase-5" "$RD/calls"
 check "run.sh: the seed's palette with global actuation first" grep -qx -- "evolve --representation gmx --workspace 10 --seed 1 --evaluations 2000 --threads 1 --quiet --no-pictures --out $RD/actuation/gmx-seed-global-1" "$RD/calls"
 expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" actuation-
