@@ -3,7 +3,8 @@
  * freedom; tables (normal and t quantiles, Cohen's sample sizes); Welch's t-test on two textbook
  * samples, whose p was integrated numerically from the t density (Simpson's rule with 200,000
  * intervals in python3, which has no statistics library here); and the Mann-Whitney test's exact
- * p counted by hand on tiny samples and by brute force over every subset on larger ones. */
+ * p counted by hand on tiny samples and by brute force over every subset on larger ones; Holm's
+ * correction worked by hand. */
 #include "harness.h"
 #include "stats.h"
 
@@ -225,6 +226,39 @@ static void test_runs_needed(void)
     CHECK(tool_stats_runs_needed((double)NAN, 0.05, 0.8) == -1, "not a number");
 }
 
+static void test_holm(void)
+{
+    /* worked by hand: ascending 0.005, 0.01, 0.03, 0.04 (k = 4) times 4, 3, 2, 1 give 0.02, 0.03,
+     * 0.06, 0.04, and the running maximum makes the last 0.06; the untested pair (NAN) is not one
+     * of the family and stays NAN */
+    const double p[5] = {0.01, 0.04, (double)NAN, 0.03, 0.005};
+    double adj[5];
+    int order[5];
+    tool_stats_holm(p, 5, adj, order);
+    NEAR(adj[0], 0.03, 1e-15);
+    NEAR(adj[1], 0.06, 1e-15);
+    CHECK(isnan(adj[2]), "the untested pair: %g", adj[2]);
+    NEAR(adj[3], 0.06, 1e-15);
+    NEAR(adj[4], 0.02, 1e-15);
+    /* capped at 1; ties get one value (the first of two equal p's, times the larger factor, sets
+     * it); a family of one is left as it is; in place */
+    double q[3] = {0.01, 0.2, 0.01}, c[3] = {0.6, 0.7, 0.45};
+    tool_stats_holm(q, 3, q, order);
+    NEAR(q[0], 0.03, 1e-15);
+    NEAR(q[2], 0.03, 1e-15);
+    NEAR(q[1], 0.2, 1e-15);
+    tool_stats_holm(c, 3, c, order);
+    CHECK(c[0] == 1 && c[1] == 1 && c[2] == 1, "capped at 1: %g %g %g", c[0], c[1], c[2]);
+    double r[3] = {0.02, 0.04, 0.011};
+    tool_stats_holm(r, 3, r, order);
+    NEAR(r[2], 0.033, 1e-15);
+    NEAR(r[0], 0.04, 1e-15);
+    NEAR(r[1], 0.04, 1e-15);
+    double one[1] = {0.0123};
+    tool_stats_holm(one, 1, one, order);
+    CHECK(one[0] == 0.0123, "a family of one: %g", one[0]);
+}
+
 int main(int argc, char** argv)
 {
     TEST_INIT(argc, argv);
@@ -235,5 +269,6 @@ int main(int argc, char** argv)
     RUN(test_degenerate);
     RUN(test_mann_whitney);
     RUN(test_runs_needed);
+    RUN(test_holm);
     return SUMMARY();
 }

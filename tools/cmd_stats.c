@@ -1,7 +1,7 @@
 /* amorph stats: groups of run folders compared by tests (tools/stats.h): at every N evaluations,
  * each group's best fitness so far (n, mean, standard deviation, standard error), and for each
- * pair of groups Welch's t-test, the Mann-Whitney test, Cohen's d and Hedges' g and the runs
- * needed for 80% power; or the same on the sustained score of each run's best robot
+ * pair of groups Welch's t-test, the Mann-Whitney test (each p also after Holm's correction over
+ * the pairs of its count), Cohen's d and Hedges' g and the runs needed for 80% power; or the same on the sustained score of each run's best robot
  * (gait30.json). Markdown tables or one JSON object. docs/results.md, Statistics. */
 #include "stats_cmd.h"
 #if !defined(AM_PROFILE_BOARD)
@@ -267,8 +267,10 @@ static const char stats_help[] =
     "p, the Mann-Whitney U (the pairs of runs in which the first group's is the higher, ties one half)\n"
     "with its two-sided p (exact up to 20 runs a group, else the normal approximation), Cohen's d,\n"
     "Hedges' g and the runs per group a t-test needs to find a difference of that d with 80% power at\n"
-    "0.05; then the ranking by mean with the differences each test finds significant at 0.05. A pair\n"
-    "with a group of fewer than 2 runs is not tested. Markdown tables in mm (docs/results.md).\n"
+    "0.05; each test's p values also after Holm's correction over the pairs tested at that count\n"
+    "(one family per count and test); then the ranking by mean with the differences each test finds\n"
+    "significant at 0.05 after that correction. A pair with a group of fewer than 2 runs is not\n"
+    "tested. Markdown tables in mm (docs/results.md).\n"
     "  --score best       the best fitness so far from log.csv (the default)\n"
     "  --score sustained  each run's best robot's travel per cycle over cycles 11-30, its\n"
     "                     gait30.json's sustained_travel (amorph sim DIR --cycles 30 --json;\n"

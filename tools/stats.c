@@ -253,3 +253,29 @@ void tool_stats_compare_samples(const double* a, int na, const double* b, int nb
     c->g = tool_stats_hedges_g(c->d, na, nb);
     c->runs_needed = tool_stats_runs_needed(c->d, 0.05, 0.8);
 }
+
+void tool_stats_holm(const double* p, int m, double* adj, int* order)
+{
+    /* the tested ones by ascending p (insertion sort: a family is a few hundred pairs at most; ties
+     * keep their order, and get the same adjusted value below) */
+    int k = 0;
+    for (int i = 0; i < m; i++) {
+        if (isnan(p[i])) continue;
+        int at = k++;
+        while (at > 0 && p[order[at - 1]] > p[i]) {
+            order[at] = order[at - 1];
+            at--;
+        }
+        order[at] = i;
+    }
+    for (int j = 0; j < m; j++)
+        if (isnan(p[j])) adj[j] = p[j];
+    /* the running maximum; each p is read before adj (which may be p) is written over it */
+    double top = 0;
+    for (int j = 0; j < k; j++) {
+        double q = (double)(k - j) * p[order[j]];
+        q = q < 1 ? q : 1;
+        top = q > top ? q : top;
+        adj[order[j]] = top;
+    }
+}

@@ -94,4 +94,13 @@ double tool_stats_hedges_g(double d, int na, int nb);
 #define TOOL_STATS_RUNS_MAX 10000000L
 long tool_stats_runs_needed(double d, double alpha, double power);
 
+/* ---- many comparisons ---- */
+
+/* Holm's step-down correction of the p values of one family of m tests (Holm 1979): with the
+ * tested p values in ascending order p_(1) <= ... <= p_(k) (a NAN, no test, is not one of the
+ * family and stays NAN), the i-th becomes max over j <= i of min(1, (k - j + 1) p_(j)), so that the
+ * family's chance of one false finding at level alpha is at most alpha. adj may be p; order is
+ * the caller's scratch of m ints. */
+void tool_stats_holm(const double* p, int m, double* adj, int* order);
+
 #endif

@@ -52,6 +52,32 @@ static void compare(int ga, int gb, int k, tool_stats_compare* c)
     tool_stats_compare_samples(stats_S.a, na, stats_S.b, nb, &stats_S.work, c);
 }
 
+/* every pair at checkpoint k, one family: the groups ranked (ranked()), then pair (i, j), i < j,
+ * at fam.c[...] in that order with its p values after Holm's correction over the tested pairs,
+ * each test's its own family; the number of groups */
+#define PAIRS_MAX (STATS_MAX_GROUPS * (STATS_MAX_GROUPS - 1) / 2)
+typedef struct pair_family {
+    tool_stats_compare c[PAIRS_MAX];
+    double holm_welch[PAIRS_MAX], holm_mw[PAIRS_MAX];
+    int scratch[PAIRS_MAX];
+} pair_family;
+static pair_family fam;
+
+static int family(int k, int* order, double* mean)
+{
+    const int n = ranked(k, order, mean);
+    int m = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++, m++) {
+            compare(order[i], order[j], k, &fam.c[m]);
+            fam.holm_welch[m] = fam.c[m].p_welch; /* NAN when not tested */
+            fam.holm_mw[m] = fam.c[m].p_mw;
+        }
+    tool_stats_holm(fam.holm_welch, m, fam.holm_welch, fam.scratch);
+    tool_stats_holm(fam.holm_mw, m, fam.holm_mw, fam.scratch);
+    return n;
+}
+
 /* ---- markdown ---- */
 
 #define put am_text_put
@@ -117,38 +143,42 @@ void stats_markdown(am_text* t)
                 for (int i = 0; i < GAITS; i++) put(t, " %d |", stats_S.groups[g].gaits[i]);
             put(t, "\n");
         }
-    /* each pair, the higher mean first */
-    put(t, "\n| %s | pair | difference (mm) | Welch's t | df | p (Welch) | U | p (Mann-Whitney) | Cohen's d | Hedges' g | runs for 80%% power |\n", key);
-    put(t, "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    /* each pair, the higher mean first, with its p values after Holm's correction over the pairs
+     * of its count */
+    put(t, "\n| %s | pair | difference (mm) | Welch's t | df | p (Welch) | p (Welch, Holm) | U | p (Mann-Whitney) | p (Mann-Whitney, Holm) "
+           "| Cohen's d | Hedges' g | runs for 80%% power |\n", key);
+    put(t, "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
+        int n = family(k, order, mean), m = 0;
         for (int i = 0; i < n; i++)
-            for (int j = i + 1; j < n; j++) {
-                tool_stats_compare c;
-                compare(order[i], order[j], k, &c);
+            for (int j = i + 1; j < n; j++, m++) {
+                const tool_stats_compare* c = &fam.c[m];
                 put_key(t, k);
                 put(t, " %s - %s |", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name);
-                put_num(t, c.difference * 1000, dec);
-                if (!c.tested) {
+                put_num(t, c->difference * 1000, dec);
+                if (!c->tested) {
                     const stats_group* few = stats_S.groups[order[i]].n < 2 ? &stats_S.groups[order[i]] : &stats_S.groups[order[j]];
-                    put(t, " no test: %s has %d run%s | | | | | | | |\n", few->name, few->n, few->n == 1 ? "" : "s");
+                    put(t, " no test: %s has %d run%s | | | | | | | | | |\n", few->name, few->n, few->n == 1 ? "" : "s");
                     continue;
                 }
-                put_num(t, c.t, 2);
-                put_num(t, c.df, 1);
-                put_p(t, c.p_welch, "");
-                put(t, " %.*f |", c.u == floor(c.u) ? 0 : 1, c.u);
-                put_p(t, c.p_mw, c.mw_exact ? "" : " (normal)");
-                put_num(t, c.d, 2);
-                put_num(t, c.g, 2);
-                if (c.runs_needed > 0) put(t, " %ld |\n", c.runs_needed);
+                put_num(t, c->t, 2);
+                put_num(t, c->df, 1);
+                put_p(t, c->p_welch, "");
+                put_p(t, fam.holm_welch[m], "");
+                put(t, " %.*f |", c->u == floor(c->u) ? 0 : 1, c->u);
+                put_p(t, c->p_mw, c->mw_exact ? "" : " (normal)");
+                put_p(t, fam.holm_mw[m], "");
+                put_num(t, c->d, 2);
+                put_num(t, c->g, 2);
+                if (c->runs_needed > 0) put(t, " %ld |\n", c->runs_needed);
                 else put(t, " - |\n");
             }
     }
-    /* the ranking, and which of its differences each test finds at 0.05 */
-    put(t, "\n| %s | ranking by mean | significant at 0.05, Welch's t | significant at 0.05, Mann-Whitney |\n|---:|---|---|---|\n", key);
+    /* the ranking, and which of its differences each test finds at 0.05 after Holm's correction */
+    put(t, "\n| %s | ranking by mean | significant at 0.05 after Holm's correction, Welch's t | significant at 0.05 after Holm's correction, "
+           "Mann-Whitney |\n|---:|---|---|---|\n", key);
     for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
+        int n = family(k, order, mean);
         if (n < 2) continue;
         put_key(t, k);
         put(t, " %s", stats_S.groups[order[0]].name);
@@ -163,12 +193,10 @@ void stats_markdown(am_text* t)
         put(t, " |");
         for (int test = 0; test < 2; test++) {
             int found = 0;
-            for (int i = 0; i < n; i++)
-                for (int j = i + 1; j < n; j++) {
-                    tool_stats_compare c;
-                    compare(order[i], order[j], k, &c);
-                    double p = test == 0 ? c.p_welch : c.p_mw;
-                    if (!c.tested || !(p < 0.05)) continue;
+            for (int i = 0, m = 0; i < n; i++)
+                for (int j = i + 1; j < n; j++, m++) {
+                    const double p = test == 0 ? fam.holm_welch[m] : fam.holm_mw[m];
+                    if (!fam.c[m].tested || !(p < 0.05)) continue;
                     put(t, "%s %s > %s", found ? "," : "", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name);
                     found++;
                 }
@@ -213,7 +241,7 @@ void stats_json(am_text* t)
     put(t, "], \"rows\": [");
     int rows = 0;
     for (int k = 0; k < top; k++) {
-        int n = ranked(k, order, mean);
+        const int n = family(k, order, mean);
         if (n == 0) continue;
         put(t, "%s{", rows++ ? ", " : "");
         if (!stats_S.sustained) put(t, "\"evaluations\": %ld, ", (k + 1) * stats_S.every);
@@ -230,24 +258,24 @@ void stats_json(am_text* t)
             first = 0;
         }
         put(t, "], \"pairs\": [");
-        for (int i = 0, first = 1; i < n; i++)
-            for (int j = i + 1; j < n; j++) {
-                tool_stats_compare c;
-                compare(order[i], order[j], k, &c);
-                put(t, "%s{\"a\": \"%s\", \"b\": \"%s\", \"tested\": %s", first ? "" : ", ", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name,
-                    c.tested ? "true" : "false");
-                put_jnum(t, "difference", c.difference, 1);
-                put_jnum(t, "t", c.t, 1);
-                put_jnum(t, "df", c.df, 1);
-                put_jnum(t, "p_welch", c.p_welch, 1);
-                put_jnum(t, "u", c.u, 1);
-                put_jnum(t, "p_mann_whitney", c.p_mw, 1);
-                put(t, ", \"mann_whitney_exact\": %s", c.tested && c.mw_exact ? "true" : "false");
-                put_jnum(t, "cohen_d", c.d, 1);
-                put_jnum(t, "hedges_g", c.g, 1);
-                if (c.runs_needed > 0) put(t, ", \"runs_needed\": %ld}", c.runs_needed);
+        for (int i = 0, m = 0; i < n; i++)
+            for (int j = i + 1; j < n; j++, m++) {
+                const tool_stats_compare* c = &fam.c[m];
+                put(t, "%s{\"a\": \"%s\", \"b\": \"%s\", \"tested\": %s", m ? ", " : "", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name,
+                    c->tested ? "true" : "false");
+                put_jnum(t, "difference", c->difference, 1);
+                put_jnum(t, "t", c->t, 1);
+                put_jnum(t, "df", c->df, 1);
+                put_jnum(t, "p_welch", c->p_welch, 1);
+                put_jnum(t, "p_welch_holm", fam.holm_welch[m], 1);
+                put_jnum(t, "u", c->u, 1);
+                put_jnum(t, "p_mann_whitney", c->p_mw, 1);
+                put_jnum(t, "p_mann_whitney_holm", fam.holm_mw[m], 1);
+                put(t, ", \"mann_whitney_exact\": %s", c->tested && c->mw_exact ? "true" : "false");
+                put_jnum(t, "cohen_d", c->d, 1);
+                put_jnum(t, "hedges_g", c->g, 1);
+                if (c->runs_needed > 0) put(t, ", \"runs_needed\": %ld}", c->runs_needed);
                 else put(t, ", \"runs_needed\": null}");
-                first = 0;
             }
         put(t, "], \"ranking\": [");
         for (int i = 0; i < n; i++) put(t, "%s\"%s\"", i ? ", " : "", stats_S.groups[order[i]].name);
