@@ -15,7 +15,8 @@
 # and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits);
 # the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
 # against the range of the GMX runs (the seed's settings) at that count; and the compute each run
-# took (the sum of log.csv's wall_s). With --pictures it also draws DIR/representations/fitness.svg
+# took (the sum of log.csv's wall_s), and each round (per group and experiment, every 1,000
+# evaluations). With --pictures it also draws DIR/representations/fitness.svg
 # (`amorph plot`: the seed's Figure 6 from the runs that have reached FIG6_MIN_EVALS evaluations,
 # 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
 # against the mean of the GMX runs, the seed's settings, to OTHERS_EVALS) and DIR/gaits.svg (each

@@ -3,7 +3,7 @@
 # table's means and standard errors (over the runs that reached each 500 evaluations), each run's
 # best so far every 1,000, the statistics of amorph stats (the representations' tests at every
 # 1,000, the sustained score of the best robots with their gaits), the mean body size per 500 evaluations from evals.csv.gz, the compute
-# with a paused generation counted at the median, a row per run with its 30-cycle gait, the other
+# with a paused generation counted at the median (per run, and per group and experiment in each window of 1,000 evaluations), a row per run with its 30-cycle gait, the other
 # experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
@@ -56,6 +56,23 @@ check "body size row: '$(row 1-500)', want DCT $want" sh -c "echo '$(row 1-500)'
 # compute: dct-2's 160 s generation is a pause, counted as the median 20 s: 60 s = 0.02 h
 check "compute row of dct-2: '$(row representations/dct-2)'" [ "$(row representations/dct-2)" = "| representations/dct-2 | 510 | 0.02 | 1 |" ]
 check "compute row of dct-1: '$(row representations/dct-1)'" [ "$(row representations/dct-1)" = "| representations/dct-1 | 1000 | 0.01 | 0 |" ]
+# the compute of each round: the DCT runs' 40 s and 60 s (the pause at the median) and GMX's 30 s
+check "round row of DCT: '$(row representations/dct)'" [ "$(row representations/dct)" = "| representations/dct | 1-1000 | 2 | 0.03 | 0.01 |" ]
+check "round row of the experiment: '$(row "representations (all)")'" [ "$(row "representations (all)")" = "| representations (all) | 1-1000 | 3 | 0.04 | 0.01 |" ]
+# windows of 1,000 evaluations by the count a generation ended at (1000 the first window's, 1001 the
+# second's), runs counted in each window they have a generation in, experiments apart
+W=$TMPD/rounds-w
+mkdir -p "$W/exp/a-1" "$W/exp/a-2" "$W/exp/b-1" "$W/other/a-1"
+printf '%s\n0,1000,0.01,0,0,0,0,3600\n1,1001,0.01,0,0,0,0,7200\n2,2000,0.01,0,0,0,0,3600\n' "$h" >"$W/exp/a-1/log.csv"
+printf '%s\n0,1000,0.01,0,0,0,0,1800\n' "$h" >"$W/exp/a-2/log.csv"
+printf '%s\n0,900,0.01,0,0,0,0,900\n' "$h" >"$W/exp/b-1/log.csv"
+printf '%s\n0,2500,0.01,0,0,0,0,36\n' "$h" >"$W/other/a-1/log.csv"
+expect_ok "$AMORPH" report compute --root "$W" "$W/exp/a-1" "$W/exp/a-2" "$W/exp/b-1" "$W/other/a-1"
+rounds=$(awk '/^\| group \|/ { t = 1 } t' "$TMPD/out" | tr '\n' '/')
+check "the rounds table: '$rounds'" [ "$rounds" = "| group | evaluations | runs | hours | hours a run |/|---|---:|---:|---:|---:|/\
+| exp/a | 1-1000 | 2 | 1.50 | 0.75 |/| exp/b | 1-1000 | 1 | 0.25 | 0.25 |/| exp (all) | 1-1000 | 3 | 1.75 | 0.58 |/\
+| exp/a | 1001-2000 | 1 | 3.00 | 3.00 |/| exp (all) | 1001-2000 | 1 | 3.00 | 3.00 |/| other/a | 2001-3000 | 1 | 0.01 | 0.01 |/\
+| other (all) | 2001-3000 | 1 | 0.01 | 0.01 |/" ]
 # a row per run with its 30-cycle gait, and the gait file beside the run
 for run in representations/dct-1 representations/dct-2 representations/gmx-1 friction/k0.1_s5.0-1; do
     line=$(grep -F "| $run | " "$TMPD/report.md" | head -n 1)

@@ -7,7 +7,9 @@
  *                  runs that reached it; then each run's best so far every 1,000
  *   compute RUN... a row per run: evaluations, hours of one thread (the sum of log.csv's wall_s, a
  *                  generation that took more than 5 times the run's median counted as the median)
- *                  and the generations so counted (paused)
+ *                  and the generations so counted (paused); then the compute of each round: per
+ *                  group of runs and per experiment, the runs and hours of the generations that
+ *                  ended in each window of 1,000 evaluations
  *   best-at N RUN  the run's best fitness so far at N evaluations (%.4f), nothing before it got there
  *   range N RUN... over the runs that reached N evaluations, their best so far there (each as
  *                  best-at prints it): "RUNS MEAN STDERR LOW HIGH", nothing when none did
@@ -301,11 +303,76 @@ static int cmp_double(const void* a, const void* b)
     return x < y ? -1 : x > y;
 }
 
+/* the compute of each round: per group of runs (a run's folder name without its trailing -K, with
+ * its experiment's folder: representations/dct) and per experiment (its folder: representations),
+ * the hours of the generations that ended in each window of 1,000 evaluations */
+#define ROUND_EVALS 1000
+#define ROUND_MAX 200                 /* windows (200,000 evaluations) */
+static struct {
+    char name[REPORT_MAX_RUNS][REPORT_NAME_MAX]; /* a group's, or an experiment's name */
+    int experiment[REPORT_MAX_RUNS];  /* 1: the whole experiment's folder */
+    int n;
+    double hours[REPORT_MAX_RUNS][ROUND_MAX];
+    int runs[REPORT_MAX_RUNS][ROUND_MAX];
+    int top;                          /* windows in use */
+} Q;
+
+/* the slot of a group (or experiment) name, made on first use; -1 when full */
+static int round_slot(const char* name, int experiment)
+{
+    for (int i = 0; i < Q.n; i++)
+        if (Q.experiment[i] == experiment && !strcmp(Q.name[i], name)) return i;
+    if (Q.n == REPORT_MAX_RUNS) return -1;
+    snprintf(Q.name[Q.n], REPORT_NAME_MAX, "%s", name);
+    Q.experiment[Q.n] = experiment;
+    return Q.n++;
+}
+
+/* the name of a run's group and experiment: "representations/dct" and "representations" for
+ * .../representations/dct-3 (a name without a -K suffix is its own group) */
+static void round_names(const char* run, char* group, char* experiment, size_t cap)
+{
+    char base[REPORT_NAME_MAX], parent[TOOL_PATH_MAX];
+    base_of(run, base, sizeof base);
+    size_t end = strlen(run);
+    while (end > 1 && run[end - 1] == '/') end--;
+    while (end > 0 && run[end - 1] != '/') end--;
+    snprintf(parent, sizeof parent, "%.*s", (int)(end ? end - 1 : 0), run);
+    base_of(parent[0] ? parent : ".", experiment, cap);
+    size_t k = strlen(base);
+    while (k > 0 && base[k - 1] >= '0' && base[k - 1] <= '9') k--;
+    if (k > 0 && k < strlen(base) && base[k - 1] == '-') base[k - 1] = 0;
+    snprintf(group, cap, "%s/%s", experiment, base);
+}
+
+static void round_row(int i, int w, const char* tail)
+{
+    printf("| %s%s | %d-%d | %d | %.2f | %.2f |\n", Q.name[i], tail, w * ROUND_EVALS + 1, (w + 1) * ROUND_EVALS, Q.runs[i][w], Q.hours[i][w],
+           Q.hours[i][w] / Q.runs[i][w]);
+}
+
+static void round_table(void)
+{
+    printf("\n| group | evaluations | runs | hours | hours a run |\n|---|---:|---:|---:|---:|\n");
+    /* each experiment (in the order first met), each window: its groups, then the whole */
+    for (int e = 0; e < Q.n; e++) {
+        if (!Q.experiment[e]) continue;
+        const size_t el = strlen(Q.name[e]);
+        for (int w = 0; w < Q.top; w++) {
+            if (!Q.runs[e][w]) continue;
+            for (int i = 0; i < Q.n; i++)
+                if (!Q.experiment[i] && !strncmp(Q.name[i], Q.name[e], el) && Q.name[i][el] == '/' && Q.runs[i][w]) round_row(i, w, "");
+            round_row(e, w, " (all)");
+        }
+    }
+}
+
 static int report_compute(const char* root, int nruns, char** runs)
 {
     static double sorted[REPORT_MAX_ROWS];
     printf("| run | evaluations | hours | paused generations |\n|---|---:|---:|---:|\n");
     const size_t rl = root ? strlen(root) : 0;
+    memset(&Q, 0, sizeof Q);
     for (int r = 0; r < nruns; r++) {
         int rc = read_rows(runs[r]);
         if (rc) return rc;
@@ -316,8 +383,12 @@ static int report_compute(const char* root, int nruns, char** runs)
         qsort(sorted, (size_t)R.rows, sizeof sorted[0], cmp_double);
         /* the lower median: a generation more than 5 times it was paused, and counts as it */
         const double med = R.rows ? sorted[(R.rows + 1) / 2 - 1] : 0;
+        char group[REPORT_NAME_MAX], experiment[REPORT_NAME_MAX];
+        round_names(runs[r], group, experiment, sizeof group);
+        const int slot[2] = {round_slot(group, 0), round_slot(experiment, 1)};
+        if (slot[0] < 0 || slot[1] < 0) return tool_usage_error("report: more than %d groups of runs", REPORT_MAX_RUNS);
         double t = 0;
-        int paused = 0;
+        int paused = 0, last_w = -1;
         for (int i = 0; i < R.rows; i++) {
             double w = R.wall[i];
             if (w > 5 * med) {
@@ -325,11 +396,21 @@ static int report_compute(const char* root, int nruns, char** runs)
                 paused++;
             }
             t += w;
+            /* the window of the evaluations this generation ended at (1..1000: the first) */
+            const long win = R.evals[i] > 0 ? (R.evals[i] - 1) / ROUND_EVALS : 0;
+            if (win >= ROUND_MAX) return tool_usage_error("report: %s: evaluation %ld past %d windows of %d", runs[r], R.evals[i], ROUND_MAX, ROUND_EVALS);
+            for (int k = 0; k < 2; k++) {
+                Q.hours[slot[k]][win] += w / 3600;
+                if (win != last_w) Q.runs[slot[k]][win]++;
+            }
+            last_w = (int)win;
+            if (win + 1 > Q.top) Q.top = (int)win + 1;
         }
         const char* name = runs[r];
         if (rl && !strncmp(name, root, rl) && name[rl] == '/') name += rl + 1;
         printf("| %s | %ld | %.2f | %d |\n", name, R.rows ? R.evals[R.rows - 1] : 0, t / 3600, paused);
     }
+    round_table();
     return 0;
 }
 
@@ -341,7 +422,10 @@ static const char report_help[] =
     "                  +- standard error of the best fitness so far every 500 evaluations, over the\n"
     "                  runs that reached it; then each run's best so far every 1,000\n"
     "  compute RUN...  a row per run: evaluations, hours (the sum of wall_s; a generation over 5 times\n"
-    "                  the run's median counts as the median) and those paused generations\n"
+    "                  the run's median counts as the median) and those paused generations; then the\n"
+    "                  rounds: per group of runs (the folder name without -K, in its experiment's\n"
+    "                  folder) and per experiment, the runs and hours of the generations that ended\n"
+    "                  in each window of 1,000 evaluations\n"
     "  best-at N RUN   the run's best fitness so far at N evaluations, nothing before it got there\n"
     "  range N RUN...  over the runs that reached N evaluations: 'RUNS MEAN STDERR LOW HIGH' of their\n"
     "                  best so far there (each to 4 decimals, as best-at prints it)\n"
