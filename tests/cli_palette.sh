@@ -2,7 +2,8 @@
 # seed's palette writes the configuration it always wrote, the follow-up's four materials and a
 # six-material palette of materialK keys evolve in every representation with bodies of every
 # material, their config.txt reads back to itself, a run of each resumes after kill -9 exactly
-# like the uninterrupted run, and a bad palette is refused in one line naming its file and line.
+# like the uninterrupted run, a run's genome file alone replays it in the palette that --palette and
+# --materialK give, and a bad palette is refused in one line naming its file and line.
 # Run from the repository root.
 . tests/shlib.sh
 
@@ -68,6 +69,36 @@ for p in four six; do
 done
 # the six-material run is not the four-material one
 if [ "$(sumval "$TMPD/six-gmx" run_hash)" != "$(sumval "$TMPD/four-gmx" run_hash)" ]; then ok; else ko "six and four materials: one run"; fi
+# a run's genome file alone: its materials from the palette keys given as settings (sim, render,
+# view, export), so it replays its run's best; without them the built-in palette has none of its
+# names; a robot that carries its materials refuses the keys; over a run folder they change it
+SHORT="--cycles 2 --period_steps 100 --relax_max_steps 400 --relax_min_steps 50 --release_steps 100"
+for p in four six; do
+    cp "$TMPD/$p-gmx/best.genome" "$TMPD/$p-alone.genome"
+    set -- --palette unshackled
+    [ $p = six ] && set -- "$@" --material5 "gel modulus=2e5 density=1e6 cte=0 phase=0 poisson=0.35" \
+        --material6 "muscle90 modulus=5e6 density=1e6 cte=0.01 phase=-90 mu_kinetic=0.5 color=ff8800"
+    # shellcheck disable=SC2086
+    f=$("$AMORPH" sim "$TMPD/$p-alone.genome" $SHORT "$@" | sed -n 's/^fitness = //p')
+    if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/$p-gmx" best_fitness)" ]; then ok
+    else ko "$p: the genome file in its run's palette gives '$f', the run logged $(sumval "$TMPD/$p-gmx" best_fitness)"; fi
+done
+# shellcheck disable=SC2086
+"$AMORPH" export "$TMPD/six-alone.genome" $SHORT "$@" --vxa "$TMPD/six-alone.vxa" 2>"$TMPD/err" || ko "export of the genome file in a palette: $(cat "$TMPD/err")"
+f=$("$AMORPH" sim "$TMPD/six-alone.vxa" 2>/dev/null | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" = "$(sumval "$TMPD/six-gmx" best_fitness)" ]; then ok; else ko "its VXA file gives '$f', the run logged $(sumval "$TMPD/six-gmx" best_fitness)"; fi
+expect_fail 2 "four-alone\.genome:[0-9]*: material 'passive_soft' is not in the built-in palette .*--palette unshackled" "$AMORPH" sim "$TMPD/four-alone.genome"
+expect_fail 2 "six-alone\.genome:[0-9]*: material 'gel' is not in the palette the settings give" "$AMORPH" sim "$TMPD/six-alone.genome" --palette unshackled
+expect_fail 2 "--palette: cube:3 carries its own materials" "$AMORPH" sim --scene cube:3 --palette unshackled
+expect_fail 2 "--material5 = 'gel modulus=2e5': missing density=" "$AMORPH" sim "$TMPD/six-alone.genome" --material5 "gel modulus=2e5"
+# over a run folder: the run's own palette with its every material 10 times stiffer is another robot
+f0=$("$AMORPH" sim "$TMPD/six-gmx" | sed -n 's/^fitness = //p')
+f=$("$AMORPH" sim "$TMPD/six-gmx" --material1 "passive_soft modulus=5e7 density=1e6 cte=0 phase=0 poisson=0.35" \
+    --material2 "passive_hard modulus=5e9 density=1e6 cte=0 phase=0 poisson=0.35" --material3 "active_plus modulus=5e7 density=1e6 cte=0.01 phase=0 poisson=0.35" \
+    --material4 "active_minus modulus=5e7 density=1e6 cte=0.01 phase=180 poisson=0.35" --material5 "gel modulus=2e6 density=1e6 cte=0 phase=0 poisson=0.35" \
+    --material6 "muscle90 modulus=5e7 density=1e6 cte=0.01 phase=-90 mu_kinetic=0.5" | sed -n 's/^fitness = //p')
+if [ -n "$f" ] && [ "$f" != "$f0" ] && [ "$f0" = "$(sumval "$TMPD/six-gmx" best_fitness)" ]; then ok
+else ko "a run folder with stiffer materials: '$f', as it is '$f0'"; fi
 # a run of the seed's three materials writes no palette: its config.txt is as before palettes
 expect_ok $E --config "$TMPD/small.cfg" --materials 3 --out "$TMPD/m3"
 if grep -q "^palette\|^material[0-9]" "$TMPD/m3/config.txt"; then ko "materials = 3 wrote a palette"; else ok; fi

@@ -205,9 +205,9 @@ am_status tool_read_config(const char* path, am_evo_def* d, int nul_ends, char* 
 am_status tool_read_config_lines(const char* path, am_evo_def* d, int nul_ends, int* key_line, char* err, int errsz);
 /* a genome from the lines of src (its start) */
 am_status tool_read_genome(tool_src* src, am_genome* g, char* err, int errsz);
-/* the genome of src (at its start) into tool_genome(c), expressed into lat with the built-in
- * palette (tools/robot.c); "file:line: problem" messages */
-am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, char* err, int errsz);
+/* the genome of src (at its start) into tool_genome(c), expressed into lat with the palette pal
+ * (NULL: the built-in one; tools/robot.c); "file:line: problem" messages */
+am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, const am_palette* pal, char* err, int errsz);
 
 /* VXA files (docs/vxa.md) are read and written in the desktop profile only; TOOL_DESKTOP_ONLY
  * marks what a help text names that the board build answers with "not in this build" */

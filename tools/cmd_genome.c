@@ -100,7 +100,7 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
         return tool_usage_error("%s", err);
     }
     int kind = tool_src_sniff(&src, err, sizeof err);
-    if (kind == TOOL_TEXT_GENOME) st = tool_genome_to_lattice(c, &src, lat, err, sizeof err);
+    if (kind == TOOL_TEXT_GENOME) st = tool_genome_to_lattice(c, &src, lat, NULL, err, sizeof err);
     else if (kind < 0 && src.binary) st = tool_src_binary(&src, err, sizeof err);
     else if (kind < 0) st = AM_ERR_IO;
     tool_src_close(&src);

@@ -109,7 +109,7 @@ static am_status genome_line(void* ctx, int lineno, char* line, long n, char* er
     return am_genome_read_line(&g->r, line, n, err, errsz);
 }
 
-am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, char* err, int errsz)
+am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, const am_palette* pal, char* err, int errsz)
 {
     const char* fname = src->path;
     am_genome* g = tool_genome(c);
@@ -119,17 +119,48 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, ch
     am_status st = tool_src_each(src, genome_line, &gr, err, errsz);
     if (st == AM_OK) st = am_genome_read_end(&gr.r, err, errsz);
     if (st != AM_OK) return st;
-    /* the built-in palette, in the lattice about to be filled (none is built on the stack) */
-    am_default_palette_into(&lat->palette);
+    /* the palette, in the lattice about to be filled (none is built on the stack) */
+    if (pal) lat->palette = *pal;
+    else am_default_palette_into(&lat->palette);
     for (int m = 0; m < g->materials; m++)
         if (am_palette_find(&lat->palette, g->mat[m]) < 0)
             return am_fail(err, errsz, AM_ERR_RANGE,
-                           "%s:%d: material '%s' is not in the built-in palette (a run's genome: give its run folder, which keeps its materials)",
+                           pal ? "%s:%d: material '%s' is not in the palette the settings give (--palette, --materialK)"
+                               : "%s:%d: material '%s' is not in the built-in palette (a run's genome: give its run folder, which keeps its "
+                                 "materials, or its palette: --palette unshackled, --materialK)",
                            fname, gr.materials_line ? gr.materials_line : 1, g->mat[m]);
     char msg[AM_ERR_MAX];
-    st = am_genome_to_lattice(g, NULL, &c->work[0].geno, lat, msg, sizeof msg);
+    am_express_def ex = am_default_express();
+    ex.palette = pal; /* NULL: the built-in one */
+    st = am_genome_to_lattice(g, &ex, &c->work[0].geno, lat, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
     return AM_OK;
+}
+
+/* 1 when key is one of the palette's (palette, materialK): the materials a genome's names are
+ * looked up in */
+static int palette_key(const char* key)
+{
+    return !strcmp(key, "palette") || (!strncmp(key, "material", 8) && key[8] >= '1' && key[8] <= '9');
+}
+
+/* the settings' palette keys over d, in order; 1 when there were any, 0 when none, or -1 after a
+ * message (a materialK after a gap, a name given twice: am_evo_check's) */
+static int settings_palette(const tool_robot_args* a, am_evo_def* d, char* err, int errsz)
+{
+    int given = 0;
+    for (int k = 0; k < a->nset; k++) {
+        if (!palette_key(a->key[k])) continue;
+        if (am_evo_set(d, a->key[k], a->val[k], err, errsz) != AM_OK) return -1;
+        given = 1;
+    }
+    if (!given) return 0;
+    char why[AM_ERR_MAX];
+    if (am_evo_check(d, why, sizeof why) != AM_OK) {
+        am_fail(err, errsz, AM_ERR_RANGE, "--%s", why);
+        return -1;
+    }
+    return 1;
 }
 
 /* the stiffness range an evolved stiffness field maps to: the run's (or the default, for a genome
@@ -160,6 +191,7 @@ static am_status stiffness_range(const tool_robot_args* a, am_express_def* ex, c
  * stiffness field (a genome's), for the checks and the note after loading */
 static am_express_def g_range;
 static int g_evolved_stiffness;
+static int g_genome; /* 1: the robot is a genome's (a genome file or a run folder's best) */
 
 /* the evolved phases and stiffnesses of the genome just expressed into c->work[0].geno, into the
  * robot's layers (nothing for a genome without them), its stiffnesses in ex's range */
@@ -168,6 +200,7 @@ static am_status genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* 
     const am_genome* g = tool_genome(c);
     char msg[AM_ERR_MAX];
     g_range = *ex;
+    g_genome = 1;
     g_evolved_stiffness = (g->controls & AM_CTL_STIFFNESS) != 0;
     if (!g->controls) return AM_OK;
     am_status st = r->layers ? am_genome_layers(g, ex, &c->work[0].geno, r->layers, msg, sizeof msg)
@@ -194,7 +227,9 @@ static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir
     if (st == AM_OK) st = tool_read_genome(&src, tool_genome(c), err, errsz);
     tool_src_close(&src);
     if (st != AM_OK) return st;
-    /* the run's palette, in the evolver's slot (idle: no run is going on) */
+    /* the run's palette (the settings' palette keys over it), in the evolver's slot (idle: no run
+     * is going on) */
+    if (settings_palette(a, &d, err, errsz) < 0) return AM_ERR_RANGE;
     am_evo_palette_into(&d, &c->evo.palette);
     st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, r->lattice, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
@@ -232,7 +267,12 @@ static am_status load_file(tool_ctx* c, const tool_robot_args* a, const char* na
     } else if (vxd) {
         st = am_fail(err, errsz, AM_ERR_PARSE, "%s: not a VXA file: a VXD file (%s) goes over a base VXA file", name, vxd);
     } else if (kind == TOOL_TEXT_GENOME) {
-        st = tool_genome_to_lattice(c, &src, r->lattice, err, errsz);
+        /* its materials from the built-in palette, or the one the settings' palette keys give (in
+         * the evolver's slot, idle) */
+        am_evo_def d = am_default_evo();
+        const int own = settings_palette(a, &d, err, errsz);
+        if (own > 0) am_evo_palette_into(&d, &c->evo.palette);
+        st = own < 0 ? AM_ERR_RANGE : tool_genome_to_lattice(c, &src, r->lattice, own ? &c->evo.palette : NULL, err, errsz);
         am_express_def ex = am_default_express();
         if (st == AM_OK) st = stiffness_range(a, &ex, err, errsz);
         if (st == AM_OK) st = genome_layers(c, &ex, r, name, err, errsz);
@@ -474,6 +514,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #endif
     memset(&g_origin, 0, sizeof g_origin);
     g_evolved_stiffness = 0;
+    g_genome = 0;
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
     else if (tool_is_run_dir(a->name)) st = load_run(c, a, a->name, r, err, errsz);
 #if TOOL_VXA
@@ -488,6 +529,12 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
         one_file = !a->vxd;
     }
     if (st != AM_OK) return st;
+    /* a palette is what a genome's material names are looked up in: a lattice, a VXA file and a
+     * scene carry their materials */
+    for (int k = 0; k < a->nset && !g_genome; k++)
+        if (palette_key(a->key[k]))
+            return am_fail(err, errsz, AM_ERR_ARG, "--%s: %s carries its own materials (the palette keys apply to a genome's names: a "
+                                                   "genome file or a run folder)", a->key[k], a->name);
     /* a stiffness range is what an evolved stiffness field maps to: a robot without one has none */
     for (int k = 0; k < a->nset && !g_evolved_stiffness; k++)
         if (!strcmp(a->key[k], "stiffness_min") || !strcmp(a->key[k], "stiffness_max"))

@@ -93,6 +93,8 @@ am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, i
     "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot, in dt_frac's [1e-6, 10])\n"  \
     "  --stiffness_min PA, --stiffness_max PA   the range a genome's evolved stiffness maps to (a\n"   \
     "                     genome file's: 1e5..1e7 unless given; a run folder's: the run's)\n"          \
+    "  --palette P, --materialK SPEC   the palette a genome's material names are looked up in (a\n"   \
+    "                     genome file's: the built-in one unless given; a run folder's: the run's)\n"  \
     "A voxcraft-sim robot: BASE.vxa ROBOT.vxd (the VXD replaces parts of the base), or a folder\n"     \
     "holding base.vxa and one .vxd" TOOL_DESKTOP_ONLY " (docs/vxa.md).\n"
 
