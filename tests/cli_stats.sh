@@ -68,6 +68,29 @@ cat >"$TMPD/want" <<'EOF'
 EOF
 if cmp -s "$TMPD/want" "$TMPD/out"; then ok; else ko "stats tables: $(diff "$TMPD/want" "$TMPD/out" | head -20)"; fi
 
+# --pair: only the pairs named, either way round, are compared, and they alone are Holm's family:
+# at 1000 A - B's 0.0213 x 2 = 0.043 is significant again, A - C's 0.082 x 1 held at 0.082
+expect_ok "$AMORPH" stats "$R/A-1" "$R/A-2" "$R/A-3" "$R/B-1" "$R/B-2" "$R/B-3" "$R/C-1" "$R/C-2/" "$R/D-1" --pair A,B --pair C,A
+cat >"$TMPD/want" <<'EOF2'
+| evaluations | pair | difference (mm) | Welch's t | df | p (Welch) | p (Welch, Holm) | U | p (Mann-Whitney) | p (Mann-Whitney, Holm) | Cohen's d | Hedges' g | runs for 80% power |
+|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+| 1000 | A - C | 4.00 | 2.62 | 2.9 | 0.082 | 0.082 | 6 | 0.200 | 0.200 | 2.19 | 1.59 | 5 |
+| 1000 | A - B | 6.00 | 3.67 | 4.0 | 0.021 | 0.043 | 9 | 0.100 | 0.200 | 3.00 | 2.39 | 4 |
+| 2000 | A - B | 13.00 | 4.18 | 2.6 | 0.032 | 0.032 | 9 | 0.100 | 0.100 | 3.41 | 2.72 | 3 |
+
+| evaluations | ranking by mean | significant at 0.05 after Holm's correction, Welch's t | significant at 0.05 after Holm's correction, Mann-Whitney |
+|---:|---|---|---|
+| 1000 | D > A > C > B | A > B | none |
+| 2000 | A > D > B | A > B | none |
+EOF2
+if sed -n '/| pair |/,$p' "$TMPD/out" | cmp -s "$TMPD/want" -; then ok; else ko "--pair tables: $(sed -n '/| pair |/,$p' "$TMPD/out" | diff "$TMPD/want" - | head -20)"; fi
+expect_ok "$AMORPH" stats --json "$R/A-1" "$R/A-2" "$R/A-3" "$R/B-1" "$R/B-2" "$R/B-3" --pair B,A
+check "--pair, JSON: the one pair" [ "$(grep -o '"a": "[A-D]", "b": "[A-D]"' "$TMPD/out" | tr '\n' ' ')" = '"a": "A", "b": "B" "a": "A", "b": "B" ' ]
+expect_fail 2 "stats: --pair A,X: no group X among the runs named" "$AMORPH" stats "$R/A-1" "$R/B-1" --pair A,X
+expect_fail 2 "stats: --pair A,A: a group against itself" "$AMORPH" stats "$R/A-1" "$R/B-1" --pair A,A
+expect_fail 2 "stats: --pair needs NAME,NAME \(two groups\)" "$AMORPH" stats "$R/A-1" --pair A
+expect_fail 2 "stats: --pair needs NAME,NAME \(two groups\)" "$AMORPH" stats "$R/A-1" --pair A,B,C
+
 # JSON: the same numbers in m, a pair without a test, the ranking
 expect_ok "$AMORPH" stats --json "$R/A-1" "$R/A-2" "$R/A-3" "$R/B-1" "$R/B-2" "$R/B-3" "$R/D-1"
 cp "$TMPD/out" "$TMPD/j.json"

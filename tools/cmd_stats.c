@@ -257,7 +257,7 @@ static int read_gait(stats_run* R)
 /* ---- the command ---- */
 
 static const char stats_help[] =
-    "usage: amorph stats [--score best|sustained] [--every N] [--group NAME=DIR[,DIR...]]... [--json] [DIR...]\n"
+    "usage: amorph stats [--score best|sustained] [--every N] [--group NAME=DIR[,DIR...]]... [--pair A,B]... [--json] [DIR...]\n"
     "Compares groups of run folders (amorph evolve --out DIR) by tests. A DIR named on its own joins\n"
     "the group of its folder name without the trailing -K (runs/dct-1 and runs/dct-2: dct); --group\n"
     "names a group's runs explicitly. At every N evaluations that all the runs of a group have\n"
@@ -278,6 +278,9 @@ static const char stats_help[] =
     "                     scoot, bounce, roll)\n"
     "  --every N          the counts compared: every N evaluations (1000)\n"
     "  --group NAME=DIRS  the runs DIRS (comma-separated) as group NAME\n"
+    "  --pair A,B         compare groups A and B (repeatable): only the pairs named, which are then\n"
+    "                     the family Holm's correction runs over (planned comparisons); every\n"
+    "                     pair when none is named\n"
     "  --json             one JSON object instead of the tables (values in m)\n";
 
 int cmd_stats(tool_ctx* c, int argc, char** argv)
@@ -287,6 +290,10 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
     stats_S.nruns = stats_S.ngroups = 0;
     stats_S.every = 1000;
     stats_S.sustained = 0;
+    stats_S.npairs = 0;
+    /* --pair A,B: the names, found among the groups once every folder is read */
+    static const char* pair_arg[STATS_MAX_GROUPS * (STATS_MAX_GROUPS - 1) / 2];
+    int npair_args = 0;
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : 0;
@@ -316,6 +323,12 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
                 if (rc) return rc;
                 d = comma ? comma + 1 : 0;
             }
+        } else if (!strcmp(a, "--pair")) {
+            const char* comma = v ? strchr(v, ',') : 0;
+            if (!comma || comma == v || !comma[1] || strchr(comma + 1, ',')) return tool_usage_error("stats: --pair needs NAME,NAME (two groups)");
+            if (npair_args == (int)(sizeof pair_arg / sizeof pair_arg[0])) return tool_usage_error("stats: more than %d --pair", npair_args);
+            pair_arg[npair_args++] = v;
+            i++;
         } else if (a[0] == '-' && a[1]) {
             return tool_unknown_option("stats", a, stats_help);
         } else {
@@ -324,6 +337,23 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
         }
     }
     if (stats_S.nruns == 0) return tool_usage_error("stats: name run folders (amorph stats --help)");
+    for (int p = 0; p < npair_args; p++) {
+        const char* comma = strchr(pair_arg[p], ',');
+        int g[2] = {-1, -1};
+        for (int side = 0; side < 2; side++) {
+            const char* name = side ? comma + 1 : pair_arg[p];
+            const size_t len = side ? strlen(name) : (size_t)(comma - pair_arg[p]);
+            for (int k = 0; k < stats_S.ngroups; k++)
+                if (strlen(stats_S.groups[k].name) == len && !strncmp(stats_S.groups[k].name, name, len)) g[side] = k;
+            if (g[side] < 0) {
+                char q[AM_QUOTE_BUF];
+                return tool_usage_error("stats: --pair %s: no group %s among the runs named", pair_arg[p], am_quote(q, sizeof q, name, (int)len));
+            }
+        }
+        if (g[0] == g[1]) return tool_usage_error("stats: --pair %s: a group against itself", pair_arg[p]);
+        stats_S.pair[stats_S.npairs][0] = g[0];
+        stats_S.pair[stats_S.npairs++][1] = g[1];
+    }
     for (int r = 0; r < stats_S.nruns; r++) {
         int rc = stats_S.sustained ? read_gait(&stats_S.runs[r]) : read_log(&stats_S.runs[r]);
         if (rc) return rc;

@@ -46,6 +46,9 @@ typedef struct stats_set {
     int ngroups;
     long every;
     int sustained;                   /* --score sustained */
+    /* --pair A,B: the pairs compared, as group indices (none given: every pair) */
+    int npairs;
+    int pair[STATS_MAX_GROUPS * (STATS_MAX_GROUPS - 1) / 2][2];
     tool_stats_work work;
     double a[STATS_MAX_RUNS], b[STATS_MAX_RUNS];
 } stats_set;

@@ -59,9 +59,19 @@ static void compare(int ga, int gb, int k, tool_stats_compare* c)
 typedef struct pair_family {
     tool_stats_compare c[PAIRS_MAX];
     double holm_welch[PAIRS_MAX], holm_mw[PAIRS_MAX];
+    int chosen[PAIRS_MAX];            /* 1: compared (--pair, or every pair) */
     int scratch[PAIRS_MAX];
 } pair_family;
 static pair_family fam;
+
+/* 1 when groups a and b are to be compared: every pair, or one --pair named (either way round) */
+static int chosen(int a, int b)
+{
+    if (stats_S.npairs == 0) return 1;
+    for (int p = 0; p < stats_S.npairs; p++)
+        if ((stats_S.pair[p][0] == a && stats_S.pair[p][1] == b) || (stats_S.pair[p][0] == b && stats_S.pair[p][1] == a)) return 1;
+    return 0;
+}
 
 static int family(int k, int* order, double* mean)
 {
@@ -69,6 +79,10 @@ static int family(int k, int* order, double* mean)
     int m = 0;
     for (int i = 0; i < n; i++)
         for (int j = i + 1; j < n; j++, m++) {
+            fam.c[m].tested = 0;
+            fam.holm_welch[m] = fam.holm_mw[m] = (double)NAN;
+            fam.chosen[m] = chosen(order[i], order[j]);
+            if (!fam.chosen[m]) continue; /* not compared: not one of the family */
             compare(order[i], order[j], k, &fam.c[m]);
             fam.holm_welch[m] = fam.c[m].p_welch; /* NAN when not tested */
             fam.holm_mw[m] = fam.c[m].p_mw;
@@ -153,6 +167,7 @@ void stats_markdown(am_text* t)
         for (int i = 0; i < n; i++)
             for (int j = i + 1; j < n; j++, m++) {
                 const tool_stats_compare* c = &fam.c[m];
+                if (!fam.chosen[m]) continue;
                 put_key(t, k);
                 put(t, " %s - %s |", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name);
                 put_num(t, c->difference * 1000, dec);
@@ -196,7 +211,7 @@ void stats_markdown(am_text* t)
             for (int i = 0, m = 0; i < n; i++)
                 for (int j = i + 1; j < n; j++, m++) {
                     const double p = test == 0 ? fam.holm_welch[m] : fam.holm_mw[m];
-                    if (!fam.c[m].tested || !(p < 0.05)) continue;
+                    if (!fam.chosen[m] || !fam.c[m].tested || !(p < 0.05)) continue;
                     put(t, "%s %s > %s", found ? "," : "", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name);
                     found++;
                 }
@@ -258,11 +273,13 @@ void stats_json(am_text* t)
             first = 0;
         }
         put(t, "], \"pairs\": [");
-        for (int i = 0, m = 0; i < n; i++)
+        for (int i = 0, m = 0, first = 1; i < n; i++)
             for (int j = i + 1; j < n; j++, m++) {
                 const tool_stats_compare* c = &fam.c[m];
-                put(t, "%s{\"a\": \"%s\", \"b\": \"%s\", \"tested\": %s", m ? ", " : "", stats_S.groups[order[i]].name, stats_S.groups[order[j]].name,
-                    c->tested ? "true" : "false");
+                if (!fam.chosen[m]) continue;
+                put(t, "%s{\"a\": \"%s\", \"b\": \"%s\", \"tested\": %s", first ? "" : ", ", stats_S.groups[order[i]].name,
+                    stats_S.groups[order[j]].name, c->tested ? "true" : "false");
+                first = 0;
                 put_jnum(t, "difference", c->difference, 1);
                 put_jnum(t, "t", c->t, 1);
                 put_jnum(t, "df", c->df, 1);
