@@ -19,6 +19,8 @@ typedef struct origins {
     int run;                            /* 1: the lines are the run folder's config.txt's */
 } origins;
 static origins g_origin;
+/* what the robot being loaded took from a genome (its palette, stiffness range, layers) */
+static tool_genome_use g_use;
 
 static int key_index(const char* key)
 {
@@ -94,120 +96,6 @@ static am_status load_vxa(const char* text, const char* fname, const char* vxd, 
 }
 #endif
 
-/* a genome's lines to the reader, noting the line of "materials" (for messages) */
-typedef struct genome_read {
-    am_genome_reader r;
-    int materials_line;       /* the first line that starts with "materials", 0 until seen */
-} genome_read;
-
-static am_status genome_line(void* ctx, int lineno, char* line, long n, char* err, int errsz)
-{
-    genome_read* g = (genome_read*)ctx;
-    const char* p = line;
-    while (*p == ' ' || *p == '\t') p++;
-    if (!g->materials_line && !strncmp(p, "materials", 9)) g->materials_line = lineno;
-    return am_genome_read_line(&g->r, line, n, err, errsz);
-}
-
-am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, const am_palette* pal, char* err, int errsz)
-{
-    const char* fname = src->path;
-    am_genome* g = tool_genome(c);
-    genome_read gr;
-    gr.materials_line = 0;
-    am_genome_read_begin(&gr.r, g, fname);
-    am_status st = tool_src_each(src, genome_line, &gr, err, errsz);
-    if (st == AM_OK) st = am_genome_read_end(&gr.r, err, errsz);
-    if (st != AM_OK) return st;
-    /* the palette, in the lattice about to be filled (none is built on the stack) */
-    if (pal) lat->palette = *pal;
-    else am_default_palette_into(&lat->palette);
-    for (int m = 0; m < g->materials; m++)
-        if (am_palette_find(&lat->palette, g->mat[m]) < 0)
-            return am_fail(err, errsz, AM_ERR_RANGE,
-                           pal ? "%s:%d: material '%s' is not in the palette the settings give (--palette, --materialK)"
-                               : "%s:%d: material '%s' is not in the built-in palette (a run's genome: give its run folder, which keeps its "
-                                 "materials, or its palette: --palette unshackled, --materialK)",
-                           fname, gr.materials_line ? gr.materials_line : 1, g->mat[m]);
-    char msg[AM_ERR_MAX];
-    am_express_def ex = am_default_express();
-    ex.palette = pal; /* NULL: the built-in one */
-    st = am_genome_to_lattice(g, &ex, &c->work[0].geno, lat, msg, sizeof msg);
-    if (st != AM_OK) return am_fail(err, errsz, st, "%s:1: %s", fname, msg);
-    return AM_OK;
-}
-
-/* 1 when key is one of the palette's (palette, materialK): the materials a genome's names are
- * looked up in */
-static int palette_key(const char* key)
-{
-    return !strcmp(key, "palette") || (!strncmp(key, "material", 8) && key[8] >= '1' && key[8] <= '9');
-}
-
-/* the settings' palette keys over d, in order; 1 when there were any, 0 when none, or -1 after a
- * message (a materialK after a gap, a name given twice: am_evo_check's) */
-static int settings_palette(const tool_robot_args* a, am_evo_def* d, char* err, int errsz)
-{
-    int given = 0;
-    for (int k = 0; k < a->nset; k++) {
-        if (!palette_key(a->key[k])) continue;
-        if (am_evo_set(d, a->key[k], a->val[k], err, errsz) != AM_OK) return -1;
-        given = 1;
-    }
-    if (!given) return 0;
-    char why[AM_ERR_MAX];
-    if (am_evo_check(d, why, sizeof why) != AM_OK) {
-        am_fail(err, errsz, AM_ERR_RANGE, "--%s", why);
-        return -1;
-    }
-    return 1;
-}
-
-/* the stiffness range an evolved stiffness field maps to: the run's (or the default, for a genome
- * file) under the settings' stiffness_min and stiffness_max, checked as amorph evolve checks them */
-static am_status stiffness_range(const tool_robot_args* a, am_express_def* ex, char* err, int errsz)
-{
-    am_evo_def d = am_default_evo();
-    d.stiffness = AM_STIFFNESS_EVOLVED;
-    d.stiffness_min = ex->stiffness_min;
-    d.stiffness_max = ex->stiffness_max;
-    int given = 0;
-    for (int k = 0; k < a->nset; k++) {
-        if (strcmp(a->key[k], "stiffness_min") && strcmp(a->key[k], "stiffness_max")) continue;
-        am_status st = am_evo_set(&d, a->key[k], a->val[k], err, errsz);
-        if (st != AM_OK) return st;
-        given = 1;
-    }
-    if (!given) return AM_OK;
-    const double lo = AM_PARAM_TO_DOUBLE(d.stiffness_min), hi = AM_PARAM_TO_DOUBLE(d.stiffness_max);
-    if (!(lo <= hi && hi <= 100.0 * lo))
-        return am_fail(err, errsz, AM_ERR_RANGE, "--stiffness_max = %g: from stiffness_min (%g) to 100 times it", hi, lo);
-    ex->stiffness_min = d.stiffness_min;
-    ex->stiffness_max = d.stiffness_max;
-    return AM_OK;
-}
-
-/* the stiffness range the robot being loaded was expressed in, and 1 when it has an evolved
- * stiffness field (a genome's), for the checks and the note after loading */
-static am_express_def g_range;
-static int g_evolved_stiffness;
-static int g_genome; /* 1: the robot is a genome's (a genome file or a run folder's best) */
-
-/* the evolved phases and stiffnesses of the genome just expressed into c->work[0].geno, into the
- * robot's layers (nothing for a genome without them), its stiffnesses in ex's range */
-static am_status genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* r, const char* fname, char* err, int errsz)
-{
-    const am_genome* g = tool_genome(c);
-    char msg[AM_ERR_MAX];
-    g_range = *ex;
-    g_genome = 1;
-    g_evolved_stiffness = (g->controls & AM_CTL_STIFFNESS) != 0;
-    if (!g->controls) return AM_OK;
-    am_status st = r->layers ? am_genome_layers(g, ex, &c->work[0].geno, r->layers, msg, sizeof msg)
-                             : am_fail(msg, sizeof msg, AM_ERR_CAPACITY, "an evolved phase or stiffness: this build keeps no layers per voxel");
-    return st == AM_OK ? AM_OK : am_fail(err, errsz, st, "%s: %s", fname, msg);
-}
-
 /* a run folder's best robot, with the environment and evaluation it evolved in */
 static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir, am_robot* r, char* err, int errsz)
 {
@@ -229,13 +117,13 @@ static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir
     if (st != AM_OK) return st;
     /* the run's palette (the settings' palette keys over it), in the evolver's slot (idle: no run
      * is going on) */
-    if (settings_palette(a, &d, err, errsz) < 0) return AM_ERR_RANGE;
+    if (tool_robot_palette(a, &d, err, errsz) < 0) return AM_ERR_RANGE;
     am_evo_palette_into(&d, &c->evo.palette);
     st = am_evo_lattice(&d, &c->evo.palette, tool_genome(c), &c->work[0].geno, r->lattice, msg, sizeof msg);
     if (st != AM_OK) return am_fail(err, errsz, st, "%s: %s", path, msg);
     am_express_def ex = am_evo_express_def(&d, &c->evo.palette);
-    if ((st = stiffness_range(a, &ex, err, errsz)) != AM_OK) return st;
-    if ((st = genome_layers(c, &ex, r, path, err, errsz)) != AM_OK) return st;
+    if ((st = tool_robot_stiffness_range(a, &ex, err, errsz)) != AM_OK) return st;
+    if ((st = tool_robot_genome_layers(c, &ex, r, path, &g_use, err, errsz)) != AM_OK) return st;
     r->env = d.env;
     r->eval = d.eval;
     return AM_OK;
@@ -270,12 +158,12 @@ static am_status load_file(tool_ctx* c, const tool_robot_args* a, const char* na
         /* its materials from the built-in palette, or the one the settings' palette keys give (in
          * the evolver's slot, idle) */
         am_evo_def d = am_default_evo();
-        const int own = settings_palette(a, &d, err, errsz);
+        const int own = tool_robot_palette(a, &d, err, errsz);
         if (own > 0) am_evo_palette_into(&d, &c->evo.palette);
         st = own < 0 ? AM_ERR_RANGE : tool_genome_to_lattice(c, &src, r->lattice, own ? &c->evo.palette : NULL, err, errsz);
         am_express_def ex = am_default_express();
-        if (st == AM_OK) st = stiffness_range(a, &ex, err, errsz);
-        if (st == AM_OK) st = genome_layers(c, &ex, r, name, err, errsz);
+        if (st == AM_OK) st = tool_robot_stiffness_range(a, &ex, err, errsz);
+        if (st == AM_OK) st = tool_robot_genome_layers(c, &ex, r, name, &g_use, err, errsz);
     } else {
         am_lattice_reader lr;
         am_lattice_read_begin(&lr, r->lattice, name);
@@ -452,8 +340,8 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
         if (pal->mat[j].cte != own->mat[k].cte) mat |= AM_MATERIAL_CTE;
     }
     /* a genome's evolved stiffness field in the run's range, as the run expressed it */
-    if (g_evolved_stiffness && d.stiffness == AM_STIFFNESS_EVOLVED &&
-        (d.stiffness_min != g_range.stiffness_min || d.stiffness_max != g_range.stiffness_max))
+    if (g_use.evolved_stiffness && d.stiffness == AM_STIFFNESS_EVOLVED &&
+        (d.stiffness_min != g_use.range.stiffness_min || d.stiffness_max != g_use.range.stiffness_max))
         mat |= TOOL_APART_STIFFNESS;
     const int n = tool_settings_apart(&h, &d, mat, apart, (int)sizeof apart);
     if (n > 0)
@@ -513,8 +401,7 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     static char base[TOOL_PATH_MAX], robot[TOOL_PATH_MAX]; /* a voxcraft folder's files, during this call */
 #endif
     memset(&g_origin, 0, sizeof g_origin);
-    g_evolved_stiffness = 0;
-    g_genome = 0;
+    memset(&g_use, 0, sizeof g_use);
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
     else if (tool_is_run_dir(a->name)) st = load_run(c, a, a->name, r, err, errsz);
 #if TOOL_VXA
@@ -531,12 +418,12 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
     if (st != AM_OK) return st;
     /* a palette is what a genome's material names are looked up in: a lattice, a VXA file and a
      * scene carry their materials */
-    for (int k = 0; k < a->nset && !g_genome; k++)
-        if (palette_key(a->key[k]))
+    for (int k = 0; k < a->nset && !g_use.genome; k++)
+        if (tool_robot_palette_key(a->key[k]))
             return am_fail(err, errsz, AM_ERR_ARG, "--%s: %s carries its own materials (the palette keys apply to a genome's names: a "
                                                    "genome file or a run folder)", a->key[k], a->name);
     /* a stiffness range is what an evolved stiffness field maps to: a robot without one has none */
-    for (int k = 0; k < a->nset && !g_evolved_stiffness; k++)
+    for (int k = 0; k < a->nset && !g_use.evolved_stiffness; k++)
         if (!strcmp(a->key[k], "stiffness_min") || !strcmp(a->key[k], "stiffness_max"))
             return am_fail(err, errsz, AM_ERR_ARG, "--%s: %s has no evolved stiffness (the range applies to a genome's or a run's with "
                                                    "stiffness = evolved)", a->key[k], a->name);

@@ -82,6 +82,29 @@ int tool_settings_apart(const am_evo_def* from, const am_evo_def* to, unsigned m
  * voxel of its first material); builds the model into c->work[0].model */
 am_status tool_robot_dt(tool_ctx* c, const am_robot* r, double* dt, char* err, int errsz);
 
+/* ---- a robot from a genome (tools/robot_genome.c) ---- */
+
+/* what the robot being loaded took from a genome, for the checks and the note after loading */
+typedef struct tool_genome_use {
+    int genome;              /* 1: a genome's robot (a genome file or a run folder's best) */
+    int evolved_stiffness;   /* 1: it has an evolved stiffness field */
+    am_express_def range;    /* the stiffness range it was expressed in */
+} tool_genome_use;
+/* 1 when key is one of the palette's (palette, materialK): what a genome's material names are
+ * looked up in */
+int tool_robot_palette_key(const char* key);
+/* the settings' palette keys over d, in order; 1 when there were any, 0 when none, or -1 after a
+ * message (a materialK after a gap, a name given twice: am_evo_check's) */
+int tool_robot_palette(const tool_robot_args* a, am_evo_def* d, char* err, int errsz);
+/* the stiffness range an evolved stiffness field maps to: ex's (the run's, or the default for a
+ * genome file) under the settings' stiffness_min and stiffness_max, checked as amorph evolve
+ * checks them */
+am_status tool_robot_stiffness_range(const tool_robot_args* a, am_express_def* ex, char* err, int errsz);
+/* the evolved phases and stiffnesses of the genome just expressed into c->work[0].geno, into the
+ * robot's layers (nothing for a genome without them), its stiffnesses in ex's range; *use says so */
+am_status tool_robot_genome_layers(tool_ctx* c, const am_express_def* ex, am_robot* r, const char* fname, tool_genome_use* use, char* err,
+                                   int errsz);
+
 /* the help lines of the robot commands' shared options */
 #define TOOL_ROBOT_HELP                                                                                 \
     "Settings (file first, then the flags in order): every key of the robot's environment, evaluation\n" \

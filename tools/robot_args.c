@@ -94,8 +94,7 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
     int g = am_evo_key_group(key);
     /* the stiffness range and the palette too: what a genome's evolved stiffness field maps to, and
      * what its material names are looked up in */
-    const int range = !strcmp(key, "stiffness_min") || !strcmp(key, "stiffness_max") || !strcmp(key, "palette") ||
-                      (!strncmp(key, "material", 8) && key[8] >= '1' && key[8] <= '9');
+    const int range = !strcmp(key, "stiffness_min") || !strcmp(key, "stiffness_max") || tool_robot_palette_key(key);
     if (g != AM_KEYS_ENV && g != AM_KEYS_EVAL && g != AM_KEYS_MATERIALS && !range)
         return tool_usage_error("%s: --%s is a setting of an evolution, not of one robot (the robot's settings: amorph %s "
                                 "--help)", cmd, key, cmd);
