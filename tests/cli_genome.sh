@@ -49,7 +49,17 @@ expect_fail 2 'big\.genome:4: workspace side 99 exceeds' "$AMORPH" express "$TMP
 printf 'amorph-genome 1\nrepr cppn\nmaterials passive active\nworkspace 8 8 8\ncppn 1 1\nnode 0 0 tanh 0 1 1\n' >"$TMPD/fn.genome"
 expect_fail 2 "fn\.genome:6: unknown function 'tanh'" "$AMORPH" express "$TMPD/fn.genome"
 printf 'amorph-genome 1\nrepr gmx\nmaterials passive steel\nworkspace 8 8 8\ngmx 0\nend\n' >"$TMPD/steel.genome"
-expect_fail 2 "steel\.genome:3: material 'steel' is not in the built-in palette \(a run's genome: give its run folder" "$AMORPH" express "$TMPD/steel.genome"
+expect_fail 2 "steel\.genome:3: material 'steel' is not in the built-in palette \(a run's genome: give the run's palette, --palette and --materialK" "$AMORPH" express "$TMPD/steel.genome"
+# a genome of the follow-up's palette: expressed in it when express is given it, its lattice carrying
+# those materials; a setting that is not a palette's refused
+expect_ok "$AMORPH" random --palette unshackled --seed 3 --out "$TMPD/four.genome"
+expect_fail 2 "four\.genome:4: material 'passive_soft' is not in the built-in palette" "$AMORPH" express "$TMPD/four.genome"
+expect_ok "$AMORPH" express "$TMPD/four.genome" --palette unshackled --out "$TMPD/four.lattice"
+check "express --palette: the lattice's materials are the follow-up's" [ "$(grep -c '^material passive_soft E=5000000 \|^material active_minus E=5000000 ' "$TMPD/four.lattice")" -eq 2 ]
+# --material4 over the preset: the genome names active_minus, gone from the palette
+expect_fail 2 "four\.genome:4: material 'active_minus' is not in the palette the settings give" \
+    "$AMORPH" express "$TMPD/four.genome" --palette unshackled --material4 "muscle_b modulus=5e6 density=1e6 cte=0.01 phase=90"
+expect_fail 2 "express: --cycles is not a setting express takes" "$AMORPH" express "$TMPD/four.genome" --cycles 3
 printf 'size 2 2 2\n' >"$TMPD/notgenome.txt"
 expect_fail 2 'notgenome\.txt:1: not a genome' "$AMORPH" express "$TMPD/notgenome.txt"
 expect_fail 2 'nothere\.genome' "$AMORPH" express "$TMPD/nothere.genome"

@@ -61,15 +61,20 @@ int cmd_random(tool_ctx* c, int argc, char** argv)
 }
 
 static const char express_help[] =
-    "usage: amorph express GENOME [--out FILE.lattice]\n"
+    "usage: amorph express GENOME [--palette P] [--materialK SPEC]... [--out FILE.lattice]\n"
     "Expresses a genome into a body (level set, argmax material, largest face-connected piece)\n"
     "and writes it in the lattice format to FILE (atomically; then prints voxels=N), or to the\n"
-    "standard output. An empty body is not an error: it has 0 voxels.\n";
+    "standard output. An empty body is not an error: it has 0 voxels. The genome's material names\n"
+    "are looked up in the built-in palette, or in the one --palette and --materialK give (as in a\n"
+    "configuration: docs/evolve.md, Palettes), which the lattice then carries.\n";
 
 int cmd_express(tool_ctx* c, int argc, char** argv)
 {
     const char* in = NULL;
     const char* out = NULL;
+    char err[AM_ERR_MAX];
+    tool_robot_args ra; /* the palette keys given, in order */
+    memset(&ra, 0, sizeof ra);
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         const char* v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -80,7 +85,16 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
             if (!v) return tool_usage_error("express: --out needs a file name");
             out = v, i++;
         } else if (a[0] == '-' && a[1]) {
-            return tool_unknown_option("express", a, express_help);
+            const char *key, *val;
+            const int r = tool_setting_arg("express", argc, argv, &i, &key, &val);
+            if (r == 2) return 2;
+            if (r == 0) return tool_unknown_option("express", a, express_help);
+            if (!tool_robot_palette_key(key)) return tool_usage_error("express: --%s is not a setting express takes (--palette, --materialK)", key);
+            if (ra.nset == TOOL_MAX_SETTINGS) return tool_usage_error("express: more than %d settings", TOOL_MAX_SETTINGS);
+            am_evo_def d = am_default_evo(); /* the value checked now, before the genome is read */
+            if (am_evo_set(&d, key, val, err, sizeof err) != AM_OK) return tool_usage_error("express: --%s", err);
+            ra.key[ra.nset] = key;
+            ra.val[ra.nset++] = val;
         } else {
             if (in) {
                 char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
@@ -91,7 +105,11 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
         }
     }
     if (!in) return tool_usage_error("express: name a genome file (amorph express --help)");
-    char err[AM_ERR_MAX];
+    /* the palette the keys give, in the evolver's slot (idle), or the built-in one */
+    am_evo_def d = am_default_evo();
+    const int own = tool_robot_palette(&ra, &d, err, sizeof err);
+    if (own < 0) return tool_usage_error("express: %s", err);
+    if (own) am_evo_palette_into(&d, &c->evo.palette);
     tool_src src;
     am_lattice* lat = &c->work[0].lattice;
     am_status st = tool_src_open(&src, in, TOOL_FILE_MAX, 0, err, sizeof err);
@@ -100,7 +118,7 @@ int cmd_express(tool_ctx* c, int argc, char** argv)
         return tool_usage_error("%s", err);
     }
     int kind = tool_src_sniff(&src, err, sizeof err);
-    if (kind == TOOL_TEXT_GENOME) st = tool_genome_to_lattice(c, &src, lat, NULL, err, sizeof err);
+    if (kind == TOOL_TEXT_GENOME) st = tool_genome_to_lattice(c, &src, lat, own ? &c->evo.palette : NULL, err, sizeof err);
     else if (kind < 0 && src.binary) st = tool_src_binary(&src, err, sizeof err);
     else if (kind < 0) st = AM_ERR_IO;
     tool_src_close(&src);

@@ -38,8 +38,8 @@ am_status tool_genome_to_lattice(tool_ctx* c, tool_src* src, am_lattice* lat, co
         if (am_palette_find(&lat->palette, g->mat[m]) < 0)
             return am_fail(err, errsz, AM_ERR_RANGE,
                            pal ? "%s:%d: material '%s' is not in the palette the settings give (--palette, --materialK)"
-                               : "%s:%d: material '%s' is not in the built-in palette (a run's genome: give its run folder, which keeps its "
-                                 "materials, or its palette: --palette unshackled, --materialK)",
+                               : "%s:%d: material '%s' is not in the built-in palette (a run's genome: give the run's palette, --palette "
+                                 "and --materialK as its config.txt has them, or, to sim, render, view and export, its run folder)",
                            fname, gr.materials_line ? gr.materials_line : 1, g->mat[m]);
     char msg[AM_ERR_MAX];
     am_express_def ex = am_default_express();
