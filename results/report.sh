@@ -147,9 +147,9 @@ fi
 # +- standard error), the best robot's travel over 30 cycles in body lengths per cycle (the
 # follow-up's measure: gait30.json's mean cycle travel over its body_length), its sustained travel
 # (cycles 11-30, mm per cycle) and the gaits; then amorph stats on the planned pairs of variants
-# (--pair: the family of Holm's correction) at every ACT_EVALS evaluations all their runs reached,
-# and on the sustained score (the tables' first header cell says "actuation", so that they are not
-# the Figure 6 ones)
+# (--pair), a family of Holm's correction per question, at every ACT_EVALS evaluations all their
+# runs reached, and on the sustained score (the tables' first header cell says "actuation" and the
+# family, so that they are not the Figure 6 ones)
 a_at=${ACT_EVALS:-2000}
 if [ -d "$DIR/actuation" ]; then
     rows=$(for v in gmx-seed-global gmx-two-global gmx-four-global gmx-seed-phase gmx-four-phase cppn-seed-global cppn-two-global cppn-four-global \
@@ -180,31 +180,41 @@ if [ -d "$DIR/actuation" ]; then
         echo "$rows"
         set --
         for d in "$DIR"/actuation/*-[0-9]*; do [ -f "$d/log.csv" ] && set -- "$@" "$d"; done
-        # the planned comparisons, one family for Holm's correction (those whose variants both have
-        # runs): per representation the count of materials (four against two of the follow-up's),
-        # the materials' properties (two of the follow-up's against the seed's two), both together
-        # (four against the seed's, global and evolved phase), and evolved phase against global
-        # (each palette)
-        pairs=
-        for r in gmx cppn; do
-            for p in four-global,two-global two-global,seed-global four-global,seed-global four-phase,seed-phase \
-                seed-phase,seed-global four-phase,four-global; do
-                a=$r-${p%,*} b=$r-${p#*,}
-                ls -d "$DIR"/actuation/$a-[0-9]*/log.csv >/dev/null 2>&1 && ls -d "$DIR"/actuation/$b-[0-9]*/log.csv >/dev/null 2>&1 &&
-                    pairs="$pairs --pair $a,$b"
+        all=1
+        for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
+        scores=best
+        [ $all = 0 ] || scores="best sustained"
+        for score in $scores; do
+            # each variant's numbers once (amorph stats's first table), then the planned comparisons,
+            # a family for Holm's correction per question of the follow-up's, each pair of both
+            # representations whose variants have runs: the count of materials (four against two of
+            # the follow-up's), their properties (two of the follow-up's against the seed's two), both
+            # together (four against the seed's, with global and with evolved phase), and evolved
+            # against global phase (each palette). Their tables' first header cell names the family,
+            # so that no two tables of the page are headed alike
+            first=1
+            for fam in count:four-global,two-global properties:two-global,seed-global \
+                both:four-global,seed-global+four-phase,seed-phase phase:seed-phase,seed-global+four-phase,four-global; do
+                pairs=
+                for r in gmx cppn; do
+                    for p in $(echo "${fam#*:}" | tr + ' '); do
+                        a=$r-${p%,*} b=$r-${p#*,}
+                        ls -d "$DIR"/actuation/$a-[0-9]*/log.csv >/dev/null 2>&1 && ls -d "$DIR"/actuation/$b-[0-9]*/log.csv >/dev/null 2>&1 &&
+                            pairs="$pairs --pair $a,$b"
+                    done
+                done
+                [ -n "$pairs" ] || continue
+                # (through a variable: a failure of amorph stats ends the script, as it does above)
+                # shellcheck disable=SC2086
+                out=$(stats_tables --score $score --every "$a_at" $pairs "$@")
+                # table 1: the variants (the first family's call only); table 2: the family's pairs
+                printf '%s\n' "$out" | awk -v first=$first 'NF && !t { n++; t = 1 } !NF { t = 0 } (n == 1 && first) || n == 2 || !NF' |
+                    sed "s/^| evaluations | group |/| evaluations (actuation) | group |/; s/^| score | group |/| score (actuation) | group |/
+                         s/^| evaluations | pair |/| evaluations (actuation: ${fam%%:*}) | pair |/; s/^| score | pair |/| score (actuation: ${fam%%:*}) | pair |/" |
+                    cat -s
+                first=0
             done
         done
-        if [ -n "$pairs" ]; then
-            # (through a variable: a failure of amorph stats ends the script, as it does above)
-            # shellcheck disable=SC2086
-            out=$(stats_tables --every "$a_at" $pairs "$@")
-            all=1
-            for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
-            # shellcheck disable=SC2086
-            [ $all = 0 ] || out="$out
-$(stats_tables --score sustained $pairs "$@")"
-            printf '%s\n' "$out" | sed 's/^| evaluations |/| evaluations (actuation) |/; s/^| score |/| score (actuation) |/'
-        fi
     fi
 fi
 

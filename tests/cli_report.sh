@@ -178,7 +178,8 @@ check "others: no row for a run short of the count: '$(orow three/d)'" [ -z "$(o
 # palette with global actuation and two with evolved phase; not in the others' table; a variant's
 # mean +- standard error is its runs' best at ACT_EVALS, its body lengths per cycle the mean of
 # each best robot's 30-cycle travel per cycle over its body length (gait30.json); the variants
-# compared by amorph stats, the tables' first cell saying "actuation"
+# compared by amorph stats in the family of their question, the tables' first cell saying
+# "actuation" and the family
 A=$TMPD/act
 mkdir -p "$A/actuation"
 for v in seed-global seed-phase; do
@@ -201,7 +202,10 @@ check "actuation: the evolved-phase row: '$(arow gmx-seed-phase)', want '$want'"
 check "actuation: a row per variant" [ -n "$(arow gmx-seed-global)" ]
 check "actuation: not in the others' table" [ -z "$(orow actuation/gmx-seed-phase-1)" ]
 check "actuation: the variants compared by amorph stats" grep -qF "| 24 | gmx-seed-phase - gmx-seed-global |" "$TMPD/out"
-check "actuation: the stats tables' header says so" grep -qF "| evaluations (actuation) | pair |" "$TMPD/out"
+check "actuation: the variants' table once, its header saying so" [ "$(grep -c '^| evaluations (actuation) | group |' "$TMPD/out")" -eq 1 ]
+check "actuation: the pairs' table names its family (evolved against global phase)" grep -qF "| evaluations (actuation: phase) | pair |" "$TMPD/out"
+check "actuation: no ranking table (the families' are in the pairs' tables)" sh -c "! grep -q '^| evaluations (actuation[^|]*) | ranking' '$TMPD/out'"
+check "actuation: the sustained score's tables too" grep -qF "| score (actuation: phase) | pair |" "$TMPD/out"
 
 # --- results/tables.sh: the report's tables copied over a page's older ones, the prose around
 # them kept (the page here: each table of the first report with one stale row, and the per-run
