@@ -178,13 +178,20 @@ if [ -d "$DIR/actuation" ]; then
         echo "| variant | runs at $a_at evaluations | best fitness (m), mean +- standard error | body lengths per cycle (30 cycles) | sustained (mm per cycle) | gaits |"
         echo "|---|---:|---:|---:|---:|---|"
         echo "$rows"
+        # the runs that reached ACT_EVALS (a run still short of it would hold its variant out of the
+        # tests: amorph stats compares a group at the counts all its runs reached)
         set --
-        for d in "$DIR"/actuation/*-[0-9]*; do [ -f "$d/log.csv" ] && set -- "$@" "$d"; done
+        for d in "$DIR"/actuation/*-[0-9]*; do
+            [ -f "$d/log.csv" ] || continue
+            b=$("$AMORPH" report best-at "$a_at" "$d") || exit 1
+            [ -z "$b" ] || set -- "$@" "$d"
+        done
         all=1
         for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
         scores=best
         [ $all = 0 ] || scores="best sustained"
-        for score in $scores; do
+        # (through a variable: a failure of amorph stats ends the script, as it does above)
+        acts=$(for score in $scores; do
             # each variant's numbers once (amorph stats's first table), then the planned comparisons,
             # a family for Holm's correction per question of the follow-up's, each pair of both
             # representations whose variants have runs: the count of materials (four against two of
@@ -204,17 +211,16 @@ if [ -d "$DIR/actuation" ]; then
                     done
                 done
                 [ -n "$pairs" ] || continue
-                # (through a variable: a failure of amorph stats ends the script, as it does above)
                 # shellcheck disable=SC2086
-                out=$(stats_tables --score $score --every "$a_at" $pairs "$@")
+                out=$(stats_tables --score $score --every "$a_at" $pairs "$@") || exit 1
                 # table 1: the variants (the first family's call only); table 2: the family's pairs
                 printf '%s\n' "$out" | awk -v first=$first 'NF && !t { n++; t = 1 } !NF { t = 0 } (n == 1 && first) || n == 2 || !NF' |
                     sed "s/^| evaluations | group |/| evaluations (actuation) | group |/; s/^| score | group |/| score (actuation) | group |/
-                         s/^| evaluations | pair |/| evaluations (actuation: ${fam%%:*}) | pair |/; s/^| score | pair |/| score (actuation: ${fam%%:*}) | pair |/" |
-                    cat -s
+                         s/^| evaluations | pair |/| evaluations (actuation: ${fam%%:*}) | pair |/; s/^| score | pair |/| score (actuation: ${fam%%:*}) | pair |/"
                 first=0
             done
-        done
+        done)
+        printf '%s\n' "$acts" | cat -s
     fi
 fi
 
