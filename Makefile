@@ -226,8 +226,8 @@ $(BUILD)/board_sim: $(BOARD_SIM_OBJ) $(SIM_ONLY_OBJ) tools/board_sim/cortex-m.ld
 # the port when it calls am_port_* (TEST_PORT_<test> := 1). make check-test-links proves that a
 # library-only test holds no symbol of tools/ (nor of the port).
 TEST_TOOLS_test_io_png := tools/account.o tools/args.o tools/film.o tools/files.o tools/picture.o \
-                          tools/record.o tools/robot.o tools/robot_args.o tools/run_dir.o
-TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/robot_args.o tools/run_dir.o
+                          tools/record.o tools/robot.o tools/robot_args.o tools/robot_genome.o tools/run_dir.o
+TEST_TOOLS_test_io_vxa := tools/account.o tools/args.o tools/files.o tools/record.o tools/robot.o tools/robot_args.o tools/robot_genome.o tools/run_dir.o
 TEST_TOOLS_test_record := tools/record.o
 TEST_TOOLS_test_stats  := tools/stats.o
 TEST_PORT_test_io_png  := 1
