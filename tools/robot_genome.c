@@ -85,9 +85,9 @@ am_status tool_robot_stiffness_range(const tool_robot_args* a, am_express_def* e
         given = 1;
     }
     if (!given) return AM_OK;
-    const double lo = AM_PARAM_TO_DOUBLE(d.stiffness_min), hi = AM_PARAM_TO_DOUBLE(d.stiffness_max);
-    if (!(lo <= hi && hi <= 100.0 * lo))
-        return am_fail(err, errsz, AM_ERR_RANGE, "--stiffness_max = %g: from stiffness_min (%g) to 100 times it", hi, lo);
+    /* the range's relation (at most 100 x), as amorph evolve checks it */
+    char why[AM_ERR_MAX];
+    if (am_evo_check(&d, why, sizeof why) != AM_OK) return am_fail(err, errsz, AM_ERR_RANGE, "--%s", why);
     ex->stiffness_min = d.stiffness_min;
     ex->stiffness_max = d.stiffness_max;
     return AM_OK;
