@@ -206,8 +206,9 @@ if [ -d "$DIR/actuation" ]; then
                 for r in gmx cppn; do
                     for p in $(echo "${fam#*:}" | tr + ' '); do
                         a=$r-${p%,*} b=$r-${p#*,}
-                        ls -d "$DIR"/actuation/$a-[0-9]*/log.csv >/dev/null 2>&1 && ls -d "$DIR"/actuation/$b-[0-9]*/log.csv >/dev/null 2>&1 &&
-                            pairs="$pairs --pair $a,$b"
+                        # both variants among the runs taken (a variant with none at ACT_EVALS is no group)
+                        case " $* " in *"/actuation/$a-"[0-9]*) ;; *) continue ;; esac
+                        case " $* " in *"/actuation/$b-"[0-9]*) pairs="$pairs --pair $a,$b" ;; esac
                     done
                 done
                 [ -n "$pairs" ] || continue
