@@ -10,7 +10,7 @@
 # run resumes under MPI or on one machine to the uninterrupted result; mpirun killed with SIGKILL
 # while the job is held leaves no process and no lock behind, and the run resumes; an interruption
 # (SIGINT on rank 1) is agreed by every rank: exit 130 after the generation, one message; bad input
-# gives one line once, not once per rank. Every run is bounded by `timeout`, so a hang fails.
+# gives one line once, not once per rank, also when rank 0 is the last to end. Every run is bounded by `timeout`, so a hang fails.
 # Run from the repository root.
 . tests/shlib.sh
 
@@ -133,5 +133,10 @@ else ko "bad population under MPI: exit $rc (want 2), stderr (want one line): $(
 M 2 "$MPX" evolve --resume "$TMPD/nothing-here" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 if [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ]; then ok
 else ko "resume of a missing folder under MPI: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")"; fi
+# the same with rank 0 slow to end after MPI_Finalize (AMORPH_TEST_END_PAUSE): rank 1 ends first with
+# status 2 and mpirun sends rank 0 SIGTERM, which must not add a line (the job ends as it was ending)
+AMORPH_TEST_END_PAUSE=2 M 2 "$MPX" evolve --resume "$TMPD/nothing-here" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
+if [ $rc -eq 2 ] && [ "$(wc -l <"$TMPD/err")" -eq 1 ] && grep -q "cannot open" "$TMPD/err"; then ok
+else ko "resume of a missing folder under MPI, rank 0 slow to end: exit $rc (want 2), stderr (want one line): $(head -c 300 "$TMPD/err")"; fi
 
 summary cli_mpi

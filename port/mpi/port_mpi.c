@@ -32,7 +32,8 @@
  * the transport cost: maps, items, collectives, their seconds and bytes (docs/cluster.md).
  *
  * Test hooks: AMORPH_TEST_RANK=r (read by every rank from its own environment; default 0) names the
- * one rank on which am_port_raise acts, so a test's AMORPH_TEST_INTERRUPT stops or kills that rank. */
+ * one rank on which am_port_raise acts, so a test's AMORPH_TEST_INTERRUPT stops or kills that rank;
+ * AMORPH_TEST_END_PAUSE=s makes rank 0 wait s seconds after MPI_Finalize (am_port_end). */
 #define _POSIX_C_SOURCE 200809L
 #include "../posix/posix.h"
 
@@ -63,6 +64,7 @@ static volatile int in_map;      /* the main thread runs map items: no collectiv
 static volatile int agreed;      /* the interruption flag agreed at the last reduction */
 static int raise_rank;           /* AMORPH_TEST_RANK */
 static int node_ranks = 1;       /* ranks on this rank's machine */
+static volatile sig_atomic_t g_told; /* rank 0 has said mpirun is stopping the job (or falls silent: am_port_end) */
 static int err_fd = 2;           /* this rank's own stderr (rank > 0: kept before /dev/null) */
 
 /* the dynamic deal's counter: the next item of the map under way, a long in rank 0's window that
@@ -201,6 +203,11 @@ int am_port_end(int status)
     if (!on) return status;
     fflush(stdout);
     fflush(stderr);
+    /* the job ends with the status every rank has: mpirun's SIGTERM, which follows a rank's
+     * non-zero exit while rank 0 is still ending, says nothing new. Rank 0 falls silent first, and
+     * the barrier keeps every other rank from ending before it has (MPI_Finalize need not wait). */
+    if (rank == 0) g_told = 1;
+    MPI_Barrier(MPI_COMM_WORLD);
     if (g_stats.on && rank == 0) {
         char line[400];
         int n = snprintf(line, sizeof line,
@@ -217,6 +224,12 @@ int am_port_end(int status)
     /* every rank arrives here with the same status (same program, same inputs) */
     MPI_Finalize();
     on = 0;
+    /* test hook: rank 0 is slow to end after MPI_Finalize, so that the other ranks end first */
+    const char* p = rank == 0 ? getenv("AMORPH_TEST_END_PAUSE") : NULL;
+    if (p) {
+        struct timespec ts = {atoi(p), 0};
+        while (nanosleep(&ts, &ts) != 0) {}
+    }
     return status;
 }
 
@@ -545,7 +558,6 @@ int am_port_cores(void)
 /* ---- interruption: each rank's flag, agreed by a reduction ---- */
 
 static struct sigaction g_old_int, g_old_term;
-static volatile sig_atomic_t g_told;
 
 /* rank 0's handler of SIGINT and SIGTERM under MPI: the POSIX port's (a flag; the second request
  * ends the process), after one line the first time. Under mpirun these signals are mpirun's: it
