@@ -18,7 +18,8 @@
 # took (the sum of log.csv's wall_s), and each round (per group and experiment, every 1,000
 # evaluations). With --pictures it also draws DIR/representations/fitness.svg
 # (`amorph plot`: the seed's Figure 6 from the runs that have reached FIG6_MIN_EVALS evaluations,
-# 2,000 unless set, or from every run when none has), DIR/others.svg (every other experiment's runs
+# 2,000 unless set, or from every run when none has), DIR/actuation/fitness.svg (the actuation
+# experiment's variants, from the runs that have reached ACT_EVALS), DIR/others.svg (every other experiment's runs
 # against the mean of the GMX runs, the seed's settings, to OTHERS_EVALS) and DIR/gaits.svg (each
 # best robot's travel in each of its 30 cycles, a row per run).
 # The numbers of log.csv come from the program (`amorph report last`, `fig6`, `compute`, `best-at`,
@@ -244,6 +245,15 @@ if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
             --title "DCT, CPPN and GMX at 20^3: the runs with $1 evaluations or more"
     }
     fig6 "$min" >/dev/null 2>&1 || fig6 0 >/dev/null
+    # actuation/fitness.svg: the actuation experiment's variants, the runs that reached ACT_EVALS
+    # (every run when none has)
+    if [ -d "$DIR/actuation" ]; then
+        act() {
+            "$AMORPH" plot "$DIR/actuation" --min-evals "$1" --out "$DIR/actuation/fitness.svg" \
+                --title "bodies and actuation evolved together at 10^3: the runs with $1 evaluations or more"
+        }
+        act "$a_at" >/dev/null 2>&1 || act 0 >/dev/null
+    fi
     # others.svg: every other experiment's runs against the GMX runs' mean and band (amorph plot's
     # DIR/VARIANT), up to the count their table compares them at; none when no other experiment has
     # runs (the GMX runs alone are Figure 6's)

@@ -185,6 +185,25 @@ check "plot without --min-evals: the legend should count 3 runs" grep -q 'a, 3 r
 check "plot --min-evals: the mean should step 3 times (20, 40, 60): '$(dpath "$TMPD/short-60.svg" mean 1)'" steps "$(dpath "$TMPD/short-60.svg" mean 1)" 3
 expect_fail 2 "no run has logged 100 evaluations" "$AMORPH" plot "$TMPD/short" --min-evals 100 --out "$TMPD/x.svg"
 expect_fail 2 "--min-evals needs a whole number" "$AMORPH" plot "$TMPD/short" --min-evals -1 --out "$TMPD/x.svg"
+# eleven variants with long names (the actuation experiment's): the first ten in ten colours, the
+# eleventh in the first colour dashed; the legend's column as wide as its longest entry needs
+mkdir -p "$TMPD/many"
+for v in 01 02 03 04 05 06 07 08 09 10 11; do
+    mkdir -p "$TMPD/many/variant-with-a-long-name-$v-1"
+    printf 'generation,evaluations,best\n0,20,0.00%s\n' "${v#0}" >"$TMPD/many/variant-with-a-long-name-$v-1/log.csv"
+done
+expect_ok "$AMORPH" plot "$TMPD/many" --out "$TMPD/many.svg"
+cols=$(grep -o 'class="mean" fill="none" stroke="#[0-9a-f]*"' "$TMPD/many.svg" | head -n 10 | sort -u | wc -l)
+check "plot: ten variants should have ten colours, not $cols" [ "$cols" -eq 10 ]
+check "plot: the eleventh variant's mean and legend should be dashed in the first colour" sh -c \
+    "grep 'class=\"mean\"' '$TMPD/many.svg' | sed -n 11p | grep -q 'stroke=\"#1f77b4\" stroke-dasharray' &&
+     grep 'class=\"legend\"' '$TMPD/many.svg' | sed -n 11p | grep -q 'stroke-dasharray'"
+check "plot: none of the first ten dashed" sh -c "! grep 'class=\"mean\"' '$TMPD/many.svg' | head -n 10 | grep -q dasharray"
+# the legend's text starts at x and takes about 7.5 px a character: the picture must be wider
+lx=$(grep -o '<text x="[0-9]*" y="[0-9]*">variant-with-a-long-name-01' "$TMPD/many.svg" | sed 's/<text x="\([0-9]*\)".*/\1/')
+w=$(sed -n 's/.*<svg [^>]*width="\([0-9]*\)".*/\1/p' "$TMPD/many.svg")
+lx_label="variant-with-a-long-name-01, 1 run"
+check "plot: the legend ('$lx_label' at x=$lx) should fit in the width $w" [ "$((lx + 75 * ${#lx_label} / 10))" -le "${w:-0}" ]
 # --max-evals: rows beyond N are not drawn; it draws what logs cut at N draw
 expect_ok "$AMORPH" plot "$TMPD/short" --max-evals 40 --out "$TMPD/short-max40.svg"
 mkdir -p "$TMPD/cut/a-1" "$TMPD/cut/a-2" "$TMPD/cut/a-3"

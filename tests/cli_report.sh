@@ -209,6 +209,14 @@ check "actuation: the variants' table once, its header saying so" [ "$(grep -c '
 check "actuation: the pairs' table names its family (evolved against global phase)" grep -qF "| evaluations (actuation: phase) | pair |" "$TMPD/out"
 check "actuation: no ranking table (the families' are in the pairs' tables)" sh -c "! grep -q '^| evaluations (actuation[^|]*) | ranking' '$TMPD/out'"
 check "actuation: the sustained score's tables too" grep -qF "| score (actuation: phase) | pair |" "$TMPD/out"
+# --pictures: actuation/fitness.svg, the variants of the runs that reached ACT_EVALS (the four-phase
+# run at 8 evaluations left out), every run when none has
+ACT_EVALS=24 OTHERS_EVALS=24 sh results/report.sh "$AMORPH" "$A" --pictures >/dev/null 2>&1
+check "actuation plot: the two variants that reached 24 evaluations, two runs each, and not the one short of it" sh -c \
+    "grep -q '>gmx-seed-global, 2 runs<' '$A/actuation/fitness.svg' && grep -q '>gmx-seed-phase, 2 runs<' '$A/actuation/fitness.svg' &&
+     ! grep -q 'gmx-four-phase' '$A/actuation/fitness.svg'"
+ACT_EVALS=1000 OTHERS_EVALS=24 sh results/report.sh "$AMORPH" "$A" --pictures >/dev/null 2>&1
+check "actuation plot: every run when none reached ACT_EVALS" grep -q '>gmx-four-phase, 1 run<' "$A/actuation/fitness.svg"
 
 # --- results/tables.sh: the report's tables copied over a page's older ones, the prose around
 # them kept (the page here: each table of the first report with one stale row, and the per-run

@@ -44,7 +44,12 @@ static char plot_svg[PLOT_SVG_MAX];
 static int plot_travel;
 static double plot_period;   /* s: the actuation period, where the cycles' marks go */
 
-static const char* const plot_colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+/* ten colours; a series past the tenth repeats them, dashed (then dotted), so that no two of the
+ * first 30 look alike */
+#define PLOT_COLOURS 10
+static const char* const plot_colours[PLOT_COLOURS] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                                       "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+static const char* const plot_dashes[3] = {"", " stroke-dasharray=\"7 4\"", " stroke-dasharray=\"2 3\""};
 
 /* a path's last component: it starts at the returned offset and ends at *end (trailing '/' left
  * out) */
@@ -309,7 +314,15 @@ static int plot_svg_write(const char* title, const char* path)
      * further when the data come within 3 % of its end */
     if (x1 - xdata < 0.03 * (x1 - x0)) x1 += xs;
     if (y1 - ydata < 0.03 * (y1 - y0)) y1 += ys;
-    const int W = 860, H = 520, ml = 78, mr = 190, mt = 46, mb = 58;
+    /* the legend's column as wide as its longest entry needs (about 7.5 px a character at 13 px,
+     * after the 46 px of the line sample), the plot itself always 592 px wide */
+    size_t longest = 0;
+    for (int s = 0; s < plot_nser; s++) {
+        size_t n = strlen(plot_ser[s].label) + (plot_ser[s].experiment ? strlen(", 99 runs") : 0);
+        longest = n > longest ? n : longest;
+    }
+    const int mr = 46 + (int)(7.5 * (double)longest) + 12 > 190 ? 46 + (int)(7.5 * (double)longest) + 12 : 190;
+    const int ml = 78, mt = 46, mb = 58, W = 670 + mr, H = 520;
     const int pw = W - ml - mr, ph = H - mt - mb;
     const plot_frame fr = {x0, x1, y0, y1, unit, ml, mt, pw, ph};
 #define PX(x) frame_x(&fr, (x))
@@ -354,12 +367,13 @@ static int plot_svg_write(const char* title, const char* path)
     int ly = mt + 8, any_band = 0;
     for (int s = 0; s < plot_nser; s++) {
         const plot_series* S = &plot_ser[s];
-        const char* col = plot_colours[s % 8];
+        const char* col = plot_colours[s % PLOT_COLOURS];
+        const char* dash = plot_dashes[s / PLOT_COLOURS % 3];
         int grouped = S->experiment;
         if (plot_travel) {
             const plot_run* R = &plot_runs[S->runs[0]];
-            put(&o, "<path class=\"travel\" data-end=\"%.9g\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" d=\"",
-                R->n ? plot_y[R->first + R->n - 1] : 0.0, col);
+            put(&o, "<path class=\"travel\" data-end=\"%.9g\" fill=\"none\" stroke=\"%s\"%s stroke-width=\"2\" d=\"",
+                R->n ? plot_y[R->first + R->n - 1] : 0.0, col, dash);
             for (long i = 0; i < R->n; i++)
                 put(&o, i ? " L%.2f,%.2f" : "M%.2f,%.2f", PX(plot_x[R->first + i]), PY(plot_y[R->first + i]));
             put(&o, "\"/>\n");
@@ -371,22 +385,22 @@ static int plot_svg_write(const char* title, const char* path)
             put(&o, " Z\"/>\n");
             for (int r = 0; r < S->nruns; r++) {
                 const plot_run* R = &plot_runs[S->runs[r]];
-                put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\" stroke-opacity=\"0.35\" stroke-width=\"1\" d=\"", col);
+                put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\"%s stroke-opacity=\"0.35\" stroke-width=\"1\" d=\"", col, dash);
                 put_steps(&o, &fr, plot_x + R->first, plot_y + R->first, NULL, 0, R->n, 0);
                 put(&o, "\"/>\n");
             }
-            put(&o, "<path class=\"mean\" fill=\"none\" stroke=\"%s\" stroke-width=\"2.5\" d=\"", col);
+            put(&o, "<path class=\"mean\" fill=\"none\" stroke=\"%s\"%s stroke-width=\"2.5\" d=\"", col, dash);
             put_steps(&o, &fr, plot_mx + k, plot_my + k, NULL, 0, S->n, 0);
             put(&o, "\"/>\n");
         } else {
             const plot_run* R = &plot_runs[S->runs[0]];
-            put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\" stroke-width=\"2\" d=\"", col);
+            put(&o, "<path class=\"run\" fill=\"none\" stroke=\"%s\"%s stroke-width=\"2\" d=\"", col, dash);
             put_steps(&o, &fr, plot_x + R->first, plot_y + R->first, NULL, 0, R->n, 0);
             put(&o, "\"/>\n");
         }
         /* legend entry */
-        put(&o, "<g class=\"legend\"><line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\" stroke-width=\"3\"/>", ml + pw + 16,
-            ly, ml + pw + 40, ly, col);
+        put(&o, "<g class=\"legend\"><line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"%s\"%s stroke-width=\"3\"/>", ml + pw + 16,
+            ly, ml + pw + 40, ly, col, dash);
         put(&o, "<text x=\"%d\" y=\"%d\">", ml + pw + 46, ly + 4);
         put_text(&o, S->label);
         if (grouped) put(&o, ", %d run%s", S->nruns, S->nruns == 1 ? "" : "s");
