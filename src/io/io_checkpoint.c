@@ -120,7 +120,8 @@ typedef struct memo_field {
 #define F_INT(m, lo, hi) {offsetof(am_evo_result, m), NUM_INT, lo, hi}
 #define F_LONG(m) {offsetof(am_evo_result, m), NUM_LONG, 0, 2000000000L}
 #define F_REAL(m) {offsetof(am_evo_result, m), NUM_REAL, 0, 0}
-static const memo_field memo_fields[MEMO_NUMBERS] = {
+#define MEMO_FIXED 28 /* the numbers every run has; then the voxels of materials 4, 5, ... */
+static const memo_field memo_fields[MEMO_FIXED] = {
     F_INT(voxels, 0, AM_MAX_CELLS), F_INT(empty, 0, 1), F_INT(detail.material_voxels[0], 0, AM_MAX_CELLS),
     F_INT(detail.material_voxels[1], 0, AM_MAX_CELLS), F_INT(detail.material_voxels[2], 0, AM_MAX_CELLS),
     F_REAL(detail.sim.fitness), F_REAL(detail.sim.travel), F_REAL(detail.sim.dx), F_REAL(detail.sim.dy), F_REAL(detail.sim.dz),
@@ -130,30 +131,25 @@ static const memo_field memo_fields[MEMO_NUMBERS] = {
     F_INT(detail.sim.diverged, 0, 1), F_INT(detail.sim.settled, 0, 1), F_REAL(detail.sim.residual_speed),
     F_LONG(detail.sim.kinetic_resets), F_REAL(detail.sim.sim_seconds), F_LONG(detail.sim.rebuilds),
     F_INT(detail.sim.max_pairs, 0, 2000000000L), {offsetof(am_evo_result, detail.sim.hash), NUM_U64, 0, 0},
-#if AM_MAX_GENO_MATERIALS >= 4
-    F_INT(detail.material_voxels[3], 0, AM_MAX_CELLS),
-#endif
-#if AM_MAX_GENO_MATERIALS >= 5
-    F_INT(detail.material_voxels[4], 0, AM_MAX_CELLS),
-#endif
-#if AM_MAX_GENO_MATERIALS >= 6
-    F_INT(detail.material_voxels[5], 0, AM_MAX_CELLS),
-#endif
-#if AM_MAX_GENO_MATERIALS >= 7
-    F_INT(detail.material_voxels[6], 0, AM_MAX_CELLS),
-#endif
-#if AM_MAX_GENO_MATERIALS >= 8
-    F_INT(detail.material_voxels[7], 0, AM_MAX_CELLS),
-#endif
 };
-_Static_assert(AM_MAX_GENO_MATERIALS >= 3 && AM_MAX_GENO_MATERIALS <= 8, "a remembered result holds every material's count");
+_Static_assert(AM_MAX_GENO_MATERIALS >= 3 && MEMO_NUMBERS == MEMO_FIXED + AM_MAX_GENO_MATERIALS - 3,
+               "a remembered result holds every material's count");
+
+/* number k's field: the table's, or past it material k - 25's voxels (materials 4, 5, ...) */
+static memo_field memo_field_at(int k)
+{
+    if (k < MEMO_FIXED) return memo_fields[k];
+    const memo_field f = {offsetof(am_evo_result, detail.material_voxels) + (size_t)(k - MEMO_FIXED + 3) * sizeof(int), NUM_INT, 0,
+                          AM_MAX_CELLS};
+    return f;
+}
 
 /* the result's numbers: integers as two's complement, doubles as bit patterns */
 static void memo_numbers(const am_evo_result* r, int count, uint64_t v[MEMO_NUMBERS])
 {
     const char* base = (const char*)r;
     for (int k = 0; k < count; k++) {
-        const memo_field* f = &memo_fields[k];
+        const memo_field fk = memo_field_at(k), *f = &fk;
         int i;
         long l;
         double d;
@@ -174,7 +170,7 @@ static int memo_result(const uint64_t v[MEMO_NUMBERS], int count, am_evo_result*
     memset(r, 0, sizeof *r);
     r->detail.parent[0] = r->detail.parent[1] = -1;
     for (int k = 0; k < count; k++) {
-        const memo_field* f = &memo_fields[k];
+        const memo_field fk = memo_field_at(k), *f = &fk;
         const int64_t x = (int64_t)v[k];
         if ((f->type == NUM_INT || f->type == NUM_LONG) && (x < f->lo || x > f->hi)) return 0;
         if (f->type == NUM_INT) {
