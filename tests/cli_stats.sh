@@ -156,6 +156,17 @@ log E-2 900:0.01
 "$AMORPH" stats "$R/E-1" "$R/E-2" >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 check "no count reached: exit 0 ($rc), a note, no output" sh -c "[ $rc -eq 0 ] && [ ! -s '$TMPD/out' ] && grep -q 'nothing to compare' '$TMPD/err'"
 
+# a run that has reached no count yet (one just started) is left out of its group's best fitness,
+# with a note, rather than hiding the group at every count: B's three runs at 1000 beside B-4 at 40
+# evaluations; E, whose one run has reached none, is no group of the tables
+log B-4 20:0.001 40:0.002
+log E-1 20:0.003
+expect_ok "$AMORPH" stats "$R/B-1" "$R/B-2" "$R/B-3" "$R/B-4" "$R/C-1" "$R/C-2" "$R/E-1"
+check "a run just started: B at 1000 over its three runs that reached it" grep -qF "| 1000 | B | 3 | 6.00 | 2.00 | 1.15 |" "$TMPD/out"
+check "a run just started: a note names it" grep -qF "$R/B-4 has not reached 1000 evaluations: left out of B" "$TMPD/err"
+check "a group none of whose runs reached a count: no row" sh -c "! grep -q '| E |' '$TMPD/out'"
+check "a group none of whose runs reached a count: no note (nothing to leave out)" sh -c "! grep -q 'E-1' '$TMPD/err'"
+
 # --- bad input: one line, exit 2 ---
 mkdir -p "$R/nolog-1" "$R/empty-1" "$R/bad-1" "$R/short-1" "$R/back-1" "$R/g10-1" "$R/gname-1" "$R/gnum-1"
 expect_fail 2 "stats: .*/nolog-1/log.csv: no such file \(not a run folder" "$AMORPH" stats "$R/A-1" "$R/nolog-1"

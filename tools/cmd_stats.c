@@ -261,7 +261,8 @@ static const char stats_help[] =
     "Compares groups of run folders (amorph evolve --out DIR) by tests. A DIR named on its own joins\n"
     "the group of its folder name without the trailing -K (runs/dct-1 and runs/dct-2: dct); --group\n"
     "names a group's runs explicitly. At every N evaluations that all the runs of a group have\n"
-    "reached, each run's best fitness so far (log.csv: the best of its rows at or below N); for each\n"
+    "reached, each run's best fitness so far (log.csv: the best of its rows at or below N; a run\n"
+    "that has not reached N yet is left out, with a note, while another of its group has); for each\n"
     "group n, mean, standard deviation and standard error; for each pair of groups (the higher mean\n"
     "first) the difference, Welch's t with its Welch-Satterthwaite degrees of freedom and two-sided\n"
     "p, the Mann-Whitney U (the pairs of runs in which the first group's is the higher, ties one half)\n"
@@ -360,6 +361,20 @@ int cmd_stats(tool_ctx* c, int argc, char** argv)
     }
     for (int g = 0; g < stats_S.ngroups; g++) {
         stats_group* G = &stats_S.groups[g];
+        /* a run that has reached no count yet (one just started) is left out of its group's best
+         * fitness while another run of the group has reached one: it would hide the group at every
+         * count (its runs are compared at the counts all of them reached) */
+        int kept = 0;
+        for (int i = 0; i < G->n; i++) kept += stats_S.runs[G->runs[i]].counts > 0;
+        if (!stats_S.sustained && kept > 0 && kept < G->n) {
+            int n = 0;
+            for (int i = 0; i < G->n; i++) {
+                const stats_run* R = &stats_S.runs[G->runs[i]];
+                if (R->counts > 0) G->runs[n++] = G->runs[i];
+                else fprintf(stderr, "amorph: stats: note: %s has not reached %ld evaluations: left out of %s\n", R->dir, stats_S.every, G->name);
+            }
+            G->n = n;
+        }
         G->counts = STATS_MAX_COUNTS;
         for (int i = 0; i < G->n; i++) {
             const stats_run* R = &stats_S.runs[G->runs[i]];

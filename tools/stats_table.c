@@ -157,6 +157,10 @@ void stats_markdown(am_text* t)
                 for (int i = 0; i < GAITS; i++) put(t, " %d |", stats_S.groups[g].gaits[i]);
             put(t, "\n");
         }
+    /* no pairs at any count (one group there at the most): no tables of them */
+    int pairs = 0;
+    for (int k = 0; k < top && !pairs; k++) pairs = ranked(k, order, mean) >= 2;
+    if (!pairs) return;
     /* each pair, the higher mean first, with its p values after Holm's correction over the pairs
      * of its count */
     put(t, "\n| %s | pair | difference (mm) | Welch's t | df | p (Welch) | p (Welch, Holm) | U | p (Mann-Whitney) | p (Mann-Whitney, Holm) "
