@@ -321,7 +321,7 @@ static int plot_svg_write(const char* title, const char* path)
         size_t n = strlen(plot_ser[s].label) + (plot_ser[s].experiment ? strlen(", 99 runs") : 0);
         longest = n > longest ? n : longest;
     }
-    const int mr = 46 + (int)(7.5 * (double)longest) + 12 > 190 ? 46 + (int)(7.5 * (double)longest) + 12 : 190;
+    const int legend = 46 + (int)(7.5 * (double)longest) + 12, mr = legend > 190 ? legend : 190;
     const int ml = 78, mt = 46, mb = 58, W = 670 + mr, H = 520;
     const int pw = W - ml - mr, ph = H - mt - mb;
     const plot_frame fr = {x0, x1, y0, y1, unit, ml, mt, pw, ph};

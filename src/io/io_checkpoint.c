@@ -135,7 +135,7 @@ static const memo_field memo_fields[MEMO_FIXED] = {
 _Static_assert(AM_MAX_GENO_MATERIALS >= 3 && MEMO_NUMBERS == MEMO_FIXED + AM_MAX_GENO_MATERIALS - 3,
                "a remembered result holds every material's count");
 
-/* number k's field: the table's, or past it material k - 25's voxels (materials 4, 5, ...) */
+/* number k's field: the table's, or past it material_voxels[k - 25] (materials 4, 5, ...) */
 static memo_field memo_field_at(int k)
 {
     if (k < MEMO_FIXED) return memo_fields[k];
