@@ -12,7 +12,8 @@
 # each run's best so far every 1,000; the mean size of the bodies each representation evaluated,
 # every 500 evaluations; the statistics of amorph stats (the representations compared by Welch's
 # t-test and the Mann-Whitney test at every 1,000 evaluations all the runs of each have reached,
-# and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits);
+# and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits,
+# over the runs at the largest multiple of 1,000 that every run at 1,000 or more has reached);
 # the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
 # against the range of the GMX runs (the seed's settings) at that count; and the compute each run
 # took (the sum of log.csv's wall_s), and each round (per group and experiment, every 1,000
@@ -89,6 +90,18 @@ if [ $# -gt 0 ]; then
     stats_tables "$@"
     all=1
     for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
+    # the sustained score takes each run's best robot as it stands, so a run just started (its
+    # best of a few generations) would sit beside runs of thousands: only the runs that have
+    # reached SUS_AT are compared, the largest multiple of 1,000 that every run of 1,000
+    # evaluations or more has reached (every run when none has reached 1,000)
+    counts=$(for d in "$@"; do last=$("$AMORPH" report last "$d") || exit 1; echo "${last% *}"; done) || exit 1
+    SUS_AT=$(echo "$counts" | awk '$1 >= 1000 && (m == "" || $1 < m) { m = $1 } END { print m == "" ? 0 : int(m / 1000) * 1000 }')
+    n=$#
+    for d in "$@"; do
+        last=$("$AMORPH" report last "$d") || exit 1
+        [ "${last% *}" -lt "$SUS_AT" ] || set -- "$@" "$d"
+    done
+    shift "$n"
     [ $all = 0 ] || stats_tables --score sustained "$@"
 fi
 
