@@ -19,12 +19,15 @@
 # finishes it.
 set -u
 AMORPH=$1 DIR=$2 STAGE=$3
+err=$DIR/.run.$$.err
+# stopped (results/runners.sh stop: SIGTERM to the runner's process group): the trap runs once the
+# amorph going has written its checkpoint and ended, passes on its words and starts no other run
+trap 'cat "$err" >&2 2>/dev/null; rm -f "$err"; exit 143' TERM
 
 # run FOLDER EVALS KEY=VALUE...: FOLDER started with the settings or resumed to EVALS evaluations
 run() {
     folder=$1 evals=$2
     shift 2
-    err=$DIR/.run.$$.err
     done_evals=$(sed -n 's/^evaluations \([0-9][0-9]*\)$/\1/p' "$folder/checkpoint.txt" 2>/dev/null)
     if [ -n "$done_evals" ] && [ "$done_evals" -gt "$evals" ]; then
         # a later round's run: it is past this round, so nothing to do

@@ -8,7 +8,8 @@
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
 # its checkpoint's refused. results/tables.sh copying a report's tables into a page. And
-# results/run.sh's rounds, with a stand-in for amorph. Run from the repository root.
+# results/run.sh's rounds, and results/runners.sh starting two runners and stopping them at a
+# checkpoint, with stand-ins for amorph. Run from the repository root.
 . tests/shlib.sh
 
 if ! "$AMORPH" --help 2>/dev/null | grep -q 'profile=desktop'; then
@@ -382,4 +383,72 @@ expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "
 expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" fig6-4k
 expect_fail 2 "the stage takes a number of evaluations" sh results/run.sh "$F" "$RD" others-
 expect_fail 2 "unknown stage 'fig7-2000'" sh results/run.sh "$F" "$RD" fig7-2000
+# --- results/runners.sh, with a stand-in for amorph that holds its folder (mkdir of a lock, as the
+# real one refuses a folder another is working in) and, unless FAKE_QUICK, works until SIGTERM,
+# then writes its checkpoint as the real one does on Ctrl-C and SIGTERM (or gives up after 120 s, so
+# that a failing test leaves nothing going)
+G=$TMPD/fake-runner RR=$TMPD/runners
+cat >"$G" <<'FAKE'
+#!/bin/sh
+while [ $# -gt 0 ]; do
+    case $1 in --resume | --out) dir=$2 ;; --evaluations) n=$2 ;; esac
+    shift
+done
+mkdir -p "$dir"
+mkdir "$dir/lock.d" 2>/dev/null || { echo "amorph: $dir: another amorph is working in this folder" >&2; exit 1; }
+echo "$dir" >>"$RR/calls"
+stopped=0
+trap 'stopped=1' TERM
+touch "$dir/started"
+t=0
+while [ -z "${FAKE_QUICK:-}" ] && [ $stopped = 0 ] && [ $t -lt 1200 ]; do sleep 0.1; t=$((t + 1)); done
+rmdir "$dir/lock.d"
+if [ $stopped = 1 ]; then echo "checkpoint" >"$dir/checkpoint.txt"; echo "amorph: $dir: stopped" >&2; exit 143; fi
+printf 'evaluations = %s\n' "$n" >"$dir/summary.txt"
+printf 'evaluations %s\n' "$n" >"$dir/checkpoint.txt"
+FAKE
+chmod +x "$G"
+mkdir -p "$RR"
+export RR
+# wait_for WHAT CMD...: polls CMD until it succeeds, 60 s at the most (the runners start in the background)
+wait_for() {
+    what=$1
+    shift
+    t=0
+    while ! "$@" 2>/dev/null; do
+        t=$((t + 1))
+        [ $t -lt 600 ] || { ko "runners.sh: no $what after 60 s"; return 1; }
+        sleep 0.1
+    done
+    ok
+}
+RUNNER_STAGES=fig6-1000 FIG6_SEEDS=2 expect_ok sh results/runners.sh start "$G" "$RR"
+check "runners.sh: two runners started: $(cat "$TMPD/out")" [ "$(grep -c '^runner [12]: process group [0-9]* ' "$TMPD/out")" -eq 2 ]
+check "runners.sh: the program copied for the runners" cmp -s "$G" "$RR/.runners/amorph"
+# the two take one round: dct-1 and, dct-1 being held, cppn-1
+wait_for "two runs going" sh -c "[ -f '$RR/representations/dct-1/started' ] && [ -f '$RR/representations/cppn-1/started' ]"
+expect_ok sh results/runners.sh status "$RR"
+check "runners.sh status: both going: $(cat "$TMPD/out")" [ "$(grep -c '^runner [12]: going' "$TMPD/out")" -eq 2 ]
+expect_fail 1 "runner 1 is going already" sh results/runners.sh start "$G" "$RR"
+expect_ok sh results/runners.sh stop "$RR"
+check "runners.sh stop: said" grep -qx "runners stopped" "$TMPD/out"
+check "runners.sh stop: both runs ended at a checkpoint" sh -c "grep -qx checkpoint '$RR/representations/dct-1/checkpoint.txt' && grep -qx checkpoint '$RR/representations/cppn-1/checkpoint.txt'"
+check "runners.sh stop: no run started after: $(tr '\n' ' ' <"$RR/calls")" [ "$(wc -l <"$RR/calls")" -eq 2 ]
+check "runners.sh stop: the runs' words in the logs" sh -c "cat '$RR'/.runners/runner-*.log | grep -q 'cppn-1: stopped'"
+check "runners.sh stop: run.sh's files of words removed" sh -c "! ls '$RR'/.run.*.err 2>/dev/null"
+expect_ok sh results/runners.sh status "$RR"
+check "runners.sh status: neither going: $(cat "$TMPD/out")" [ "$(grep -c '^runner [12]: not going' "$TMPD/out")" -eq 2 ]
+# started again, the runs resumed and the round finished: every run at its count, each log ends
+FAKE_QUICK=1 RUNNER_STAGES=fig6-1000 FIG6_SEEDS=2 expect_ok sh results/runners.sh start "$G" "$RR"
+wait_for "end of the round" sh -c "tail -n 1 '$RR/.runners/runner-1.log' | grep -q 'all rounds done' && tail -n 1 '$RR/.runners/runner-2.log' | grep -q 'all rounds done'"
+n=0
+for r in dct-1 cppn-1 gmx-1 dct-2 cppn-2 gmx-2; do grep -qx 'evaluations = 1000' "$RR/representations/$r/summary.txt" 2>/dev/null && n=$((n + 1)); done
+check "runners.sh: the six runs of the round at 1000 evaluations: $n" [ $n -eq 6 ]
+expect_ok sh results/runners.sh stop "$RR"
+expect_fail 2 "not an executable" sh results/runners.sh start "$TMPD/none" "$RR"
+expect_fail 2 "no such folder" sh results/runners.sh start "$G" "$TMPD/none"
+expect_fail 2 "usage: sh results/runners.sh" sh results/runners.sh restart "$RR"
+RUNNERS=x expect_fail 2 "RUNNERS='x': a whole number" sh results/runners.sh status "$RR"
+# whatever failed above, nothing of the runners is left going
+for f in "$RR"/.runners/runner-*.pid; do [ -f "$f" ] && kill -KILL "-$(cat "$f")" 2>/dev/null; done
 summary cli_report
