@@ -2,8 +2,9 @@
 # The reference runs in the background of a work period (docs/results.md, How the runs are made):
 # two runners at nice 19, each working through the rounds of results/run.sh in order, one thread
 # each, and stopped at a checkpoint before the runs are shipped.
-#   sh results/runners.sh start AMORPH DIR   starts them; AMORPH is copied to DIR/.runners/amorph
-#                                            first, so that a rebuild while they go changes nothing
+#   sh results/runners.sh start AMORPH DIR   starts them; AMORPH and run.sh are copied to
+#                                            DIR/.runners first, so that a rebuild or an edit while
+#                                            they go changes nothing
 #   sh results/runners.sh status DIR         each runner: going or not, and its log's last line
 #   sh results/runners.sh stop DIR           SIGTERM to each runner's process group (the loop ends
 #                                            at once, run.sh when its amorph has; amorph evolve
@@ -56,9 +57,12 @@ start)
         fi
         k=$((k + 1))
     done
-    # a copy of the program: replacing AMORPH (make) leaves the runs on the one they started with
+    # copies of the program and of run.sh: a rebuild or an edit leaves the runs on what they
+    # started with
     cp "$AMORPH" "$R/amorph.new"
     mv "$R/amorph.new" "$R/amorph"
+    cp "$HERE/run.sh" "$R/run.sh.new"
+    mv "$R/run.sh.new" "$R/run.sh"
     k=1
     while [ "$k" -le "$N" ]; do
         # its own session, so its process group (the loop, run.sh and amorph) can be stopped whole;
@@ -67,7 +71,7 @@ start)
         nice -n 19 setsid sh -c 'echo $$ >"$5.new" && mv "$5.new" "$5" || exit 1
             for st in $1; do sh "$2/run.sh" "$3" "$4" "$st" || exit 1; done
             echo "$(date -u +%FT%TZ) all rounds done"' \
-            runner "$STAGES" "$HERE" "$R/amorph" "$DIR" "$R/runner-$k.pid" >>"$R/runner-$k.log" 2>&1 </dev/null &
+            runner "$STAGES" "$R" "$R/amorph" "$DIR" "$R/runner-$k.pid" >>"$R/runner-$k.log" 2>&1 </dev/null &
         t=0
         while [ ! -s "$R/runner-$k.pid" ]; do
             [ "$t" -lt 100 ] || { echo "runners.sh: runner $k did not start (its log: $R/runner-$k.log)" >&2; exit 1; }

@@ -424,7 +424,7 @@ wait_for() {
 }
 RUNNER_STAGES=fig6-1000 FIG6_SEEDS=2 expect_ok sh results/runners.sh start "$G" "$RR"
 check "runners.sh: two runners started: $(cat "$TMPD/out")" [ "$(grep -c '^runner [12]: process group [0-9]* ' "$TMPD/out")" -eq 2 ]
-check "runners.sh: the program copied for the runners" cmp -s "$G" "$RR/.runners/amorph"
+check "runners.sh: the program and run.sh copied for the runners" sh -c "cmp -s '$G' '$RR/.runners/amorph' && cmp -s results/run.sh '$RR/.runners/run.sh'"
 # the two take one round: dct-1 and, dct-1 being held, cppn-1
 wait_for "two runs going" sh -c "[ -f '$RR/representations/dct-1/started' ] && [ -f '$RR/representations/cppn-1/started' ]"
 expect_ok sh results/runners.sh status "$RR"
