@@ -17,7 +17,8 @@
 # fig6-5000 full-20000. Both runners take the same rounds: run.sh lets two share a stage (a run
 # folder the other is working in is skipped), so all the runs of a round reach its count before
 # any goes beyond it. Each runner's log is DIR/.runners/runner-K.log; its process group is in
-# runner-K.pid. RUNNERS sets how many (2: one a core of the 2-core VMs).
+# runner-K.pid. RUNNERS sets how many (2: one a core of the 2-core VMs); STOP_WAIT how long stop
+# waits (300 s).
 # A runner that is going is not started twice; start after stop resumes every run exactly.
 set -eu
 STAGES=${RUNNER_STAGES:-fig6-1000 fig6-2000 others-2000 fig6-3000 fig6-4000 fig6-5000 full-20000}
@@ -33,6 +34,8 @@ status | stop) [ $# -eq 1 ] || usage; DIR=$1 ;;
 *) usage ;;
 esac
 case $N in '' | *[!0-9]* | 0) echo "runners.sh: RUNNERS='$N': a whole number from 1" >&2; exit 2 ;; esac
+WAIT=${STOP_WAIT:-300}
+case $WAIT in '' | *[!0-9]*) echo "runners.sh: STOP_WAIT='$WAIT': a whole number of seconds" >&2; exit 2 ;; esac
 R=$DIR/.runners
 
 # going K: 0 when runner K's process group has a process left
@@ -107,8 +110,8 @@ stop)
             k=$((k + 1))
         done
         [ "$left" -gt 0 ] || break
-        if [ "$t" -ge "${STOP_WAIT:-300}" ]; then
-            echo "runners.sh: $left runner(s) still going after ${STOP_WAIT:-300} s" >&2
+        if [ "$t" -ge "$WAIT" ]; then
+            echo "runners.sh: $left runner(s) still going after $WAIT s" >&2
             exit 1
         fi
         sleep 1

@@ -449,6 +449,7 @@ expect_fail 2 "not an executable" sh results/runners.sh start "$TMPD/none" "$RR"
 expect_fail 2 "no such folder" sh results/runners.sh start "$G" "$TMPD/none"
 expect_fail 2 "usage: sh results/runners.sh" sh results/runners.sh restart "$RR"
 RUNNERS=x expect_fail 2 "RUNNERS='x': a whole number" sh results/runners.sh status "$RR"
+STOP_WAIT=1m expect_fail 2 "STOP_WAIT='1m': a whole number of seconds" sh results/runners.sh stop "$RR"
 # whatever failed above, nothing of the runners is left going
 for f in "$RR"/.runners/runner-*.pid; do [ -f "$f" ] && kill -KILL "-$(cat "$f")" 2>/dev/null; done
 summary cli_report
