@@ -13,7 +13,8 @@
 # every 500 evaluations; the statistics of amorph stats (the representations compared by Welch's
 # t-test and the Mann-Whitney test at every 1,000 evaluations all the runs of each have reached,
 # and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits,
-# over the runs at the largest multiple of 1,000 that every run at 1,000 or more has reached);
+# at the largest multiple of 1,000 that every run at 1,000 or more has reached: a run beyond it
+# at its best robot then, best-N.genome, into gait30-N.json);
 # the other experiments' runs, each at 2,000 evaluations (OTHERS_EVALS)
 # against the range of the GMX runs (the seed's settings) at that count; and the compute each run
 # took (the sum of log.csv's wall_s), and each round (per group and experiment, every 1,000
@@ -90,19 +91,42 @@ if [ $# -gt 0 ]; then
     stats_tables "$@"
     all=1
     for d in "$@"; do [ -f "$d/gait30.json" ] || all=0; done
-    # the sustained score takes each run's best robot as it stands, so a run just started (its
-    # best of a few generations) would sit beside runs of thousands: only the runs that have
-    # reached SUS_AT are compared, the largest multiple of 1,000 that every run of 1,000
-    # evaluations or more has reached (every run when none has reached 1,000)
+    # the sustained score of the best robots at one count, SUS_AT: the largest multiple of 1,000
+    # that every run of 1,000 evaluations or more has reached (every run, at its best as it
+    # stands, when none has reached 1,000). A run just started (its best of a few generations) is
+    # left out; a run beyond SUS_AT is compared at its best robot then, best-SUS_AT.genome (kept
+    # by run.sh at the end of each round), simulated in the run's settings into
+    # gait30-SUS_AT.json; a run beyond it without one, at its best as it stands
     counts=$(for d in "$@"; do last=$("$AMORPH" report last "$d") || exit 1; echo "${last% *}"; done) || exit 1
     SUS_AT=$(echo "$counts" | awk '$1 >= 1000 && (m == "" || $1 < m) { m = $1 } END { print m == "" ? 0 : int(m / 1000) * 1000 }')
-    n=$#
-    for d in "$@"; do
-        last=$("$AMORPH" report last "$d") || exit 1
-        [ "${last% *}" -lt "$SUS_AT" ] || set -- "$@" "$d"
-    done
-    shift "$n"
-    [ $all = 0 ] || stats_tables --score sustained "$@"
+    if [ $all = 1 ]; then
+        sus=$(mktemp -d)
+        trap 'rm -rf "$sus"' EXIT
+        n=$#
+        for d in "$@"; do
+            rm -f "$d"/gait30-[0-9]*.json
+            last=$("$AMORPH" report last "$d") || exit 1
+            [ "${last% *}" -ge "$SUS_AT" ] || continue
+            g=$d/gait30.json
+            if [ "${last% *}" -gt "$SUS_AT" ] && [ -f "$d/best-$SUS_AT.genome" ]; then
+                mkdir -p "$sus/.at"
+                cp "$d/config.txt" "$sus/.at/"
+                cp "$d/best-$SUS_AT.genome" "$sus/.at/best.genome"
+                g=$d/gait30-$SUS_AT.json
+                "$AMORPH" sim "$sus/.at" --cycles 30 --json 2>/dev/null |
+                    sed "s/\"wall_seconds\": [^,]*, //; s|\"robot\": \"[^\"]*\"|\"robot\": \"$d/best-$SUS_AT.genome\"|" >"$g"
+                rm -rf "$sus/.at"
+            fi
+            # amorph stats reads RUN/gait30.json, and groups the runs by their folders' names
+            mkdir -p "$sus/${d##*/}"
+            cp "$g" "$sus/${d##*/}/gait30.json"
+            set -- "$@" "$sus/${d##*/}"
+        done
+        shift "$n"
+        stats_tables --score sustained "$@"
+        rm -rf "$sus"
+        trap - EXIT
+    fi
 fi
 
 # body size: the mean voxels of the bodies each representation evaluated in each window of 500

@@ -56,6 +56,12 @@ run() {
     cat "$err" >&2
     rm -f "$err"
     [ $rc -eq 0 ] || exit 1
+    # the best robot at the round's count, kept as best-EVALS.genome: the run goes on beyond it in
+    # the next round, and report.sh compares the best robots of all runs at one count
+    at=$(sed -n 's/^evaluations \([0-9][0-9]*\)$/\1/p' "$folder/checkpoint.txt" 2>/dev/null)
+    if [ "$at" = "$evals" ] && [ -f "$folder/best.genome" ] && ! cmp -s "$folder/best.genome" "$folder/best-$evals.genome"; then
+        cp "$folder/best.genome" "$folder/best-$evals.genome.new" && mv "$folder/best-$evals.genome.new" "$folder/best-$evals.genome"
+    fi
     echo "$(date -u +%FT%TZ) $folder $(sed -n 's/^evaluations = //p' "$folder/summary.txt" 2>/dev/null) evaluations"
 }
 

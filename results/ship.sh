@@ -2,7 +2,8 @@
 # Copies the reference runs as they stand into results/ (the repository's copy), small enough for
 # git: every run folder of SRC (made by results/run.sh) with its config.txt, log.csv, checkpoint.txt
 # (without the same-body table, amorph export --checkpoint),
-# best.genome, best.lattice and summaries as they are, and evals.csv compressed (gzip -9n: no name
+# best.genome, best.lattice, the best robots kept at the rounds' counts (best-N.genome) and
+# summaries as they are, and evals.csv compressed (gzip -9n: no name
 # or time in the header, so the same table gives the same bytes); then results/report.sh writes
 # each best robot's gait30.json and best.png and results/report.md, the table of docs/results.md.
 #   sh results/ship.sh AMORPH SRC
@@ -66,6 +67,31 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
             cp "$out/summary.txt" "$out/summary.json" "$new/"
         fi
     fi
+    # the best robots kept at the rounds' counts (run.sh: best-N.genome), each checked to be the
+    # run's best at N, evals.csv's fittest of its first N evaluations (the first of equals), by its
+    # state at the end; one shipped before unchanged needs no second look
+    for g in "$run"/best-[0-9]*.genome; do
+        [ -f "$g" ] || continue
+        f=${g##*/}
+        n=${f#best-}
+        n=${n%.genome}
+        if ! cmp -s "$g" "$out/$f"; then
+            want=$(awk -F, -v n="$n" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+                $1 < n && (h == "" || $c["fitness"] + 0 > b) { b = $c["fitness"] + 0; h = $c["state_hash"] } END { print h }' "$run/evals.csv")
+            chk=$new/.at
+            mkdir -p "$chk"
+            cp "$new/config.txt" "$chk/"
+            cp "$g" "$chk/best.genome"
+            got=$("$AMORPH" sim "$chk" --json 2>/dev/null | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
+            rm -rf "$chk"
+            if [ -z "$want" ] || [ "$got" != "$want" ]; then
+                rm -rf "$new"
+                echo "ship.sh: $run: $f ends in state $got, the best of evals.csv's first $n evaluations in ${want:-no state}" >&2
+                exit 1
+            fi
+        fi
+        cp "$g" "$new/"
+    done
     head -n $((gens + 2)) "$run/log.csv" >"$new/log.csv"
     head -n $((evals + 1)) "$run/evals.csv" | gzip -9n >"$new/evals.csv.gz"
     rm -f "$out/summary.txt" "$out/summary.json" "$out/evals.csv"

@@ -124,11 +124,23 @@ want=$(for run in dct-1 dct-2; do sus "$S/representations/$run"; done | awk '{ m
 row=$(grep '^| sustained | dct |' "$TMPD/out")
 check "sustained row of dct's two runs: '$row', want the mean $want mm" sh -c "echo '$row' | grep -qF '| sustained | dct | 2 | $want |'"
 check "sustained: gmx-1 at 500 still left out" sh -c "! grep -q '^| sustained | gmx' '$TMPD/out'"
+# dct-1's best robot at 1,000 kept (run.sh's best-1000.genome; dct-2's robot here): dct-1 is
+# compared at it, simulated in its settings into gait30-1000.json, so DCT's mean is dct-2's score
+cp "$S/representations/dct-2/best.genome" "$S/representations/dct-1/best-1000.genome"
+expect_ok sh results/report.sh "$AMORPH" "$S"
+want=$(sus "$S/representations/dct-2" | awk '{ printf "%.3f", $1 * 1000 }')
+row=$(grep '^| sustained | dct |' "$TMPD/out")
+check "sustained: dct-1 at its best at 1,000: '$row', want $want mm" sh -c "echo '$row' | grep -qF '| sustained | dct | 2 | $want |'"
+g1000=$S/representations/dct-1/gait30-1000.json
+check "sustained: dct-1's gait30-1000.json names best-1000.genome" grep -qF "\"robot\": \"$S/representations/dct-1/best-1000.genome\"" "$g1000"
+check "sustained: gait30-1000.json is the kept robot's gait" [ "$(sed -n 's/.*"sustained_travel": \([-0-9.e]*\),.*/\1/p' "$g1000")" = "$(sus "$S/representations/dct-2")" ]
+check "sustained: gait30.json is still dct-1's best as it stands" [ "$(sus "$S/representations/dct-1")" = "$(sus "$R/representations/dct-1")" ]
 # none at 1,000: every run is compared (gmx-1 alone: no test)
 printf '%s\n0,500,0.010,0,0,0,0,10\n' "$h" >"$S/representations/dct-1/log.csv"
 printf '%s\n0,500,0.015,0,0,0,0,20\n' "$h" >"$S/representations/dct-2/log.csv"
 expect_ok sh results/report.sh "$AMORPH" "$S"
 check "sustained, no run at 1,000: dct's two runs" grep -q '^| sustained | dct | 2 |' "$TMPD/out"
+check "sustained, no run at 1,000: no gait30-1000.json left" [ ! -e "$S/representations/dct-1/gait30-1000.json" ]
 check "sustained, no run at 1,000: gmx-1 alone is not tested" grep -qE '^\| sustained \| (dct - gmx|gmx - dct) \| [-0-9.]+ \| no test: gmx has 1 run \|' "$TMPD/out"
 # the statistics at 1,000: dct-1 alone (dct-2 has not reached it: left out, not hiding DCT), gmx-1
 # neither: no pair to test, so no table of pairs or ranking
@@ -276,11 +288,14 @@ cp results/ship.sh results/report.sh "$D/"
 # its checkpoint is of 12, its summaries still of the command that ended at 8); gmx-1 finished
 # shellcheck disable=SC2086
 expect_ok "$AMORPH" evolve $SMALL --representation dct --seed 1 --out "$S/representations/dct-1"
+cp "$S/representations/dct-1/best.genome" "$S/representations/dct-1/best-8.genome" # as run.sh keeps it
 AMORPH_TEST_INTERRUPT=KILL:12 "$AMORPH" evolve --resume "$S/representations/dct-1" --evaluations 16 --quiet >"$TMPD/out" 2>"$TMPD/err"; rc=$?
 if [ $rc -eq 137 ] && grep -qx 'evaluations 12' "$S/representations/dct-1/checkpoint.txt"; then ok; else ko "the resumed run was killed (exit $rc) at 12 evaluations"; fi
 # shellcheck disable=SC2086
 expect_ok "$AMORPH" evolve $SMALL --representation gmx --seed 1 --out "$S/representations/gmx-1"
+cp "$S/representations/gmx-1/best.genome" "$S/representations/gmx-1/best-8.genome"
 expect_ok sh "$D/ship.sh" "$AMORPH" "$S"
+check "ship: the best robots kept at a round's count" sh -c "cmp -s '$S/representations/dct-1/best-8.genome' '$D/representations/dct-1/best-8.genome' && cmp -s '$S/representations/gmx-1/best-8.genome' '$D/representations/gmx-1/best-8.genome'"
 check "ship: the finished run's summary names its copy" grep -qx 'run = results/representations/gmx-1' "$D/representations/gmx-1/summary.txt"
 check "ship: summary.json too" grep -q '"run": "results/representations/gmx-1"' "$D/representations/gmx-1/summary.json"
 if [ ! -f "$D/representations/dct-1/summary.txt" ] && [ ! -f "$D/representations/dct-1/summary.json" ]; then ok; else ko "ship: no summary for the run gone on beyond it"; fi
@@ -315,6 +330,12 @@ expect_ok "$AMORPH" evolve --resume "$S/representations/gmx-1" --quiet
 check "the no-op resume rewrote the run's wall time" sh -c "! cmp -s '$S/representations/gmx-1/summary.txt' '$TMPD/run-summary.txt'"
 expect_ok sh "$D/ship.sh" "$AMORPH" "$S"
 check "ship: the shipped summary of a finished run stays as it was" cmp -s "$TMPD/shipped-summary.txt" "$D/representations/gmx-1/summary.txt"
+# a kept best robot that is not the run's best at its count (another run's): refused, the copy unchanged
+cp "$S/representations/dct-1/best-8.genome" "$S/representations/gmx-1/best-8.genome"
+SHIP_TRIES=2 SHIP_WAIT=0 expect_fail 1 "gmx-1: best-8.genome ends in state .*, the best of evals.csv's first 8 evaluations in [0-9a-f]" sh "$D/ship.sh" "$AMORPH" "$S"
+check "ship: the refused robot's shipped copy unchanged" cmp -s "$S/representations/dct-1/best-8.genome" "$D/representations/dct-1/best-8.genome"
+check "ship: the refused robot not copied" sh -c "! cmp -s '$S/representations/dct-1/best-8.genome' '$D/representations/gmx-1/best-8.genome'"
+cp "$D/representations/gmx-1/best-8.genome" "$S/representations/gmx-1/best-8.genome"
 # a best robot that is not the checkpoint's (another run's genome): refused, the copy unchanged
 cp "$S/representations/gmx-1/best.genome" "$S/representations/dct-1/best.genome"
 cp "$D/representations/dct-1/best.genome" "$TMPD/shipped.genome"
@@ -336,6 +357,8 @@ echo "${dir#"$RD"/representations/}" >>"$RD/order"
 case "$dir" in *"$FAKE_BUSY") echo "amorph: $dir: another amorph is working in this folder" >&2; exit 1 ;; esac
 case "$dir" in *"$FAKE_FAIL") echo "amorph: $dir: no space left" >&2; exit 1 ;; esac
 mkdir -p "$dir" && printf 'evaluations = %s\n' "$n" >"$dir/summary.txt"
+printf 'evaluations %s\n' "$n" >"$dir/checkpoint.txt"
+echo "the best at $n" >"$dir/best.genome"
 FAKE
 chmod +x "$F"
 mkdir -p "$RD/representations/dct-1" "$RD/representations/gmx-2"
@@ -351,6 +374,8 @@ check "run.sh: cppn-2 started with its representation and seed" grep -qx -- "evo
 check "run.sh: the runs in the interleaved order: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 gmx-1 dct-2 cppn-2 dct-3 cppn-3 gmx-3 " ]
 check "run.sh: the busy folder skipped" grep -q "representations/cppn-3 skipped: another runner is working in it\$" "$TMPD/out"
 check "run.sh: a started run reported at its count" grep -q "representations/gmx-3 4000 evaluations\$" "$TMPD/out"
+check "run.sh: the best robot at the round's count kept" sh -c "grep -qx 'the best at 4000' '$RD/representations/dct-1/best-4000.genome' && [ -f '$RD/representations/gmx-3/best-4000.genome' ]"
+check "run.sh: none kept for a run beyond the round or one the other runner has" sh -c "[ ! -e '$RD/representations/gmx-2/best-4000.genome' ] && [ ! -e '$RD/representations/cppn-3/best-4000.genome' ]"
 rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=cppn-1 expect_fail 1 "cppn-1: no space left" sh results/run.sh "$F" "$RD" fig6-4000
 check "run.sh: no run after the failing one: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 " ]

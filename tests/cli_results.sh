@@ -39,6 +39,16 @@ for ck in results/*/*/checkpoint.txt; do
             f && (NR == 2 || $f + 0 > best) { best = $f + 0; hash = $h } END { print hash }' "$TMPD/evals.csv")
         if [ -n "$want" ] && [ "$best_row" = "$want" ]; then ok; else ko "$d: the fittest row of evals.csv.gz has state $best_row, the best robot $want"; fi
     fi
+    # the best robot kept at a round's count (run.sh's best-N.genome; results/ship.sh simulated it
+    # against evals.csv): at most the run's count, and the best robot itself while the run is there
+    done_evals=$(awk '$1 == "evaluations" && NF == 2 { print $2; exit }' "$ck")
+    for g in "$d"/best-[0-9]*.genome; do
+        [ -f "$g" ] || continue
+        at=${g##*/best-}
+        at=${at%.genome}
+        if [ "$at" -le "$done_evals" ]; then ok; else ko "$g: kept at $at evaluations, beyond the run's $done_evals"; fi
+        if [ "$at" != "$done_evals" ] || cmp -s "$g" "$d/best.genome"; then ok; else ko "$g: the run is at $at evaluations, and its best.genome differs"; fi
+    done
 done
 if [ $n -gt 0 ]; then ok; else ko "results/: no run folder found"; fi
 # docs/results.md tells what the shipped runs show: every table row of results/report.md (which
