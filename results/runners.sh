@@ -71,6 +71,7 @@ start)
         # its own session, so its process group (the loop, run.sh and amorph) can be stopped whole;
         # the loop writes its pid, the group's, itself (setsid may have forked to lead it)
         rm -f "$R/runner-$k.pid"
+        # shellcheck disable=SC2016 # the loop's own $$ and arguments, expanded by the inner sh
         nice -n 19 setsid sh -c 'echo $$ >"$5.new" && mv "$5.new" "$5" || exit 1
             for st in $1; do sh "$2/run.sh" "$3" "$4" "$st" || exit 1; done
             echo "$(date -u +%FT%TZ) all rounds done"' \
