@@ -102,13 +102,14 @@ if [ $# -gt 0 ]; then
     if [ $all = 1 ]; then
         sus=$(mktemp -d)
         trap 'rm -rf "$sus"' EXIT
-        n=$#
+        n=$# i=0
         for d in "$@"; do
             rm -f "$d"/gait30-[0-9]*.json
-            last=$("$AMORPH" report last "$d") || exit 1
-            [ "${last% *}" -ge "$SUS_AT" ] || continue
+            i=$((i + 1))
+            e=$(echo "$counts" | sed -n "${i}p") # the run's count, read above
+            [ "$e" -ge "$SUS_AT" ] || continue
             g=$d/gait30.json
-            if [ "${last% *}" -gt "$SUS_AT" ] && [ -f "$d/best-$SUS_AT.genome" ]; then
+            if [ "$e" -gt "$SUS_AT" ] && [ -f "$d/best-$SUS_AT.genome" ]; then
                 mkdir -p "$sus/.at"
                 cp "$d/config.txt" "$sus/.at/"
                 cp "$d/best-$SUS_AT.genome" "$sus/.at/best.genome"
