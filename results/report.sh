@@ -110,13 +110,9 @@ if [ $# -gt 0 ]; then
             [ "$e" -ge "$SUS_AT" ] || continue
             g=$d/gait30.json
             if [ "$e" -gt "$SUS_AT" ] && [ -f "$d/best-$SUS_AT.genome" ]; then
-                mkdir -p "$sus/.at"
-                cp "$d/config.txt" "$sus/.at/"
-                cp "$d/best-$SUS_AT.genome" "$sus/.at/best.genome"
                 g=$d/gait30-$SUS_AT.json
-                "$AMORPH" sim "$sus/.at" --cycles 30 --json 2>/dev/null |
-                    sed "s/\"wall_seconds\": [^,]*, //; s|\"robot\": \"[^\"]*\"|\"robot\": \"$d/best-$SUS_AT.genome\"|" >"$g"
-                rm -rf "$sus/.at"
+                "$AMORPH" sim "$d" --genome "$d/best-$SUS_AT.genome" --cycles 30 --json 2>/dev/null |
+                    sed 's/"wall_seconds": [^,]*, //' >"$g"
             fi
             # amorph stats reads RUN/gait30.json, and groups the runs by their folders' names
             mkdir -p "$sus/${d##*/}"

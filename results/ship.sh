@@ -78,12 +78,7 @@ for ck in "$SRC"/*/*/checkpoint.txt; do
         if ! cmp -s "$g" "$out/$f"; then
             want=$(awk -F, -v n="$n" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
                 $1 < n && (h == "" || $c["fitness"] + 0 > b) { b = $c["fitness"] + 0; h = $c["state_hash"] } END { print h }' "$run/evals.csv")
-            chk=$new/.at
-            mkdir -p "$chk"
-            cp "$new/config.txt" "$chk/"
-            cp "$g" "$chk/best.genome"
-            got=$("$AMORPH" sim "$chk" --json 2>/dev/null | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
-            rm -rf "$chk"
+            got=$("$AMORPH" sim "$new" --genome "$g" --json 2>/dev/null | sed -n 's/.*"hash": "\([0-9a-f]*\)".*/\1/p')
             if [ -z "$want" ] || [ "$got" != "$want" ]; then
                 rm -rf "$new"
                 echo "ship.sh: $run: $f ends in state $got, the best of evals.csv's first $n evaluations in ${want:-no state}" >&2

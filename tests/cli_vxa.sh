@@ -64,6 +64,39 @@ check "sim of the run's best.lattice: one note naming cycles = 4, fitness = x, r
 "$AMORPH" sim "$D/run/best.lattice" --cycles 4 --fitness x --release_steps 300 >"$D/bl2.out" 2>"$D/bl2.err"
 check "sim of best.lattice in the run's settings: a note, or another result than the run's: $(cat "$D/bl2.err")" \
     sh -c "[ ! -s '$D/bl2.err' ] && [ \"\$(grep -E '^(hash|fitness) = ' '$D/bl2.out')\" = \"\$(grep -E '^(hash|fitness) = ' '$D/run1.out')\" ]"
+# --genome FILE: a genome in a run folder's settings, materials and expression. The run's own best
+# genome that way is the run's result; named alone it gets the seed's settings and a note naming
+# the command that evaluates it as the run did; a folder of config.txt alone takes a genome too
+hv() { grep -E '^(hash|fitness|move_steps) = ' "$1"; }
+"$AMORPH" sim "$D/run/best.genome" >"$D/bg.out" 2>"$D/bg.err"
+check "sim of the run's best.genome: one note naming amorph sim DIR --genome FILE: $(cat "$D/bg.err")" \
+    sh -c "[ \$(wc -l <'$D/bg.err') -eq 1 ] && grep -q '^amorph: note: $D/run/best.genome is in the run folder $D/run, whose settings differ .*(amorph sim $D/run --genome $D/run/best.genome evaluates this genome as the run did)$' '$D/bg.err'"
+"$AMORPH" sim "$D/run" --genome "$D/run/best.genome" >"$D/g1.out" 2>"$D/g1.err"
+g1=$(hv "$D/g1.out") r1=$(hv "$D/run1.out")
+check "sim RUN --genome RUN/best.genome is the run's result, without a word: $g1 / $r1 / $(cat "$D/g1.err")" \
+    sh -c "[ ! -s '$D/g1.err' ] && [ \"\$1\" = \"\$2\" ] && [ \$(echo \"\$1\" | wc -l) -eq 3 ] && grep -qx 'robot = $D/run/best.genome' '$D/g1.out'" _ "$g1" "$r1"
+mkdir -p "$D/cfgonly" && cp "$D/run/config.txt" "$D/cfgonly/" && cp "$D/run/best.genome" "$D/kept.genome"
+"$AMORPH" sim "$D/cfgonly" --genome "$D/kept.genome" >"$D/g2.out" 2>&1
+check "a folder of config.txt alone with --genome: the run's result: $(hv "$D/g2.out" | tr '\n' ' ')" \
+    sh -c '[ -n "$2" ] && [ "$1" = "$2" ]' _ "$(hv "$D/g2.out")" "$r1"
+"$AMORPH" random --repr cppn --size 5 --seed 11 --out "$D/other.genome" >/dev/null 2>&1
+"$AMORPH" sim "$D/run" --genome "$D/other.genome" >"$D/g3.out" 2>&1
+"$AMORPH" sim "$D/other.genome" >"$D/g4.out" 2>/dev/null
+check "another genome in the run's settings: the run's 4 cycles, another robot than the run's and than the genome alone: $(hv "$D/g3.out" | tr '\n' ' ')" \
+    sh -c "grep -qx 'move_steps = 2000' '$D/g3.out' && grep -qx 'move_steps = 5000' '$D/g4.out' && grep -q '^hash = ' '$D/g3.out' && [ \"\$(grep '^hash' '$D/g3.out')\" != \"\$(grep '^hash' '$D/run1.out')\" ]"
+"$AMORPH" render "$D/run" --genome "$D/other.genome" --cycles 1 --out "$D/other.png" >/dev/null 2>&1
+"$AMORPH" render "$D/run" --cycles 1 --out "$D/best.png" >/dev/null 2>&1
+check "render RUN --genome FILE draws that robot (another picture than the run's best)" sh -c "[ -s '$D/other.png' ] && [ -s '$D/best.png' ] && ! cmp -s '$D/other.png' '$D/best.png'"
+expect_fail 2 "^amorph: --genome $D/kept.genome: a genome is evaluated in a run folder's settings \(its config.txt\); cube:2 is a scene$" \
+    "$AMORPH" sim --scene cube:2 --genome "$D/kept.genome"
+expect_fail 2 "^amorph: --genome $D/kept.genome: a genome is evaluated in a run folder's settings \(its config.txt\); $D/run/best.lattice is not a run folder$" \
+    "$AMORPH" sim "$D/run/best.lattice" --genome "$D/kept.genome"
+expect_fail 2 "^amorph: $D/run/best.lattice:1: not a genome: " "$AMORPH" sim "$D/run" --genome "$D/run/best.lattice"
+expect_fail 2 "^amorph: $D/none.genome: cannot open" "$AMORPH" sim "$D/run" --genome "$D/none.genome"
+expect_fail 2 "^amorph: sim: --genome needs a genome file" "$AMORPH" sim "$D/run" --genome
+expect_fail 2 "^amorph: view: --genome given twice \('a' and 'b'\)$" "$AMORPH" view "$D/run" --genome a --genome b --out "$D/x.html"
+expect_fail 2 "^amorph: export: --checkpoint takes a run folder and no other output or setting$" "$AMORPH" export "$D/run" --genome "$D/kept.genome" --checkpoint -
+expect_fail 2 "no best.genome yet; --genome FILE evaluates a genome in its settings\)" "$AMORPH" sim "$D/cfgonly"
 # to the standard output with '-'
 "$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
 if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi

@@ -214,7 +214,7 @@ int cmd_export(tool_ctx* c, int argc, char** argv)
     }
     if (!ra.name) return tool_usage_error("export: name a robot file or --scene NAME (amorph export --help)");
     if (ckpt) {
-        if (ra.is_scene || ra.vxd || ra.nset || ra.dt_s > 0 || vxa || lattice || stl || amf || step >= 0 || time_s >= 0 || merge)
+        if (ra.is_scene || ra.vxd || ra.genome || ra.nset || ra.dt_s > 0 || vxa || lattice || stl || amf || step >= 0 || time_s >= 0 || merge)
             return tool_usage_error("export: --checkpoint takes a run folder and no other output or setting");
         return export_checkpoint(c, ra.name, ckpt);
     }

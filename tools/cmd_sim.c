@@ -9,8 +9,8 @@ static const char sim_help[] =
     "usage: amorph sim FILE | --scene NAME [options]\n"
     "Simulates one robot (relaxation, then actuation cycles) and prints its fitness and diagnostics.\n"
     "FILE is a lattice (.lattice), a genome, a VXA file" TOOL_DESKTOP_ONLY " (.vxa, with its environment and run length),\n"
-    "a run folder of amorph evolve (its best robot, in the run's environment, evaluation and materials)\n"
-    "or a voxcraft folder (base.vxa and one .vxd; or name BASE.vxa ROBOT.vxd)" TOOL_DESKTOP_ONLY ";\n"
+    "a run folder of amorph evolve (its best robot, or --genome FILE's, in the run's environment,\n"
+    "evaluation and materials) or a voxcraft folder (base.vxa and one .vxd; or name BASE.vxa ROBOT.vxd)" TOOL_DESKTOP_ONLY ";\n"
     "NAME a built-in scene (cube:N, sphere:D, cantilever:N, chain:N, halfbar:N, antibar:N), in the seed's environment.\n"
     TOOL_ROBOT_HELP
     "  --json             one JSON object instead of name = value lines\n"

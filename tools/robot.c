@@ -96,7 +96,8 @@ static am_status load_vxa(const char* text, const char* fname, const char* vxd, 
 }
 #endif
 
-/* a run folder's best robot, with the environment and evaluation it evolved in */
+/* a run folder's best robot (or a->genome's, --genome FILE), with the environment, evaluation,
+ * materials and expression it evolved in */
 static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir, am_robot* r, char* err, int errsz)
 {
     char path[TOOL_PATH_MAX], msg[AM_ERR_MAX];
@@ -109,7 +110,8 @@ static am_status load_run(tool_ctx* c, const tool_robot_args* a, const char* dir
     origin_lines(lines, NULL);
     g_origin.file = dir;
     g_origin.run = 1;
-    snprintf(path, sizeof path, "%s/" AM_RUN_BEST_GENOME, dir);
+    if (a->genome) snprintf(path, sizeof path, "%s", a->genome);
+    else snprintf(path, sizeof path, "%s/" AM_RUN_BEST_GENOME, dir);
     tool_src src;
     st = tool_src_open(&src, path, TOOL_FILE_MAX, 1, err, errsz);
     if (st == AM_OK) st = tool_read_genome(&src, tool_genome(c), err, errsz);
@@ -265,6 +267,7 @@ static int voxcraft_dir(const char* dir, char base[TOOL_PATH_MAX], char robot[TO
 const char* tool_robot_name(const tool_robot_args* a, char* buf, int cap)
 {
     if (a->vxd) return a->vxd;
+    if (a->genome) return a->genome;
 #if TOOL_VXA
     char base[TOOL_PATH_MAX], err[AM_ERR_MAX];
     if (!a->is_scene && !tool_is_run_dir(a->name) && voxcraft_dir(a->name, base, buf, err, (int)sizeof err) == 1 && cap >= TOOL_PATH_MAX)
@@ -344,7 +347,10 @@ static void run_note(tool_ctx* c, const char* name, const am_robot* r)
         (d.stiffness_min != g_use.range.stiffness_min || d.stiffness_max != g_use.range.stiffness_max))
         mat |= TOOL_APART_STIFFNESS;
     const int n = tool_settings_apart(&h, &d, mat, apart, (int)sizeof apart);
-    if (n > 0)
+    if (n > 0 && g_use.genome)
+        fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
+                        "(amorph sim %s --genome %s evaluates this genome as the run did)\n", name, path, apart, path, name);
+    else if (n > 0)
         fprintf(stderr, "amorph: note: %s is in the run folder %s, whose settings differ from these: the run had %s "
                         "(amorph sim %s evaluates the run's best robot as the run did)\n", name, path, apart, path);
 }
@@ -368,7 +374,14 @@ static am_status not_a_robot_folder(const char* dir, char* err, int errsz)
     const int config = snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, dir) < (int)sizeof p && am_port_exists(p);
     return am_fail(err, errsz, AM_ERR_ARG, "%s: a folder, neither a run folder (config.txt, best.genome: %s) nor a voxcraft folder "
                                            "(a .vxa, a .vxd: %s); a robot is a lattice, genome or VXA file, a run or voxcraft folder, or "
-                                           "--scene NAME", dir, config ? "no best.genome yet" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
+                                           "--scene NAME", dir, config ? "no best.genome yet; --genome FILE evaluates a genome in its settings" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
+}
+
+/* 1 when dir holds a run's config.txt (a run folder, with or without its best.genome yet) */
+static int run_config(const char* dir)
+{
+    char p[TOOL_PATH_MAX];
+    return snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, dir) < (int)sizeof p && am_port_exists(p);
 }
 
 /* the evaluation's budget (am_evo_check_budget) with the robot's settings as they stand, the period
@@ -402,8 +415,11 @@ am_status tool_robot_load(tool_ctx* c, const tool_robot_args* a, am_lattice* lat
 #endif
     memset(&g_origin, 0, sizeof g_origin);
     memset(&g_use, 0, sizeof g_use);
+    if (a->genome && (a->is_scene || a->vxd || !run_config(a->name)))
+        return am_fail(err, errsz, AM_ERR_ARG, "--genome %s: a genome is evaluated in a run folder's settings (its config.txt); %s is %s",
+                       a->genome, a->name, a->is_scene ? "a scene" : a->vxd ? "a VXA file" : "not a run folder");
     if (a->is_scene) st = am_scene_build(lat, a->name, err, errsz);
-    else if (tool_is_run_dir(a->name)) st = load_run(c, a, a->name, r, err, errsz);
+    else if (a->genome || tool_is_run_dir(a->name)) st = load_run(c, a, a->name, r, err, errsz);
 #if TOOL_VXA
     else if (!a->vxd && (st = (am_status)voxcraft_dir(a->name, base, robot, err, errsz)) != 0) {
         if ((int)st < 0) return AM_ERR_ARG;

@@ -19,6 +19,8 @@ typedef struct tool_robot_args {
     const char* vxd;           /* a voxcraft VXD file over the VXA file name (the other file named with
                                   it, one of them ending in .vxd); NULL when none */
     int is_scene;              /* 1: name is a scene (--scene NAME) */
+    const char* genome;        /* --genome FILE: a run folder's robot from this genome instead of its
+                                  best.genome (the run's settings, palette and expression); NULL */
     double dt_s;               /* --dt SECONDS (a fixed time step), 0 when not given */
     int nset;                  /* settings given, in order */
     const char* key[TOOL_MAX_SETTINGS];  /* each as the configuration table spells its key */
@@ -40,7 +42,8 @@ int tool_setting_arg(const char* cmd, int argc, char** argv, int* i, const char*
 
 /* one argument of sim, render, view or export at argv[*i]: the robot (a file or run folder, or
  * --scene NAME; a VXA file and a VXD file over it, voxcraft-sim's `base.vxa robot.vxd`; a folder
- * holding a base VXA and one .vxd, voxcraft-sim's layout), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
+ * holding a base VXA and one .vxd, voxcraft-sim's layout), --genome FILE (a run folder's robot from
+ * another genome), --dt SECONDS, or a setting of the robot's environment, evaluation or materials
  * (tool_setting_arg). Returns 1 when consumed, 0 when it is none of these (the command's own
  * option, or unknown), 2 after a one-line message (a second robot, a setting of the evolver such
  * as --population, a value missing). */
@@ -113,6 +116,8 @@ am_status tool_robot_genome_layers(tool_ctx* c, const am_express_def* ex, am_rob
     "--floor on|off, --cte_mode volumetric|linear, --fitness horizontal|x|3d, --dt_frac F,\n"            \
     "--dt_search on|off (--dt-search alone: on), --relax_max_steps N (alias --relax-max N),\n"           \
     "--release_steps N, --mu_static M, --mu_kinetic M, --cte C, --voxel_size M, ...\n"                   \
+    "  --genome FILE      ROBOT a run folder: FILE's robot instead of its best, in the run's settings,\n"  \
+    "                     materials and expression (a robot kept at a round, another run's best, ...)\n"    \
     "  --dt SECONDS       a fixed time step (becomes dt_frac of this robot, in dt_frac's [1e-6, 10])\n"  \
     "  --stiffness_min PA, --stiffness_max PA   the range a genome's evolved stiffness maps to (a\n"   \
     "                     genome file's: 1e5..1e7 unless given; a run folder's: the run's)\n"          \

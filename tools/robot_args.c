@@ -72,6 +72,16 @@ int tool_robot_arg(const char* cmd, int argc, char** argv, int* i, tool_robot_ar
         a->name = v, a->is_scene = 1, (*i)++;
         return 1;
     }
+    if (!strcmp(arg, "--genome")) {
+        if (!v) return tool_usage_error("%s: --genome needs a genome file (evaluated in the run folder's settings)", cmd);
+        if (a->genome) {
+            char q1[AM_QUOTE_BUF], q2[AM_QUOTE_BUF];
+            return tool_usage_error("%s: --genome given twice ('%s' and '%s')", cmd, am_quote(q1, sizeof q1, a->genome, -1),
+                                    am_quote(q2, sizeof q2, v, -1));
+        }
+        a->genome = v, (*i)++;
+        return 1;
+    }
     if (!strcmp(arg, "--dt")) {
         if (!tool_parse_real(v, 1e-12, 1e3, &a->dt_s)) return tool_usage_error("%s: --dt needs seconds in [1e-12, 1e3]", cmd);
         (*i)++;
