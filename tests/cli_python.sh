@@ -71,6 +71,36 @@ print("%.9g %d" % (top, any(g == best and f == top for g, f in pop)))' "$ROOT" "
         test "$got" = "$(sumval "$d" best_fitness) 1"
 done
 
+# Workspace.from_run: a run folder's settings (its config.txt), so a genome evaluates as the run
+# evaluated it: its best is amorph sim DIR, another genome amorph sim DIR --genome FILE; a config.txt
+# with a key set twice is an AmorphError naming the file and line
+rd=$W/run-phase
+for g in "$rd/best.genome" "$W/gmx.genome"; do
+    want=$("$AMORPH" sim "$rd" --genome "$g" --json 2>/dev/null | sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+    got=$(AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+r = amorph.Workspace.from_run(sys.argv[2]).evaluate(open(sys.argv[3]).read())
+print("%.9g %016x" % (r.fitness, r.hash))' "$ROOT" "$rd" "$g" 2>&1)
+    check "from_run(${rd##*/}) evaluates ${g##*/} ($got) as amorph sim DIR --genome ($want)" test -n "$want" -a "$got" = "$want"
+done
+want=$("$AMORPH" sim "$rd" --json 2>/dev/null | sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p')
+check "amorph sim DIR is amorph sim DIR --genome DIR/best.genome" test -n "$want" -a "$(AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+r = amorph.Workspace.from_run(sys.argv[2]).evaluate(open(sys.argv[2] + "/best.genome").read())
+print("%.9g %016x" % (r.fitness, r.hash))' "$ROOT" "$rd" 2>&1)" = "$want"
+{ cat "$rd/config.txt"; echo "cycles = 3"; } >"$W/twice.txt"
+n=$(wc -l <"$W/twice.txt")
+got=$(AMORPH_LIB=$LIB python3 -c '
+import sys; sys.path.insert(0, sys.argv[1] + "/tools/python")
+import amorph
+try:
+    amorph.Workspace.from_run(sys.argv[2])
+except amorph.AmorphError as e:
+    print(e)' "$ROOT" "$W/twice.txt" 2>&1)
+check "from_run of a config with cycles set twice: $got" sh -c 'case "$1" in "$2:$3: cycles set again (first on line "*"): say it once") exit 0 ;; *) exit 1 ;; esac' _ "$got" "$W/twice.txt" "$n"
+
 # the same run through an amorph eval pipe: the operators as JSON lines ({"op": "new"}, "pairing",
 # "offspring", "crowd"), the evaluations as robot lines, batch by batch
 cat >"$W/pipe_ga.py" <<'PY'

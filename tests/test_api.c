@@ -114,6 +114,57 @@ static void test_empty_body(void)
     CHECK(res.fitness == 0 && res.voxels == 0 && res.steps == 0 && res.hash == 0, "fitness %g voxels %d", res.fitness, res.voxels);
 }
 
+/* a run folder's config.txt as amorph sim DIR reads it: every key as the run wrote it, the keys it
+ * does not name as a stored configuration had them, a key set twice and a bad line refused with
+ * the file's name and line, the settings unchanged then */
+static void test_set_config(void)
+{
+    char err[AM_ERR_MAX];
+    static char again[1 << 16];
+    am_evo_def d = small_def();
+    d.eval.cycles = 3; /* not the defaults, not prepare()'s */
+    long len = 0, len2 = 0;
+    CHECK(am_evo_format(&d, 1, g_text, (long)sizeof g_text, &len, err, sizeof err) == AM_OK, "format: %s", err);
+    CHECK(am_api_init(&g_w[1], am_api_work_size(), err, sizeof err) == AM_OK, "init: %s", err);
+    CHECK(am_api_set_config(&g_w[1], g_text, "run/config.txt", err, sizeof err) == AM_OK, "set_config: %s", err);
+    CHECK(am_evo_format(&g_w[1].def, 1, again, (long)sizeof again, &len2, err, sizeof err) == AM_OK, "format: %s", err);
+    CHECK(len == len2 && !memcmp(g_text, again, (size_t)len), "the settings read back differ:\n%s\n%s", g_text, again);
+    /* a genome evaluated after it is the run's evaluation (am_evo_evaluate with the run's settings) */
+    am_rng r;
+    am_rng_seed(&r, 5);
+    CHECK(am_genome_init(&g_ind.genome, &d.geno, &r, err, sizeof err) == AM_OK, "genome: %s", err);
+    static char gtext[1 << 20];
+    CHECK(am_genome_format(&g_ind.genome, gtext, (long)sizeof gtext, &len, err, sizeof err) == AM_OK, "format: %s", err);
+    static am_palette pal;
+    am_evo_palette_into(&d, &pal);
+    am_evo_evaluate(&d, &pal, &g_ind.genome, &g_ref, NULL, &g_ind, NULL);
+    am_result res;
+    CHECK(am_api_eval_genome(&g_w[1], gtext, &res, err, sizeof err) == AM_OK, "eval: %s", err);
+    CHECK(res.hash == g_ind.state_hash && res.steps == g_ind.steps, "hash %016llx, the run's %016llx",
+          (unsigned long long)res.hash, (unsigned long long)g_ind.state_hash);
+    /* a text naming one key: the others as a stored configuration had them (relax_dt_frac 0, where
+     * today's default settles at 1.8 dt_rec), not the workspace's or today's defaults */
+    CHECK(am_api_set_config(&g_w[1], "# an old run\ncycles = 4  # four\n", NULL, err, sizeof err) == AM_OK, "set_config: %s", err);
+    CHECK(g_w[1].def.eval.cycles == 4 && g_w[1].def.eval.relax_dt_frac == am_stored_evo().eval.relax_dt_frac &&
+              am_stored_evo().eval.relax_dt_frac != am_default_evo().eval.relax_dt_frac && g_w[1].def.geno.nx == am_default_evo().geno.nx,
+          "cycles %d relax_dt_frac %g workspace %d", g_w[1].def.eval.cycles, (double)g_w[1].def.eval.relax_dt_frac, g_w[1].def.geno.nx);
+    /* refusals: the name and line, one line, the settings as they were */
+    static const char* const bad[][2] = {
+        {"cycles = 2\nworkspace = 6\ncycles = 3\n", "run/config.txt:3: cycles set again (first on line 1): say it once"},
+        {"cycles = 2\n\ncycles = many\n", "run/config.txt:3: "},
+        {"cycles = 2\nno_such_key = 1\n", "run/config.txt:2: "},
+        {"cycles = 2\njust words\n", "run/config.txt:2: expected 'key = value'"},
+        {"cycles =\n", "run/config.txt:1: "},
+    };
+    for (int k = 0; k < (int)(sizeof bad / sizeof bad[0]); k++) {
+        const am_status st = am_api_set_config(&g_w[1], bad[k][0], "run/config.txt", err, sizeof err);
+        CHECK(st != AM_OK && !strncmp(err, bad[k][1], strlen(bad[k][1])) && printable_line(err), "text %d: status %d, '%s'", k, (int)st, err);
+        CHECK(g_w[1].def.eval.cycles == 4 && g_w[1].def.geno.nx == am_default_evo().geno.nx, "text %d changed the settings", k);
+    }
+    CHECK(am_api_set_config(&g_w[1], NULL, "x", err, sizeof err) == AM_ERR_ARG, "NULL text accepted");
+    CHECK(am_api_set_config(&g_w[1], "cycles = 7\n", NULL, err, sizeof err) == AM_OK && g_w[1].def.eval.cycles == 7, "after refusals: %s", err);
+}
+
 static void test_refusals(void)
 {
     char err[AM_ERR_MAX];
@@ -165,6 +216,7 @@ int main(int argc, char** argv)
     RUN(test_genome_as_run);
     RUN(test_lattice_as_sim);
     RUN(test_empty_body);
+    RUN(test_set_config);
     RUN(test_refusals);
     RUN(test_layout);
     return SUMMARY();

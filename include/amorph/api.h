@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 /* the version of this API: its functions and am_result's layout (a new field raises it) */
-#define AM_API_VERSION 3 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*), VXA text */
+#define AM_API_VERSION 4 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*), VXA text; 4: am_api_set_config */
 
 /* one evaluation's workspace and settings. Large (tens of MB on the desktop): static, or on the
  * heap of a caller that may allocate; never on a stack. */
@@ -75,6 +75,14 @@ AM_API am_status am_api_init(am_api_work* w, long size, char* err, int errsz);
  * (period_s 0), relax_max_steps below relax_min_steps lowers that too. AM_ERR_ARG for an unknown
  * key, AM_ERR_RANGE for a bad value (the settings unchanged) */
 AM_API am_status am_api_set(am_api_work* w, const char* key, const char* value, char* err, int errsz);
+/* replaces w's settings with a configuration text: a run folder's config.txt (amorph evolve
+ * --print-config's format, `key = value` lines, '#' comments), read as `amorph sim DIR` reads it:
+ * the keys the text does not name take the values a stored configuration had (am_stored_evo, so
+ * that a run folder of any age evaluates as it evolved), a key set twice is refused. Then a genome
+ * is evaluated as that run evaluates it (amorph sim DIR --genome FILE); a lattice keeps its own
+ * materials. am_api_set goes on from there; the operators' stream is am_api_seed's. Messages
+ * "NAME:LINE: problem" (name NULL: "config"); AM_ERR_PARSE or AM_ERR_RANGE, the settings unchanged */
+AM_API am_status am_api_set_config(am_api_work* w, const char* text, const char* name, char* err, int errsz);
 /* evaluates the genome in text (the genome text format, docs/formats.md) as a run with w's
  * settings evaluates it: expressed with the run's palette and voxel size, simulated in its
  * environment and evaluation. *out gets the result (am_result, sim.h); an empty body is AM_OK

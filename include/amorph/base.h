@@ -26,7 +26,7 @@ extern "C" {
  * in the static library it changes nothing. On Windows it is empty unless a DLL is built
  * (AM_BUILD_DLL: dllexport) or used (AM_USE_DLL: dllimport); the Makefile builds none there. */
 #define AM_VERSION_MAJOR 1
-#define AM_VERSION_MINOR 0
+#define AM_VERSION_MINOR 1
 #define AM_VERSION_PATCH 0
 #if defined(_WIN32) || defined(__CYGWIN__)
 #if defined(AM_BUILD_DLL)

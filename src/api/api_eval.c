@@ -74,6 +74,34 @@ am_status am_api_set(am_api_work* w, const char* key, const char* value, char* e
     return AM_OK;
 }
 
+am_status am_api_set_config(am_api_work* w, const char* text, const char* name, char* err, int errsz)
+{
+    am_status st = am_api_ready(w, err, errsz);
+    if (st != AM_OK) return st;
+    if (!text) return am_fail(err, errsz, AM_ERR_ARG, "no configuration text (NULL)");
+    if (!name) name = "config";
+    /* a run folder's config.txt as amorph sim DIR reads it: the keys it does not name as the run had
+     * them, and a key set twice refused at its second line (which value was meant is not a guess) */
+    am_evo_def d = am_stored_evo();
+    int line_of[AM_EVO_KEY_MAX] = {0};
+    int lineno = 0;
+    for (const char* p = text; *p;) {
+        lineno++;
+        const char* nl = strchr(p, '\n');
+        const long n = nl ? (long)(nl - p) : (long)strlen(p);
+        const int key = am_evo_line_key(p, n);
+        if (key >= 0 && key < AM_EVO_KEY_MAX && line_of[key])
+            return am_fail(err, errsz, AM_ERR_PARSE, "%.200s:%d: %s set again (first on line %d): say it once", name, lineno,
+                           am_evo_key_name(key), line_of[key]);
+        if ((st = am_evo_parse_line(&d, p, n, name, lineno, err, errsz)) != AM_OK) return st;
+        if (key >= 0 && key < AM_EVO_KEY_MAX) line_of[key] = lineno;
+        p = nl ? nl + 1 : p + n;
+    }
+    w->def = d;
+    w->materials_set = 0; /* the run's materials are its palette's, which a genome is expressed with */
+    return AM_OK;
+}
+
 /* the model of w's lattice in w's environment, evaluated into *out (a zero result for an empty body) */
 static am_status simulate(am_api_work* w, am_result* out, char* err, int errsz)
 {

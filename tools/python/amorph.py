@@ -6,6 +6,7 @@ Standard library only (ctypes); numpy is never needed. docs/embedding.md is the 
     w = amorph.Workspace({"cycles": 4})           # the embedding API's workspace, with settings
     r = w.evaluate(open("robot.genome").read())    # a genome or lattice text: an amorph.Result
     print(r.fitness, "%016x" % r.hash)
+    w = amorph.Workspace.from_run("runs/dct")      # a run folder's settings (its config.txt)
 
 Ask/tell, amorph's own operators with any outer loop:
 
@@ -57,7 +58,7 @@ class Result(ctypes.Structure):
         return math.nan if self.diverged else self.fitness
 
 
-_API_VERSION = 3  # the functions below are AM_API_VERSION 3's
+_API_VERSION = 4  # the functions below are AM_API_VERSION 4's
 
 
 class Obs(ctypes.Structure):
@@ -110,6 +111,7 @@ def _type(lib, where):
         "am_api_result_size": ([], c_long),
         "am_api_init": ([P, c_long, c_char_p, c_int], c_int),
         "am_api_set": ([P, c_char_p, c_char_p, c_char_p, c_int], c_int),
+        "am_api_set_config": ([P, c_char_p, c_char_p, c_char_p, c_int], c_int),
         "am_api_eval_genome": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
         "am_api_eval_lattice": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
         "am_api_eval_vxa": ([P, c_char_p, ctypes.POINTER(Result), c_char_p, c_int], c_int),
@@ -161,6 +163,27 @@ class Workspace:
     def set(self, key, value):
         """one configuration key (amorph evolve --help-config), as `amorph sim --KEY VALUE` applies it"""
         self._check(self.lib.am_api_set(self.work, str(key).encode(), str(value).encode(), self.err, len(self.err)))
+
+    def set_config(self, text, name="config"):
+        """replaces the settings with a run folder's config.txt text as `amorph sim DIR` reads it (a key
+        it does not name as the run had it; errors "NAME:LINE: problem", the settings unchanged)"""
+        self._check(self.lib.am_api_set_config(self.work, text.encode(), str(name).encode(), self.err, len(self.err)))
+
+    @classmethod
+    def from_run(cls, path, lib=None):
+        """a workspace in the settings of a run folder (or of a config.txt named itself): a genome
+        evaluates as that run evaluated it, as `amorph sim DIR --genome FILE` does"""
+        name = os.path.join(path, "config.txt") if os.path.isdir(path) else path
+        try:
+            with open(name) as f:
+                text = f.read()
+        except OSError as e:
+            raise AmorphError("%s: %s" % (name, e.strerror or e))
+        except UnicodeDecodeError:
+            raise AmorphError("%s: not a text file" % name)
+        w = cls(None, lib)
+        w.set_config(text, name)
+        return w
 
     def evaluate(self, text):
         """a genome, lattice or VXA text, evaluated as amorph evaluates it (a VXA file in its own
