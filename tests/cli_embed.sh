@@ -109,6 +109,37 @@ PY
     printf '{"id": 1, "lattice": "a\\q"}\n' >"$W/bad8.jsonl"
     expect_fail 2 "stdin:1: column [0-9]+: an unknown escape" "$AMORPH" eval <"$W/bad8.jsonl"
     expect_fail 2 "eval: unknown option '--bogus'" "$AMORPH" eval --bogus </dev/null
+    # --run DIR: a run folder's settings (config.txt) under the flags and the lines': a genome is
+    # evaluated as the run evaluated it (amorph sim DIR --genome FILE), the operators are the run's
+    expect_ok "$AMORPH" evolve --representation dct --workspace 5 --population 4 --evaluations 8 --cycles 3 --release_steps 300 \
+        --quiet --no-pictures --out "$W/run"
+    jl() { python3 -c 'import json, sys; print(json.dumps({"genome": open(sys.argv[1]).read()}))' "$1"; }
+    fh() { sed -n 's/.*"fitness": \([^,]*\),.*"hash": "\([0-9a-f]*\)".*/\1 \2/p'; }
+    for gf in "$W/run/best.genome" "$W/gmx.genome"; do
+        want=$("$AMORPH" sim "$W/run" --genome "$gf" --json 2>/dev/null | fh)
+        got=$(jl "$gf" | "$AMORPH" eval --run "$W/run" 2>&1 | fh)
+        check "eval --run DIR: ${gf##*/} ($got) as amorph sim DIR --genome ($want)" test -n "$want" -a "$got" = "$want"
+        got=$(jl "$gf" | "$AMORPH" eval --run "$W/run/config.txt" 2>&1 | fh)
+        check "eval --run DIR/config.txt: ${gf##*/} ($got) the same" test -n "$want" -a "$got" = "$want"
+    done
+    want=$("$AMORPH" sim "$W/run" --genome "$W/gmx.genome" --cycles 2 --json 2>/dev/null | fh)
+    got=$(jl "$W/gmx.genome" | "$AMORPH" eval --run "$W/run" --cycles 2 2>&1 | fh)
+    check "eval --run DIR --cycles 2: the flag over the run's 3 ($got, amorph sim: $want)" test -n "$want" -a "$got" = "$want"
+    printf '{"op": "seed", "seed": 3}\n{"op": "new"}\n' >"$W/ops.jsonl"
+    "$AMORPH" eval --run "$W/run" <"$W/ops.jsonl" >"$W/ops_run.txt" 2>&1
+    "$AMORPH" eval <"$W/ops.jsonl" >"$W/ops_def.txt" 2>&1
+    check "eval --run DIR: a new genome is of the run's representation (dct), without it the default's: $(grep -o 'repr [a-z]*' "$W/ops_run.txt" "$W/ops_def.txt" | tr '\n' ' ')" \
+        sh -c "grep -q 'nrepr dct' '$W/ops_run.txt' && grep -q 'nrepr [a-z]' '$W/ops_def.txt' && ! grep -q 'nrepr dct' '$W/ops_def.txt'"
+    { cat "$W/run/config.txt"; echo "cycles = 4"; } >"$W/twice.cfg"
+    n=$(wc -l <"$W/twice.cfg")
+    expect_fail 2 "^amorph: eval: --run: $W/twice.cfg:$n: cycles set again \(first on line [0-9]+\): say it once$" "$AMORPH" eval --run "$W/twice.cfg" </dev/null
+    expect_fail 2 "^amorph: eval: --run: $W/none: " "$AMORPH" eval --run "$W/none" </dev/null
+    expect_fail 2 "^amorph: eval: --run needs a run folder" "$AMORPH" eval --run
+    expect_fail 2 "^amorph: eval: --run given twice$" "$AMORPH" eval --run "$W/run" --run "$W/run" </dev/null
+    sed 's/^cycles = .*/cycles = 100000/; s/^period_steps = .*/period_steps = 10000000/' "$W/run/config.txt" >"$W/long.cfg"
+    jl "$W/gmx.genome" >"$W/one.jsonl"
+    expect_fail 2 "^amorph: eval: stdin:1: $W/long.cfg: period_steps = 10000000: up to 1e\+12 steps an evaluation" \
+        timeout -k 5 60 "$AMORPH" eval --run "$W/long.cfg" <"$W/one.jsonl"
     # issue 46: one bound on every evaluation (10^9 steps): a line over it is refused when it is read,
     # before any robot of its batch runs, naming its line and the setting (timeout: the builds before
     # ran it for ever)

@@ -20,7 +20,7 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
 #else
 
 static const char eval_help[] =
-    "usage: amorph eval [--threads N] [--KEY VALUE ...] < robots.jsonl\n"
+    "usage: amorph eval [--threads N] [--run DIR] [--KEY VALUE ...] < robots.jsonl\n"
     "Reads robots as JSON lines on stdin and writes one JSON result per robot on stdout.\n"
     "A line is one object: {\"id\": 3, \"genome\": \"amorph-genome 1\\n...\"} or {\"id\": 3, \"lattice\": \"...\"} or {\"vxa\": \"<VXA ...\"},\n"
     "with optional \"settings\": {\"cycles\": \"4\", ...} (configuration keys, values as strings or numbers).\n"
@@ -39,6 +39,9 @@ static const char eval_help[] =
     "Bad input (bad JSON, an unknown key, a bad genome or lattice) ends the command: one line on\n"
     "stderr, 'amorph: eval: stdin:LINE: problem', exit status 2; no result of that batch is printed.\n"
     "  --threads N        workers, 1..%d (0, the default: every core)\n"
+    "  --run DIR          the settings of a run folder (its config.txt, or a config file named\n"
+    "                     itself) under the flags and each line's: a genome is evaluated as that run\n"
+    "                     evaluated it (amorph sim DIR --genome FILE); the operators breed its genomes\n"
     "  --KEY VALUE        a setting for every robot, before each line's own (amorph evolve --help-config;\n"
     "                     not the run's keys population, evaluations, seed, threads, checkpoint_seconds)\n"
     "One process: the MPI build runs it without mpirun (on threads).\n";
@@ -86,6 +89,9 @@ typedef struct eval_out {
 typedef struct eval_batch {
     int n;
     long used;                        /* arena bytes */
+    const char* run_text;             /* --run: the run's config.txt text, or NULL */
+    const char* run_name;             /* and the file's name, for messages */
+    am_evo_def base;                  /* the settings under the flags: the run's, or the defaults */
     int nflag;                        /* the command line's settings */
     const char* flag_key[EVAL_MAX_SETTINGS];
     const char* flag_val[EVAL_MAX_SETTINGS];
@@ -98,6 +104,8 @@ static eval_batch g_batch;
 static char g_line[EVAL_LINE_MAX + 2];
 static char g_arena[EVAL_ARENA];
 static am_api_work g_work[AM_MAX_WORKERS];
+static char g_run_text[1L << 16];   /* --run: the run's config.txt */
+static char g_run_path[TOOL_PATH_MAX];
 /* the genome operators' workspace: its stream goes on from line to line and batch to batch */
 static am_api_work g_ops;
 static int g_ops_ready;
@@ -159,7 +167,7 @@ static int read_settings(tool_json* j, eval_batch* b, eval_item* it)
  * message naming the setting's place: "settings: KEY = ..." or "--KEY = ..." */
 static const char* check_budget(const eval_batch* b, const eval_item* it, char* err, int errsz)
 {
-    am_evo_def d = am_default_evo();
+    am_evo_def d = b->base;
     char why[AM_ERR_MAX];
     unsigned mat = 0;
     int key, in_line = 0;
@@ -167,8 +175,15 @@ static const char* check_budget(const eval_batch* b, const eval_item* it, char* 
     for (int s = 0; s < it->nset; s++) am_evo_set_over(&d, it->key[s], it->val[s], &mat, why, sizeof why);
     if (am_evo_check_budget(&d, d.env.period_s > AM_P(0) ? 2.0 : (double)d.env.period_steps, &key, why, sizeof why) == AM_OK)
         return NULL;
+    int in_flags = 0;
     for (int s = 0; s < it->nset; s++) in_line |= !strcmp(it->key[s], am_evo_key_name(key));
-    snprintf(err, (size_t)errsz, "%s%.200s", in_line ? "settings: " : "--", why);
+    for (int s = 0; s < b->nflag; s++) in_flags |= !strcmp(b->flag_key[s], am_evo_key_name(key));
+    if (!in_line && !in_flags && b->run_name) { /* the run's config.txt set it */
+        const int n = snprintf(err, (size_t)errsz, "%s: ", b->run_name);
+        if (n >= 0 && n < errsz) snprintf(err + n, (size_t)(errsz - n), "%s", why);
+    } else {
+        snprintf(err, (size_t)errsz, "%s%.200s", in_line ? "settings: " : "--", why);
+    }
     return err;
 }
 
@@ -291,6 +306,7 @@ static void run_ops(eval_batch* b)
         am_status st = am_api_init(k, (long)sizeof *k, o->err, sizeof o->err);
         if (g_ops_ready) k->rng = stream; /* am_api_init seeded it: the stream goes on */
         g_ops_ready = 1;
+        if (st == AM_OK && b->run_text) st = am_api_set_config(k, b->run_text, b->run_name, o->err, sizeof o->err);
         for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
         for (int s = 0; st == AM_OK && s < it->nset; s++) st = am_api_set(k, it->key[s], it->val[s], o->err, sizeof o->err);
         const long cap = AM_GENOME_TEXT_MAX;
@@ -377,6 +393,7 @@ static void eval_task(void* ctx, int i, int w)
     if (it->op) return; /* done by run_ops */
     am_api_work* k = &g_work[w];
     am_status st = am_api_init(k, (long)sizeof *k, o->err, sizeof o->err);
+    if (st == AM_OK && b->run_text) st = am_api_set_config(k, b->run_text, b->run_name, o->err, sizeof o->err);
     for (int s = 0; st == AM_OK && s < b->nflag; s++) st = am_api_set(k, b->flag_key[s], b->flag_val[s], o->err, sizeof o->err);
     for (int s = 0; st == AM_OK && s < it->nset; s++) st = am_api_set(k, it->key[s], it->val[s], o->err, sizeof o->err);
     if (st == AM_OK)
@@ -437,7 +454,10 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
     (void)c;
     eval_batch* b = &g_batch;
     int threads = 0;
+    const char* run = NULL;
     b->nflag = 0;
+    b->run_text = b->run_name = NULL;
+    b->base = am_default_evo();
     for (int i = 1; i < argc; i++) {
         const char* a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -450,6 +470,12 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
             i++;
             continue;
         }
+        if (!strcmp(a, "--run")) {
+            if (i + 1 >= argc) return tool_usage_error("eval: --run needs a run folder (or its config.txt)");
+            if (run) return tool_usage_error("eval: --run given twice");
+            run = argv[++i];
+            continue;
+        }
         const char *key, *val;
         int r = tool_setting_arg("eval", argc, argv, &i, &key, &val);
         if (r == 2) return 2;
@@ -459,6 +485,26 @@ int cmd_eval(tool_ctx* c, int argc, char** argv)
         if (b->nflag == EVAL_MAX_SETTINGS) return tool_usage_error("eval: more than %d settings", EVAL_MAX_SETTINGS);
         b->flag_key[b->nflag] = key;
         b->flag_val[b->nflag++] = val;
+    }
+    if (run) {
+        /* the run's settings read once, and checked here on the operators' workspace (not started
+         * yet: its stream begins at the first operator line) */
+        char err[AM_ERR_MAX];
+        long len = 0;
+        /* a run folder's config.txt, else the file named */
+        if (snprintf(g_run_path, sizeof g_run_path, "%s/" AM_RUN_CONFIG, run) >= (int)sizeof g_run_path)
+            return tool_usage_error("eval: --run %s: the path is too long", run);
+        if (!am_port_exists(g_run_path)) snprintf(g_run_path, sizeof g_run_path, "%s", run);
+        am_status st = am_port_read_file(g_run_path, g_run_text, (long)sizeof g_run_text, &len, err, sizeof err);
+        if (st == AM_ERR_CAPACITY) return tool_usage_error("eval: --run %s: larger than a configuration (%ld bytes)", g_run_path, (long)sizeof g_run_text - 1);
+        if (st != AM_OK) return tool_usage_error("eval: --run: %s", err);
+        if ((long)strlen(g_run_text) != len) return tool_usage_error("eval: --run %s: binary data (a NUL byte)", g_run_path);
+        if (am_api_init(&g_ops, (long)sizeof g_ops, err, sizeof err) != AM_OK ||
+            am_api_set_config(&g_ops, g_run_text, g_run_path, err, sizeof err) != AM_OK)
+            return tool_usage_error("eval: --run: %s", err);
+        b->run_text = g_run_text;
+        b->run_name = g_run_path;
+        b->base = g_ops.def;
     }
     /* stdin reaches one process only: the items of a map over several (MPI ranks) would be missing */
     if (am_port_processes() > 1)
