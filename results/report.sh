@@ -266,8 +266,58 @@ fi
 set --
 for log in "$DIR"/*/*/log.csv; do [ -f "$log" ] && set -- "$@" "${log%/log.csv}"; done
 echo
-if [ $# -gt 0 ]; then "$AMORPH" report compute --root "$DIR" "$@" || exit 1
+comp=
+if [ $# -gt 0 ]; then
+    comp=$("$AMORPH" report compute --root "$DIR" "$@") || exit 1
+    printf '%s\n' "$comp"
 else echo "| run | evaluations | hours | paused generations |"; echo "|---|---:|---:|---:|"; fi
+
+# the rounds left: results/run.sh's rounds in the runners' order (ROUNDS), each with its runs, those
+# at its count, and what is left until it is complete from where the runs stand, every run taken to
+# the largest count of the rounds up to it (so each row counts the rounds before it too):
+# evaluations, and hours of one runner at each group's pace so far (the compute table's hours,
+# log.csv's wall time, over the group's evaluations: the pace of runners that share the machine
+# with a work period's builds and tests; a group not started yet at the GMX runs', the seed's
+# settings, which the other experiments vary). run.sh's RUN_PLAN lists the runs and their counts
+# without running any.
+ROUNDS=${ROUNDS:-fig6-1000 fig6-2000 others-2000 fig6-3000 fig6-4000 fig6-5000 full-20000}
+HERE=$(cd "$(dirname "$0")" && pwd)
+if [ -f "$HERE/run.sh" ]; then
+    plan=$(for st in $ROUNDS; do
+        out=$(RUN_PLAN=1 sh "$HERE/run.sh" "$AMORPH" "$DIR" "$st") || exit 1
+        printf '%s\n' "$out" | sed "s|^|$st |"
+    done) || exit 1
+    echo
+    { printf '%s\n' "$comp"; echo "--"; printf '%s\n' "$plan"; } | awk -v dir="$DIR/" '
+        # a group whose hours round to 0 (a few generations) is not measured yet either
+        function rate(g) { return gh[g] > 0 ? gh[g] / ge[g] : gh["representations/gmx"] > 0 ? gh["representations/gmx"] / ge["representations/gmx"] : 0 }
+        function flush(   r, left, hours, l) {
+            if (cur == "") return
+            left = 0; hours = 0
+            for (r in T) { l = T[r] - D[r]; if (l > 0) { left += l; hours += l * rate(G[r]) } }
+            printf "| %s | %d | %d | %d | %.1f |\n", cur, runs, at, left, hours
+        }
+        BEGIN { FS = "|"; part = 1
+            print "| round | runs | at its count | evaluations left | runner-hours left |"; print "|---|---:|---:|---:|---:|" }
+        $0 == "--" { part = 2; next }
+        part == 1 {
+            # the compute table: "| EXPERIMENT/RUN | EVALUATIONS | HOURS | PAUSED |"
+            if (NF == 6 && $2 ~ /\// && $3 ~ /^ *[0-9]+ *$/) {
+                r = $2; gsub(/ /, "", r); g = r; sub(/-[0-9]+$/, "", g); ge[g] += $3; gh[g] += $4
+            }
+            next
+        }
+        {
+            split($0, w, " "); st = w[1]; f = w[2]
+            if (index(f, dir) == 1) f = substr(f, length(dir) + 1)
+            if (st != cur) { flush(); cur = st; runs = 0; at = 0 }
+            g = f; sub(/-[0-9]+$/, "", g); G[f] = g
+            D[f] = w[3] + 0
+            if (!(f in T) || T[f] < w[4] + 0) T[f] = w[4] + 0
+            runs++; if (w[3] + 0 >= w[4] + 0) at++
+        }
+        END { flush() }'
+fi
 
 if [ "$PICTURES" = "--pictures" ] && [ -d "$DIR/representations" ]; then
     # the runs that have reached FIG6_MIN_EVALS (2,000: the first stage of results/run.sh), so

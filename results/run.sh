@@ -14,6 +14,9 @@
 # fig6-5000, full-20000), all runs of a stage reach a count before any goes beyond it; a run
 # already beyond a round's count is left as it is.
 # Every run uses one thread (results do not depend on it).
+# RUN_PLAN=1 runs nothing and writes nothing: a line "FOLDER DONE EVALS" per run of the stage, DONE
+# the evaluations its checkpoint holds (0 for a run not started), EVALS the stage's count
+# (results/report.sh counts what the rounds have left from them).
 # Two runners may work through one stage at once (say others-2000 then fig6-2000 beside
 # fig6-2000): a run folder that the other runner is working in is skipped, and that runner
 # finishes it.
@@ -29,6 +32,10 @@ run() {
     folder=$1 evals=$2
     shift 2
     done_evals=$(sed -n 's/^evaluations \([0-9][0-9]*\)$/\1/p' "$folder/checkpoint.txt" 2>/dev/null)
+    if [ "${RUN_PLAN:-0}" = 1 ]; then
+        echo "$folder ${done_evals:-0} $evals"
+        return 0
+    fi
     if [ -n "$done_evals" ] && [ "$done_evals" -gt "$evals" ]; then
         # a later round's run: it is past this round, so nothing to do
         echo "$(date -u +%FT%TZ) $folder already at $done_evals evaluations"
@@ -66,7 +73,7 @@ run() {
 }
 
 fig6() {
-    mkdir -p "$DIR/representations"
+    [ "${RUN_PLAN:-0}" = 1 ] || mkdir -p "$DIR/representations"
     k=1
     while [ "$k" -le "${FIG6_SEEDS:-10}" ]; do
         for r in dct cppn gmx; do
@@ -79,7 +86,7 @@ fig6() {
 # the variants of the other experiments (amorph experiment --help) that differ from the seed's
 # settings (the seed's settings themselves are representations/gmx-K), seeds 1..3
 others() {
-    mkdir -p "$DIR/three-materials" "$DIR/dynamic" "$DIR/friction"
+    [ "${RUN_PLAN:-0}" = 1 ] || mkdir -p "$DIR/three-materials" "$DIR/dynamic" "$DIR/friction"
     for k in 1 2 3; do
         run "$DIR/three-materials/three-$k" "$1" materials=3 seed=$k
         run "$DIR/dynamic/fast-$k" "$1" period_steps=250 damping_internal=1 seed=$k
@@ -99,7 +106,7 @@ others() {
 # 1..5, interleaved so every variant has runs early
 ACT_TWO="muscle modulus=5e6 density=1e6 cte=0.01 phase=0 poisson=0.35 color=ff0000"
 actuation() {
-    mkdir -p "$DIR/actuation"
+    [ "${RUN_PLAN:-0}" = 1 ] || mkdir -p "$DIR/actuation"
     for k in 1 2 3 4 5; do
         for r in gmx cppn; do
             run "$DIR/actuation/$r-seed-global-$k" "$1" representation=$r workspace=10 seed=$k

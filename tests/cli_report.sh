@@ -34,6 +34,10 @@ printf '%s\n0,250,0.010,0,0,0,0,10\n1,500,0.012,0,0,0,0,10\n2,750,0.011,0,0,0,0,
     >"$R/representations/dct-1/log.csv"
 printf '%s\n0,250,0.015,0,0,0,0,20\n1,490,0.016,0,0,0,0,20\n2,510,0.030,0,0,0,0,160\n' "$h" >"$R/representations/dct-2/log.csv"
 printf '%s\n0,500,0.005,0,0,0,0,30\n' "$h" >"$R/representations/gmx-1/log.csv"
+# and their checkpoints at those counts (results/run.sh reads a run's count there)
+for rc in dct-1:1000 dct-2:510 gmx-1:500; do
+    sed -i "s/^evaluations 8\$/evaluations ${rc#*:}/" "$R/representations/${rc%:*}/checkpoint.txt"
+done
 
 expect_ok sh results/report.sh "$AMORPH" "$R" --pictures
 cp "$TMPD/out" "$TMPD/report.md"
@@ -58,6 +62,16 @@ want=$(for run in dct-1 dct-2; do gzip -dc "$R/representations/$run/evals.csv.gz
 check "body size row: '$(row 1-500)', want DCT $want" sh -c "echo '$(row 1-500)' | grep -qF '| 1-500 | $want |'"
 # compute: dct-2's 160 s generation is a pause, counted as the median 20 s: 60 s = 0.02 h
 check "compute row of dct-2: '$(row representations/dct-2)'" [ "$(row representations/dct-2)" = "| representations/dct-2 | 510 | 0.02 | 1 |" ]
+# the rounds left, each run to the largest count of the rounds up to it: fig6-1000 has 30 runs, dct-1
+# at its count, 30,000 - (1000 + 510 + 500) left; at the compute table's pace, DCT (0.01 + 0.02) h
+# over 1,510 evaluations for its 8,490 left, GMX 0.01 h over 500 for its 9,500, CPPN (not started)
+# at GMX's for its 10,000: 0.6 h. fig6-2000: 57,990 left, 1.2 h. others-2000 adds 18 runs to 2,000
+# (the friction run's 8 done; its 0.00 h too few to measure: GMX's pace): 93,982, 1.9 h
+check "rounds: fig6-1000 '$(row fig6-1000)'" [ "$(row fig6-1000)" = "| fig6-1000 | 30 | 1 | 27990 | 0.6 |" ]
+check "rounds: fig6-2000 '$(row fig6-2000)'" [ "$(row fig6-2000)" = "| fig6-2000 | 30 | 0 | 57990 | 1.2 |" ]
+check "rounds: others-2000 '$(row others-2000)'" [ "$(row others-2000)" = "| others-2000 | 18 | 0 | 93982 | 1.9 |" ]
+check "rounds: full-20000 last, 3 runs" [ "$(awk '/^\| round \|/ { t = 1; next } t && /^\| [a-z]/ { r = $2 " " $4 } END { print r }' "$TMPD/report.md")" = "full-20000 3" ]
+check "rounds: planning made no folder" [ ! -e "$R/dynamic" ] && [ ! -e "$R/three-materials" ]
 check "compute row of dct-1: '$(row representations/dct-1)'" [ "$(row representations/dct-1)" = "| representations/dct-1 | 1000 | 0.01 | 0 |" ]
 # the compute of each round: the DCT runs' 40 s and 60 s (the pause at the median) and GMX's 30 s
 check "round row of DCT: '$(row representations/dct)'" [ "$(row representations/dct)" = "| representations/dct | 1-1000 | 2 | 0.03 | 0.01 |" ]
@@ -376,6 +390,16 @@ check "run.sh: the busy folder skipped" grep -q "representations/cppn-3 skipped:
 check "run.sh: a started run reported at its count" grep -q "representations/gmx-3 4000 evaluations\$" "$TMPD/out"
 check "run.sh: the best robot at the round's count kept" sh -c "grep -qx 'the best at 4000' '$RD/representations/dct-1/best-4000.genome' && [ -f '$RD/representations/gmx-3/best-4000.genome' ]"
 check "run.sh: none kept for a run beyond the round or one the other runner has" sh -c "[ ! -e '$RD/representations/gmx-2/best-4000.genome' ] && [ ! -e '$RD/representations/cppn-3/best-4000.genome' ]"
+# RUN_PLAN=1: "FOLDER DONE EVALS" a run, nothing run and no folder made
+rm -f "$RD/calls"
+FIG6_SEEDS=3 RUN_PLAN=1 sh results/run.sh "$F" "$RD" fig6-4500 >"$TMPD/plan" 2>&1
+check "run.sh RUN_PLAN: nothing run" [ ! -e "$RD/calls" ]
+check "run.sh RUN_PLAN: a line a run: $(tr '\n' '/' <"$TMPD/plan")" sh -c "[ \$(wc -l <'$TMPD/plan') -eq 9 ] &&
+    grep -qx '$RD/representations/dct-1 4000 4500' '$TMPD/plan' && grep -qx '$RD/representations/gmx-2 5000 4500' '$TMPD/plan' &&
+    grep -qx '$RD/representations/cppn-3 0 4500' '$TMPD/plan'"
+mkdir -p "$TMPD/plan-dir"
+RUN_PLAN=1 expect_ok sh results/run.sh "$F" "$TMPD/plan-dir" others-2000
+check "run.sh RUN_PLAN: 18 lines, no folder made: $(ls "$TMPD/plan-dir")" sh -c "[ \$(grep -c ' 0 2000\$' '$TMPD/out') -eq 18 ] && [ -z \"\$(ls -A '$TMPD/plan-dir')\" ]"
 rm -f "$RD/calls" "$RD/order"
 FAKE_BUSY=none FAKE_FAIL=cppn-1 expect_fail 1 "cppn-1: no space left" sh results/run.sh "$F" "$RD" fig6-4000
 check "run.sh: no run after the failing one: $(tr '\n' ' ' <"$RD/order")" [ "$(tr '\n' ' ' <"$RD/order")" = "dct-1 cppn-1 " ]

@@ -64,8 +64,9 @@ if [ -f results/report.md ]; then
     done <results/report.md
     if [ $rows -gt 0 ]; then ok; else ko "results/report.md: no table row"; fi
     # and no row of an older report stays: a row that names a shipped run, a window of
-    # evaluations or the runs behind a mean is report.sh's, so it must be in report.md
-    grep -E '^\| ([a-z-]+/[^ |]+|[0-9]+-[0-9]+) \||^\| [0-9]+ \|.*runs?\) \|' docs/results.md >"$TMPD/docrows" || true
+    # evaluations, a round (fig6-2000) or the runs behind a mean is report.sh's, so it must be in
+    # report.md
+    grep -E '^\| ([a-z-]+/[^ |]+|[a-z0-9]+-[0-9]+) \||^\| [0-9]+ \|.*runs?\) \|' docs/results.md >"$TMPD/docrows" || true
     n_doc=0
     while IFS= read -r row; do
         n_doc=$((n_doc + 1))
