@@ -96,7 +96,7 @@ expect_fail 2 "^amorph: $D/none.genome: cannot open" "$AMORPH" sim "$D/run" --ge
 expect_fail 2 "^amorph: sim: --genome needs a genome file" "$AMORPH" sim "$D/run" --genome
 expect_fail 2 "^amorph: view: --genome given twice \('a' and 'b'\)$" "$AMORPH" view "$D/run" --genome a --genome b --out "$D/x.html"
 expect_fail 2 "^amorph: export: --checkpoint takes a run folder and no other output or setting$" "$AMORPH" export "$D/run" --genome "$D/kept.genome" --checkpoint -
-expect_fail 2 "no best.genome yet; --genome FILE evaluates a genome in its settings\)" "$AMORPH" sim "$D/cfgonly"
+expect_fail 2 "neither a run folder \(config.txt, best.genome: no best.genome yet\)" "$AMORPH" sim "$D/cfgonly"
 # to the standard output with '-'
 "$AMORPH" export --scene cube:2 --vxa - >"$D/stdout.vxa" 2>/dev/null
 if head -n 1 "$D/stdout.vxa" | grep -q '^<?xml version="1.0"'; then ok; else ko "export --vxa - wrote no XML"; fi

@@ -366,22 +366,21 @@ static int is_folder(const char* path)
     return st == AM_OK || st == AM_ERR_CAPACITY;
 }
 
-/* a folder named as the robot that is neither a run folder nor a voxcraft folder: what it is
- * (which of a run folder's files it lacks) and what the commands take */
-static am_status not_a_robot_folder(const char* dir, char* err, int errsz)
-{
-    char p[TOOL_PATH_MAX];
-    const int config = snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, dir) < (int)sizeof p && am_port_exists(p);
-    return am_fail(err, errsz, AM_ERR_ARG, "%s: a folder, neither a run folder (config.txt, best.genome: %s) nor a voxcraft folder "
-                                           "(a .vxa, a .vxd: %s); a robot is a lattice, genome or VXA file, a run or voxcraft folder, or "
-                                           "--scene NAME", dir, config ? "no best.genome yet; --genome FILE evaluates a genome in its settings" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
-}
-
 /* 1 when dir holds a run's config.txt (a run folder, with or without its best.genome yet) */
 static int run_config(const char* dir)
 {
     char p[TOOL_PATH_MAX];
     return snprintf(p, sizeof p, "%s/" AM_RUN_CONFIG, dir) < (int)sizeof p && am_port_exists(p);
+}
+
+/* a folder named as the robot that is neither a run folder nor a voxcraft folder: what it is
+ * (which of a run folder's files it lacks) and what the commands take */
+static am_status not_a_robot_folder(const char* dir, char* err, int errsz)
+{
+    const int config = run_config(dir);
+    return am_fail(err, errsz, AM_ERR_ARG, "%s: a folder, neither a run folder (config.txt, best.genome: %s) nor a voxcraft folder "
+                                           "(a .vxa, a .vxd: %s); a robot is a lattice, genome or VXA file, a run or voxcraft folder, or "
+                                           "--scene NAME", dir, config ? "no best.genome yet" : "neither", TOOL_VXA ? "no .vxa" : "not in this build");
 }
 
 /* the evaluation's budget (am_evo_check_budget) with the robot's settings as they stand, the period
