@@ -130,16 +130,8 @@ if [ -n "$pin_float" ] && [ -n "$pin_fixed" ] && { [ "$h1" = "$pin_float" ] || [
 else ko "repro hash $h1 differs from make repro's pins (tools/repro.sh: float '$pin_float', fixed '$pin_fixed')"; fi
 
 # --- an experiment's table ---
-cat >"$TMPD/small.cfg" <<'CFG'
-workspace = 6
-population = 6
-cycles = 1
-period_steps = 100
-relax_max_steps = 400
-relax_min_steps = 50
-release_steps = 100
-gmx_points = 12
-CFG
+# the board's small run (tests/data/board_small.cfg; tools/stack_peak.sh measures the stack with it)
+cp tests/data/board_small.cfg "$TMPD/small.cfg"
 expect_ok "$B" experiment three-materials --evals 12 --runs 2 --config "$TMPD/small.cfg" --out "$TMPD/exp" --quiet
 if [ "$(head -n 1 "$TMPD/exp/results.csv")" = "variant,evaluations,mean_best,stderr_best,runs" ] &&
    [ "$(wc -l <"$TMPD/exp/results.csv")" -eq 5 ]; then ok

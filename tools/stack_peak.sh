@@ -4,8 +4,8 @@
 # -M virt when riscv64-unknown-elf-gcc is installed) are made with -DAM_BAREMETAL_STACK_REPORT:
 # the port paints the unused stack at reset and prints "baremetal: stack_used=N heap_used=N" on
 # stderr at exit (port/baremetal/boot.c). Each command below runs in a scratch folder holding
-# tests/cli_board.sh's small configuration as small.cfg and the folders the commands write into,
-# made beforehand (semihosting cannot make folders). Prints a table: target, command, stack
+# tests/data/board_small.cfg (tests/cli_board.sh's small run) as small.cfg and the folders the
+# commands write into, made beforehand (semihosting cannot make folders). Prints a table: target, command, stack
 # bytes, heap bytes, exit status; a command that prints no report fails the script. The figures
 # include the C library's frames (newlib's printf), which make stack's static figure leaves out
 # (docs/porting.md, Stack).
@@ -21,16 +21,7 @@ command -v riscv64-unknown-elf-gcc >/dev/null && command -v qemu-system-riscv32 
 
 W=$(mktemp -d)
 trap 'rm -rf "$W"' EXIT INT TERM
-cat >"$W/small.cfg" <<'CFG'
-workspace = 6
-population = 6
-cycles = 1
-period_steps = 100
-relax_max_steps = 400
-relax_min_steps = 50
-release_steps = 100
-gmx_points = 12
-CFG
+cp tests/data/board_small.cfg "$W/small.cfg"
 
 # board TARGET KERNEL ARGS...: runs one command on a board from the scratch folder, its output
 # in $W/out and $W/err
