@@ -137,13 +137,16 @@ if [ "$(head -n 1 "$TMPD/exp/results.csv")" = "variant,evaluations,mean_best,std
    [ "$(wc -l <"$TMPD/exp/results.csv")" -eq 5 ]; then ok
 else ko "results.csv: $(head -c 300 "$TMPD/exp/results.csv")"; fi
 
+# --- tools/board.sh, the QEMU command line of every board run: what it refuses (without QEMU) ---
+expect_fail 2 "usage: tools/board.sh" sh tools/board.sh mps2-an386
+expect_fail 2 "board.sh: 'lm3s6965evb': not a board machine" sh tools/board.sh lm3s6965evb "$B"
+expect_fail 2 "board.sh: $TMPD/none: no such file" sh tools/board.sh mps2-an386 "$TMPD/none"
+expect_fail 2 "board.sh: argument 'a b': semihosting splits the command line at spaces" sh tools/board.sh riscv32-virt "$B" sim "a b"
+expect_fail 2 "board.sh: BOARD_TIMEOUT='0': a whole number" env BOARD_TIMEOUT=0 sh tools/board.sh mps2-an385 "$B"
+
 # --- on the bare-metal port (QEMU, semihosting), when a build is named ---
 if [ -n "${AMORPH_QEMU_BOARD:-}" ] && command -v qemu-system-arm >/dev/null 2>&1; then
-    q() {
-        a="arg=amorph"; for x in "$@"; do a="$a,arg=$x"; done
-        timeout 600 qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
-            -semihosting-config "enable=on,target=native,$a" -kernel "$AMORPH_QEMU_BOARD" </dev/null
-    }
+    q() { sh tools/board.sh mps2-an386 "$AMORPH_QEMU_BOARD" "$@"; }
     mkdir -p "$TMPD/qfull" "$TMPD/qpart"
     q evolve --config "$TMPD/small.cfg" --evaluations 24 --out "$TMPD/qfull" --quiet >/dev/null 2>&1
     q evolve --config "$TMPD/small.cfg" --evaluations 12 --out "$TMPD/qpart" --quiet >/dev/null 2>&1

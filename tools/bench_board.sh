@@ -37,10 +37,7 @@ m4-float|TARGET=cortex-m4 REAL=float|mps2-an386"
 run() {
     bin=$1 machine=$2
     shift 2
-    sh_args="arg=amorph"
-    for a in "$@"; do sh_args="$sh_args,arg=$a"; done
-    timeout 1800 qemu-system-arm -M "$machine" -nographic -monitor none -serial none -icount shift=0 \
-        -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null
+    BOARD_TIMEOUT=1800 BOARD_ICOUNT=1 sh tools/board.sh "$machine" "$bin" "$@"
 }
 field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p" | head -n 1; }
 

@@ -31,11 +31,11 @@ MAKE=${MAKE:-make}
 TIMEOUT=${REPRO_TIMEOUT:-600}
 
 # name | make variables (besides PROFILE=board) | how to run (native, a qemu-user binary, or
-# board:<qemu-system-arm machine>, or riscv32_board: qemu-system-riscv32 -M virt, below)
+# board:<machine>: under QEMU by tools/board.sh, mps2-an385, mps2-an386 or riscv32-virt)
 # (a runner script is given the program's path: tools/wine.sh runs a Windows build's amorph.exe)
 TARGETS="cortex-m3|TARGET=cortex-m3|board:mps2-an385
 cortex-m4|TARGET=cortex-m4|board:mps2-an386
-rv32|TARGET=rv32|riscv32_board
+rv32|TARGET=rv32|board:riscv32-virt
 x86_64-gcc-O0|BUILD=build/repro/gcc-O0-REAL CC=gcc OPT=-O0 ARCH=|native
 x86_64-gcc-O3-native|BUILD=build/repro/gcc-O3-native-REAL CC=gcc OPT=-O3 ARCH=native|native
 x86_64-clang-O2|BUILD=build/repro/clang-O2-REAL CC=clang OPT=-O2 ARCH=|native
@@ -59,26 +59,14 @@ build_of() {
     *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')$([ "$REAL" = float ] || echo "-$REAL")" ;;
     esac
 }
-# runs a bare-metal RISC-V build under qemu-system-riscv32 (virt, semihosting) the way a
-# qemu-user binary runs: riscv32_board BIN ARGS... (an argument cannot contain a space)
-riscv32_board() {
-    kernel=$1 && shift
-    rv_args="arg=amorph"
-    for x in "$@"; do rv_args="$rv_args,arg=$(echo "$x" | sed 's/,/,,/g')"; done
-    timeout "$TIMEOUT" qemu-system-riscv32 -M virt -bios none -nographic -monitor none -serial none \
-        -semihosting-config "enable=on,target=native,$rv_args" -kernel "$kernel" </dev/null
-}
+# runs the bare-metal RISC-V build the way a qemu-user binary runs: riscv32_board BIN ARGS...
+riscv32_board() { BOARD_TIMEOUT=$TIMEOUT sh tools/board.sh riscv32-virt "$@"; }
 # runs one built amorph with REPRO_ARGS, output on stdout
 run_one() {
     bin=$1 how=$2
     case "$how" in
     native) timeout "$TIMEOUT" "$bin" $REPRO_ARGS ;;
-    board:*)
-        sh_args="arg=amorph"
-        for a in $REPRO_ARGS; do sh_args="$sh_args,arg=$(echo "$a" | sed 's/,/,,/g')"; done
-        timeout "$TIMEOUT" qemu-system-arm -M "${how#board:}" -nographic -monitor none -serial none \
-            -semihosting-config "enable=on,target=native,$sh_args" -kernel "$bin" </dev/null ;;
-    riscv32_board) riscv32_board "$bin" $REPRO_ARGS ;;
+    board:*) BOARD_TIMEOUT=$TIMEOUT sh tools/board.sh "${how#board:}" "$bin" $REPRO_ARGS ;;
     *) timeout "$TIMEOUT" "$how" "$bin" $REPRO_ARGS ;;
     esac
 }

@@ -62,8 +62,7 @@ for name in cortex-m3 cortex-m4; do
     machine=mps2-an386
     [ "$name" = cortex-m3 ] && machine=mps2-an385
     # (QEMU writes the semihosting console, SYS_WRITE0, to its standard error)
-    out=$(timeout 900 qemu-system-arm -M $machine -nographic -monitor none -serial none \
-        -semihosting-config enable=on,target=native -kernel "$bin" </dev/null 2>&1)
+    out=$(BOARD_TIMEOUT=900 sh tools/board.sh $machine "$bin" 2>&1)
     rc=$?
     echo "$out" >>"$log"
     got_scene=$(echo "$out" | sed -n 's/^scene=sphere:6 hash=\([0-9a-f]*\).*/\1/p')

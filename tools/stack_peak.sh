@@ -11,6 +11,7 @@
 # (docs/porting.md, Stack).
 set -u
 cd "$(dirname "$0")/.." || exit 2
+ROOT=$(pwd)
 MAKE=${MAKE:-make}
 TIMEOUT=${STACK_PEAK_TIMEOUT:-600}
 command -v qemu-system-arm >/dev/null || { echo "stack_peak: qemu-system-arm (Debian qemu-system-arm) is needed" >&2; exit 2; }
@@ -28,14 +29,9 @@ cp tests/data/board_small.cfg "$W/small.cfg"
 board() {
     t=$1 k=$2
     shift 2
-    a="arg=amorph"
-    for x in "$@"; do a="$a,arg=$(echo "$x" | sed 's/,/,,/g')"; done
-    case $t in
-    cortex-m4) (cd "$W" && timeout "$TIMEOUT" qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
-        -semihosting-config "enable=on,target=native,$a" -kernel "$k" </dev/null >"$W/out" 2>"$W/err") ;;
-    rv32) (cd "$W" && timeout "$TIMEOUT" qemu-system-riscv32 -M virt -bios none -nographic -monitor none -serial none \
-        -semihosting-config "enable=on,target=native,$a" -kernel "$k" </dev/null >"$W/out" 2>"$W/err") ;;
-    esac
+    m=mps2-an386
+    [ "$t" = rv32 ] && m=riscv32-virt
+    (cd "$W" && BOARD_TIMEOUT=$TIMEOUT sh "$ROOT/tools/board.sh" $m "$k" "$@" >"$W/out" 2>"$W/err")
 }
 
 bad=0
