@@ -143,6 +143,22 @@ expect_fail 2 "board.sh: 'lm3s6965evb': not a board machine" sh tools/board.sh l
 expect_fail 2 "board.sh: $TMPD/none: no such file" sh tools/board.sh mps2-an386 "$TMPD/none"
 expect_fail 2 "board.sh: argument 'a b': semihosting splits the command line at spaces" sh tools/board.sh riscv32-virt "$B" sim "a b"
 expect_fail 2 "board.sh: BOARD_TIMEOUT='0': a whole number" env BOARD_TIMEOUT=0 sh tools/board.sh mps2-an385 "$B"
+# the command line it hands QEMU, seen by a stand-in qemu on PATH that prints its arguments one a
+# line and ends with status 3: commas doubled, the machine's options, -icount on request, the
+# program's status passed on
+mkdir -p "$TMPD/fakeqemu"
+printf '#!/bin/sh\nfor a in "$@"; do echo "$a"; done\nexit 3\n' >"$TMPD/fakeqemu/qemu-system-riscv32"
+cp "$TMPD/fakeqemu/qemu-system-riscv32" "$TMPD/fakeqemu/qemu-system-arm"
+chmod +x "$TMPD/fakeqemu/qemu-system-riscv32" "$TMPD/fakeqemu/qemu-system-arm"
+PATH="$TMPD/fakeqemu:$PATH" sh tools/board.sh riscv32-virt "$B" sim --materials a,b >"$TMPD/q.out" 2>&1
+rc=$?
+if [ $rc -eq 3 ] && grep -qx "virt" "$TMPD/q.out" && grep -qx -- "-bios" "$TMPD/q.out" && ! grep -q -- "-icount" "$TMPD/q.out" &&
+   grep -qx "enable=on,target=native,arg=amorph,arg=sim,arg=--materials,arg=a,,b" "$TMPD/q.out"; then ok
+else ko "board.sh riscv32-virt: status $rc (want 3), arguments: $(tr '\n' ' ' <"$TMPD/q.out")"; fi
+PATH="$TMPD/fakeqemu:$PATH" BOARD_ICOUNT=1 sh tools/board.sh mps2-an385 "$B" repro >"$TMPD/q.out" 2>&1
+if grep -qx "mps2-an385" "$TMPD/q.out" && grep -qx "shift=0" "$TMPD/q.out" && ! grep -q -- "-bios" "$TMPD/q.out" &&
+   grep -qx "enable=on,target=native,arg=amorph,arg=repro" "$TMPD/q.out"; then ok
+else ko "board.sh mps2-an385 with BOARD_ICOUNT=1, arguments: $(tr '\n' ' ' <"$TMPD/q.out")"; fi
 
 # --- on the bare-metal port (QEMU, semihosting), when a build is named ---
 if [ -n "${AMORPH_QEMU_BOARD:-}" ] && command -v qemu-system-arm >/dev/null 2>&1; then
