@@ -261,8 +261,9 @@ if [ -d "$DIR/actuation" ]; then
 fi
 
 # compute: hours of one thread per run, the sum of log.csv's wall_s. A generation that took more
-# than 5 times the run's median was paused (the runners are stopped while other work needs the
-# machine, and a VM may be suspended): it counts as the median, and the last column says how many
+# than 5 times the median of its window of 1,000 evaluations was paused (the runners are stopped
+# while other work needs the machine, and a VM may be suspended): it counts as that median, and the
+# last column says how many
 set --
 for log in "$DIR"/*/*/log.csv; do [ -f "$log" ] && set -- "$@" "${log%/log.csv}"; done
 echo

@@ -90,6 +90,20 @@ check "the rounds table: '$rounds'" [ "$rounds" = "| group | evaluations | runs 
 | exp/a | 1-1000 | 2 | 1.50 | 0.75 |/| exp/b | 1-1000 | 1 | 0.25 | 0.25 |/| exp (all) | 1-1000 | 3 | 1.75 | 0.58 |/\
 | exp/a | 1001-2000 | 1 | 3.00 | 3.00 |/| exp (all) | 1001-2000 | 1 | 3.00 | 3.00 |/| other/a | 2001-3000 | 1 | 0.01 | 0.01 |/\
 | other (all) | 2001-3000 | 1 | 0.01 | 0.01 |/" ]
+# a paused generation is judged against the median of its own window of 1,000: a window's hours do
+# not move when the run goes on past it (three 1-hour generations to 1,000 stay 3 hours after five
+# of 6 minutes to 2,000, though 1 hour is more than 5 times the median of all eight)
+V=$TMPD/rounds-v
+mkdir -p "$V/exp/a-1"
+printf '%s\n0,250,0.01,0,0,0,0,3600\n1,500,0.01,0,0,0,0,3600\n2,1000,0.01,0,0,0,0,3600\n' "$h" >"$V/exp/a-1/log.csv"
+expect_ok "$AMORPH" report compute --root "$V" "$V/exp/a-1"
+first=$(grep -F '| exp/a | 1-1000 |' "$TMPD/out")
+check "one window: '$first'" [ "$first" = "| exp/a | 1-1000 | 1 | 3.00 | 3.00 |" ]
+for e in 1200 1400 1600 1800 2000; do printf '%d,%d,0.01,0,0,0,0,360\n' $((e / 200)) $e >>"$V/exp/a-1/log.csv"; done
+expect_ok "$AMORPH" report compute --root "$V" "$V/exp/a-1"
+check "the first window after the second: '$(grep -F '| exp/a | 1-1000 |' "$TMPD/out")'" [ "$(grep -F '| exp/a | 1-1000 |' "$TMPD/out")" = "$first" ]
+check "the second window: 5 x 6 minutes" grep -qF '| exp/a | 1001-2000 | 1 | 0.50 | 0.50 |' "$TMPD/out"
+check "the run: 3.5 hours, none paused" grep -qF '| exp/a-1 | 2000 | 3.50 | 0 |' "$TMPD/out"
 # a row per run with its 30-cycle gait, and the gait file beside the run
 for run in representations/dct-1 representations/dct-2 representations/gmx-1 friction/k0.1_s5.0-1; do
     line=$(grep -F "| $run | " "$TMPD/report.md" | head -n 1)

@@ -6,7 +6,8 @@
  *                  +- standard error of their best fitness so far every 500 evaluations, over the
  *                  runs that reached it; then each run's best so far every 1,000
  *   compute RUN... a row per run: evaluations, hours of one thread (the sum of log.csv's wall_s, a
- *                  generation that took more than 5 times the run's median counted as the median)
+ *                  generation that took more than 5 times the median of its window of 1,000
+ *                  evaluations counted as that median)
  *                  and the generations so counted (paused); then the compute of each round: per
  *                  group of runs and per experiment, the runs and hours of the generations that
  *                  ended in each window of 1,000 evaluations
@@ -367,38 +368,48 @@ static void round_table(void)
     }
 }
 
-static int report_compute(const char* root, int nruns, char** runs)
+/* the window of ROUND_EVALS evaluations a generation that ended at `evals` is in (1..1000: the first) */
+static long window_of(long evals) { return evals > 0 ? (evals - 1) / ROUND_EVALS : 0; }
+
+/* the lower median of wall_s over the rows of R from row `first` on that end in its window of
+ * ROUND_EVALS evaluations: a window's hours never move once the run has gone past it */
+static double window_median(int first)
 {
     static double sorted[REPORT_MAX_ROWS];
+    const long win = window_of(R.evals[first]);
+    int n = 0;
+    for (int i = first; i < R.rows && window_of(R.evals[i]) == win; i++) sorted[n++] = R.wall[i];
+    qsort(sorted, (size_t)n, sizeof sorted[0], cmp_double);
+    return sorted[(n + 1) / 2 - 1];
+}
+
+static int report_compute(const char* root, int nruns, char** runs)
+{
     printf("| run | evaluations | hours | paused generations |\n|---|---:|---:|---:|\n");
     const size_t rl = root ? strlen(root) : 0;
     memset(&Q, 0, sizeof Q);
     for (int r = 0; r < nruns; r++) {
         int rc = read_rows(runs[r]);
         if (rc) return rc;
-        for (int i = 0; i < R.rows; i++) {
+        for (int i = 0; i < R.rows; i++)
             if (isnan(R.wall[i])) return tool_usage_error("report: %s/" AM_RUN_LOG ": no wall_s column", runs[r]);
-            sorted[i] = R.wall[i];
-        }
-        qsort(sorted, (size_t)R.rows, sizeof sorted[0], cmp_double);
-        /* the lower median: a generation more than 5 times it was paused, and counts as it */
-        const double med = R.rows ? sorted[(R.rows + 1) / 2 - 1] : 0;
         char group[REPORT_NAME_MAX], experiment[REPORT_NAME_MAX];
         round_names(runs[r], group, experiment, sizeof group);
         const int slot[2] = {round_slot(group, 0), round_slot(experiment, 1)};
         if (slot[0] < 0 || slot[1] < 0) return tool_usage_error("report: more than %d groups of runs", REPORT_MAX_RUNS);
-        double t = 0;
+        double t = 0, med = 0;
         int paused = 0, last_w = -1;
         for (int i = 0; i < R.rows; i++) {
+            const long win = window_of(R.evals[i]);
+            if (win >= ROUND_MAX) return tool_usage_error("report: %s: evaluation %ld past %d windows of %d", runs[r], R.evals[i], ROUND_MAX, ROUND_EVALS);
+            if (win != last_w) med = window_median(i);
             double w = R.wall[i];
+            /* over 5 times its window's median: paused, and counted as it */
             if (w > 5 * med) {
                 w = med;
                 paused++;
             }
             t += w;
-            /* the window of the evaluations this generation ended at (1..1000: the first) */
-            const long win = R.evals[i] > 0 ? (R.evals[i] - 1) / ROUND_EVALS : 0;
-            if (win >= ROUND_MAX) return tool_usage_error("report: %s: evaluation %ld past %d windows of %d", runs[r], R.evals[i], ROUND_MAX, ROUND_EVALS);
             for (int k = 0; k < 2; k++) {
                 Q.hours[slot[k]][win] += w / 3600;
                 if (win != last_w) Q.runs[slot[k]][win]++;
@@ -422,10 +433,10 @@ static const char report_help[] =
     "                  +- standard error of the best fitness so far every 500 evaluations, over the\n"
     "                  runs that reached it; then each run's best so far every 1,000\n"
     "  compute RUN...  a row per run: evaluations, hours (the sum of wall_s; a generation over 5 times\n"
-    "                  the run's median counts as the median) and those paused generations; then the\n"
-    "                  rounds: per group of runs (the folder name without -K, in its experiment's\n"
-    "                  folder) and per experiment, the runs and hours of the generations that ended\n"
-    "                  in each window of 1,000 evaluations\n"
+    "                  the median of its window of 1,000 evaluations counts as that median) and those\n"
+    "                  paused generations; then the rounds: per group of runs (the folder name\n"
+    "                  without -K, in its experiment's folder) and per experiment, the runs and hours\n"
+    "                  of the generations that ended in each window of 1,000 evaluations\n"
     "  best-at N RUN   the run's best fitness so far at N evaluations, nothing before it got there\n"
     "  range N RUN...  over the runs that reached N evaluations: 'RUNS MEAN STDERR LOW HIGH' of their\n"
     "                  best so far there (each to 4 decimals, as best-at prints it)\n"
