@@ -59,15 +59,24 @@ build_of() {
     *TARGET=*) echo "build/$(echo "$1" | sed 's/.*TARGET=\([^ ]*\).*/\1/')$([ "$REAL" = float ] || echo "-$REAL")" ;;
     esac
 }
-# runs the bare-metal RISC-V build the way a qemu-user binary runs: riscv32_board BIN ARGS...
-riscv32_board() { BOARD_TIMEOUT=$TIMEOUT sh tools/board.sh riscv32-virt "$@"; }
-# runs one built amorph with REPRO_ARGS, output on stdout
-run_one() {
-    bin=$1 how=$2
+# runs a built amorph the way a target's line says, output and exit status its own, bounded by
+# TIMEOUT: run_as HOW BIN ARGS... (HOW: native, board:<machine>, or a program given BIN first)
+run_as() {
+    how=$1
+    shift
     case "$how" in
-    native) timeout "$TIMEOUT" "$bin" $REPRO_ARGS ;;
-    board:*) BOARD_TIMEOUT=$TIMEOUT sh tools/board.sh "${how#board:}" "$bin" $REPRO_ARGS ;;
-    *) timeout "$TIMEOUT" "$how" "$bin" $REPRO_ARGS ;;
+    native) timeout "$TIMEOUT" "$@" ;;
+    board:*) BOARD_TIMEOUT=$TIMEOUT sh tools/board.sh "${how#board:}" "$@" ;;
+    *) timeout "$TIMEOUT" "$how" "$@" ;;
+    esac
+}
+# whether this machine has what run_as HOW needs
+can_run() {
+    case "$1" in
+    native) true ;;
+    board:riscv32-virt) command -v qemu-system-riscv32 >/dev/null 2>&1 ;;
+    board:*) command -v qemu-system-arm >/dev/null 2>&1 ;;
+    *) command -v "$1" >/dev/null 2>&1 ;;
     esac
 }
 # builds and runs one target; appends "name hash seconds" to $out
@@ -81,7 +90,8 @@ one() {
         return
     fi
     t0=$(now)
-    res=$(run_one "$build/amorph" "$how" 2>>"$log")
+    # shellcheck disable=SC2086
+    res=$(run_as "$how" "$build/amorph" $REPRO_ARGS 2>>"$log")
     rc=$?
     t1=$(now)
     echo "$res" >>"$log"
@@ -150,16 +160,16 @@ same_genome() {
          END { exit bad || FNR != n }' "$1" "$2"
 }
 cross_resume() {
-    name=$1 runner=$2
+    name=$1 how=$2
     bin=$(build_of "TARGET=$name")/amorph
     [ -x "$bin" ] || [ ! -f "$bin.exe" ] || bin=$bin.exe
-    [ -x "$native" ] && [ -x "$bin" ] && command -v "$runner" >/dev/null 2>&1 || return 0
+    [ -x "$native" ] && [ -x "$bin" ] && can_run "$how" || return 0
     d=build/repro/resume-$name-$REAL
     rm -rf "$d" && mkdir -p "$d"
     # shellcheck disable=SC2086
     "$native" evolve $SMALL --evaluations 32 --out "$d/whole" >/dev/null 2>&1 &&
         "$native" evolve $SMALL --evaluations 16 --out "$d/half" >/dev/null 2>&1 &&
-        "$runner" "$bin" evolve --resume "$d/half" --evaluations 32 --quiet --no-pictures >/dev/null 2>>"$d/err"
+        run_as "$how" "$bin" evolve --resume "$d/half" --evaluations 32 --quiet --no-pictures >/dev/null 2>>"$d/err"
     a=$(sed -n 's/^run_hash = //p' "$d/whole/summary.txt" 2>/dev/null)
     b=$(sed -n 's/^run_hash = //p' "$d/half/summary.txt" 2>/dev/null)
     mark=""
@@ -172,7 +182,7 @@ cross_resume() {
 cross_resume s390x-linux qemu-s390x
 cross_resume i686-linux qemu-i386
 # and on the rv32 board, whose C library (picolibc) reads the checkpoint's numbers
-command -v qemu-system-riscv32 >/dev/null 2>&1 && cross_resume rv32 riscv32_board
+cross_resume rv32 board:riscv32-virt
 cross_resume win64 tools/wine.sh
 n=$(wc -l <"$out")
 total=$(echo "$(now) $start" | awk '{printf "%.0f", $1 - $2}')
