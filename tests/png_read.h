@@ -20,6 +20,7 @@ typedef struct png_image {
     int w, h;
     int color_type;      /* as in the file */
     int stored_blocks, fixed_blocks, dynamic_blocks; /* deflate block kinds met */
+    int lit_bits;        /* the longest literal/length code of the last Huffman block */
     int chunks;          /* chunks read, all with a good CRC */
     uint8_t* rgb;        /* w * h * 3, malloc'd; png_free releases it */
 } png_image;
@@ -100,6 +101,8 @@ static int png_decode(const uint8_t* f, long n, png_image* img, char* why, int w
     if (got != rawn) return free(z), free(raw), snprintf(why, (size_t)whysz, "inflate gave %ld of %ld bytes", got, rawn), -1;
     int kinds[3] = {iw.kinds[0], iw.kinds[1], iw.kinds[2]};
     img->stored_blocks = kinds[0], img->fixed_blocks = kinds[1], img->dynamic_blocks = kinds[2];
+    for (int b = 1; b < 16; b++)
+        if (iw.lit.count[b]) img->lit_bits = b;
     free(z);
     /* unfilter in place */
     for (int y = 0; y < img->h; y++) {

@@ -94,8 +94,18 @@ static void roundtrip(int w, int h, int ch, int mode)
     CHECK(img.w == w && img.h == h, "size %d x %d, want %d x %d", img.w, img.h, w, h);
     CHECK(img.color_type == (ch == 4 ? 6 : 2), "colour type %d", img.color_type);
     CHECK(img.chunks == 3, "chunks %d (IHDR, IDAT, IEND)", img.chunks);
-    if (mode == AM_PNG_FIXED) CHECK(img.fixed_blocks == 1 && img.stored_blocks == 0, "blocks: %d fixed, %d stored", img.fixed_blocks, img.stored_blocks);
-    else CHECK(img.stored_blocks >= 1 && img.fixed_blocks == 0, "blocks: %d fixed, %d stored", img.fixed_blocks, img.stored_blocks);
+    if (mode == AM_PNG_FIXED)
+        CHECK(img.fixed_blocks == 1 && img.stored_blocks == 0 && img.dynamic_blocks == 0, "blocks: %d fixed, %d stored, %d dynamic",
+              img.fixed_blocks, img.stored_blocks, img.dynamic_blocks);
+    else if (mode == AM_PNG_STORED)
+        CHECK(img.stored_blocks >= 1 && img.fixed_blocks == 0 && img.dynamic_blocks == 0, "blocks: %d fixed, %d stored, %d dynamic",
+              img.fixed_blocks, img.stored_blocks, img.dynamic_blocks);
+    else /* the smallest: one Huffman block, or stored blocks alone */
+        CHECK(img.fixed_blocks + img.dynamic_blocks == 1 ? img.stored_blocks == 0 : img.fixed_blocks + img.dynamic_blocks == 0,
+              "blocks: %d fixed, %d stored, %d dynamic", img.fixed_blocks, img.stored_blocks, img.dynamic_blocks);
+    if (mode == AM_PNG_DYNAMIC && w * h > 1000)
+        CHECK(img.dynamic_blocks == 1, "the test picture should take a dynamic block: %d fixed, %d stored", img.fixed_blocks,
+              img.stored_blocks);
     long bad = 0;
     for (long i = 0; i < (long)w * h; i++)
         for (int k = 0; k < 3; k++) bad += img.rgb[3 * i + k] != px[i * ch + k];
@@ -111,6 +121,76 @@ static void test_png_roundtrip(void)
     roundtrip(97, 61, 4, AM_PNG_STORED);
     roundtrip(1, 1, 3, AM_PNG_FIXED);
     roundtrip(1, 1, 3, AM_PNG_STORED);
+    roundtrip(300, 200, 3, AM_PNG_DYNAMIC);
+    roundtrip(97, 61, 4, AM_PNG_DYNAMIC);
+    roundtrip(1, 1, 3, AM_PNG_DYNAMIC);
+    roundtrip(2, 1, 4, AM_PNG_DYNAMIC);
+}
+
+/* encodes w x h RGB pixels in mode, decodes them into *img and checks every sample; the length */
+static long encode_decode(const uint8_t* px, int w, int h, int mode, png_image* img)
+{
+    static uint8_t out[700000];
+    long len = 0;
+    char err[AM_ERR_MAX], why[200];
+    CHECK(am_png_encode(px, w, h, 3, mode, out, (long)sizeof out, &len, err, sizeof err) == AM_OK, "encode: %s", err);
+    CHECK(len <= am_png_max_size(w, h, 3), "%ld bytes, more than the bound %ld", len, am_png_max_size(w, h, 3));
+    const int r = png_decode(out, len, img, why, sizeof why);
+    CHECK(r == 0, "decode %d x %d mode %d: %s", w, h, mode, why);
+    if (r) return memset(img, 0, sizeof *img), len;
+    long bad = 0;
+    for (long i = 0; i < 3L * w * h; i++) bad += img->rgb[i] != px[i];
+    CHECK(bad == 0, "%ld samples differ after the round trip", bad);
+    return len;
+}
+
+/* AM_PNG_DYNAMIC takes the smallest block: codes made for a picture with a skewed mix of byte
+ * values (rare values deeper than 15 bits in an unlimited Huffman tree: the code must be cut to
+ * 15 bits and stay complete, which the inflater checks), stored blocks for noise, the fixed code
+ * for a picture too small to pay for a code table; and it beats the fixed code where there is
+ * something to learn */
+static void test_png_dynamic(void)
+{
+    static uint8_t px[400 * 300 * 3];
+    png_image img;
+    uint32_t r = 2024;
+    /* byte values 0, 1, 2, ... with chances 1/2, 1/4, 1/8, ...: 360,000 bytes reach values of chance
+     * 2^-18 and less */
+    for (long i = 0; i < 400L * 300 * 3; i++) {
+        r = r * 1664525u + 1013904223u;
+        int v = 0;
+        for (uint32_t b = r; v < 31 && !(b & 0x80000000u); b <<= 1) v++;
+        px[i] = (uint8_t)v;
+    }
+    long dyn = encode_decode(px, 400, 300, AM_PNG_DYNAMIC, &img);
+    CHECK(img.dynamic_blocks == 1 && img.lit_bits == 15, "skewed bytes: %d dynamic blocks, longest code %d bits (want 1, 15)",
+          img.dynamic_blocks, img.lit_bits);
+    png_free(&img);
+    long fix = encode_decode(px, 400, 300, AM_PNG_FIXED, &img);
+    png_free(&img);
+    CHECK(dyn < fix * 3 / 4, "skewed bytes: dynamic %ld bytes, fixed %ld", dyn, fix);
+    /* noise: stored blocks, no bigger than the stored encoding */
+    for (long i = 0; i < 400L * 300 * 3; i++) r = r * 1664525u + 1013904223u, px[i] = (uint8_t)(r >> 24);
+    dyn = encode_decode(px, 400, 300, AM_PNG_DYNAMIC, &img);
+    CHECK(img.stored_blocks >= 1 && img.fixed_blocks + img.dynamic_blocks == 0, "noise: %d stored, %d fixed, %d dynamic blocks",
+          img.stored_blocks, img.fixed_blocks, img.dynamic_blocks);
+    png_free(&img);
+    long stored = encode_decode(px, 400, 300, AM_PNG_STORED, &img);
+    png_free(&img);
+    CHECK(dyn == stored, "noise: %ld bytes, stored %ld", dyn, stored);
+    /* one pixel: the fixed code */
+    encode_decode(px, 1, 1, AM_PNG_DYNAMIC, &img);
+    CHECK(img.fixed_blocks == 1 && img.stored_blocks + img.dynamic_blocks == 0, "one pixel: %d fixed, %d stored, %d dynamic",
+          img.fixed_blocks, img.stored_blocks, img.dynamic_blocks);
+    png_free(&img);
+    /* the same picture twice: the same bytes (no state kept between calls) */
+    static uint8_t a[700000], b[700000];
+    long na = 0, nb = 0;
+    char err[AM_ERR_MAX];
+    make_picture(px, 300, 200, 3);
+    CHECK(am_png_encode(px, 300, 200, 3, AM_PNG_DYNAMIC, a, (long)sizeof a, &na, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_png_encode(px, 300, 200, 3, AM_PNG_DYNAMIC, b, (long)sizeof b, &nb, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(na == nb && !memcmp(a, b, (size_t)na), "two encodings of one picture differ");
 }
 
 static void test_png_compresses_flat(void)
@@ -169,10 +249,19 @@ static void test_filmstrip_png(void)
     png_image img;
     int r = png_read_file(path, &img, why, sizeof why);
     CHECK(r == 0, "decode the filmstrip: %s", why);
+    FILE* f = fopen(path, "rb");
+    long size = f && !fseek(f, 0, SEEK_END) ? ftell(f) : -1;
+    if (f) fclose(f);
     remove(path);
     if (r) return;
     CHECK(img.w == 1600 && img.h == 400, "size %d x %d", img.w, img.h);
-    CHECK(img.fixed_blocks == 1, "fixed Huffman");
+    CHECK(img.dynamic_blocks == 1, "a dynamic Huffman block: %d fixed, %d stored", img.fixed_blocks, img.stored_blocks);
+    /* the file is the smallest encoding, well under the fixed code's of the same pixels */
+    static uint8_t again[1600 * 400 * 3 + 100000];
+    long dyn = 0, fix = 0;
+    CHECK(am_png_encode(img.rgb, 1600, 400, 3, AM_PNG_DYNAMIC, again, (long)sizeof again, &dyn, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(am_png_encode(img.rgb, 1600, 400, 3, AM_PNG_FIXED, again, (long)sizeof again, &fix, err, sizeof err) == AM_OK, "%s", err);
+    CHECK(size == dyn && dyn < fix * 4 / 5, "the filmstrip: %ld bytes, dynamic %ld, fixed %ld", size, dyn, fix);
     /* the body in shades of both materials, in every one of the six panels */
     const uint8_t* passive = lat.palette.mat[0].color;
     const uint8_t* active = lat.palette.mat[1].color;
@@ -370,6 +459,7 @@ int main(int argc, char** argv)
     RUN(test_adler32_vectors);
     RUN(test_png_roundtrip);
     RUN(test_png_compresses_flat);
+    RUN(test_png_dynamic);
     RUN(test_png_errors);
     RUN(test_filmstrip_png);
     RUN(test_colour_scalars);

@@ -381,7 +381,7 @@ int film_write(tool_ctx* c, const am_robot* r, const film_opts* o, const char* w
     am_canvas cv = {o->width, o->height, film_rgb, film_depth};
     film_draw(&mo, o, &cv);
     long n = 0;
-    if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_FIXED, film_png, (long)sizeof film_png, &n, err,
+    if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_DYNAMIC, film_png, (long)sizeof film_png, &n, err,
                       sizeof err) != AM_OK) {
         fprintf(stderr, "amorph: %s: %s\n", path, err);
         return 1;

@@ -27,7 +27,7 @@ extern "C" {
  * (AM_BUILD_DLL: dllexport) or used (AM_USE_DLL: dllimport); the Makefile builds none there. */
 #define AM_VERSION_MAJOR 1
 #define AM_VERSION_MINOR 1
-#define AM_VERSION_PATCH 0
+#define AM_VERSION_PATCH 1
 #if defined(_WIN32) || defined(__CYGWIN__)
 #if defined(AM_BUILD_DLL)
 #define AM_API __declspec(dllexport)
