@@ -5,13 +5,15 @@
 # RUN/gait30.json, the best robot simulated in the run's settings over 30 actuation cycles instead
 # of the evolved 10 (`amorph sim RUN --cycles 30 --json`: travel per cycle, sustained, airborne,
 # the gait's name, the material mix), and with --pictures RUN/best.png, its filmstrip over the
-# evolved cycles (`amorph render`, 1200 x 300 pixels). Then it prints Markdown: a table with a row
-# per run (evaluations done, best fitness, voxels and the material mix, the 30-cycle gait); the
-# Figure 6 table, the mean +- standard error of the best fitness so far of each representation's
-# runs (DIR/representations/<rep>-<k>) every 500 evaluations, over the runs that reached them, and
-# each run's best so far every 1,000; the mean size of the bodies each representation evaluated,
-# every 500 evaluations; the statistics of amorph stats (the representations compared by Welch's
-# t-test and the Mann-Whitney test at every 1,000 evaluations all the runs of each have reached,
+# evolved cycles (`amorph render --keep-same`, 1200 x 300 pixels: a file already holding the same
+# pixels stays as it is, so git sees no change for a robot that did not change). Then it prints
+# Markdown: a table with a row per run (evaluations done, best fitness, voxels and the material
+# mix, the 30-cycle gait); the Figure 6 table, the mean +- standard error of the best fitness so
+# far of each representation's runs (DIR/representations/<rep>-<k>) every 500 evaluations, over
+# the runs that reached them, and each run's best so far every 1,000; the mean size of the bodies
+# each representation evaluated, every 500 evaluations; the statistics of amorph stats (the
+# representations compared by Welch's t-test and the Mann-Whitney test at every 1,000 evaluations
+# all the runs of each have reached,
 # and on the sustained score of the best robots, cycles 11-30 of gait30.json, with their gaits,
 # at the largest multiple of 1,000 that every run at 1,000 or more has reached: a run beyond it
 # at its best robot then, best-N.genome, into gait30-N.json);
@@ -49,7 +51,7 @@ for cfg in "$DIR"/*/*/config.txt; do
     evals=${last% *} best=${last#* }
     "$AMORPH" sim "$run" --cycles 30 --json 2>/dev/null | sed 's/"wall_seconds": [^,]*, //' >"$run/gait30.json"
     if [ "$PICTURES" = "--pictures" ]; then
-        "$AMORPH" render "$run" --width 1200 --height 300 --out "$run/best.png" >/dev/null
+        "$AMORPH" render "$run" --width 1200 --height 300 --keep-same --out "$run/best.png" >/dev/null
     fi
     g=$run/gait30.json
     names=$(jarr "$g" materials)

@@ -55,6 +55,50 @@ PY
     ours=$("$PNG" --png-count "$TMPD/w.png" 0 0 1600 400 $PASSIVE)
     check "render: python3's zlib: '$py' (want block type 2 and $ours passive pixels)" [ "${1:-}.${2:-}" = "2.$ours" ]
 fi
+# --keep-same: a file that already holds the same picture stays (the same inode: the atomic write
+# would have replaced it), whatever its compression; another picture, a damaged file or no file is
+# written. Without it the file is always written again.
+inode() { ls -i "$1" | awk '{ print $1 }'; }
+cp "$TMPD/w.png" "$TMPD/k.png"
+i0=$(inode "$TMPD/k.png")
+expect_ok "$AMORPH" render "$W" $QUICK --keep-same --out "$TMPD/k.png"
+check "--keep-same: the same picture should leave the file" [ "$(inode "$TMPD/k.png")" = "$i0" ]
+expect_ok "$AMORPH" render "$W" $QUICK --out "$TMPD/k.png"
+check "without --keep-same the file is written again" [ "$(inode "$TMPD/k.png")" != "$i0" ]
+i0=$(inode "$TMPD/k.png")
+expect_ok "$AMORPH" render "$W" $QUICK --frames 5 --keep-same --out "$TMPD/k.png"
+check "--keep-same: another picture (5 frames) is written" sh -c "[ '$(inode "$TMPD/k.png")' != '$i0' ] && ! cmp -s '$TMPD/k.png' '$TMPD/w.png'"
+# a damaged copy of the same picture (one byte of its image data changed: its CRC no longer holds)
+cp "$TMPD/w.png" "$TMPD/k.png"
+printf 'X' | dd of="$TMPD/k.png" bs=1 seek=200 conv=notrunc 2>/dev/null
+expect_ok "$AMORPH" render "$W" $QUICK --keep-same --out "$TMPD/k.png"
+check "--keep-same: a damaged file is written again" cmp -s "$TMPD/k.png" "$TMPD/w.png"
+rm -f "$TMPD/k.png"
+expect_ok "$AMORPH" render "$W" $QUICK --keep-same --out "$TMPD/k.png"
+check "--keep-same: no file, written" cmp -s "$TMPD/k.png" "$TMPD/w.png"
+# the same pixels in another compression (python3's zlib at level 1, one fixed or dynamic block of
+# its own choosing): kept byte for byte
+if command -v python3 >/dev/null 2>&1; then
+    python3 - "$TMPD/w.png" "$TMPD/z.png" <<'PY'
+import struct, sys, zlib
+d = open(sys.argv[1], "rb").read()
+i, idat, head = 8, b"", b""
+while i < len(d):
+    n, t = struct.unpack(">I", d[i:i + 4])[0], d[i + 4:i + 8]
+    if t == b"IDAT":
+        idat += d[i + 8:i + 8 + n]
+    elif t == b"IHDR":
+        head = d[i:i + 12 + n]
+    i += 12 + n
+z = zlib.compress(zlib.decompress(idat), 1)
+chunk = struct.pack(">I", len(z)) + b"IDAT" + z + struct.pack(">I", zlib.crc32(b"IDAT" + z))
+end = struct.pack(">I", 0) + b"IEND" + struct.pack(">I", zlib.crc32(b"IEND"))
+open(sys.argv[2], "wb").write(d[:8] + head + chunk + end)
+PY
+    cp "$TMPD/z.png" "$TMPD/z0.png"
+    expect_ok "$AMORPH" render "$W" $QUICK --keep-same --out "$TMPD/z.png"
+    check "--keep-same: the same pixels compressed by zlib are kept" sh -c "cmp -s '$TMPD/z.png' '$TMPD/z0.png' && ! cmp -s '$TMPD/z.png' '$TMPD/w.png'"
+fi
 # the continuous surface (the default) against --boxes: no light background pixel enclosed by the
 # robot's (the surface has no gap), and the two pictures differ on the robot
 expect_ok "$AMORPH" render "$W" $QUICK --boxes --out "$TMPD/wb.png"

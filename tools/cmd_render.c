@@ -13,6 +13,8 @@ static const char render_help[] =
     "best robot in the run's environment); NAME a built-in scene (cube:N, sphere:D, cantilever:N,\n"
     "chain:N, halfbar:N, antibar:N).\n"
     "  --out FILE.png     the picture (written atomically); required\n"
+    "  --keep-same        leave FILE.png as it is when it already holds this very picture (the\n"
+    "                     same pixels, whatever its compression; results/report.sh)\n"
     "  --frames N         pictures side by side, 3..16 (6: initial, settled, 4 of the motion)\n"
     "  --width W          pixels, 200..4096 (1600)\n"
     "  --height H         pixels, 120..4096 (400); width x height at most 4194304\n"
@@ -37,6 +39,8 @@ int cmd_render(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--out")) {
             if (!v) return tool_usage_error("render: --out needs a file name");
             out = v, i++;
+        } else if (!strcmp(a, "--keep-same")) {
+            o.keep_same = 1;
         } else if (!strcmp(a, "--boxes") || !strcmp(a, "--surface")) {
             o.boxes = a[2] == 'b';
         } else if (!strcmp(a, "--colour") || !strcmp(a, "--color")) {

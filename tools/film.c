@@ -362,8 +362,47 @@ static int film_draw(const tool_motion* mo, const film_opts* o, am_canvas* c)
 
 film_opts film_defaults(void)
 {
-    film_opts o = {6, 1600, 400, 0, TOOL_COL_MATERIAL};
+    film_opts o = {6, 1600, 400, 0, TOOL_COL_MATERIAL, 0};
     return o;
+}
+
+static uint32_t film_be32(const uint8_t* p) { return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]; }
+
+/* whether the file at path is a sound PNG of exactly film_rgb's w x h pixels (8-bit RGB, every
+ * chunk's CRC right, the zlib stream whole, every row unfiltered), whatever its deflate blocks:
+ * render --keep-same leaves such a file as it is. Read into film_png and inflated into the depth
+ * buffer, both free once the picture is drawn. Anything else (no file, another size, a filter,
+ * a bad CRC) is not the same. */
+static int film_same_pixels(const char* path, int w, int h)
+{
+    static am_inflate_work iw;
+    char err[AM_ERR_MAX];
+    long n = 0, pos = 8, z = 0, got = 0;
+    uint8_t* f = film_png;
+    static const uint8_t sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+    if (am_port_read_file(path, (char*)f, (long)sizeof film_png, &n, err, sizeof err) != AM_OK || n < 8 || memcmp(f, sig, 8)) return 0;
+    int header = 0, end = 0;
+    while (!end && pos + 12 <= n) {
+        const uint32_t len = film_be32(f + pos);
+        if (len > (uint32_t)(n - pos - 12)) return 0;
+        const uint8_t* type = f + pos + 4;
+        if (am_crc32(0, type, (long)len + 4) != film_be32(type + 4 + len)) return 0;
+        if (!memcmp(type, "IHDR", 4))
+            header = len == 13 && film_be32(type + 4) == (uint32_t)w && film_be32(type + 8) == (uint32_t)h &&
+                     !memcmp(type + 12, "\x08\x02\x00\x00\x00", 5);
+        else if (!memcmp(type, "IDAT", 4)) {
+            memmove(f + z, type + 4, len); /* the stream gathered at the front (z <= pos) */
+            z += len;
+        } else if (!memcmp(type, "IEND", 4)) end = 1;
+        pos += 12 + (long)len;
+    }
+    if (!header || !end) return 0;
+    uint8_t* raw = (uint8_t*)film_depth;
+    const long row = 1 + 3L * w;
+    if (am_zlib_inflate(f, z, raw, (long)sizeof film_depth, &got, &iw, err, sizeof err) != AM_OK || got != row * h) return 0;
+    for (long y = 0; y < h; y++)
+        if (raw[y * row] != 0 || memcmp(raw + y * row + 1, film_rgb + y * (row - 1), (size_t)(row - 1))) return 0;
+    return 1;
 }
 
 int film_write(tool_ctx* c, const am_robot* r, const film_opts* o, const char* what, const char* path)
@@ -380,6 +419,7 @@ int film_write(tool_ctx* c, const am_robot* r, const film_opts* o, const char* w
     if (o->colour != TOOL_COL_MATERIAL) tool_colour_range(&mo, o->colour, &film_lo, &film_hi);
     am_canvas cv = {o->width, o->height, film_rgb, film_depth};
     film_draw(&mo, o, &cv);
+    if (o->keep_same && film_same_pixels(path, o->width, o->height)) return 0;
     long n = 0;
     if (am_png_encode(film_rgb, o->width, o->height, 3, AM_PNG_DYNAMIC, film_png, (long)sizeof film_png, &n, err,
                       sizeof err) != AM_OK) {

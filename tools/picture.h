@@ -94,6 +94,7 @@ typedef struct film_opts {
     int width, height;  /* pixels of the whole strip */
     int boxes;          /* 1: each voxel a box; 0: the continuous surface (tool_mesh, built for the body either way) */
     int colour;         /* TOOL_COL_*: what a voxel's colour shows */
+    int keep_same;      /* 1: a PNG already at the path with these very pixels is left as it is */
 } film_opts;
 /* 6 panels, 1600 x 400, the continuous surface, coloured by material */
 film_opts film_defaults(void);
