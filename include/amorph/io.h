@@ -142,9 +142,9 @@ AM_API uint32_t am_adler32(uint32_t adler, const void* data, long n);
 /* ---- PNG ---- */
 
 /* how am_png_encode deflates: stored (no compression); one fixed-Huffman block of matches one pixel
- * and one row back (no working memory); or the smallest of a block with codes made for the picture
- * (matches also through a 16 KiB hash table of recent strings, on the stack), a fixed block of the
- * same matches, and stored blocks (two passes) */
+ * and one row back (2 KiB of stack); or the smallest of a block with codes made for the picture
+ * (matches also through a 16 KiB hash table of recent strings; 34 KiB of stack in all), a fixed
+ * block of the same matches, and stored blocks (two passes) */
 enum { AM_PNG_STORED = 0, AM_PNG_FIXED = 1, AM_PNG_DYNAMIC = 2 };
 #define AM_PNG_MAX_SIDE 8192                   /* pixels along either side of an image */
 

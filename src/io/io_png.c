@@ -4,10 +4,11 @@
  * The deflate stream (RFC 1951) is stored blocks, a single block with the fixed Huffman code, or
  * (AM_PNG_DYNAMIC) the smallest of those and a single block with codes made for the picture.
  * Matches are found greedily. The fixed mode looks at two distances only: one pixel back (runs of
- * a colour) and one scanline back (a row like the one above), which needs no working memory. The
+ * a colour) and one scanline back (a row like the one above): 2 KiB of stack, the codes. The
  * dynamic mode also looks up the four latest positions of the same three bytes in a hash table on
- * the stack (16 KiB; about 28 KiB of stack in all), runs that matcher once to count the symbols,
- * builds Huffman codes of at most 15 bits from the counts and runs it again to write them. Every
+ * the stack (16 KiB; 34 KiB of stack in all, make stack's frames), runs that matcher once to count
+ * the symbols, builds Huffman codes of at most 15 bits from the counts and runs it again to write
+ * them. Every
  * match of 3 or more bytes costs fewer bits under the fixed code than its literals would (at most
  * 25 bits for 3 bytes, 31 for 4 and more, against 9 per literal), and the dynamic mode writes a
  * fixed or stored block when that is smaller, so the output never exceeds 9 bits per input byte. */
