@@ -8,7 +8,8 @@
 # evolved cycles (`amorph render --keep-same`, 1200 x 300 pixels: a file already holding the same
 # pixels stays as it is, so git sees no change for a robot that did not change). Then it prints
 # Markdown: a table with a row per run (evaluations done, best fitness, voxels and the material
-# mix, the 30-cycle gait); the Figure 6 table, the mean +- standard error of the best fitness so
+# mix, the 30-cycle gait); the filmstrips to show (of each representation or other experiment and
+# each gait, the furthest best, linked to its best.png); the Figure 6 table, the mean +- standard error of the best fitness so
 # far of each representation's runs (DIR/representations/<rep>-<k>) every 500 evaluations, over
 # the runs that reached them, and each run's best so far every 1,000; the mean size of the bodies
 # each representation evaluated, every 500 evaluations; the statistics of amorph stats (the
@@ -42,6 +43,7 @@ jarr() { sed -n "s/.*\"$2\": *\[\([^]]*\)\].*/\1/p" "$1" | tr -d '"' | sed 's/, 
 
 echo "| run | evaluations | best fitness (m) | voxels | material mix | gait (30 cycles) | travel per cycle, first / last half (mm) | sustained | airborne |"
 echo "|---|---:|---:|---:|---|---|---:|---:|---:|"
+shown=
 for cfg in "$DIR"/*/*/config.txt; do
     [ -f "$cfg" ] || continue
     run=${cfg%/config.txt}
@@ -63,7 +65,34 @@ for cfg in "$DIR"/*/*/config.txt; do
     printf '| %s | %s | %.4f | %s | %s | %s | %.2f / %.2f | %.2f | %.2f |\n' "$name" "$evals" "$best" "$(json "$g" voxels)" \
         "$mix" "$(json "$g" gait)" "$(echo "$first" | awk '{ print $1 * 1000 }')" "$(echo "$last" | awk '{ print $1 * 1000 }')" \
         "$(json "$g" sustained)" "$(json "$g" airborne)"
+    shown="$shown$name $evals $best $(json "$g" gait) $(json "$g" sustained) $([ -f "$run/best.png" ] && echo 1 || echo 0)
+"
 done
+
+# the filmstrips the page shows: of each group (a Figure 6 representation, or another experiment
+# whole) and each gait its best robots have, the run whose best travelled furthest (the first in
+# the table above on a tie), with its filmstrip when the run has one (--pictures), linked as
+# ../FOLDER/RUN/best.png: right from DIR/report.md and, DIR being results/, from docs/
+echo
+echo "| group | gait | furthest best | evaluations | best fitness (m) | sustained | filmstrip |"
+echo "|---|---|---|---:|---:|---:|---|"
+printf '%s' "$shown" | awk -v top="${DIR%/}" '
+    BEGIN { sub(/.*\//, "", top); ng = split("still flop scoot bounce roll", G, " ") }
+    NF == 6 {
+        grp = $1; sub(/\/.*/, "", grp)
+        if (grp == "representations") { grp = $1; sub(/-[0-9]+$/, "", grp) }
+        if (!(grp in seen)) { seen[grp] = 1; order[++n] = grp }
+        k = grp SUBSEP $4
+        if (!(k in run) || $3 + 0 > fit[k]) { run[k] = $1; evals[k] = $2; fit[k] = $3 + 0; sus[k] = $5; png[k] = $6 }
+    }
+    END {
+        for (i = 1; i <= n; i++) for (j = 1; j <= ng; j++) {
+            k = order[i] SUBSEP G[j]
+            if (!(k in run)) continue
+            pic = png[k] ? sprintf("![best robot of %s](../%s/%s/best.png)", run[k], top, run[k]) : "(not drawn)"
+            printf "| %s | %s | %s | %d | %.4f | %.2f | %s |\n", order[i], G[j], run[k], evals[k], fit[k], sus[k], pic
+        }
+    }'
 
 # Figure 6: best fitness so far (m) at every 500 evaluations, mean +- standard error over the runs
 # of each representation that reached it, (n) the number of those runs; then each run's best so

@@ -111,6 +111,25 @@ for run in representations/dct-1 representations/dct-2 representations/gmx-1 fri
     check "$run: gait30.json" grep -q '"cycle_travel"' "$R/$run/gait30.json"
     check "$run: best.png" [ -s "$R/$run/best.png" ]
 done
+# the filmstrips shown: of each group (a representation; another experiment whole) and gait, the
+# furthest best, with its filmstrip linked from the report's folder. dct-2's best (0.030) is ahead
+# of dct-1's (0.020): it stands for DCT when the two share a gait, and both do when they do not
+gait_of() { grep -F "| $1 | " "$TMPD/report.md" | head -n 1 | awk -F'|' '{ gsub(/ /, "", $7); print $7 }'; }
+gallery=$(awk '/^\| group \| gait \| furthest best \|/ { t = 1; next } t && !NF { exit } t && !/^\|---/' "$TMPD/report.md")
+g1=$(gait_of representations/dct-1) g2=$(gait_of representations/dct-2)
+check "filmstrips: dct-2 for its gait $g2: '$gallery'" sh -c "echo '$gallery' | grep -qF '| representations/dct | $g2 | representations/dct-2 | 510 | 0.0300 |'"
+if [ "$g1" = "$g2" ]; then
+    check "filmstrips: dct-1 left out (dct-2 ahead, both $g1)" sh -c "! echo '$gallery' | grep -qF 'representations/dct-1'"
+    want_rows=3
+else
+    check "filmstrips: dct-1 for its gait $g1" sh -c "echo '$gallery' | grep -qF '| representations/dct | $g1 | representations/dct-1 | 1000 | 0.0200 |'"
+    want_rows=4
+fi
+check "filmstrips: gmx-1 for GMX" sh -c "echo '$gallery' | grep -qF '| representations/gmx | $(gait_of representations/gmx-1) | representations/gmx-1 | 500 | 0.0050 |'"
+check "filmstrips: the friction run for its experiment" sh -c "echo '$gallery' | grep -qF '| friction | $(gait_of friction/k0.1_s5.0-1) | friction/k0.1_s5.0-1 |'"
+check "filmstrips: $want_rows rows: '$gallery'" [ "$(echo "$gallery" | grep -c '^| ')" -eq "$want_rows" ]
+link=$(echo "$gallery" | sed -n 's/.*| representations\/dct | '"$g2"' | .*(\(\.\.\/[^)]*\)) |$/\1/p')
+check "filmstrips: '$link' leads from the report's folder to dct-2's best.png" sh -c "[ -n '$link' ] && cmp -s '$R/$link' '$R/representations/dct-2/best.png'"
 check "the Figure 6 plot" grep -q '<svg' "$R/representations/fitness.svg"
 check "the Figure 6 plot of every run when none has 2,000 evaluations" grep -q 'dct, 2 runs' "$R/representations/fitness.svg"
 FIG6_MIN_EVALS=750 sh results/report.sh "$AMORPH" "$R" --pictures >/dev/null 2>&1
@@ -128,8 +147,10 @@ check "gaits.svg: $(grep -c 'class="bar"' "$R/gaits.svg") bars, want 120" [ "$(g
 check "gaits.svg names the runs" sh -c "grep -q '>representations/dct-2<' '$R/gaits.svg' && grep -q '>friction/k0.1_s5.0-1<' '$R/gaits.svg'"
 # the same folders give the same files (the report leaves out wall times)
 cp "$R/representations/dct-1/gait30.json" "$TMPD/gait-a.json"
+rm "$R/representations/gmx-1/best.png"
 expect_ok sh results/report.sh "$AMORPH" "$R"
 check "a second report gives the same gait30.json" cmp -s "$TMPD/gait-a.json" "$R/representations/dct-1/gait30.json"
+check "filmstrips: gmx-1 without best.png (no --pictures) is not drawn" sh -c "grep -E '^\| representations/gmx \| [a-z]+ \| representations/gmx-1 \|' '$TMPD/out' | grep -qF '| (not drawn) |'"
 # the sustained score of the best robots, over the runs at 1,000 evaluations (every run at 1,000 or
 # more has reached it): dct-1 alone, its sustained_travel (cycles 11-30 of gait30.json) in mm with
 # its gait; dct-2 (510) and gmx-1 (500), just started beside it, left out
