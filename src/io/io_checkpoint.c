@@ -3,7 +3,7 @@
  * Reals of the genomes are written so they read back bit for bit; fitness values (doubles) as
  * the hexadecimal digits of their bit patterns, so a checkpoint is exact on every platform.
  *
- *   amorph-checkpoint 2
+ *   amorph-checkpoint 3
  *   config-begin
  *   key = value ...            (am_evo_format, runtime keys included)
  *   config-end
@@ -17,7 +17,8 @@
  *   ...
  *   reused N VOXELSTEPS        (evaluations that took a remembered result; VOXELSTEPS as HEX bits)
  *   memo SLOT USED KEY BYTES   (a remembered body, am_evo.memo[SLOT]: BYTES bytes follow, its
- *   m BASE64 ...                result's 28 numbers of 8 bytes little-endian, then its packed cells,
+ *   m BASE64 ...                result's 28 numbers (one more a material past the third) of 8 bytes
+ *                               little-endian, then its packed cells,
  *                               in base64 lines of up to 48 bytes)
  *   checksum HEX               (am_hash_bytes of every byte before this line)
  */
