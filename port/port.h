@@ -63,7 +63,7 @@ am_status am_port_read_file(const char* path, char* buf, long cap, long* len, ch
 /* writes n bytes to path atomically: a temporary file beside it, flushed, then renamed over
  * path (a link at path is replaced, never written through), so a reader (or a crash) sees either
  * the old file or the whole new one (one write of a
- * stream, below; the library provides it over the streams, port/common/port_file.c: a port does not) */
+ * stream, below; port/common/port_file.c writes it once over the streams for every port) */
 am_status am_port_write_file(const char* path, const void* data, long n, char* err, int errsz);
 /* appends n bytes to path (created if missing); not atomic (logs). The file is opened without
  * following a link: a symbolic link, a file with several names (a hard link), a FIFO or a device

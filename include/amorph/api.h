@@ -25,7 +25,7 @@ extern "C" {
 /* the version of this API: its functions and am_result's layout (a new field raises it) */
 #define AM_API_VERSION 4 /* 2: ask/tell (am_api_seed ... am_api_crowd); 3: stepping (am_api_sim_*), VXA text; 4: am_api_set_config */
 
-/* one evaluation's workspace and settings. Large (tens of MB on the desktop): static, or on the
+/* one evaluation's workspace and settings. Large (7.4 MB in the float desktop build): static, or on the
  * heap of a caller that may allocate; never on a stack. */
 typedef struct am_api_work {
     long size;                /* sizeof(am_api_work) once am_api_init has run (a check of the caller's buffer) */

@@ -99,7 +99,7 @@ extern "C" {
 
 /* ---- genotypes (include/amorph/geno.h, docs/genotypes.md) ---- */
 #ifndef AM_MAX_GENO_MATERIALS
-#define AM_MAX_GENO_MATERIALS 6 /* density fields per genome: materials of a run's palette, <= 15 (board: 3) */
+#define AM_MAX_GENO_MATERIALS 6 /* density fields per genome: materials of a run's palette, 3..8 (board: 3) */
 #endif
 #if AM_MAX_GENO_MATERIALS < 3 || AM_MAX_GENO_MATERIALS > 8
 #error "AM_MAX_GENO_MATERIALS: 3 to 8 (the seed's three materials; a remembered body's counts and packed cells hold 8)"
