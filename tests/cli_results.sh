@@ -75,4 +75,15 @@ if [ -f results/report.md ]; then
     done <"$TMPD/docrows"
     if [ $n_doc -gt 0 ]; then ok; else ko "docs/results.md: no row of report.sh's tables found"; fi
 fi
+# every link of the pages to a file of the repository (a filmstrip or plot of docs/results.md and
+# results/report.md, another page) names one that is there, from the page's folder
+nl=0
+for page in README.md docs/*.md results/report.md; do
+    [ -f "$page" ] || continue
+    for target in $(grep -oE '\]\([^)# ]+\)' "$page" | sed 's/^](//; s/)$//' | grep -v '^[a-z][a-z]*:' | sort -u); do
+        nl=$((nl + 1))
+        if [ -e "$(dirname "$page")/$target" ]; then ok; else ko "$page: links to $target, which is not there"; fi
+    done
+done
+if [ $nl -gt 0 ]; then ok; else ko "no link of the pages to a file found"; fi
 summary cli_results
