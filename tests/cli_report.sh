@@ -7,7 +7,8 @@
 # experiments against the range of the seed's settings, and the plots (gaits.svg's bars too).
 # Float desktop builds (the report simulates the runs' best robots). Then results/ship.sh: a finished run and one gone on
 # beyond its summaries copied as they stand at their checkpoints, and a best robot that is not
-# its checkpoint's refused. results/tables.sh copying a report's tables into a page. And
+# its checkpoint's refused. results/tables.sh copying a report's tables into a page; results/yield.sh
+# counting what runners did since a ship. And
 # results/run.sh's rounds, and results/runners.sh starting two runners and stopping them at a
 # checkpoint, with stand-ins for amorph. Run from the repository root.
 . tests/shlib.sh
@@ -328,6 +329,26 @@ expect_fail 1 "report3.md: two tables headed like \"\| run \| 2000 \|\"" sh resu
 check "tables.sh: the page unchanged after two tables of one header" cmp -s "$TMPD/page0.md" "$TMPD/page.md"
 expect_fail 2 "none.md: no such file" sh results/tables.sh "$TMPD/none.md" "$TMPD/page.md"
 
+
+# --- results/yield.sh: what the runners did since a ship, from the log.csv of both copies ---
+YB=$TMPD/yield-before YN=$TMPD/yield-now
+mkdir -p "$YB/exp/a-1" "$YB/exp/b-1" "$YN/exp/a-1" "$YN/exp/b-1" "$YN/other/c-1"
+# a-1 went from 500 to 1000 (two generations, 360 + 720 s); b-1 did not move; c-1 is new (0 to 250, 36 s)
+printf '%s\n0,250,0.01,0,0,0,0,10\n1,500,0.01,0,0,0,0,20\n' "$h" >"$YB/exp/a-1/log.csv"
+cat "$YB/exp/a-1/log.csv" >"$YN/exp/a-1/log.csv"
+printf '2,750,0.01,0,0,0,0,360\n3,1000,0.01,0,0,0,0,720\n' >>"$YN/exp/a-1/log.csv"
+printf '%s\n0,250,0.01,0,0,0,0,10\n' "$h" | tee "$YB/exp/b-1/log.csv" >"$YN/exp/b-1/log.csv"
+printf '%s\n0,250,0.01,0,0,0,0,36\n' "$h" >"$YN/other/c-1/log.csv"
+expect_ok sh results/yield.sh "$YB" "$YN"
+check "yield: a-1 500 to 1000 in 0.30 h: $(tr '\n' '/' <"$TMPD/out")" grep -qxF '| exp/a-1 | 500 | 1000 | 500 | 0.30 |' "$TMPD/out"
+check "yield: c-1 from 0" grep -qxF '| other/c-1 | 0 | 250 | 250 | 0.01 |' "$TMPD/out"
+check "yield: b-1 did not move, no row" sh -c "! grep -q 'exp/b-1' '$TMPD/out'"
+check "yield: the totals" grep -qxF '| all | | | 750 | 0.31 |' "$TMPD/out"
+expect_ok sh results/yield.sh "$YN" "$YN"
+check "yield: nothing moved: header and totals of 0" [ "$(tr '\n' '/' <"$TMPD/out")" = "| run | evaluations before | evaluations now | evaluations | runner-hours |/|---|---:|---:|---:|---:|/| all | | | 0 | 0.00 |/" ]
+printf '4,1250,0.01,0,0,0,0,slow\n' >>"$YN/exp/a-1/log.csv"
+expect_fail 1 "yield-now/exp/a-1/log.csv:6: wall_s \\(column 8\\): not a number" sh results/yield.sh "$YB" "$YN"
+expect_fail 2 "no such folder" sh results/yield.sh "$YB" "$TMPD/none"
 
 # --- results/ship.sh (copied with report.sh into a folder of its own, which it fills) ---
 S=$TMPD/ship-src D=$TMPD/ship-dst
