@@ -123,8 +123,8 @@ AM_API am_status am_api_offspring(am_api_work* w, const char* a, const char* b, 
                                   int errsz);
 /* the genome in, mutated once (w's rates) */
 AM_API am_status am_api_mutate(am_api_work* w, const char* in, char* out, long cap, char* err, int errsz);
-/* the crowding distance of two genomes' bodies (am_genome_distance with their evolved fields),
- * expressed with w's palette and voxel size: in [0, 1] */
+/* the crowding distance of two genomes' bodies (am_genome_distance with their evolved fields):
+ * in [0, 1] */
 AM_API am_status am_api_distance(am_api_work* w, const char* a, const char* b, double* out, char* err, int errsz);
 /* deterministic crowding's step for parents a, b and their offspring 1, 2, each with its fitness
  * (a NaN: diverged, always loses): meets[k] gets the parent (0: a, 1: b) offspring k + 1 competes

@@ -1,6 +1,7 @@
 /* amorph/base.h: the base layer (src/base/): capacities and profile, the number type, status and
  * messages, text buffers and streams, maths, the random stream and the discrete cosine transform.
- * It includes no other amorph header.
+ * Of the amorph headers it includes only the profile's configuration (amorph/config_desktop.h,
+ * config_board.h, or the project's AMORPH_CONFIG_H).
  */
 #ifndef AMORPH_BASE_H
 #define AMORPH_BASE_H

@@ -303,7 +303,7 @@ typedef struct am_evo {
     int gen_parent[AM_MAX_POPULATION];        /* offspring 2k, 2k + 1 come from these two members */
     int gen_b, gen_m;                         /* the current batch: individuals [gen_b, gen_b + gen_m) */
     am_rng gen_saved;                         /* the stream before the generation (a cancel restores it) */
-    double gen_t0;                            /* am_port_now() at its start */
+    double gen_t0;                            /* the caller's clock at its start (the now it passes) */
     long gen_steps, gen_voxel_steps;          /* its time steps so far */
     int gen_diverged, gen_empty, gen_unsettled; /* its diverged, empty and unsettled evaluations so far */
     int reuse[AM_EVO_BATCH];                  /* the current batch's offspring j: -1 simulated, k >= 0 takes

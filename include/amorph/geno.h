@@ -219,7 +219,8 @@ AM_API am_status am_genome_crossover(const am_genome* a, const am_genome* b, am_
                               const am_geno_def* def, am_rng* r, char* err, int errsz);
 /* checks every field against its range and capacity; AM_ERR_RANGE / AM_ERR_CAPACITY with a message */
 AM_API am_status am_genome_check(const am_genome* g, char* err, int errsz);
-/* evolvable values of g (DCT: amplitudes; CPPN: 4 per node, 2 per connection; GMX: 6 per point) */
+/* evolvable values of g (DCT: amplitudes; CPPN: 4 per node, 2 per connection; GMX: 6 per point
+ * and one more per evolved field) */
 AM_API int am_genome_values(const am_genome* g);
 /* 64-bit hash of every value of g (golden hashes in tests) */
 AM_API uint64_t am_genome_hash(const am_genome* g);

@@ -231,7 +231,7 @@ AM_API int am_raster_text(am_canvas* c, const am_camera* cam, int x, int y, int 
  *     its own voxels, so that a file that names vertices by their position (STL) is manifold too.
  *
  * Nothing allocates: the caller owns the am_mesh (a large struct, declare it static) and the
- * arrays of positions. Capacities follow AM_MAX_DIM (config.h); the build never runs out of room
+ * arrays of positions. Capacities follow AM_MAX_DIM (amorph/base.h, from the profile's configuration header); the build never runs out of room
  * for a lattice of this profile, and says so with AM_ERR_CAPACITY if it ever would. */
 
 /* faces of one build: every cell face position of the workspace, once per side */
@@ -535,7 +535,7 @@ typedef struct am_evo_ckpt_reader {
     int line;                   /* lines read */
     int until, config_end, last_end; /* from the scan */
     am_status st;               /* the first failure: every later call returns it */
-    int version;                /* the checkpoint's format version (1 or 2) */
+    int version;                /* the checkpoint's format version (1 to 3) */
     int seen_rng, seen_gen, seen_evals, seen_hist, seen_last, pop_seen, best_seen;
     uint8_t pop_have[AM_MAX_POPULATION]; /* 1 for each member index read */
     int in_genome;              /* 1 while the lines of an individual's genome are read */

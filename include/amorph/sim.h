@@ -74,9 +74,13 @@ AM_API int am_lattice_equal(const am_lattice* a, const am_lattice* b);
  *   cube:N        a solid N^3 cube of passive material
  *   sphere:D      cells whose centre is within D/2 of the centre of a D^3 lattice; the half with
  *                 x < D/2 is "active", the rest "passive" (sphere:20 has 4224 voxels)
- *   cantilever:N  an N x 1 x 1 beam of passive material whose x = 0 cell is "fixed", lifted
- *                 clear of the floor (the lattice is N x 1 x 3 with the beam in the top layer)
- *   chain:N       an N x 1 x 1 row of passive voxels */
+ *   cantilever:N  an N x 1 x 1 beam of passive material whose x = 0 cell is "fixed" (the lattice
+ *                 is N x 1 x 3 with the beam in the top layer; am_model_build sets the lowest
+ *                 voxels on the floor, env.lift above it, as for every lattice)
+ *   chain:N       an N x 1 x 1 row of passive voxels
+ *   halfbar:N     the calibration bar (docs/validation.md): N x 3 x 3, the cells with x < N/2
+ *                 "active", the rest "passive"
+ *   antibar:N     the same with the rest "active180" (actuated half a period later) */
 AM_API am_status am_scene_build(am_lattice* lat, const char* name, char* err, int errsz);
 
 
@@ -88,8 +92,9 @@ AM_API am_status am_scene_build(am_lattice* lat, const char* name, char* err, in
  * capacity): declare them static, one state per worker, never on the stack.
  *
  * Each step (docs/physics.md section 7): actuation (temperatures, voxel scales, rest lengths
- * once per pair of materials), link forces (small- or large-angle beam), contacts (floor with static/kinetic
- * friction, self-collision), then semi-implicit Euler per voxel, which gathers its up-to-6 link
+ * once per pair of materials), self-collision and link forces (small- or large-angle beam), both from
+ * the state at the start of the step, then semi-implicit Euler per voxel (the floor with its static and
+ * kinetic friction inside it), which gathers its up-to-6 link
  * forces in a fixed order. Results do not depend on how work is split.
  */
 
@@ -443,7 +448,8 @@ AM_API long am_steps(const am_model* m, am_state* s, long n);
 AM_API am_status am_model_validate(const am_model* m, char* err, int errsz);
 AM_API am_status am_state_validate(const am_model* m, const am_state* s, char* err, int errsz);
 
-/* 1 / (2 pi sqrt(max over links a1 / min(m_neg, m_pos))), s */
+/* 1 / (2 pi sqrt(w)), s: w the largest of each link's a1 / min(m_neg, m_pos) and each voxel's
+ * floor spring 0.5 k_floor / m (a lone voxel on the floor) */
 AM_API am_real am_dt_analytic(const am_model* m);
 /* the seed's empirical search: from 10 dt_rec down by factors of 10 until 100 steps of a thermal
  * step load show no significant strain energy growth, then a finer pass between the last unstable
@@ -677,7 +683,7 @@ typedef struct am_gait_summary {
 AM_API double am_gait_travel(const am_gait* g, int fitness, int k);
 /* the summary of g; voxel_size (m) scales the "still" threshold */
 AM_API void am_gait_summarize(const am_gait* g, int fitness, double voxel_size, am_gait_summary* out);
-/* "still", "flop", "scoot", "bounce" */
+/* "still", "flop", "scoot", "bounce", "roll" */
 AM_API const char* am_gait_mode_name(am_gait_mode mode);
 
 /* recording helper used by am_evaluate: stores a frame (or hands it to rec->sink) if s->step is a

@@ -237,7 +237,8 @@ static void sys_drop(port_handle h, const char* tmp)
 
 /* MoveFileEx over path; another program (a virus scanner, an indexer, an editor) that holds the
  * old file open without FILE_SHARE_DELETE makes it fail for a moment, so it is tried again, up to
- * ten times over about a second. 1, or 0 with the error in GetLastError() */
+ * ten times over about half a second (waits of 1, 2, 4 ... 256 ms). 1, or 0 with the error in
+ * GetLastError() */
 static int replace(const char* tmp, const char* path)
 {
     for (int k = 0;; k++) {

@@ -610,7 +610,6 @@ static void eval_task(void* ctx, int item, int worker)
     am_evo_batch_eval(job->runs[k], i, &job->work[worker], r);
 }
 
-/* the generations of runs[0..n) (all of them, or the unfinished ones when skip_done) */
 /* the executor's clock, or 0 */
 static double clock_of(const am_executor* ex) { return ex && ex->now ? ex->now(ex->self) : 0.0; }
 
@@ -623,6 +622,7 @@ static am_status map_items(const am_executor* ex, int n, int workers, am_task_fn
     return AM_OK;
 }
 
+/* the generations of runs[0..n) (all of them, or the unfinished ones when skip_done) */
 static am_status generations(am_evo* const* runs, int n, am_evo_wave* wave, am_evo_work* w, const am_executor* ex,
                              const am_evo_hooks* hooks, int skip_done, char* err, int errsz)
 {

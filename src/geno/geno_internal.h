@@ -1,6 +1,6 @@
 /* geno_internal.h: what the genotype files share (not public).
  *
- * The library's genotype sources (src/geno_*.c, src/geno/geno_format.c) include this header; the
+ * The library's genotype sources (src/geno/geno_*.c, src/geno/geno_format.c) include this header; the
  * public interface is include/amorph/geno.h. Here: the operations table every representation
  * implements and its dispatch, the helpers of the representations' text lines, the lookup tables
  * of the CPPN and GMX functions (read with linear interpolation, see src/geno/geno_common.c), the value
@@ -63,7 +63,7 @@ int am_geno_tok_real(const char* s, am_real lo, am_real hi, am_real* out); /* fi
 /* ---- lookup tables and mutation ---- */
 
 #define AM_GENO_GAUSS_RANGE AM_R(16)  /* e^(-q) is taken as 0 for q > 16 (e^-16 = 1.1e-7) */
-#define AM_GENO_SIG_RANGE AM_R(16)    /* the sigmoid is taken as +-1 (to 1.1e-7) beyond |t| > 16 */
+#define AM_GENO_SIG_RANGE AM_R(16)    /* the sigmoid is taken as +-1 (to 2.3e-7) beyond |t| > 16 */
 
 /* fills the lookup tables of w once (with am_sin and am_exp); expressions call it themselves */
 void am_geno_tables(am_geno_work* w);

@@ -11,9 +11,10 @@
  *   generation G
  *   evaluations N
  *   history HEX
- *   last G N BEST MEAN MEDIAN DIVERGED EMPTY WALL   (doubles as HEX bit patterns)
+ *   last G N BEST MEAN MEDIAN DIVERGED EMPTY WALL UNSETTLED   (doubles as HEX bit patterns; a
+ *                              checkpoint from before UNSETTLED was logged lacks it)
  *   individual pop|best INDEX FITNESS VOXELS DIVERGED EMPTY STEPS STATEHASH ID
- *   amorph-genome 1 ... end    (the individual's genome, am_genome_format)
+ *   amorph-genome V ... end    (the individual's genome, am_genome_format)
  *   ...
  *   reused N VOXELSTEPS        (evaluations that took a remembered result; VOXELSTEPS as HEX bits)
  *   memo SLOT USED KEY BYTES   (a remembered body, am_evo.memo[SLOT]: BYTES bytes follow, its

@@ -1,10 +1,11 @@
 /* One time step of the voxel beam lattice (docs/physics.md section 7).
  *
  * Order: actuation (per-material temperature -> voxel scales -> rest lengths, once per pair of
- * materials), link forces from the state at the start of the step, contact forces
- * (self-collision; the floor is per voxel and done during integration because its friction state
- * machine needs the voxel's total force), then semi-implicit Euler per voxel in three passes
- * (gather + rotation, floor, translation).
+ * materials), contact forces (self-collision) and link forces, both from the state at the start of
+ * the step (the floor is per voxel and done during integration because its friction state machine
+ * needs the voxel's total force), then semi-implicit Euler per voxel: the totals (each voxel
+ * gathers its links), the floor and friction, the links' damping correction, and one update of
+ * rotation and translation.
  *
  * Links write their forces into per-link arrays; each voxel then gathers from its six slots in a
  * fixed order (+x, -x, +y, -y, +z, -z; a missing link points at the zero link nl). No voxel sum
@@ -556,7 +557,7 @@ static inline void damp_pass(int l0, int l1, int axis, am_real L, const am_index
  * axis links are numbered by their negative voxel, and voxels by cell, so voxel i's + link
  * (i, i + axis) comes after its - link (i - axis, i): taken from the last, each voxel receives its
  * + link before its - link, and the axes come in order x, y, z. That is the order of the desktop's
- * gather (voxel_forces_rotate), so every total is the same sum; the zeros the gather adds for
+ * gathers (voxel_totals, and voxel_update for the damping correction), so every total is the same sum; the zeros the gather adds for
  * missing links are added there too. */
 static void add_links(int c0, int c1, const am_index* restrict lneg, const am_index* restrict lpos,
                       const out_row* restrict fn, const out_row* restrict mn, const out_row* restrict mp,
@@ -623,7 +624,7 @@ static int link_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 }
 
 /* the damping correction of the links [l0, l1), all along one axis: on the desktop into the
- * per-link arrays (voxel_rotate gathers them into the momenta); on a board chunk by chunk, the
+ * per-link arrays (voxel_update gathers them into the momenta); on a board chunk by chunk, the
  * last chunk first, added to the momenta p and h straight away (add_links: the same sums) */
 static void damp_forces(const am_model* m, am_state* s, int l0, int l1, int axis)
 {
