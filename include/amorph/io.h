@@ -231,7 +231,8 @@ AM_API int am_raster_text(am_canvas* c, const am_camera* cam, int x, int y, int 
  *     its own voxels, so that a file that names vertices by their position (STL) is manifold too.
  *
  * Nothing allocates: the caller owns the am_mesh (a large struct, declare it static) and the
- * arrays of positions. Capacities follow AM_MAX_DIM (amorph/base.h, from the profile's configuration header); the build never runs out of room
+ * arrays of positions. Capacities follow AM_MAX_DIM (amorph/base.h, from the profile's
+ * configuration header); the build never runs out of room
  * for a lattice of this profile, and says so with AM_ERR_CAPACITY if it ever would. */
 
 /* faces of one build: every cell face position of the workspace, once per side */
