@@ -237,6 +237,12 @@ check "summary, sim_s_per_s: $(tail -n 1 "$TMPD/out")" awk '/^scene=cube:3 colli
     ok = v["best_sim_s_per_s"] >= v["median_sim_s_per_s"] && v["median_sim_s_per_s"] >= v["worst_sim_s_per_s"] && v["worst_sim_s_per_s"] > 0; n++ }
     END { exit !(n == 1 && ok) }' "$TMPD/out"
 expect_fail 2 "bench: --repeat needs a whole number from 1 to 64" "$AMORPH" bench --repeat 65
+# bench --evals N stands on either side of --evolve: a count below the population is refused before
+# any evaluation, naming the count the runs would take (--evolve's 60 would run for minutes)
+for order in "--evals 2 --evolve" "--evolve --evals 2"; do
+    # shellcheck disable=SC2086
+    expect_fail 2 "^amorph: bench: evaluations = 2: at least the population \\(20\\)$" timeout -k 5 60 "$AMORPH" bench $order --threads 1
+done
 expect_fail 2 "bench: unknown option '--kernel'" "$AMORPH" bench --kernel
 expect_fail 2 "bench: --steps needs a whole number" "$AMORPH" bench --steps 0
 # bench --convergence takes a VXA robot with its layers (per-voxel phases, stiffnesses): at its own

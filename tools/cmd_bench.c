@@ -288,8 +288,9 @@ static const char bench_help[] =
     "--dt-frac F: another step than the default (to compare builds or steps at the same step).\n"
     "--repeat N: each scene N times (1 to 64), then the best, median and worst figure.\n"
     "--evolve: evaluations per hour of the default experiment (amorph evolve) on 1 and 2 threads\n"
-    "(or T only), each a run of N evaluations (60), the speedup of the second core, and the parallel\n"
-    "map's own cost per item (map_us_per_item: maps of 20 items that only hand back a result). Under\n"
+    "(or T only), each a run of N evaluations (--evals N, at least the population: 60; --evals alone implies\n"
+    "--evolve), the speedup of the second core, and the parallel map's own cost per item\n"
+    "(map_us_per_item: maps of 20 items that only hand back a result). Under\n"
     "mpirun (the MPI build), every rank runs T threads: tools/bench_mpi.sh sets ranks against threads.\n"
     "--control: the cost of stepping under control (amorph/api.h, Stepping) on cube:10 and sphere:20,\n"
     "on sim's motion: sim's open-loop steps against one API call and calls of 1, 10 and 100 steps\n"
@@ -368,7 +369,7 @@ int cmd_bench(tool_ctx* c, int argc, char** argv)
         } else if (!strcmp(a, "--control")) {
             control = 1;
         } else if (!strcmp(a, "--evolve")) {
-            evolve_evals = 60;
+            if (!evolve_evals) evolve_evals = 60; /* an --evals N before it stands */
         } else if (!strcmp(a, "--evals")) {
             if (!tool_parse_long(v, 2, 1000000, &n)) return tool_usage_error("bench: --evals needs a whole number >= 2");
             evolve_evals = n, i++;

@@ -10,11 +10,13 @@
 
 static const char repro_help[] =
     "usage: amorph repro [--KEY VALUE]...\n"
-    "Runs the reference evolution of `make repro` in memory (no files) and prints one line\n"
+    "Runs the reference evolution of `make repro` in memory (no files) and prints a line of its\n"
+    "figures (evaluations, generations, best fitness, voxel steps, wall time), then the line\n"
     "repro_hash=<16 hex digits>: the run hash over every genome, fitness and final simulation\n"
     "state of the run. Every build on every platform must print the same value. The reference\n"
-    "run: GMX, 6^3 workspace, population 8, 24 evaluations, 1 cycle of 100 steps after at most\n"
-    "150 steps of relaxation; flags (configuration keys) change it.\n";
+    "run: GMX, 6^3 workspace, population 8, 24 evaluations, 1 cycle of 100 steps after a\n"
+    "relaxation of 50 to 400 steps (the last 100 its release window); flags (configuration keys)\n"
+    "change it.\n";
 
 int cmd_repro(tool_ctx* c, int argc, char** argv)
 {
