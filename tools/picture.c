@@ -1,5 +1,6 @@
-/* What amorph render and amorph view share: one recorded evaluation of a robot, the size of each
- * voxel in a recorded frame, centres of mass, and the robot argument (scene, file or run). */
+/* What the pictures share (amorph render and view, plot --travel, the filmstrip at a run's end):
+ * one recorded evaluation of a robot, the size of each voxel in a recorded frame, centres of mass,
+ * and the robot argument (scene, file or run). */
 #include "picture.h"
 #if TOOL_PICTURES
 
