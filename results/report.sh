@@ -10,8 +10,8 @@
 # Markdown: a table with a row per run (evaluations done, best fitness, voxels and the material
 # mix, the 30-cycle gait); the filmstrips to show (of each representation or other experiment and
 # each gait, the furthest best, linked to its best.png); the Figure 6 table, the mean +- standard
-# error of the best fitness so far of each representation's runs (DIR/representations/<rep>-<k>) every 500 evaluations, over
-# the runs that reached them, and each run's best so far every 1,000; the mean size of the bodies
+# error of the best fitness so far of each representation's runs (DIR/representations/<rep>-<k>)
+# every 500 evaluations, over the runs that reached them, and each run's best so far every 1,000; the mean size of the bodies
 # each representation evaluated, every 500 evaluations; the statistics of amorph stats (the
 # representations compared by Welch's t-test and the Mann-Whitney test at every 1,000 evaluations
 # all the runs of each have reached,

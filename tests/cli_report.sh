@@ -339,16 +339,19 @@ cat "$YB/exp/a-1/log.csv" >"$YN/exp/a-1/log.csv"
 printf '2,750,0.01,0,0,0,0,360\n3,1000,0.01,0,0,0,0,720\n' >>"$YN/exp/a-1/log.csv"
 printf '%s\n0,250,0.01,0,0,0,0,10\n' "$h" | tee "$YB/exp/b-1/log.csv" >"$YN/exp/b-1/log.csv"
 printf '%s\n0,250,0.01,0,0,0,0,36\n' "$h" >"$YN/other/c-1/log.csv"
-expect_ok sh results/yield.sh "$YB" "$YN"
+# c-2 just started: its log.csv has no generation yet (no row, no refusal)
+mkdir -p "$YN/other/c-2"
+echo "$h" >"$YN/other/c-2/log.csv"
+expect_ok sh results/yield.sh "$AMORPH" "$YB" "$YN"
 check "yield: a-1 500 to 1000 in 0.30 h: $(tr '\n' '/' <"$TMPD/out")" grep -qxF '| exp/a-1 | 500 | 1000 | 500 | 0.30 |' "$TMPD/out"
 check "yield: c-1 from 0" grep -qxF '| other/c-1 | 0 | 250 | 250 | 0.01 |' "$TMPD/out"
-check "yield: b-1 did not move, no row" sh -c "! grep -q 'exp/b-1' '$TMPD/out'"
+check "yield: b-1 did not move and c-2 has no generation: no rows" sh -c "! grep -qE 'exp/b-1|other/c-2' '$TMPD/out'"
 check "yield: the totals" grep -qxF '| all | | | 750 | 0.31 |' "$TMPD/out"
-expect_ok sh results/yield.sh "$YN" "$YN"
+expect_ok sh results/yield.sh "$AMORPH" "$YN" "$YN"
 check "yield: nothing moved: header and totals of 0" [ "$(tr '\n' '/' <"$TMPD/out")" = "| run | evaluations before | evaluations now | evaluations | runner-hours |/|---|---:|---:|---:|---:|/| all | | | 0 | 0.00 |/" ]
 printf '4,1250,0.01,0,0,0,0,slow\n' >>"$YN/exp/a-1/log.csv"
-expect_fail 1 "yield-now/exp/a-1/log.csv:6: wall_s \\(column 8\\): not a number" sh results/yield.sh "$YB" "$YN"
-expect_fail 2 "no such folder" sh results/yield.sh "$YB" "$TMPD/none"
+expect_fail 1 "yield-now/exp/a-1/log.csv:6: wall_s \\(column 8\\): not a number" sh results/yield.sh "$AMORPH" "$YB" "$YN"
+expect_fail 2 "no such folder" sh results/yield.sh "$AMORPH" "$YB" "$TMPD/none"
 
 # --- results/ship.sh (copied with report.sh into a folder of its own, which it fills) ---
 S=$TMPD/ship-src D=$TMPD/ship-dst
